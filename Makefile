@@ -1,0 +1,74 @@
+# pyadore: `make run` and `make test` work on a fresh machine (see README).
+SHELL := /bin/bash
+.SHELLFLAGS := -eu -o pipefail -c
+.DEFAULT_GOAL := help
+
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.pyadore-installed
+NATIVE := build/native
+DEBUG  := build/debug
+ADORE  := $(NATIVE)/adore
+DECK   := decks/appendix_c_ball.inp
+OUT    := out/appendix_c_ball.prt
+# Build tools (meson, ninja, f2py) are taken from the venv, never from the system.
+VPATH_ENV := PATH="$(CURDIR)/$(VENV)/bin:$$PATH"
+
+.PHONY: help setup gfortran run test bench debug clean distclean exe
+
+help:
+	@echo "make run      set up, run $(DECK), write $(OUT)"
+	@echo "make test     set up, run the test suite (Python and engine tests)"
+	@echo "make bench    set up, run the benchmarks in bench/"
+	@echo "make debug    build the engine with run-time checks and run the suite against it"
+	@echo "make setup    install gfortran if missing, create $(VENV), install pyadore into it"
+	@echo "make clean    remove build/ and out/   (make distclean also removes $(VENV))"
+
+# gfortran from Debian's packages, installed only when missing.
+gfortran:
+	@if ! command -v gfortran >/dev/null 2>&1; then \
+	  echo "gfortran not found: installing it with apt-get (Debian package gfortran)"; \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=""; \
+	  elif command -v sudo >/dev/null 2>&1; then SUDO="sudo"; \
+	  else echo "error: gfortran is missing and apt-get needs root; install gfortran yourself" >&2; exit 1; fi; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq gfortran >/dev/null \
+	    || { echo "error: 'apt-get install gfortran' failed; install gfortran yourself" >&2; exit 1; }; \
+	  command -v gfortran >/dev/null || { echo "error: gfortran still not on PATH" >&2; exit 1; }; \
+	fi
+
+# The venv is rebuilt when the build description changes; editable installs
+# rebuild the engine extension by themselves when Fortran sources change.
+$(STAMP): pyproject.toml meson.build meson.options | gfortran
+	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check "meson-python>=0.15" "meson>=1.1" ninja "numpy>=2.0"
+	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check --no-build-isolation -e '.[test]'
+	@touch $(STAMP)
+
+setup: gfortran $(STAMP)
+
+# Standalone executable: same sources, same meson.build, its own build directory.
+exe: setup
+	@test -f $(NATIVE)/build.ninja || $(VPATH_ENV) $(VENV)/bin/meson setup $(NATIVE) --buildtype=release >/dev/null
+	@$(VPATH_ENV) $(VENV)/bin/meson compile -C $(NATIVE) adore test_deck_text >/dev/null
+
+run: exe
+	@mkdir -p out
+	$(VENV)/bin/pyadore run $(DECK) -o $(OUT)
+
+test: exe
+	ADORE_EXE=$(CURDIR)/$(ADORE) ADORE_BUILD_DIR=$(CURDIR)/$(NATIVE) $(PY) -m pytest
+
+debug: setup
+	@test -f $(DEBUG)/build.ninja || $(VPATH_ENV) $(VENV)/bin/meson setup $(DEBUG) --buildtype=debug -Dchecks=true >/dev/null
+	@$(VPATH_ENV) $(VENV)/bin/meson compile -C $(DEBUG) adore test_deck_text >/dev/null
+	ADORE_EXE=$(CURDIR)/$(DEBUG)/adore ADORE_BUILD_DIR=$(CURDIR)/$(DEBUG) $(PY) -m pytest
+
+bench: exe
+	ADORE_EXE=$(CURDIR)/$(ADORE) $(PY) bench/run_bench.py
+
+clean:
+	rm -rf build out $(STAMP)
+
+distclean: clean
+	rm -rf $(VENV)

@@ -1,0 +1,37 @@
+!> Flat f2py boundary of the engine (module pyadore._engine).
+!>
+!> External subroutines with scalars and fixed-length strings only; each builds the
+!> engine's derived types inside, calls the library and returns a status code
+!> (0 ok, 1 input error, 2 engine failure) and a message.  Nothing here stops the
+!> process.  The interface seen by Python is declared in _engine.pyf.
+
+!> Run a deck and write its print file (see adore_driver_run::run_deck).
+subroutine adore_run_file(deck_path, out_path, steps, status, message)
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_driver_run, only: run_deck
+   implicit none
+   character(len=*), intent(in) :: deck_path   !< deck file path
+   character(len=*), intent(in) :: out_path    !< print file path to write
+   integer, intent(in) :: steps                !< -1 deck's count, 0 quasi-static only, n steps
+   integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
+   character(len=2048), intent(out) :: message !< error message, blank on success
+
+   type(error_type), allocatable :: error
+
+   call run_deck(deck_path, out_path, steps, error)
+   status = ADORE_OK
+   message = ""
+   if (allocated(error)) then
+      status = error%stat
+      message = error%message
+   end if
+end subroutine adore_run_file
+
+!> The engine's version string.
+subroutine adore_version(version)
+   use adore_core_version, only: adore_version_string
+   implicit none
+   character(len=32), intent(out) :: version
+
+   version = adore_version_string
+end subroutine adore_version

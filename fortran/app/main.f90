@@ -1,0 +1,105 @@
+!> The standalone `adore` program: `adore DECK [OUT.prt] [--steps N]`.
+!>
+!> The only place that ends the process: exit code 0 ok, 1 bad input, 2 engine failure.
+program adore
+   use adore_core_error, only: error_type, input_error, ADORE_OK
+   use adore_core_version, only: adore_version_string
+   use adore_driver_run, only: run_deck, STEPS_FROM_DECK
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   implicit none
+
+   type(error_type), allocatable :: error
+   character(len=:), allocatable :: deck_path, out_path, arg
+   integer :: i, nargs, steps, stat, dot
+
+   steps = STEPS_FROM_DECK
+   deck_path = ""
+   out_path = ""
+   nargs = command_argument_count()
+   i = 1
+   do while (i <= nargs)
+      call get_arg(i, arg)
+      select case (arg)
+      case ("-h", "--help")
+         call usage(output_unit)
+         call exit_with(ADORE_OK)
+      case ("--version")
+         write (output_unit, "(a)") "adore (pyadore) "//adore_version_string
+         call exit_with(ADORE_OK)
+      case ("--steps")
+         if (i == nargs) then
+            call input_error(error, "--steps needs a value")
+            exit
+         end if
+         i = i + 1
+         call get_arg(i, arg)
+         read (arg, *, iostat=stat) steps
+         if (stat /= 0) then
+            call input_error(error, "--steps: expected an integer, got '"//arg//"'")
+            exit
+         end if
+      case default
+         if (len(deck_path) == 0) then
+            deck_path = arg
+         else if (len(out_path) == 0) then
+            out_path = arg
+         else
+            call input_error(error, "unexpected argument '"//arg//"'")
+            exit
+         end if
+      end select
+      i = i + 1
+   end do
+
+   if (.not. allocated(error)) then
+      if (len(deck_path) == 0) then
+         call usage(error_unit)
+         call input_error(error, "no deck file given")
+      end if
+   end if
+   if (.not. allocated(error)) then
+      if (len(out_path) == 0) then
+         ! Default print file: the deck path with its extension replaced by .prt
+         dot = index(deck_path, ".", back=.true.)
+         if (dot > index(deck_path, "/", back=.true.) + 1) then
+            out_path = deck_path(:dot - 1)//".prt"
+         else
+            out_path = deck_path//".prt"
+         end if
+      end if
+      call run_deck(deck_path, out_path, steps, error)
+   end if
+
+   if (allocated(error)) then
+      write (error_unit, "(a)") "adore: error: "//error%message
+      call exit_with(error%stat)
+   end if
+   write (output_unit, "(a)") "print file written: "//out_path
+   call exit_with(ADORE_OK)
+
+contains
+
+   subroutine get_arg(n, value)
+      integer, intent(in) :: n
+      character(len=:), allocatable, intent(out) :: value
+      integer :: length
+
+      call get_command_argument(n, length=length)
+      allocate (character(len=length) :: value)
+      call get_command_argument(n, value)
+   end subroutine get_arg
+
+   subroutine usage(unit)
+      integer, intent(in) :: unit
+      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N]"
+      write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt)"
+      write (unit, "(a)") "  --steps N   -1 = as the deck says (default), 0 = quasi-static start only"
+   end subroutine usage
+
+   !> End the process with exit status `code` and nothing printed by the runtime.
+   subroutine exit_with(code)
+      integer, intent(in) :: code
+      stop code, quiet=.true.
+   end subroutine exit_with
+
+end program adore

@@ -1,0 +1,133 @@
+!> The deck as text: every line of the deck file, with its path, read in one go.
+!>
+!> This is the first stage of ADRIN (input): the file is checked to be a readable,
+!> non-empty text file and split into lines.  Record parsing works on these lines,
+!> so every field keeps its line number for error messages, and the print file's
+!> "Listing of input data records" reproduces the lines verbatim.
+module adore_deck_text
+   use adore_core_error, only: error_type, input_error
+   implicit none
+   private
+
+   public :: deck_line_t, deck_text_t, read_deck_text
+
+   !> One line of the deck, without its line terminator.
+   type :: deck_line_t
+      character(len=:), allocatable :: s
+   end type deck_line_t
+
+   !> All lines of a deck file and the path it was read from.
+   type :: deck_text_t
+      character(len=:), allocatable :: path
+      type(deck_line_t), allocatable :: lines(:)
+   end type deck_text_t
+
+contains
+
+   !> Read the deck file `path` into `text`.
+   !>
+   !> Input errors: the file is missing or unreadable, empty (no non-blank line),
+   !> or not text (NUL bytes or other control characters than TAB/CR/LF/FF).
+   subroutine read_deck_text(path, text, error)
+      character(len=*), intent(in) :: path
+      type(deck_text_t), intent(out) :: text
+      type(error_type), allocatable, intent(out) :: error
+
+      character(len=:), allocatable :: buffer
+      character(len=256) :: iomsg
+      integer :: unit, stat, nbytes, i, nlines, start, line_end
+      logical :: exists, any_content
+
+      text%path = path
+      if (len_trim(path) == 0) then
+         call input_error(error, "deck file: no path given")
+         return
+      end if
+      inquire (file=path, exist=exists)
+      if (.not. exists) then
+         call input_error(error, path//": deck file not found")
+         return
+      end if
+      open (newunit=unit, file=path, access="stream", form="unformatted", &
+            status="old", action="read", iostat=stat, iomsg=iomsg)
+      if (stat /= 0) then
+         call input_error(error, path//": cannot open deck file: "//trim(iomsg))
+         return
+      end if
+      inquire (unit=unit, size=nbytes)
+      if (nbytes < 0) then
+         close (unit)
+         call input_error(error, path//": cannot determine the size of the deck file")
+         return
+      end if
+      allocate (character(len=nbytes) :: buffer)
+      if (nbytes > 0) then
+         read (unit, iostat=stat, iomsg=iomsg) buffer
+         if (stat /= 0) then
+            close (unit)
+            call input_error(error, path//": cannot read deck file: "//trim(iomsg))
+            return
+         end if
+      end if
+      close (unit)
+
+      ! Text check: the first offending byte is reported by line and column.
+      nlines = 1
+      start = 1
+      do i = 1, nbytes
+         select case (iachar(buffer(i:i)))
+         case (10)
+            nlines = nlines + 1
+            start = i + 1
+         case (9, 12, 13)
+         case (0:8, 11, 14:31, 127)
+            call input_error(error, path//":"//itoa(nlines)//":"//itoa(i - start + 1)// &
+                             ": not a text file (control byte "//itoa(iachar(buffer(i:i)))// &
+                             "); an ADORE deck is plain text")
+            return
+         end select
+      end do
+
+      ! Split into lines at LF; a CR before the LF is dropped; a final line
+      ! terminator does not start a new line.
+      if (nbytes > 0) then
+         if (buffer(nbytes:nbytes) == achar(10)) nlines = nlines - 1
+      else
+         nlines = 0
+      end if
+      allocate (text%lines(nlines))
+      any_content = .false.
+      start = 1
+      do i = 1, nlines
+         line_end = index(buffer(start:), achar(10))
+         if (line_end == 0) then
+            line_end = nbytes + 1
+         else
+            line_end = start + line_end - 1
+         end if
+         ! buffer(start:line_end-1) is the line without its LF
+         text%lines(i)%s = buffer(start:line_end - 1)
+         if (len(text%lines(i)%s) > 0) then
+            if (text%lines(i)%s(len(text%lines(i)%s):) == achar(13)) &
+               text%lines(i)%s = text%lines(i)%s(:len(text%lines(i)%s) - 1)
+         end if
+         if (len_trim(text%lines(i)%s) > 0) any_content = .true.
+         start = line_end + 1
+      end do
+      if (.not. any_content) then
+         call input_error(error, path//": deck file is empty (no records)")
+         return
+      end if
+   end subroutine read_deck_text
+
+   !> Integer to left-aligned text.
+   pure function itoa(i) result(s)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: s
+      character(len=16) :: buf
+
+      write (buf, "(i0)") i
+      s = trim(buf)
+   end function itoa
+
+end module adore_deck_text

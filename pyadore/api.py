@@ -1,0 +1,59 @@
+"""Python facade: run a deck and get a :class:`Result`."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import _core
+from .errors import AdoreInputError
+
+__all__ = ["Result", "run", "STEPS_FROM_DECK"]
+
+#: ``steps`` value the engine reads as "as many time steps as the deck asks for".
+STEPS_FROM_DECK = -1
+
+
+@dataclass
+class Result:
+    """The outcome of one run: where the print file is and its text."""
+
+    deck_path: Path
+    print_path: Path
+    steps: int | None
+    text: str = field(repr=False)
+
+    def print_run(self):
+        """The print file parsed by :func:`pyadore.printout.read_print`."""
+        from .printout import read_print
+
+        return read_print(self.print_path)
+
+
+def run(deck_path, steps: int | None = None, out=None) -> Result:
+    """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
+
+    steps: ``None`` runs as many time steps as the deck asks for, ``0`` only the
+    quasi-static start, ``n`` stops after ``n`` time steps.
+    out: the print file to write; by default a file in a fresh temporary directory.
+    Raises :class:`~pyadore.errors.AdoreInputError` for bad input and
+    :class:`~pyadore.errors.AdoreEngineError` when the engine fails.
+    """
+    if steps is None:
+        engine_steps = STEPS_FROM_DECK
+    else:
+        if isinstance(steps, bool) or not isinstance(steps, int) or steps < 0:
+            raise AdoreInputError(f"steps must be None or an integer >= 0, got {steps!r}")
+        engine_steps = steps
+    deck = Path(os.fspath(deck_path))
+    if out is None:
+        out_path = Path(tempfile.mkdtemp(prefix="pyadore-")) / (deck.stem + ".prt")
+    else:
+        out_path = Path(os.fspath(out))
+        if out_path.parent and not out_path.parent.exists():
+            raise AdoreInputError(f"{out_path}: the output directory {out_path.parent} does not exist")
+    _core.run_file(deck, out_path, engine_steps)
+    return Result(deck_path=deck, print_path=out_path, steps=steps,
+                  text=out_path.read_text(encoding="utf-8", errors="replace"))

@@ -1,0 +1,95 @@
+"""The ``pyadore`` command line: run, validate and diff ADORE decks and print files.
+
+Bad input never shows a traceback: the message goes to stderr as one paragraph and
+the exit status is 1 (2 when the engine fails on a valid deck, or for ``diff`` when
+an input is unreadable).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import click
+
+from .errors import AdoreError
+
+CONTEXT = {"help_option_names": ["-h", "--help"]}
+
+
+def _fail(exc: AdoreError) -> None:
+    click.echo(f"pyadore: error: {exc}", err=True)
+    sys.exit(exc.status)
+
+
+def _version() -> str:
+    from . import __version__
+
+    return __version__
+
+
+@click.group(context_settings=CONTEXT)
+@click.version_option(version=_version(), prog_name="pyadore", message="%(prog)s %(version)s")
+def cli() -> None:
+    """pyadore: run ADORE 5.0 decks, validate them and compare print files."""
+
+
+@cli.command()
+@click.argument("deck", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("-o", "--out", type=click.Path(dir_okay=False, path_type=Path),
+              help="print file to write [default: out/<deck name>.prt]")
+@click.option("--steps", type=click.IntRange(min=0),
+              help="time steps to run; 0 = the quasi-static start only [default: as the deck says]")
+def run(deck: Path, out: Path | None, steps: int | None) -> None:
+    """Run DECK through the engine and write its print file."""
+    from .api import run as run_deck
+
+    if out is None:
+        out = Path("out") / (deck.stem + ".prt")
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        click.echo(f"pyadore: error: cannot create the output directory {out.parent}: {exc.strerror}", err=True)
+        sys.exit(1)
+    try:
+        result = run_deck(deck, steps=steps, out=out)
+    except AdoreError as exc:
+        _fail(exc)
+    click.echo(f"print file written: {result.print_path}")
+
+
+@cli.command()
+@click.argument("deck", type=click.Path(dir_okay=False, path_type=Path))
+def validate(deck: Path) -> None:
+    """Check DECK against the record schema; list every problem at once."""
+    from .deck import check_deck
+
+    parsed, problems = check_deck(deck)
+    if problems:
+        for problem in problems:
+            click.echo(problem.format(), err=True)
+        click.echo(f"{deck}: {len(problems)} problem(s)", err=True)
+        sys.exit(1)
+    click.echo(parsed.summary())
+
+
+@cli.command()
+@click.argument("run_file", metavar="RUN", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("golden", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--tolerances", type=click.Path(dir_okay=False, path_type=Path),
+              help="tolerance file [default: golden/tolerances.toml]")
+@click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
+def diff(run_file: Path, golden: Path, tolerances: Path | None, fmt: str) -> None:
+    """Compare print file RUN with GOLDEN within tolerances (exit 0 within, 1 outside, 2 unreadable)."""
+    from .diff import diff_command
+
+    sys.exit(diff_command(run_file, golden, tolerances, fmt))
+
+
+def main() -> None:
+    """Entry point of the ``pyadore`` script."""
+    cli(prog_name="pyadore")
+
+
+if __name__ == "__main__":
+    main()

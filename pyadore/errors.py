@@ -1,0 +1,34 @@
+"""Exception hierarchy shared by the deck tools, the engine bridge and the CLI.
+
+Every error a user can cause is an :class:`AdoreInputError`; a failure of the engine
+on a valid deck is an :class:`AdoreEngineError`.  Both derive from :class:`AdoreError`,
+so ``except pyadore.AdoreError`` catches everything pyadore raises on purpose.
+"""
+
+from __future__ import annotations
+
+__all__ = ["AdoreError", "AdoreInputError", "AdoreEngineError", "STATUS_OK", "STATUS_INPUT", "STATUS_ENGINE"]
+
+#: Status codes shared with the Fortran engine (fortran/core/error.f90) and used as
+#: process exit codes by the ``adore`` executable and the ``pyadore`` CLI.
+STATUS_OK = 0
+STATUS_INPUT = 1
+STATUS_ENGINE = 2
+
+
+class AdoreError(Exception):
+    """Base class of every error pyadore raises deliberately."""
+
+    status = STATUS_ENGINE
+
+
+class AdoreInputError(AdoreError):
+    """The deck (or another input file) is missing, unreadable or invalid."""
+
+    status = STATUS_INPUT
+
+
+class AdoreEngineError(AdoreError):
+    """The engine failed on an input it accepted (no convergence, numerical breakdown)."""
+
+    status = STATUS_ENGINE

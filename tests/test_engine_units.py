@@ -1,0 +1,66 @@
+"""Runs the engine's own unit tests (fortran/tests) through meson, and source-level rules."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+LIBRARY_DIRS = ["core", "deck", "output", "driver", "api"]
+
+
+def test_engine_unit_tests_pass(build_dir):
+    meson = Path(sys.executable).parent / "meson"
+    proc = subprocess.run([str(meson), "test", "-C", str(build_dir), "--print-errorlogs"],
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert re.search(r"^Ok:\s+[1-9]", proc.stdout, re.M), proc.stdout
+
+
+def _library_sources():
+    for sub in LIBRARY_DIRS:
+        yield from (ROOT / "fortran" / sub).rglob("*.f90")
+
+
+def test_library_code_never_stops_the_process():
+    offenders = []
+    for path in _library_sources():
+        for n, line in enumerate(path.read_text().splitlines(), 1):
+            code = line.split("!", 1)[0]
+            if re.search(r"(^|\)|;)\s*(error\s+)?stop\b", code.strip(), re.I) or re.search(r"\bcall\s+exit\b", code, re.I):
+                offenders.append(f"{path.relative_to(ROOT)}:{n}: {line.strip()}")
+    assert offenders == []
+
+
+def test_library_code_has_no_saved_state():
+    """No SAVE and no module variables: only parameters (constants) at module level."""
+    offenders = []
+    for path in _library_sources():
+        in_spec = False  # inside a module's specification part
+        in_type = 0
+        in_interface = 0
+        for n, line in enumerate(path.read_text().splitlines(), 1):
+            code = line.split("!", 1)[0].strip().lower()
+            if not code:
+                continue
+            if re.match(r"module\s+(?!procedure\b)\w+\s*$", code):
+                in_spec = True
+            elif re.match(r"contains\b", code) or re.match(r"end\s*module\b", code):
+                in_spec = False
+            if re.search(r"\bsave\b", code):
+                offenders.append(f"{path.relative_to(ROOT)}:{n}: {line.strip()}")
+            if re.match(r"(abstract\s+)?interface\b", code):
+                in_interface += 1
+            elif re.match(r"end\s*interface\b", code):
+                in_interface -= 1
+            if re.match(r"type\s*(,|::|\s+\w+\s*$)", code) and not code.startswith("type("):
+                in_type += 1
+            elif re.match(r"end\s*type\b", code):
+                in_type -= 1
+            elif (in_spec and in_type == 0 and in_interface == 0 and "::" in code and "parameter" not in code
+                  and not re.match(r"(use|public|private|procedure|import|generic|interface)\b", code)
+                  and not re.search(r"intent\s*\(", code)):
+                offenders.append(f"{path.relative_to(ROOT)}:{n}: {line.strip()}")
+    assert offenders == []
