@@ -18,7 +18,7 @@ from .errors import (
     AdoreInputError,
 )
 
-__all__ = ["check", "run_file", "engine_version"]
+__all__ = ["check", "run_file", "engine_version", "hertz_point"]
 
 
 def _engine():
@@ -59,3 +59,20 @@ def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: i
 def engine_version() -> str:
     """Version string compiled into the engine."""
     return _text(_engine().adore_version())
+
+
+def hertz_point(rho, e1: float, nu1: float, e2: float, nu2: float, load: float) -> dict:
+    """Hertz point contact (engine module adore_contact_hertz) as a dict of SI values.
+
+    rho: the four principal curvatures (1/m) [body 1 plane I, II, body 2 plane I, II],
+    concave negative.  Keys: kappa, a_star, b_star, delta_star, semi_major (m),
+    semi_minor (m), max_pressure (Pa), deflection (m), stiffness (N/m**1.5).
+    """
+    import numpy as np
+
+    values, status, message = _engine().adore_hertz_point(
+        np.asarray(rho, dtype=float), e1, nu1, e2, nu2, load)
+    check(int(status), message)
+    keys = ["kappa", "a_star", "b_star", "delta_star", "semi_major", "semi_minor",
+            "max_pressure", "deflection", "stiffness"]
+    return dict(zip(keys, (float(v) for v in values)))

@@ -1,0 +1,145 @@
+!> Hertz point contact: contact ellipse, load–deflection, maximum pressure.
+!>
+!> Classical Hertz theory as in Harris & Kotzalas (Rolling Bearing Analysis, ch. 6):
+!> the ellipticity kappa = a/b solves
+!>     F(rho) = ((kappa**2 + 1) E(m) - 2 K(m)) / ((kappa**2 - 1) E(m)),  m = 1 - 1/kappa**2,
+!> with F(rho) the curvature difference, and the dimensionless semi-axes and
+!> approach are
+!>     a* = (2 kappa**2 E / pi)**(1/3),  b* = (2 E / (pi kappa))**(1/3),
+!>     delta* = (2 K / pi) (pi / (2 kappa**2 E))**(1/3).
+!> Then with C = 3 Q / (2 sum rho) * ((1-nu1**2)/E1 + (1-nu2**2)/E2):
+!>     a = a* C**(1/3),  b = b* C**(1/3),  delta = delta* C**(2/3) sum rho / 2,
+!>     p_max = 3 Q / (2 pi a b).
+!> The elliptic integrals are exact (AGM), not the Hamrock–Brewe fits, so the
+!> ellipse is accurate to round-off.  Units SI throughout.
+module adore_contact_hertz
+   use adore_core_kinds, only: wp
+   use adore_core_elliptic, only: elliptic_ke
+   implicit none
+   private
+
+   public :: hertz_geometry_t, hertz_contact_t
+   public :: hertz_geometry, hertz_contact, hertz_load, curvature_difference
+
+   !> Load-independent part of a point contact: curvature sum/difference, ellipse shape.
+   type :: hertz_geometry_t
+      real(wp) :: curvature_sum = 0.0_wp   !< sum rho (1/m)
+      real(wp) :: curvature_diff = 0.0_wp  !< F(rho), 0 <= F < 1
+      real(wp) :: kappa = 1.0_wp           !< ellipticity a/b >= 1
+      real(wp) :: a_star = 1.0_wp          !< dimensionless major semi-axis
+      real(wp) :: b_star = 1.0_wp          !< dimensionless minor semi-axis
+      real(wp) :: delta_star = 1.0_wp      !< dimensionless approach
+      real(wp) :: compliance = 0.0_wp      !< (1-nu1**2)/E1 + (1-nu2**2)/E2 (1/Pa)
+      real(wp) :: stiffness = 0.0_wp       !< K_n in Q = K_n delta**1.5 (N/m**1.5)
+   end type hertz_geometry_t
+
+   !> A loaded point contact.
+   type :: hertz_contact_t
+      real(wp) :: load = 0.0_wp          !< normal load Q (N)
+      real(wp) :: deflection = 0.0_wp    !< elastic approach delta (m)
+      real(wp) :: semi_major = 0.0_wp    !< major half width a (m)
+      real(wp) :: semi_minor = 0.0_wp    !< minor half width b (m)
+      real(wp) :: max_pressure = 0.0_wp  !< maximum Hertz pressure (Pa)
+   end type hertz_contact_t
+
+   real(wp), parameter :: pi = acos(-1.0_wp)
+
+contains
+
+   !> Curvature difference F(rho) from the four principal curvatures (1/m).
+   !>
+   !> rho = [rho_I1, rho_II1, rho_I2, rho_II2]: body 1 (rolling element) in planes
+   !> I and II, then body 2 (race); concave curvatures negative (Harris eq. 6.3).
+   pure function curvature_difference(rho) result(f)
+      real(wp), intent(in) :: rho(4)
+      real(wp) :: f
+
+      f = abs((rho(1) - rho(2)) + (rho(3) - rho(4)))/sum(rho)
+   end function curvature_difference
+
+   !> F(kappa) of the Hertz ellipse, the right-hand side of the ellipticity equation.
+   pure function f_of_kappa(kappa) result(f)
+      real(wp), intent(in) :: kappa
+      real(wp) :: f, k, e, k2
+
+      k2 = kappa*kappa
+      call elliptic_ke(1.0_wp - 1.0_wp/k2, k, e)
+      f = ((k2 + 1.0_wp)*e - 2.0_wp*k)/((k2 - 1.0_wp)*e)
+   end function f_of_kappa
+
+   !> Geometry of a point contact from curvatures (1/m) and elastic constants (Pa, -).
+   !>
+   !> Solves F(kappa) = F(rho) by bisection on log(kappa) (F is monotonic in kappa),
+   !> to relative accuracy 1e-14.  A circular contact (F = 0) gives kappa = 1.
+   !> ok is .false. when sum rho <= 0 (no convex contact) or F(rho) >= 1.
+   pure subroutine hertz_geometry(rho, e1, nu1, e2, nu2, geo, ok)
+      real(wp), intent(in) :: rho(4), e1, nu1, e2, nu2
+      type(hertz_geometry_t), intent(out) :: geo
+      logical, intent(out) :: ok
+
+      real(wp) :: f, lo, hi, mid, k, e, k2
+      integer :: iter
+
+      ok = .false.
+      geo%curvature_sum = sum(rho)
+      if (.not. geo%curvature_sum > 0.0_wp) return
+      f = curvature_difference(rho)
+      geo%curvature_diff = f
+      if (f >= 1.0_wp) return
+      geo%compliance = (1.0_wp - nu1**2)/e1 + (1.0_wp - nu2**2)/e2
+
+      if (f <= 1.0e-14_wp) then
+         geo%kappa = 1.0_wp
+      else
+         lo = 0.0_wp              ! log(kappa) bracket
+         hi = log(1.0e6_wp)
+         do iter = 1, 200
+            mid = 0.5_wp*(lo + hi)
+            if (f_of_kappa(exp(mid)) > f) then
+               hi = mid
+            else
+               lo = mid
+            end if
+            if (hi - lo < 1.0e-14_wp) exit
+         end do
+         geo%kappa = exp(0.5_wp*(lo + hi))
+      end if
+
+      k2 = geo%kappa**2
+      call elliptic_ke(1.0_wp - 1.0_wp/k2, k, e)
+      geo%a_star = (2.0_wp*k2*e/pi)**(1.0_wp/3.0_wp)
+      geo%b_star = (2.0_wp*e/(pi*geo%kappa))**(1.0_wp/3.0_wp)
+      geo%delta_star = (2.0_wp*k/pi)*(pi/(2.0_wp*k2*e))**(1.0_wp/3.0_wp)
+      ! delta = delta* (3 Q c / (2 S))**(2/3) S/2  =>  Q = K_n delta**1.5
+      geo%stiffness = (2.0_wp*geo%curvature_sum/3.0_wp/geo%compliance) &
+                      *(2.0_wp/(geo%delta_star*geo%curvature_sum))**1.5_wp
+      ok = .true.
+   end subroutine hertz_geometry
+
+   !> Loaded contact for normal load q (N) on a contact of geometry geo.
+   pure function hertz_contact(geo, q) result(c)
+      type(hertz_geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: q
+      type(hertz_contact_t) :: c
+      real(wp) :: scale
+
+      c%load = max(q, 0.0_wp)
+      if (c%load <= 0.0_wp) return
+      scale = (1.5_wp*c%load*geo%compliance/geo%curvature_sum)**(1.0_wp/3.0_wp)
+      c%semi_major = geo%a_star*scale
+      c%semi_minor = geo%b_star*scale
+      c%deflection = geo%delta_star*scale**2*0.5_wp*geo%curvature_sum
+      c%max_pressure = 1.5_wp*c%load/(pi*c%semi_major*c%semi_minor)
+   end function hertz_contact
+
+   !> Normal load (N) for elastic approach delta (m): Q = K_n delta**1.5, 0 for delta <= 0.
+   elemental function hertz_load(geo, delta) result(q)
+      type(hertz_geometry_t), intent(in) :: geo
+      real(wp), intent(in) :: delta
+      real(wp) :: q
+
+      q = 0.0_wp
+      if (delta > 0.0_wp) q = geo%stiffness*delta**1.5_wp
+   end function hertz_load
+
+end module adore_contact_hertz
