@@ -1,0 +1,347 @@
+"""Numeric comparison of two ADORE print files (``pyadore diff RUN GOLDEN``).
+
+Steps are matched by step number (only the steps the golden file prints), tables by
+name, rows by index (element number, roller end, body name) and columns by name.  Each
+golden value is compared with the run's value under the tolerance rule that applies
+(``golden/tolerances.toml``; the last matching rule wins):
+``|run - golden| <= max(abs, rel * |golden|)``, where ``abs`` defaults to
+``rel * max |golden|`` over the same column of the same table (the zero rule).
+Golden values marked unknown (``?``) are skipped and counted.  The echo is compared
+exactly to printed precision.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .errors import AdoreInputError
+from .printout import PrintFormatError, read_print
+from .printout.model import OVERFLOW, UNKNOWN, UNKNOWN_VALUE, OVERFLOW_VALUE, PrintRun
+
+try:  # Python 3.11+
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover - Python 3.10
+    tomllib = None
+
+REPO_TOLERANCES = Path(__file__).resolve().parent.parent / "golden" / "tolerances.toml"
+
+__all__ = ["diff_prints", "diff_command", "DiffReport", "Comparison", "load_tolerances", "PrintFormatError"]
+
+
+@dataclass
+class Comparison:
+    """One compared (or skipped) golden value.
+
+    ``name`` is ``step <n> <table> <row> <column>`` (``echo <name>`` for the echo);
+    ``status`` is ``within``, ``outside``, ``unknown`` (golden marker, skipped) or
+    ``missing`` (the run lacks the value: counted as outside).
+    """
+
+    name: str
+    table: str
+    column: str
+    golden: object
+    run: object
+    status: str
+    rel_error: float = float("nan")
+    tolerance: str = ""
+
+
+@dataclass
+class DiffReport:
+    """Outcome of a comparison: every Comparison plus counts; ``exit_code`` 0 (all within) or 1."""
+
+    run_path: str
+    golden_path: str
+    tolerances_path: str
+    comparisons: list = field(default_factory=list)
+
+    def _count(self, *status: str) -> int:
+        return sum(1 for c in self.comparisons if c.status in status)
+
+    @property
+    def compared(self) -> int:
+        """Values compared (within + outside + missing)."""
+        return self._count("within", "outside", "missing")
+
+    @property
+    def within(self) -> int:
+        """Compared values within tolerance."""
+        return self._count("within")
+
+    @property
+    def outside(self) -> int:
+        """Compared values outside tolerance, including values missing from the run."""
+        return self._count("outside", "missing")
+
+    @property
+    def missing(self) -> int:
+        """Golden values the run does not print (counted in ``outside``)."""
+        return self._count("missing")
+
+    @property
+    def unknown(self) -> int:
+        """Golden values marked unknown (``?``): skipped, not compared."""
+        return self._count("unknown")
+
+    @property
+    def exit_code(self) -> int:
+        """0 when every compared value is within tolerance, 1 otherwise."""
+        return 0 if self.outside == 0 else 1
+
+    def offenders(self, limit: int | None = 10) -> list:
+        """Values outside tolerance, worst relative error first (missing ones last)."""
+        bad = [c for c in self.comparisons if c.status in ("outside", "missing")]
+        bad.sort(key=lambda c: (c.status == "missing", -(c.rel_error if not math.isnan(c.rel_error) else math.inf)))
+        return bad if limit is None else bad[:limit]
+
+    def column_max(self) -> dict:
+        """Largest relative error per ``table.column`` over the compared values."""
+        out: dict = {}
+        for c in self.comparisons:
+            if c.status in ("within", "outside") and not math.isnan(c.rel_error):
+                key = f"{c.table}.{c.column}"
+                out[key] = max(out.get(key, 0.0), c.rel_error)
+        return out
+
+    def render(self, fmt: str = "text") -> str:
+        """The report as ``text`` (counts, worst offenders, per-column maxima) or ``json``."""
+        if fmt == "json":
+            def num(v):
+                if isinstance(v, float) and (math.isnan(v) or math.isinf(v)):
+                    return None
+                return v if isinstance(v, (int, float, str)) or v is None else repr(v)
+            return json.dumps({
+                "run": self.run_path, "golden": self.golden_path, "tolerances": self.tolerances_path,
+                "compared": self.compared, "within": self.within, "outside": self.outside,
+                "missing": self.missing, "unknown": self.unknown, "exit_code": self.exit_code,
+                "offenders": [{"name": c.name, "golden": num(c.golden), "run": num(c.run), "status": c.status,
+                               "rel_error": num(c.rel_error), "tolerance": c.tolerance}
+                              for c in self.offenders(None)],
+                "column_max_rel_error": self.column_max(),
+            }, indent=2)
+        if fmt != "text":
+            raise ValueError(f"unknown report format {fmt!r} (text or json)")
+        lines = [f"run:        {self.run_path}", f"golden:     {self.golden_path}",
+                 f"tolerances: {self.tolerances_path}",
+                 f"compared {self.compared}  within {self.within}  outside {self.outside}"
+                 f" (missing {self.missing})  unknown {self.unknown} (golden '?', not compared)"]
+        off = self.offenders(20)
+        if off:
+            lines.append("")
+            lines.append(f"worst offenders ({len(off)} of {self.outside}):")
+            lines.append(f"  {'name':<60} {'golden':>12} {'run':>12} {'rel err':>10}  tolerance")
+            for c in off:
+                g = _show(c.golden)
+                r = _show(c.run)
+                e = "-" if math.isnan(c.rel_error) else f"{c.rel_error:.3%}"
+                lines.append(f"  {c.name:<60} {g:>12} {r:>12} {e:>10}  {c.tolerance}")
+        cm = self.column_max()
+        if cm:
+            lines.append("")
+            lines.append("largest relative error per column:")
+            for key in sorted(cm):
+                lines.append(f"  {key:<52} {cm[key]:.3%}")
+        lines.append("")
+        lines.append("result: " + ("all compared values within tolerance" if self.exit_code == 0
+                                   else f"{self.outside} value(s) outside tolerance"))
+        return "\n".join(lines)
+
+
+def _show(v) -> str:
+    if isinstance(v, float):
+        return "nan" if math.isnan(v) else f"{v:.4E}"
+    return str(v)
+
+
+# ----------------------------------------------------------------------------- tolerances
+@dataclass
+class _Rule:
+    step: str
+    table: str
+    columns: tuple
+    rel: float
+    abs: float | None
+
+    def matches(self, step_kind: set, table: str, column: str) -> bool:
+        if self.step != "any" and self.step not in step_kind:
+            return False
+        if self.table not in ("*", table):
+            return False
+        return "*" in self.columns or column in self.columns
+
+
+def load_tolerances(path) -> tuple[float, list]:
+    """Read a tolerance file: (default relative tolerance, rules in file order).
+
+    Raises PrintFormatError naming the file when it is unreadable or malformed.
+    """
+    p = Path(path)
+    if tomllib is None:  # pragma: no cover
+        raise PrintFormatError(f"{p}: reading tolerance files needs Python 3.11 (tomllib)")
+    try:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise PrintFormatError(f"{p}: cannot read the tolerance file: {exc.strerror or exc}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise PrintFormatError(f"{p}: not a valid TOML tolerance file: {exc}") from None
+    try:
+        default = float(data.get("defaults", {}).get("rel", 0.01))
+        rules = []
+        for k, r in enumerate(data.get("rule", []), 1):
+            step = r.get("step", "any")
+            if step not in ("initial", "final", "any"):
+                raise ValueError(f"rule {k}: step must be initial, final or any, not {step!r}")
+            cols = r.get("columns", ["*"])
+            if isinstance(cols, str):
+                cols = [cols]
+            rel = float(r["rel"])
+            ab = r.get("abs")
+            if rel < 0 or (ab is not None and float(ab) < 0):
+                raise ValueError(f"rule {k}: tolerances must not be negative")
+            rules.append(_Rule(step, r.get("table", "*"), tuple(cols), rel, None if ab is None else float(ab)))
+    except (KeyError, TypeError, ValueError) as exc:
+        raise PrintFormatError(f"{p}: malformed tolerance rule: {exc}") from None
+    return default, rules
+
+
+def _rule_for(default: float, rules: list, kinds: set, table: str, column: str) -> _Rule:
+    found = _Rule("any", "*", ("*",), default, None)
+    for r in rules:
+        if r.matches(kinds, table, column):
+            found = r
+    return found
+
+
+# ----------------------------------------------------------------------------- comparing
+def _compare_value(name, table, column, g, gmark, r, rmark, rule: _Rule, scale: float) -> Comparison:
+    tol = f"rel {rule.rel:g}" + (f", abs {rule.abs:g}" if rule.abs is not None else "")
+    if gmark == UNKNOWN:
+        return Comparison(name, table, column, "?", r, "unknown", tolerance=tol)
+    if rmark == UNKNOWN or r is None:
+        return Comparison(name, table, column, g, "?" if rmark == UNKNOWN else None, "missing", tolerance=tol)
+    if gmark == OVERFLOW or rmark == OVERFLOW:
+        ok = gmark == rmark
+        return Comparison(name, table, column, "****" if gmark else g, "****" if rmark else r,
+                          "within" if ok else "outside", 0.0 if ok else math.inf, tol)
+    atol = rule.abs if rule.abs is not None else rule.rel * scale
+    diff = abs(r - g)
+    rel_err = diff / abs(g) if g != 0 else (0.0 if diff == 0 else math.inf)
+    ok = diff <= max(atol, rule.rel * abs(g))
+    return Comparison(name, table, column, g, r, "within" if ok else "outside", rel_err, tol)
+
+
+def _compare_echo(report: DiffReport, golden: PrintRun, run: PrintRun) -> None:
+    for key, g in golden.echo.items():
+        name = f"echo {key}"
+        r = run.echo.get(key)
+        if g is UNKNOWN_VALUE:
+            report.comparisons.append(Comparison(name, "echo", key, "?", r, "unknown", tolerance="printed"))
+            continue
+        if r is None or r is UNKNOWN_VALUE:
+            report.comparisons.append(Comparison(name, "echo", key, g, r, "missing", tolerance="printed"))
+            continue
+        if isinstance(g, float) and isinstance(r, (int, float)) and r is not OVERFLOW_VALUE:
+            # half a unit in the 5th decimal of the ES12.5 mantissa
+            half_ulp = 0.5 * 10.0 ** (math.floor(math.log10(abs(g))) - 5) if g != 0 else 0.0
+            diff = abs(float(r) - g)
+            ok = diff <= half_ulp * (1 + 1e-9)
+            rel = diff / abs(g) if g else (0.0 if diff == 0 else math.inf)
+        else:
+            ok = (g == r) if not isinstance(g, str) else str(r).split() == g.split()
+            rel = 0.0 if ok else math.inf
+        report.comparisons.append(Comparison(name, "echo", key, g, r, "within" if ok else "outside", rel, "printed"))
+
+
+def _compare_scalars(report, table, gvals, gmarks, rvals, rmarks, rule_of) -> None:
+    for col, g in gvals.items():
+        rule = rule_of(table, col)
+        r = rvals.get(col) if rvals else None
+        rm = (rmarks or {}).get(col, "")
+        report.comparisons.append(_compare_value(f"{table} {col}", table, col, g, gmarks.get(col, ""), r, rm,
+                                                 rule, abs(g) if isinstance(g, (int, float)) and not math.isnan(g) else 0.0))
+
+
+def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None) -> DiffReport:
+    """Compare two parsed print files; see :func:`diff_prints`."""
+    tpath = Path(tolerances_path) if tolerances_path else _default_tolerances(Path(golden.path))
+    default, rules = load_tolerances(tpath)
+    report = DiffReport(run.path, golden.path, str(tpath))
+    _compare_echo(report, golden, run)
+    numbers = golden.step_numbers
+    for n in numbers:
+        kinds = {"any"} | ({"initial"} if n == numbers[0] else set()) | ({"final"} if n == numbers[-1] else set())
+
+        def rule_of(table, col, kinds=kinds):
+            return _rule_for(default, rules, kinds, table, col)
+
+        gstep = golden.steps[n]
+        rstep = run.steps.get(n)
+        _compare_scalars(report, f"step {n} header", gstep.header, gstep.markers.get("header", {}),
+                         rstep.header if rstep else None, rstep.markers.get("header", {}) if rstep else None,
+                         lambda t, c: rule_of("header", c))
+        for tname, gdf in gstep.tables.items():
+            gm = gstep.markers[tname]
+            rdf = rstep.tables.get(tname) if rstep else None
+            rm = rstep.markers.get(tname) if rstep else None
+            for col in gdf.columns:
+                rule = rule_of(tname, col)
+                known = gdf[col][gm[col] == ""].abs()
+                scale = float(known.max()) if len(known) else 0.0
+                for idx in gdf.index:
+                    label = "/".join(str(x) for x in idx) if isinstance(idx, tuple) else str(idx)
+                    name = f"step {n} {tname} {label} {col}"
+                    r = rmark = None
+                    if rdf is not None and col in rdf.columns and rdf.index.nlevels == gdf.index.nlevels:
+                        try:
+                            r = float(rdf.at[idx, col])
+                            rmark = rm.at[idx, col]
+                        except (KeyError, TypeError, ValueError):
+                            r = rmark = None
+                    report.comparisons.append(_compare_value(name, tname, col, float(gdf.at[idx, col]),
+                                                             gm.at[idx, col], r, rmark, rule, scale))
+    for table, gvals, gmarks, rvals, rmarks in (
+            ("termination", golden.termination, golden.termination_markers, run.termination, run.termination_markers),
+            ("statistics", golden.statistics, golden.statistics_markers, run.statistics, run.statistics_markers)):
+        _compare_scalars(report, table, gvals, gmarks, rvals, rmarks,
+                         lambda t, c: _rule_for(default, rules, {"any"}, t, c))
+    return report
+
+
+def _default_tolerances(golden_path: Path) -> Path:
+    local = golden_path.resolve().parent / "tolerances.toml"
+    return local if local.is_file() else REPO_TOLERANCES
+
+
+def diff_prints(run_path, golden_path, tolerances_path=None) -> DiffReport:
+    """Compare print file ``run_path`` with ``golden_path`` within tolerances.
+
+    The tolerance file defaults to ``tolerances.toml`` next to the golden file, else the
+    repository's ``golden/tolerances.toml``.  Raises PrintFormatError for an unreadable or
+    malformed print or tolerance file.
+    """
+    golden = read_print(golden_path)
+    run = read_print(run_path)
+    return diff_runs(run, golden, tolerances_path)
+
+
+def diff_command(run, golden, tolerances=None, fmt: str = "text") -> int:
+    """CLI body of ``pyadore diff``: print the report, return 0 (within), 1 (outside) or 2 (unreadable).
+
+    Never raises for bad input: the message goes to stderr as one paragraph.
+    """
+    try:
+        report = diff_prints(run, golden, tolerances)
+        text = report.render(fmt)
+    except AdoreInputError as exc:
+        print(f"pyadore: error: {exc}", file=sys.stderr)
+        return 2
+    except ValueError as exc:
+        print(f"pyadore: error: {exc}", file=sys.stderr)
+        return 2
+    print(text)
+    return report.exit_code

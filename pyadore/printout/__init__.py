@@ -1,0 +1,15 @@
+"""Reading (and writing) ADORE 5.0 print files in the fixed layout of docs/print-layout.md.
+
+``read_print(path)`` parses golden files and engine output alike; ``write_step_tables``
+and friends format tables in the same layout (used to build golden files and in tests).
+"""
+
+from .model import (OVERFLOW, OVERFLOW_VALUE, UNKNOWN, UNKNOWN_VALUE, PrintFormatError, PrintRun, Step,
+                    parse_field, parse_number)
+from .reader import read_print
+from .writer import format_step, format_table, format_value
+
+__all__ = [
+    "read_print", "PrintRun", "Step", "PrintFormatError", "UNKNOWN", "OVERFLOW", "UNKNOWN_VALUE",
+    "OVERFLOW_VALUE", "parse_field", "parse_number", "format_step", "format_table", "format_value",
+]

@@ -1,0 +1,142 @@
+"""Data model of a parsed print file and the parsing of single fields.
+
+A :class:`PrintRun` holds the banner facts, the input echo as named values, every
+printed step (:class:`Step`) with its tables as pandas DataFrames, the termination line
+and the run statistics.  Table values are floats in the units named by the column suffix
+(``_N``, ``_m``, ``_deg`` ...); a field that is unknown (golden ``?``) or overflowed
+(Fortran ``****``) is NaN in the values frame and flagged in the parallel marker frame.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import pandas as pd
+
+from ..errors import AdoreInputError
+
+#: Marker codes used in :attr:`Step.markers` (``""`` = an ordinary printed value).
+UNKNOWN = "unknown"
+OVERFLOW = "overflow"
+
+
+class PrintFormatError(AdoreInputError):
+    """A print file is missing, unreadable or does not follow docs/print-layout.md."""
+
+
+class _Marker:
+    """A non-numeric echo value: :data:`UNKNOWN_VALUE` or :data:`OVERFLOW_VALUE`."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def __repr__(self) -> str:
+        return self.name.upper()
+
+
+UNKNOWN_VALUE = _Marker(UNKNOWN)
+OVERFLOW_VALUE = _Marker(OVERFLOW)
+
+_FLOAT = re.compile(r"^[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+|[-+]\d{2,3})?$")
+_INT = re.compile(r"^[-+]?\d+$")
+#: One numeric token, also when several are run together (``1.0E+00-2.0E-01``).
+NUMBER_TOKEN = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+)(?:[EeDd][-+]?\d+|[-+]\d{3})|[-+]?\d+|\?|\*+")
+
+
+def parse_number(text: str) -> float | None:
+    """Parse one Fortran real or integer (``1.234E+05``, ``1.234D+05``, ``1.234-100``); None if not a number."""
+    t = text.strip()
+    if not _FLOAT.match(t):
+        return None
+    t = t.replace("D", "E").replace("d", "E")
+    if "E" not in t and "e" not in t:
+        m = re.match(r"^([-+]?[\d.]+)([-+]\d{2,3})$", t)
+        if m:
+            t = m.group(1) + "E" + m.group(2)
+    return float(t)
+
+
+def parse_field(text: str) -> tuple[float, str] | None:
+    """Parse one table field: (value, marker) with marker "", UNKNOWN or OVERFLOW; None if invalid."""
+    t = text.strip()
+    if t == "?":
+        return float("nan"), UNKNOWN
+    if t and set(t) == {"*"}:
+        return float("nan"), OVERFLOW
+    v = parse_number(t)
+    if v is None:
+        return None
+    return v, ""
+
+
+def parse_echo_token(text: str):
+    """Parse one echo value token: int, float, UNKNOWN_VALUE or OVERFLOW_VALUE; None if not a value."""
+    t = text.strip()
+    if t == "?":
+        return UNKNOWN_VALUE
+    if t and set(t) == {"*"}:
+        return OVERFLOW_VALUE
+    if _INT.match(t):
+        return int(t)
+    return parse_number(t)
+
+
+@dataclass
+class Step:
+    """One printed step: header values and its tables.
+
+    ``header`` holds tau (dimensionless), time (s) and the race rotations (rev).
+    ``tables`` maps a table name (``re_contact``, ``re_motion``, ``re_traction``,
+    ``re_thermal``, ``slices_<roller>``, ``re_cage``, ``race_cage``, ``bodies``, ``loads``,
+    ``accelerations``, ``performance``, ``summary``) to a float DataFrame; ``markers`` has
+    the same shape with "" / "unknown" / "overflow" per cell.
+    """
+
+    number: int
+    header: dict = field(default_factory=dict)
+    run_id: str = ""
+    tables: dict = field(default_factory=dict)
+    markers: dict = field(default_factory=dict)
+
+    def table(self, name: str) -> pd.DataFrame:
+        """The DataFrame of table ``name`` (KeyError naming the available tables if absent)."""
+        try:
+            return self.tables[name]
+        except KeyError:
+            raise KeyError(f"step {self.number} has no table {name!r}; it has {sorted(self.tables)}") from None
+
+
+@dataclass
+class PrintRun:
+    """A whole print file: banner facts, echo, steps (by step number), termination, statistics.
+
+    ``echo`` maps ``block.label`` names (snake_case, units as suffix, ``[i]`` for the i-th
+    of several values on one label) to int, float, str, UNKNOWN_VALUE or OVERFLOW_VALUE.
+    ``termination`` has ``last_step_number`` and ``final_time`` (dimensionless tau);
+    ``statistics`` has the step sizes and truncation (dimensionless) and the derivative calls;
+    ``termination_markers`` / ``statistics_markers`` flag unknown or overflowed entries.
+    """
+
+    path: str
+    bearing_type: str = ""
+    program_mode: int | None = None
+    run_id: str = ""
+    echo: dict = field(default_factory=dict)
+    steps: dict = field(default_factory=dict)
+    termination: dict = field(default_factory=dict)
+    statistics: dict = field(default_factory=dict)
+    termination_markers: dict = field(default_factory=dict)
+    statistics_markers: dict = field(default_factory=dict)
+
+    @property
+    def step_numbers(self) -> list[int]:
+        """Printed step numbers in ascending order."""
+        return sorted(self.steps)
+
+    def step(self, number: int) -> Step:
+        """The step printed with ``number`` (KeyError naming the printed steps if absent)."""
+        try:
+            return self.steps[number]
+        except KeyError:
+            raise KeyError(f"{self.path}: no step {number}; printed steps are {self.step_numbers}") from None
