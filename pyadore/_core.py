@@ -18,7 +18,8 @@ from .errors import (
     AdoreInputError,
 )
 
-__all__ = ["check", "run_file", "engine_version", "hertz_point"]
+__all__ = ["check", "run_file", "engine_version", "hertz_point", "ball_quasi_static",
+           "ball_race_jacobian", "race_control", "mount_races"]
 
 
 def _engine():
@@ -76,3 +77,72 @@ def hertz_point(rho, e1: float, nu1: float, e2: float, nu2: float, load: float) 
     keys = ["kappa", "a_star", "b_star", "delta_star", "semi_major", "semi_minor",
             "max_pressure", "deflection", "stiffness"]
     return dict(zip(keys, (float(v) for v in values)))
+
+
+BALL_QS_COLUMNS = ["x", "r", "alpha_o", "alpha_i", "q_o", "q_i", "delta_o", "delta_i",
+                   "a_o", "a_i", "b_o", "b_i", "p_o", "p_i", "centrifugal"]
+
+
+def _ball_qs_args(geom, load, solve_moment, orbital_speed):
+    import numpy as np
+
+    return (np.asarray(geom, dtype=float), np.asarray(load, dtype=float),
+            np.asarray(solve_moment, dtype=np.int32), np.asarray(orbital_speed, dtype=float))
+
+
+def ball_quasi_static(geom, load, solve_moment, orbital_speed) -> dict:
+    """Quasi-static ball-bearing equilibrium (engine module adore_quasistatic_ball_equilibrium).
+
+    geom(13), load(11), solve_moment(2) as documented in fortran/api/quasistatic.f90;
+    orbital_speed: per-ball orbital speeds (rad/s).  Returns per-ball arrays under the
+    names of BALL_QS_COLUMNS (SI, angles in rad) and the race results ``u`` (5),
+    ``inner_force``, ``inner_moment``, ``outer_force``, ``outer_moment`` (3 each),
+    ``race_residual`` (5), ``max_ball_residual`` and ``iterations``.
+    """
+    balls, race, status, message = _engine().adore_ball_qs(*_ball_qs_args(geom, load, solve_moment,
+                                                                          orbital_speed))
+    check(int(status), message)
+    out = {name: balls[:, k].copy() for k, name in enumerate(BALL_QS_COLUMNS)}
+    out.update(u=race[0:5].copy(), inner_force=race[5:8].copy(), inner_moment=race[8:11].copy(),
+               outer_force=race[11:14].copy(), outer_moment=race[14:17].copy(),
+               race_residual=race[17:22].copy(), max_ball_residual=float(race[22]),
+               iterations=int(race[23]))
+    return out
+
+
+def ball_race_jacobian(geom, load, solve_moment, orbital_speed, u):
+    """Inner race residual (5) and analytic Jacobian (5 x 5) at race position ``u``."""
+    import numpy as np
+
+    res, jac, status, message = _engine().adore_ball_race_jacobian(
+        *_ball_qs_args(geom, load, solve_moment, orbital_speed), np.asarray(u, dtype=float))
+    check(int(status), message)
+    return res.copy(), jac.copy()
+
+
+def race_control(d, r_b, n_o, n_i, w_o, w_i, control: int):
+    """Race-control ball kinematics: (orbital speed, spin speed (rad/s), pitch (rad))."""
+    import numpy as np
+
+    kin, status, message = _engine().adore_race_control(
+        float(d), float(r_b), np.asarray(n_o, dtype=float), np.asarray(n_i, dtype=float),
+        float(w_o), float(w_i), int(control))
+    check(int(status), message)
+    return float(kin[0]), float(kin[1]), float(kin[2])
+
+
+def mount_races(rings, fits, speeds, dia_play: float) -> dict:
+    """Effective fits, raceway displacements and internal clearance (adore_mounting_fits).
+
+    rings: 4 rows (shaft, inner race, outer race, housing) of [inner diameter, outer
+    diameter (m), E (Pa), nu, density (kg/m**3)]; fits, speeds: [inner, outer] (m, rad/s).
+    """
+    import numpy as np
+
+    result, status, message = _engine().adore_mount_races(
+        np.asarray(rings, dtype=float).T.copy(order="F"), np.asarray(fits, dtype=float),
+        np.asarray(speeds, dtype=float), float(dia_play))
+    check(int(status), message)
+    keys = ["inner_fit", "outer_fit", "inner_pressure", "outer_pressure", "inner_raceway_growth",
+            "outer_raceway_shrink", "clearance"]
+    return dict(zip(keys, (float(v) for v in result)))
