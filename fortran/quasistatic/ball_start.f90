@@ -1,0 +1,75 @@
+!> The quasi-static start of a ball bearing: mechanics and kinematics made consistent
+!> (ADORE step 0; report sections 3.1 and 4.4.7).
+!>
+!> The centrifugal force of each ball depends on its orbital speed, and the orbital speed
+!> (race control) depends on the contact angles: solve the equilibrium for the current
+!> speeds, update the speeds from the contact angles, and repeat until the speeds change
+!> by less than 1e-12 relative.  The equilibrium is warm-started from the previous pass.
+!> The report's start chooses the spin-axis pitch by minimum contact dissipation (needs
+!> traction, issue "Step-0 tribology"); until then race control is used (ADORE's
+!> kAngVel alternative), outer race control by default.
+module adore_quasistatic_ball_start
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, engine_error
+   use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t, &
+                                                 solve_ball_equilibrium
+   use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, race_control_kinematics
+   implicit none
+   private
+
+   public :: ball_start_t, solve_ball_start
+
+   !> The consistent start: equilibrium plus the kinematics of every ball.
+   type :: ball_start_t
+      type(ball_qs_solution_t) :: equilibrium
+      type(ball_kinematics_t), allocatable :: kinematics(:)
+      integer :: passes = 0                !< mechanics/kinematics passes
+   end type ball_start_t
+
+contains
+
+   !> Solve the coupled start for race speeds w_outer, w_inner (rad/s); control selects
+   !> the race-control hypothesis (CONTROL_OUTER or CONTROL_INNER).
+   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error)
+      type(ball_qs_bearing_t), intent(in) :: b
+      type(ball_qs_load_t), intent(in) :: ld
+      real(wp), intent(in) :: w_outer, w_inner
+      integer, intent(in) :: control
+      type(ball_start_t), intent(out) :: start
+      type(error_type), allocatable, intent(out) :: error
+
+      real(wp), allocatable :: speed(:), new_speed(:)
+      real(wp) :: d_i(2), d_o(2), change
+      integer :: pass, k
+
+      allocate (speed(b%n_balls), new_speed(b%n_balls), start%kinematics(b%n_balls))
+      ! first guess: the epicyclic speed of a ball at the pitch diameter and zero angles
+      speed = 0.5_wp*(w_inner*(1.0_wp - b%d/b%dm) + w_outer*(1.0_wp + b%d/b%dm))
+      do pass = 1, 50
+         call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
+         if (allocated(error)) return
+         do k = 1, b%n_balls
+            d_o = start%equilibrium%n_o(:, k)
+            d_i = start%equilibrium%n_i(:, k)
+            start%kinematics(k) = race_control_kinematics(b%d, start%equilibrium%r(k), d_o, d_i, &
+                                                          w_outer, w_inner, control)
+            if (.not. start%kinematics(k)%ok) then
+               call engine_error(error, "ball start: race control kinematics has no solution")
+               return
+            end if
+            new_speed(k) = start%kinematics(k)%orbital_speed
+         end do
+         change = maxval(abs(new_speed - speed))/max(maxval(abs(new_speed)), tiny(1.0_wp))
+         speed = new_speed
+         start%passes = pass
+         if (change <= 1.0e-12_wp) exit
+      end do
+      if (change > 1.0e-12_wp) then
+         call engine_error(error, "ball start: orbital speeds and equilibrium did not become consistent")
+         return
+      end if
+      ! final equilibrium at the converged speeds
+      call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
+   end subroutine solve_ball_start
+
+end module adore_quasistatic_ball_start
