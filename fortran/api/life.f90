@@ -2,17 +2,17 @@
 
 !> Default fatigue constants (report section 3.2, Tables 3-4, Appendix C echo).
 !>
-!> constants(28) in the order documented at life_params_to_array
+!> constants(29) in the order documented at life_params_to_array
 !> (fortran/life/lundberg_palmgren.f90); units SI.
 subroutine adore_life_default_constants(constants)
    use adore_core_kinds, only: wp
    use adore_life_lundberg_palmgren, only: life_params_t, life_params_to_array
    implicit none
-   real(wp), intent(out) :: constants(28)
+   real(wp), intent(out) :: constants(29)
 
    type(life_params_t) :: defaults
 
-   constants = life_params_to_array(defaults)   ! shapes checked at compile time (LIFE_N_CONSTANTS = 28)
+   constants = life_params_to_array(defaults)   ! shapes checked at compile time (LIFE_N_CONSTANTS = 29)
 end subroutine adore_life_default_constants
 
 !> Basic (Lundberg-Palmgren) and modified (Tallian) life of a ball bearing,
@@ -26,7 +26,7 @@ end subroutine adore_life_default_constants
 !> hoop_outer, hoop_inner race hoop stress (Pa); d_ball, d_pitch (m); f_outer,
 !> f_inner groove curvature factors; outer_speed, inner_speed race speeds (rpm);
 !> outer_rotating, inner_rotating = 1 when the race turns relative to the load;
-!> constants(28) as adore_life_default_constants.
+!> constants(29) as adore_life_default_constants.
 !> result = [basic outer, basic inner, basic bearing, modified outer,
 !>           modified inner, modified bearing (all hours), Psi outer, Psi inner];
 !> lives_outer, lives_inner: contact lives (10**6 relative revolutions).
@@ -49,7 +49,7 @@ subroutine adore_life_ball_bearing(m, q_outer, q_inner, alpha_outer, alpha_inner
    real(wp), intent(in) :: hoop_outer, hoop_inner, d_ball, d_pitch, f_outer, f_inner
    real(wp), intent(in) :: outer_speed, inner_speed
    integer, intent(in) :: outer_rotating, inner_rotating
-   real(wp), intent(in) :: constants(28)
+   real(wp), intent(in) :: constants(29)
    real(wp), intent(out) :: result(8), lives_outer(m), lives_inner(m)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
@@ -65,6 +65,10 @@ subroutine adore_life_ball_bearing(m, q_outer, q_inner, alpha_outer, alpha_inner
    rel = abs(inner_speed - outer_speed)
    if (m < 1) then
       message = "life: need at least one rolling element"
+   else if (any(alpha_outer /= alpha_outer) .or. any(alpha_inner /= alpha_inner) .or. &
+            any(orbital_speed /= orbital_speed) .or. any(q_outer /= q_outer) .or. any(q_inner /= q_inner) .or. &
+            any(p_max_outer /= p_max_outer) .or. any(p_max_inner /= p_max_inner)) then
+      message = "life: loads, contact angles, orbital speeds and pressures must be numbers (NaN given)"
    else if (d_ball <= 0.0_wp .or. d_pitch <= d_ball) then
       message = "life: need 0 < ball diameter < pitch diameter"
    else if (f_outer <= 0.5_wp .or. f_inner <= 0.5_wp) then
@@ -79,6 +83,8 @@ subroutine adore_life_ball_bearing(m, q_outer, q_inner, alpha_outer, alpha_inner
       message = "life: constants 1-12 must be > 0 and beta (constant 10) > 1"
    else if (constants(22) < 0.0_wp .or. constants(23) <= 0.0_wp .or. constants(28) <= 0.0_wp) then
       message = "life: need sigma_rms >= 0, theta_rms > 0 and E' > 0 (constants 22, 23, 28)"
+   else if (constants(29) /= 0.0_wp .and. constants(29) /= 1.0_wp) then
+      message = "life: stationary_rule (constant 29) must be 0 (report) or 1 (Lundberg-Palmgren)"
    else
       status = ADORE_OK
    end if

@@ -9,13 +9,20 @@
 !> Lives are in millions of relative race revolutions (inner race relative to
 !> outer race); life_hours converts them at the relative race speed.
 !>
-!> What the report leaves open, settled by reproducing its Appendix C print
-!> (Basic Fatigue Life 533.4 h at step 0, 551.5 h at step 2500; see
-!> docs/life-model.md): the exponent x of D/d_m is 0.3 (Harris [22]; the text
-!> of eq 74 prints 0.39), n counts cycle_factor = 2 times the ball passes per
-!> relative revolution, and the contacts of one race combine as
-!>     rotating race:   1/N = sum_k 1/N_k          (each point sees every load)
-!>     stationary race: N**(-e) = sum_k N_k**(-e)   (each load has its own track part)
+!> What the report leaves open (docs/life-model.md, "Basic life"):
+!>  * x = 0.3, the Lundberg-Palmgren / Harris exponent of D/d_m (the text of
+!>    eq 74 prints 0.39).  Literature value.
+!>  * n = cycle_factor * (ball passes per relative revolution), cycle_factor = 2:
+!>    the Lundberg-Palmgren constant (A ~ 98 N/mm**1.8) goes with Z (1 +- gamma),
+!>    twice the passes.  Literature convention.
+!>  * contacts of one race combine as
+!>      rotating race:   1/N = sum_k 1/N_k   (cube-mean load; Lundberg-Palmgren)
+!>      stationary race: N**(-e) = w sum_k N_k**(-e)
+!>    with w = 1 (stationary_rule = 0, default) or w = m**(e-1) (stationary_rule
+!>    = 1, the Lundberg-Palmgren / ISO 16281 10/3-power mean over the m rolling
+!>    elements).  w = 1 is NOT Lundberg-Palmgren: it is the rule that reproduces
+!>    the report's printed basic life; it gives a stationary race m**0.1 times
+!>    the Lundberg-Palmgren life.
 module adore_life_lundberg_palmgren
    use adore_core_kinds, only: wp
    implicit none
@@ -59,10 +66,12 @@ module adore_life_lundberg_palmgren
       real(wp) :: hoop_factor = 0.834_wp         !< weight of hoop stress in s_stat, eq 93
       real(wp) :: sigma_residual = 0.0_wp        !< residual stress (Pa), eq 93
       real(wp) :: e_prime = 2.0e11_wp/(2.0_wp*(1.0_wp - 0.25_wp**2))  !< E' (Pa), eq 98; steel/steel
+      ! --- race summation (section 3.2 step 5; see race_life)
+      real(wp) :: stationary_rule = 0.0_wp       !< race sum of a stationary race: 0 report (ADORE), 1 Lundberg-Palmgren
    end type life_params_t
 
    !> Number of constants in life_params_t, in the order of life_params_to_array.
-   integer, parameter :: LIFE_N_CONSTANTS = 28
+   integer, parameter :: LIFE_N_CONSTANTS = 29
 
 contains
 
@@ -71,7 +80,8 @@ contains
    !> weibull_e_point, weibull_e_line, scale_a, beta, zeta, matrix_m, tau0,
    !> phi0lp_root_per_pa, phi1_asperity, phi1_furrow, phi1_subsurface, processing_i,
    !> phi2f_clean, contamination, spectrum_alpha, sigma_rms, theta_rms, z_frac,
-   !> mu_asperity, hoop_factor, sigma_residual, e_prime (units as in life_params_t).
+   !> mu_asperity, hoop_factor, sigma_residual, e_prime, stationary_rule (units as in
+   !> life_params_t).
    pure function life_params_to_array(params) result(v)
       type(life_params_t), intent(in) :: params
       real(wp) :: v(LIFE_N_CONSTANTS)
@@ -82,7 +92,7 @@ contains
            params%phi0lp_root_per_pa, params%phi1_asperity, params%phi1_furrow, params%phi1_subsurface, &
            params%processing_i, params%phi2f_clean, params%contamination, params%spectrum_alpha, &
            params%sigma_rms, params%theta_rms, params%z_frac, params%mu_asperity, params%hoop_factor, &
-           params%sigma_residual, params%e_prime]
+           params%sigma_residual, params%e_prime, params%stationary_rule]
    end function life_params_to_array
 
    !> Constants from a flat array in the order of life_params_to_array.
@@ -99,7 +109,7 @@ contains
       params%processing_i = v(18); params%phi2f_clean = v(19); params%contamination = v(20)
       params%spectrum_alpha = v(21); params%sigma_rms = v(22); params%theta_rms = v(23)
       params%z_frac = v(24); params%mu_asperity = v(25); params%hoop_factor = v(26)
-      params%sigma_residual = v(27); params%e_prime = v(28)
+      params%sigma_residual = v(27); params%e_prime = v(28); params%stationary_rule = v(29)
    end function life_params_from_array
 
    !> E' of eq 98 (Pa): 1/E' = (1-nu1**2)/E1 + (1-nu2**2)/E2, E in Pa.
@@ -202,13 +212,16 @@ contains
 
    !> Race life (10**6 relative revolutions) from its contact lives (same unit).
    !>
-   !> Rotating race (turns relative to the load): 1/N = sum 1/N_k; stationary
-   !> race: N**(-e) = sum N_k**(-e) (section 3.2 step 5; see module doc).
-   !> Contacts with life huge(1.0_wp) (unloaded) are skipped; with no loaded
-   !> contact the race life is huge(1.0_wp).
-   pure function race_life(lives, rotating, e) result(n)
+   !> Rotating race (turns relative to the load): 1/N = sum 1/N_k.  Stationary
+   !> race: N**(-e) = w sum N_k**(-e), w = 1 (lp_average false: the rule that
+   !> reproduces the report) or w = m**(e-1), m = size(lives) (lp_average true:
+   !> Lundberg-Palmgren, N = (mean (Q_k/Q_c)**(p e))**(-1/e) with the race
+   !> capacity).  Section 3.2 step 5 only says "appropriate summation"; see the
+   !> module doc.  Contacts with life huge(1.0_wp) (unloaded) add nothing; with no
+   !> loaded contact the race life is huge(1.0_wp).
+   pure function race_life(lives, rotating, e, lp_average) result(n)
       real(wp), intent(in) :: lives(:), e
-      logical, intent(in) :: rotating
+      logical, intent(in) :: rotating, lp_average
       real(wp) :: n
 
       real(wp) :: s
@@ -223,6 +236,7 @@ contains
             s = s + lives(k)**(-e)
          end if
       end do
+      if (.not. rotating .and. lp_average) s = s*real(size(lives), wp)**(e - 1.0_wp)
       if (s <= 0.0_wp) then
          n = huge(1.0_wp)
       else if (rotating) then
@@ -266,8 +280,8 @@ contains
    !>
    !> q, alpha, passes: per ball load (N), contact angle (rad) and ball passes per
    !> relative revolution; f groove curvature factor, d_ball, d_pitch (m); outer
-   !> selects the race; rotating: race turns relative to the load.  Returns the
-   !> contact lives and the race life.
+   !> selects the race; rotating: race turns relative to the load (race sum as
+   !> race_life, params%stationary_rule).  Returns the contact lives and the race life.
    pure subroutine ball_race_lp_life(params, q, alpha, passes, f, d_ball, d_pitch, outer, rotating, &
                                      lives, n_race)
       type(life_params_t), intent(in) :: params
@@ -278,7 +292,7 @@ contains
 
       lives = contact_life(q, point_contact_capacity(params, f, alpha, d_ball, d_pitch, passes, outer), &
                            params%load_exp_point)
-      n_race = race_life(lives, rotating, params%weibull_e_point)
+      n_race = race_life(lives, rotating, params%weibull_e_point, params%stationary_rule > 0.5_wp)
    end subroutine ball_race_lp_life
 
 end module adore_life_lundberg_palmgren

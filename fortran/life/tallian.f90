@@ -57,13 +57,15 @@ contains
 
    !> Static stress ratio s_stat (-), eq 93: (sigma_res + 0.834 sigma_hoop)/p_max.
    !>
-   !> sigma_hoop, p_max in Pa (residual stress and 0.834 from params).
+   !> sigma_hoop, p_max in Pa (residual stress and 0.834 from params); 0 for an
+   !> unloaded contact (p_max <= 0).
    elemental function stress_state(params, p_max, sigma_hoop) result(s)
       type(life_params_t), intent(in) :: params
       real(wp), intent(in) :: p_max, sigma_hoop
       real(wp) :: s
 
-      s = (params%sigma_residual + params%hoop_factor*sigma_hoop)/p_max
+      s = 0.0_wp
+      if (p_max > 0.0_wp) s = (params%sigma_residual + params%hoop_factor*sigma_hoop)/p_max
    end function stress_state
 
    !> Hazard factor sums of one contact without Phi_4, eqs 81-99, 105, 109.
