@@ -38,21 +38,20 @@ def _field(deck, rid, name):
     return deck.get(rid, name) if hasattr(deck, "get") else None
 
 
-def _rings_from_echo_masses(deck):
-    """Equivalent race rings.  The race cross sections are not yet modelled; the rings
-    take the bore/OD of Rec 4 and the raceway-side diameter that gives the race mass the
-    report's echo prints (INERTIAL PARAMETERS: outer 1.29291 kg, inner 0.838958 kg) at
-    the deck's width and density.  Shaft and housing from Rec 4."""
+def _rings(deck):
+    """Shaft, races and housing as rings: the races are plain annuli between the groove
+    bottom (engine module adore_model_clearance: the model that reproduces the echo's
+    race masses) and the bore / OD of Rec 4; shaft and housing from Rec 4."""
     e, nu, rho = 2.0e11, 0.25, 7750.0
     bore = deck.get("4", "shaft_outer_diameter")
     od = deck.get("4", "bearing_outer_diameter")
-    width_o = deck.get("4", "outer_race_width")
-    width_i = deck.get("4", "inner_race_width")
-    d_inner = math.sqrt(bore**2 + 4 * 0.838958 / (math.pi * rho * width_i))
-    d_outer = math.sqrt(od**2 - 4 * 1.29291 / (math.pi * rho * width_o))
+    grooves = _core.ball_clearance(deck.get("5A", "pitch_diameter"), deck.get("5A", "ball_diameter"),
+                                   deck.get("5A", "outer_curvature_factor"),
+                                   deck.get("5A", "inner_curvature_factor"),
+                                   math.radians(deck.get("5A", "free_contact_angle")))
     return [[deck.get("4", "shaft_inner_diameter"), bore, e, nu, rho],
-            [bore, d_inner, e, nu, rho],
-            [d_outer, od, e, nu, rho],
+            [bore, grooves["inner_groove_dia"], e, nu, rho],
+            [grooves["outer_groove_dia"], od, e, nu, rho],
             [od, deck.get("4", "housing_outer_diameter"), e, nu, rho]]
 
 
@@ -66,7 +65,7 @@ def _dia_play(deck):
 @pytest.fixture(scope="module")
 def mounting(deck):
     speed = deck.get("9.1.2", "inner_race_speed") * RPM
-    return _core.mount_races(_rings_from_echo_masses(deck),
+    return _core.mount_races(_rings(deck),
                              [deck.get("9.0", "inner_race_fit"), deck.get("9.0", "outer_race_fit")],
                              [speed, 0.0], _dia_play(deck))
 
@@ -106,9 +105,10 @@ def solution(deck, mounting, report_speeds):
 def test_mounting_matches_report_section_3(mounting):
     """Section 3: Outer Race Fit 1.000E-05, Inner Race Fit 9.918E-07, Internal Clearance
     1.525E-04 (the inner race fit is mostly eaten by centrifugal growth at 20 000 rpm)."""
-    assert mounting["outer_fit"] == pytest.approx(1.000e-05, rel=1e-3)
-    assert mounting["inner_fit"] == pytest.approx(9.918e-07, rel=0.01)
-    assert mounting["clearance"] == pytest.approx(1.525e-04, rel=0.01)
+    # equal to the printed precision (half a unit of the 4th significant digit)
+    assert mounting["outer_fit"] == pytest.approx(1.000e-05, abs=0.0005e-05)
+    assert mounting["inner_fit"] == pytest.approx(9.918e-07, abs=0.0005e-07)
+    assert mounting["clearance"] == pytest.approx(1.525e-04, abs=0.0005e-04)
 
 
 COLUMNS = [  # (engine key, golden column, factor)
