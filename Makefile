@@ -50,7 +50,9 @@ setup: gfortran $(STAMP)
 # Standalone executable: same sources, same meson.build, its own build directory.
 exe: setup
 	@test -f $(NATIVE)/build.ninja || $(VPATH_ENV) $(VENV)/bin/meson setup $(NATIVE) --buildtype=release >/dev/null
-	@$(VPATH_ENV) $(VENV)/bin/meson compile -C $(NATIVE) adore test_deck_text >/dev/null
+	@# regenerate an existing build directory first, so targets new in meson.build are known
+	@$(VPATH_ENV) $(VENV)/bin/ninja -C $(NATIVE) build.ninja >/dev/null
+	@$(VPATH_ENV) $(VENV)/bin/meson compile -C $(NATIVE) adore test_deck_text test_deck_reader >/dev/null
 
 run: exe
 	@mkdir -p out
@@ -61,7 +63,8 @@ test: exe
 
 debug: setup
 	@test -f $(DEBUG)/build.ninja || $(VPATH_ENV) $(VENV)/bin/meson setup $(DEBUG) --buildtype=debug -Dchecks=true >/dev/null
-	@$(VPATH_ENV) $(VENV)/bin/meson compile -C $(DEBUG) adore test_deck_text >/dev/null
+	@$(VPATH_ENV) $(VENV)/bin/ninja -C $(DEBUG) build.ninja >/dev/null
+	@$(VPATH_ENV) $(VENV)/bin/meson compile -C $(DEBUG) adore test_deck_text test_deck_reader >/dev/null
 	ADORE_EXE=$(CURDIR)/$(DEBUG)/adore ADORE_BUILD_DIR=$(CURDIR)/$(DEBUG) $(PY) -m pytest
 
 bench: exe

@@ -8,6 +8,7 @@ extension returns ``(status, message)``; :func:`check` raises the matching
 from __future__ import annotations
 
 import os
+import tempfile
 
 from .errors import (
     STATUS_ENGINE,
@@ -18,7 +19,7 @@ from .errors import (
     AdoreInputError,
 )
 
-__all__ = ["check", "run_file", "engine_version", "hertz_point"]
+__all__ = ["check", "run_file", "engine_version", "hertz_point", "deck_field_table"]
 
 
 def _engine():
@@ -76,3 +77,27 @@ def hertz_point(rho, e1: float, nu1: float, e2: float, nu2: float, load: float) 
     keys = ["kappa", "a_star", "b_star", "delta_star", "semi_major", "semi_minor",
             "max_pressure", "deflection", "stiffness"]
     return dict(zip(keys, (float(v) for v in values)))
+
+
+def deck_field_table(deck_path: str | os.PathLike) -> list[tuple[str, int, str, object]]:
+    """Read a deck with the engine's Fortran reader and return its field table.
+
+    Same shape as :func:`pyadore.deck.field_table`: ``(record id, occurrence, field name,
+    value)`` per field in deck order, occurrence 0-based among records of the same type,
+    value int, float (exact: written with 17 significant digits) or str in the schema's
+    SI unit.  Raises :class:`AdoreInputError` listing every problem for a bad deck.
+    """
+    with tempfile.TemporaryDirectory(prefix="pyadore-deck-") as tmp:
+        table = os.path.join(tmp, "fields.txt")
+        status, message = _engine().adore_deck_table(os.fspath(deck_path), table)
+        check(int(status), message)
+        with open(table, encoding="utf-8") as fh:
+            lines = fh.read().split("\n")
+    out: list[tuple[str, int, str, object]] = []
+    convert = {"int": int, "real": float, "text": str}
+    for line in lines:
+        if not line:
+            continue
+        rid, occ, name, kind, value = line.split("\t", 4)
+        out.append((rid, int(occ), name, convert[kind](value.strip() if kind != "text" else value)))
+    return out
