@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import os
+import tempfile
 
 from .errors import (
     STATUS_ENGINE,
@@ -22,7 +23,7 @@ from .errors import (
 __all__ = ["check", "run_file", "engine_version", "hertz_point", "ball_quasi_static",
            "ball_race_jacobian", "race_control", "mount_races", "ball_clearance", "roller_races",
            "body_inertia", "traction_fit", "traction_eval", "scale_factors", "LIFE_CONSTANT_NAMES",
-           "life_default_constants", "ball_bearing_life"]
+           "life_default_constants", "ball_bearing_life", "deck_field_table"]
 
 
 def _engine():
@@ -294,4 +295,28 @@ def ball_bearing_life(q_outer, q_inner, alpha_outer, alpha_inner, orbital_speed,
     out["psi_outer"], out["psi_inner"] = float(result[6]), float(result[7])
     out["lives_outer"] = np.where(lives_o >= _HUGE, np.inf, lives_o)
     out["lives_inner"] = np.where(lives_i >= _HUGE, np.inf, lives_i)
+    return out
+
+
+def deck_field_table(deck_path: str | os.PathLike) -> list[tuple[str, int, str, object]]:
+    """Read a deck with the engine's Fortran reader and return its field table.
+
+    Same shape as :func:`pyadore.deck.field_table`: ``(record id, occurrence, field name,
+    value)`` per field in deck order, occurrence 0-based among records of the same type,
+    value int, float (exact: written with 17 significant digits) or str in the schema's
+    SI unit.  Raises :class:`AdoreInputError` listing every problem for a bad deck.
+    """
+    with tempfile.TemporaryDirectory(prefix="pyadore-deck-") as tmp:
+        table = os.path.join(tmp, "fields.txt")
+        status, message = _engine().adore_deck_table(os.fspath(deck_path), table)
+        check(int(status), message)
+        with open(table, encoding="utf-8") as fh:
+            lines = fh.read().split("\n")
+    out: list[tuple[str, int, str, object]] = []
+    convert = {"int": int, "real": float, "text": str}
+    for line in lines:
+        if not line:
+            continue
+        rid, occ, name, kind, value = line.split("\t", 4)
+        out.append((rid, int(occ), name, convert[kind](value.strip() if kind != "text" else value)))
     return out

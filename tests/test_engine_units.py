@@ -17,6 +17,7 @@ def test_engine_unit_tests_pass(build_dir):
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert re.search(r"^Ok:\s+[1-9]", proc.stdout, re.M), proc.stdout
+    assert re.search(r"deck tokenizer and reader unit tests\s+OK", proc.stdout), proc.stdout
 
 
 def _library_sources():

@@ -14,7 +14,7 @@ subroutine adore_run_file(deck_path, out_path, steps, status, message)
    character(len=*), intent(in) :: out_path    !< print file path to write
    integer, intent(in) :: steps                !< -1 deck's count, 0 quasi-static only, n steps
    integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
-   character(len=2048), intent(out) :: message !< error message, blank on success
+   character(len=16384), intent(out) :: message !< error message, blank on success
 
    type(error_type), allocatable :: error
 
@@ -23,7 +23,11 @@ subroutine adore_run_file(deck_path, out_path, steps, status, message)
    message = ""
    if (allocated(error)) then
       status = error%stat
-      message = error%message
+      if (len(error%message) > len(message)) then
+         message = error%message(1:len(message) - 32)//new_line("a")//"... (message truncated)"
+      else
+         message = error%message
+      end if
    end if
 end subroutine adore_run_file
 

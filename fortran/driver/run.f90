@@ -1,6 +1,6 @@
 !> Run one deck from file to print file: the engine's top-level procedure (ADORE main).
 !>
-!> Flow: read the deck → (model, quasi-static start, dynamics: later issues) → print.
+!> Flow: read the deck (text, then records: adore_deck_reader) → (model, quasi-static start, dynamics: later issues) → print.
 !> The print file is written under `<out>.part` and renamed to `<out>` only when the
 !> run succeeded; on any error the partial file is deleted, so no half-written
 !> output ever poses as a good one.  No state outlives the call.
@@ -8,6 +8,7 @@ module adore_driver_run
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
+   use adore_deck_reader, only: deck_t, parse_deck
    use adore_output_banner, only: write_listing, write_banner
    implicit none
    private
@@ -29,6 +30,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       type(deck_text_t) :: text
+      type(deck_t) :: deck
       character(len=:), allocatable :: part_path
       character(len=256) :: iomsg
       integer :: unit, stat
@@ -45,6 +47,10 @@ contains
       end if
 
       call read_deck_text(deck_path, text, error)
+      if (allocated(error)) return
+      ! Records and values (same checks as read_deck; the text is not read twice).  A
+      ! malformed deck stops here, before any print file exists.
+      call parse_deck(text, deck, error)
       if (allocated(error)) return
 
       part_path = trim(out_path)//".part"
