@@ -23,7 +23,7 @@ from .errors import (
 __all__ = ["check", "run_file", "engine_version", "hertz_point", "ball_quasi_static",
            "ball_race_jacobian", "race_control", "mount_races", "ball_clearance", "roller_races",
            "body_inertia", "traction_fit", "traction_eval", "scale_factors", "LIFE_CONSTANT_NAMES",
-           "life_default_constants", "ball_bearing_life", "deck_field_table"]
+           "life_default_constants", "ball_bearing_life", "deck_field_table", "ball_step0_from_deck"]
 
 
 def _engine():
@@ -320,3 +320,20 @@ def deck_field_table(deck_path: str | os.PathLike) -> list[tuple[str, int, str, 
         rid, occ, name, kind, value = line.split("\t", 4)
         out.append((rid, int(occ), name, convert[kind](value.strip() if kind != "text" else value)))
     return out
+
+
+BALL_STEP0_COLUMNS = ["azimuth", "x", "r", "alpha_o", "alpha_i", "q_o", "q_i", "p_o", "p_i", "a_o", "a_i",
+                      "b_o", "b_i", "delta_o", "delta_i", "orbital_speed", "spin_speed"]
+BALL_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "basic_life_h", "basic_life_outer_h",
+                      "basic_life_inner_h", "u_x", "u_y", "u_z", "theta_y", "theta_z", "inner_force_x",
+                      "inner_force_y", "inner_force_z", "inner_moment_x", "inner_moment_y", "inner_moment_z",
+                      "passes"]
+
+
+def ball_step0_from_deck(deck_path: str | os.PathLike, nmax: int = 200) -> tuple[dict, dict]:
+    """Step 0 of a ball-bearing deck computed by the engine end to end (SI, angles in rad):
+    per-ball arrays (BALL_STEP0_COLUMNS) and scalars (BALL_STEP0_SUMMARY)."""
+    n, balls, summary, status, message = _engine().adore_ball_step0_deck(os.fspath(deck_path), int(nmax))
+    check(int(status), message)
+    per_ball = {name: balls[: int(n), k].copy() for k, name in enumerate(BALL_STEP0_COLUMNS)}
+    return per_ball, {name: float(summary[k]) for k, name in enumerate(BALL_STEP0_SUMMARY)}

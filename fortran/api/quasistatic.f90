@@ -224,3 +224,86 @@ subroutine adore_mount_races(rings, fits, speeds, dia_play, result, status, mess
    result = [m%inner_fit, m%outer_fit, m%inner_pressure, m%outer_pressure, m%inner_raceway_growth, &
              m%outer_raceway_shrink, m%clearance]
 end subroutine adore_mount_races
+
+!> Step 0 of a ball-bearing deck, end to end: read the deck, build the model, mount the
+!> races, solve the consistent start (race control) and the basic life.
+!>
+!> nmax: rows of balls (>= number of balls); n: number of balls.
+!> balls(nmax, 17): [orbital position (rad), x, r (m), alpha_o, alpha_i (rad), Q_o, Q_i (N),
+!>   p_o, p_i (Pa), a_o, a_i, b_o, b_i, delta_o, delta_i (m), orbital speed, spin speed (rad/s)]
+!> summary(20): [inner fit, outer fit, clearance (m), basic life, basic life outer, inner (h),
+!>   inner race u(5), inner force(3), inner moment(3), passes]
+subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, message)
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
+   use adore_deck_text, only: deck_text_t, read_deck_text
+   use adore_deck_reader, only: deck_t, parse_deck
+   use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING
+   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   implicit none
+   character(len=*), intent(in) :: deck_path
+   integer, intent(in) :: nmax
+   integer, intent(out) :: n
+   real(wp), intent(out) :: balls(nmax, 17), summary(20)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+
+   type(deck_text_t) :: text
+   type(deck_t) :: deck
+   type(bearing_t) :: b
+   type(ball_step0_t) :: s
+   type(error_type), allocatable :: error
+
+   n = 0
+   balls = 0.0_wp
+   summary = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   call read_deck_text(deck_path, text, error)
+   if (.not. allocated(error)) call parse_deck(text, deck, error)
+   if (.not. allocated(error)) call build_bearing(deck, b, error)
+   if (.not. allocated(error)) then
+      if (b%bearing_type /= BALL_BEARING) then
+         status = ADORE_INPUT_ERROR
+         message = trim(deck_path)//": not a ball-bearing deck (Rec 3.2 bearing_type /= 1)"
+         return
+      end if
+      if (b%n_elements > nmax) then
+         status = ADORE_INPUT_ERROR
+         message = "ball step 0: more balls than rows given (nmax)"
+         return
+      end if
+      call solve_ball_step0(b, s, error)
+   end if
+   if (allocated(error)) then
+      status = error%stat
+      message = error%message
+      return
+   end if
+   n = b%n_elements
+   associate (e => s%start%equilibrium)
+      balls(1:n, 1) = e%azimuth
+      balls(1:n, 2) = e%x
+      balls(1:n, 3) = e%r
+      balls(1:n, 4) = e%alpha_o
+      balls(1:n, 5) = e%alpha_i
+      balls(1:n, 6) = e%q_o
+      balls(1:n, 7) = e%q_i
+      balls(1:n, 8) = e%c_o%max_pressure
+      balls(1:n, 9) = e%c_i%max_pressure
+      balls(1:n, 10) = e%c_o%semi_major
+      balls(1:n, 11) = e%c_i%semi_major
+      balls(1:n, 12) = e%c_o%semi_minor
+      balls(1:n, 13) = e%c_i%semi_minor
+      balls(1:n, 14) = e%delta_o
+      balls(1:n, 15) = e%delta_i
+      balls(1:n, 16) = s%start%kinematics%orbital_speed
+      balls(1:n, 17) = s%start%kinematics%spin_speed
+      summary(1:3) = [s%mounting%inner_fit, s%mounting%outer_fit, s%mounting%clearance]
+      summary(4:6) = [s%basic_life_hours, s%basic_life_outer, s%basic_life_inner]
+      summary(7:11) = e%u
+      summary(12:14) = e%inner_force
+      summary(15:17) = e%inner_moment
+      summary(18) = real(s%start%passes, wp)
+   end associate
+end subroutine adore_ball_step0_deck

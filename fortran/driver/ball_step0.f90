@@ -1,0 +1,119 @@
+!> Step 0 of a ball bearing run: mounting, the consistent quasi-static start and the basic
+!> fatigue life (ADORE's start-up: ADRA4 equilibrium, initial ball velocities, ADRF1).
+!>
+!> Everything printed at step 0 that needs no traction or time integration.  Quantities
+!> of later issues (traction, film, temperatures rise, power loss, cage contacts, Tallian
+!> life) are not computed here and stay NaN, so the print shows them as not computed.
+module adore_driver_ball_step0
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_SHAFT, BODY_HOUSING
+   use adore_mounting_fits, only: ring_t, mounting_t, mount_races
+   use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
+   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
+   use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
+   use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
+                                           life_hours
+   implicit none
+   private
+
+   public :: ball_step0_t, solve_ball_step0
+
+   real(wp), parameter :: pi = acos(-1.0_wp)
+
+   !> The step-0 state of a ball bearing.
+   type :: ball_step0_t
+      type(mounting_t) :: mounting
+      type(ball_start_t) :: start
+      real(wp) :: basic_life_hours = 0.0_wp        !< bearing basic (Lundberg-Palmgren) life (h)
+      real(wp) :: basic_life_outer = 0.0_wp        !< outer race (h)
+      real(wp) :: basic_life_inner = 0.0_wp        !< inner race (h)
+      real(wp) :: modified_life_hours = 0.0_wp     !< NaN: needs film and traction
+      real(wp) :: inner_weight(3) = 0.0_wp, outer_weight(3) = 0.0_wp   !< race weights (N)
+   end type ball_step0_t
+
+contains
+
+   !> Solve step 0 for the ball bearing b (report sections 3.1, 3.2, 4.4.7).
+   !>
+   !> Race misalignments are prescribed (the deck's quasi-static constraint flags are not
+   !> identified; both appendix echoes show prescribed misalignment), ball speeds from
+   !> outer race control.
+   subroutine solve_ball_step0(b, s, error)
+      type(bearing_t), intent(in) :: b
+      type(ball_step0_t), intent(out) :: s
+      type(error_type), allocatable, intent(out) :: error
+
+      type(ring_t) :: shaft, inner_race, outer_race, housing
+      type(ball_qs_bearing_t) :: qb
+      type(ball_qs_load_t) :: ld
+      type(life_params_t) :: lp
+      real(wp), allocatable :: lives(:), speed_rpm(:)
+      real(wp) :: n_o, n_i, wi_rpm, wo_rpm
+
+      if (b%n_elements < 1 .or. b%d <= 0.0_wp .or. b%dm <= b%d) then
+         call input_error(error, "ball bearing: need at least one ball and 0 < ball diameter < pitch diameter")
+         return
+      end if
+      shaft = ring_of(b%shaft_id, b%shaft_od, BODY_SHAFT)
+      inner_race = ring_of(b%shaft_od, b%inner_raceway_dia, BODY_INNER)
+      outer_race = ring_of(b%outer_raceway_dia, b%bearing_od, BODY_OUTER)
+      housing = ring_of(b%bearing_od, b%housing_od, BODY_HOUSING)
+      s%mounting = mount_races(shaft, inner_race, outer_race, housing, b%fit_inner, b%fit_outer, &
+                               b%speed_inner, b%speed_outer, b%dia_play)
+
+      qb%n_balls = b%n_elements
+      qb%d = b%d
+      qb%dm = b%dm
+      qb%f_o = b%f_o
+      qb%f_i = b%f_i
+      qb%ball_mass = b%mass(1)
+      qb%e_ball = b%material(BODY_ELEMENT)%modulus
+      qb%nu_ball = b%material(BODY_ELEMENT)%poisson
+      qb%e_outer = b%material(BODY_OUTER)%modulus
+      qb%nu_outer = b%material(BODY_OUTER)%poisson
+      qb%e_inner = b%material(BODY_INNER)%modulus
+      qb%nu_inner = b%material(BODY_INNER)%poisson
+      qb%inner_race_mass = b%mass(4)
+      call set_groove_centres(qb, b%alpha0, s%mounting%inner_raceway_growth, s%mounting%outer_raceway_shrink)
+      ld%force = b%force
+      ld%moment = b%moment
+      ld%gravity = b%gravity
+      ld%solve_moment = .false.
+      ld%misalignment = 0.0_wp
+      s%inner_weight = b%mass(4)*b%gravity
+      s%outer_weight = b%mass(3)*b%gravity
+
+      call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, CONTROL_OUTER, s%start, error)
+      if (allocated(error)) return
+
+      ! basic life, eqs 73-74 and 102 (inner race rotating, outer stationary)
+      allocate (lives(b%n_elements), speed_rpm(b%n_elements))
+      speed_rpm = s%start%kinematics%orbital_speed*30.0_wp/pi
+      wi_rpm = b%speed_inner*30.0_wp/pi
+      wo_rpm = b%speed_outer*30.0_wp/pi
+      associate (e => s%start%equilibrium)
+         call ball_race_lp_life(lp, e%q_o, e%alpha_o, pass_cycles(speed_rpm, wo_rpm, wi_rpm, wo_rpm), &
+                                b%f_o, b%d, b%dm, .true., .false., lives, n_o)
+         call ball_race_lp_life(lp, e%q_i, e%alpha_i, pass_cycles(speed_rpm, wi_rpm, wi_rpm, wo_rpm), &
+                                b%f_i, b%d, b%dm, .false., .true., lives, n_i)
+      end associate
+      s%basic_life_outer = life_hours(n_o, wi_rpm - wo_rpm)
+      s%basic_life_inner = life_hours(n_i, wi_rpm - wo_rpm)
+      s%basic_life_hours = life_hours(bearing_life(n_o, n_i, lp%weibull_e_point), wi_rpm - wo_rpm)
+      s%modified_life_hours = ieee_value(1.0_wp, ieee_quiet_nan)
+
+   contains
+
+      !> An elastic ring of body `body`'s material between two diameters (m).
+      function ring_of(d_in, d_out, body) result(r)
+         real(wp), intent(in) :: d_in, d_out
+         integer, intent(in) :: body
+         type(ring_t) :: r
+         r = ring_t(d_in, d_out, b%material(body)%modulus, b%material(body)%poisson, b%material(body)%density)
+      end function ring_of
+
+   end subroutine solve_ball_step0
+
+end module adore_driver_ball_step0

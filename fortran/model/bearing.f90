@@ -1,0 +1,230 @@
+!> The bearing model built from a deck (ADORE's data modules, report Appendix A): geometry,
+!> materials, inertia, traction curves and operating conditions, in SI units, with every
+!> derived value of the input echo.  Built once per run by build_bearing; read-only after.
+module adore_model_bearing
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
+   use adore_deck_reader, only: deck_t, deck_has, deck_get_real, deck_get_int, deck_get_text
+   use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
+                                    roller_race_diameters
+   use adore_model_inertia, only: sphere_inertia, hollow_cylinder_inertia, ball_cage_inertia, &
+                                  roller_cage_inertia, solid_cylinder_inertia
+   use adore_model_traction_fit, only: fit_traction_curve
+   implicit none
+   private
+
+   public :: material_t, bearing_t, build_bearing
+   public :: BALL_BEARING, ROLLER_BEARING
+   public :: BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, BODY_SHAFT, BODY_HOUSING
+
+   integer, parameter :: BALL_BEARING = 1     !< Rec 3.2 bearing type
+   integer, parameter :: ROLLER_BEARING = 2
+   !> Body indices of the material table (echo column order).
+   integer, parameter :: BODY_ELEMENT = 1, BODY_OUTER = 2, BODY_INNER = 3, BODY_CAGE = 4, &
+                         BODY_SHAFT = 5, BODY_HOUSING = 6
+
+   real(wp), parameter :: pi = acos(-1.0_wp)
+   real(wp), parameter :: rpm = pi/30.0_wp
+
+   !> Material properties of one body (echo MATERIAL PROPERTIES).
+   type :: material_t
+      real(wp) :: density = 7750.0_wp          !< kg/m**3
+      real(wp) :: modulus = 2.0e11_wp          !< Pa
+      real(wp) :: poisson = 0.25_wp
+      real(wp) :: expansion = 1.17e-5_wp       !< 1/K
+      real(wp) :: conductivity = 43.0_wp       !< W/(m K)
+      real(wp) :: heat_capacity = 470.0_wp     !< J/(kg K)
+      real(wp) :: strain_limit = 2.0e-3_wp
+      real(wp) :: hardness = 61.0_wp           !< Rockwell C
+      real(wp) :: wear = 5.0e-6_wp             !< wear coefficient
+   end type material_t
+
+   !> Everything the physics needs from the deck.
+   type :: bearing_t
+      character(len=:), allocatable :: run_id
+      integer :: bearing_type = BALL_BEARING
+      integer :: mode = 1
+      integer :: n_elements = 0
+      integer :: n_steps = 0
+      ! envelope, Rec 4 (m)
+      real(wp) :: shaft_od = 0.0_wp, bearing_od = 0.0_wp, shaft_id = 0.0_wp, housing_od = 0.0_wp
+      real(wp) :: width_outer = 0.0_wp, width_inner = 0.0_wp
+      ! rolling elements, Rec 5A (ball) / 5B (roller)
+      real(wp) :: d = 0.0_wp                   !< ball or roller diameter (m)
+      real(wp) :: dm = 0.0_wp                  !< pitch diameter (m)
+      real(wp) :: alpha0 = 0.0_wp              !< free contact angle (rad), ball
+      real(wp) :: f_o = 0.0_wp, f_i = 0.0_wp   !< groove curvature factors, ball
+      real(wp) :: roller_length = 0.0_wp       !< (m), roller
+      real(wp) :: dia_play = 0.0_wp            !< unmounted diametral play (m)
+      real(wp) :: end_play = 0.0_wp            !< unmounted end play (m), ball
+      real(wp) :: outer_raceway_dia = 0.0_wp   !< outer groove bottom / raceway diameter (m)
+      real(wp) :: inner_raceway_dia = 0.0_wp   !< inner groove bottom / raceway diameter (m)
+      ! cage, Rec 7.1
+      real(wp) :: cage_od = 0.0_wp, cage_id = 0.0_wp, cage_width = 0.0_wp
+      real(wp) :: pocket_clearance(2) = 0.0_wp
+      ! materials (echo order: element, outer, inner, cage, shaft, housing)
+      type(material_t) :: material(6)
+      ! inertia (element, cage, outer race, inner race): kg and kg m**2 (x, y, z)
+      real(wp) :: mass(4) = 0.0_wp
+      real(wp) :: moments(3, 4) = 0.0_wp
+      ! traction curves (RE/race): kappa(u) = (A + B u) exp(-C u) + D, Rec 10.1x
+      real(wp) :: traction(4) = 0.0_wp
+      ! operating conditions, Rec 2.7, 9.0, 9.1.x, 11
+      !> initial temperatures (K): room, housing, shaft, element, cage, outer race, inner race
+      real(wp) :: temperature(7) = 293.0_wp
+      real(wp) :: fit_outer = 0.0_wp, fit_inner = 0.0_wp   !< mounted diametral interference (m)
+      real(wp) :: speed_outer = 0.0_wp, speed_inner = 0.0_wp  !< race speeds (rad/s)
+      real(wp) :: force(3) = 0.0_wp            !< applied to the inner race (N)
+      real(wp) :: moment(3) = 0.0_wp           !< applied to the inner race (N m)
+      real(wp) :: gravity(3) = 0.0_wp          !< (m/s**2)
+   end type bearing_t
+
+contains
+
+   !> Build the bearing model from a read deck.  Input errors (values the physics cannot
+   !> use, such as a traction curve without a maximum) come back in error.
+   subroutine build_bearing(deck, b, error)
+      type(deck_t), intent(in) :: deck
+      type(bearing_t), intent(out) :: b
+      type(error_type), allocatable, intent(out) :: error
+
+      real(wp) :: k(4), deg, pocket
+      integer :: j
+      character(len=*), parameter :: material_rid(6) = ["8.1", "8.2", "8.3", "8.4", "8.5", "8.6"]
+
+      call get_text("3.1", "run_id", b%run_id)
+      call get_int("1", "mode", b%mode)
+      call get_int("1", "n_steps", b%n_steps)
+      call get_int("3.2", "bearing_type", b%bearing_type)
+      call get_int("3.2", "n_rolling_elements", b%n_elements)
+      call get_real("4", "shaft_outer_diameter", b%shaft_od)
+      call get_real("4", "bearing_outer_diameter", b%bearing_od)
+      call get_real("4", "shaft_inner_diameter", b%shaft_id)
+      call get_real("4", "housing_outer_diameter", b%housing_od)
+      call get_real("4", "outer_race_width", b%width_outer)
+      call get_real("4", "inner_race_width", b%width_inner)
+      call get_real("7.1", "cage_outer_diameter", b%cage_od)
+      call get_real("7.1", "cage_inner_diameter", b%cage_id)
+      call get_real("7.1", "cage_width", b%cage_width)
+      call get_real("7.1", "pocket_clearance_1", b%pocket_clearance(1))
+      call get_real("7.1", "pocket_clearance_2", b%pocket_clearance(2))
+      if (allocated(error)) return
+
+      ! materials: default steel (cage: its own expansion, hardness and wear), Rec 8.n when present
+      b%material(BODY_CAGE)%expansion = 1.8e-5_wp
+      b%material(BODY_CAGE)%hardness = 20.0_wp
+      b%material(BODY_CAGE)%wear = 5.0e-4_wp
+      do j = 1, 6
+         if (.not. deck_has(deck, material_rid(j))) cycle
+         call get_real(material_rid(j), "density", b%material(j)%density)
+         call get_real(material_rid(j), "elastic_modulus", b%material(j)%modulus)
+         call get_real(material_rid(j), "poisson_ratio", b%material(j)%poisson)
+         call get_real(material_rid(j), "thermal_expansion", b%material(j)%expansion)
+         call get_real(material_rid(j), "heat_capacity", b%material(j)%heat_capacity)
+         call get_real(material_rid(j), "thermal_conductivity", b%material(j)%conductivity)
+         call get_real(material_rid(j), "elastic_strain_limit", b%material(j)%strain_limit)
+         call get_real(material_rid(j), "hardness", b%material(j)%hardness)
+         call get_real(material_rid(j), "wear_coefficient", b%material(j)%wear)
+      end do
+      if (allocated(error)) return
+
+      if (b%bearing_type == BALL_BEARING) then
+         call get_real("5A", "ball_diameter", b%d)
+         call get_real("5A", "pitch_diameter", b%dm)
+         call get_real("5A", "free_contact_angle", deg)
+         call get_real("5A", "outer_curvature_factor", b%f_o)
+         call get_real("5A", "inner_curvature_factor", b%f_i)
+         call get_real("10.1C", "traction_at_zero_slip", k(1))
+         call get_real("10.1C", "max_traction", k(2))
+         call get_real("10.1C", "traction_at_infinite_slip", k(3))
+         call get_real("10.1C", "slip_at_max_traction", k(4))
+         if (allocated(error)) return
+         b%alpha0 = deg*pi/180.0_wp
+         b%dia_play = ball_diametral_play(b%d, b%f_o, b%f_i, b%alpha0)
+         b%end_play = ball_end_play(b%d, b%f_o, b%f_i, b%alpha0)
+         call ball_groove_diameters(b%dm, b%d, b%f_o, b%f_i, b%alpha0, b%outer_raceway_dia, b%inner_raceway_dia)
+         call sphere_inertia(b%d, b%material(BODY_ELEMENT)%density, b%mass(1), b%moments(:, 1))
+         pocket = b%d + b%pocket_clearance(1)
+         call ball_cage_inertia(b%cage_od, b%cage_id, b%cage_width, b%n_elements, pocket, &
+                                b%material(BODY_CAGE)%density, b%mass(2), b%moments(:, 2))
+      else
+         call get_real("5B", "roller_diameter", b%d)
+         call get_real("5B", "roller_length", b%roller_length)
+         call get_real("5B", "pitch_diameter", b%dm)
+         call get_real("5B", "diametral_play", b%dia_play)
+         call get_real("10.1B", "traction_at_zero_slip", k(1))
+         call get_real("10.1B", "max_traction", k(2))
+         call get_real("10.1B", "traction_at_infinite_slip", k(3))
+         call get_real("10.1B", "slip_at_max_traction", k(4))
+         if (allocated(error)) return
+         call roller_race_diameters(b%dm, b%d, b%dia_play, b%outer_raceway_dia, b%inner_raceway_dia)
+         call solid_cylinder_inertia(b%d, b%roller_length, b%material(BODY_ELEMENT)%density, b%mass(1), &
+                                     b%moments(:, 1))
+         call roller_cage_inertia(b%cage_od, b%cage_id, b%cage_width, b%n_elements, &
+                                  b%d + b%pocket_clearance(1), b%roller_length + b%pocket_clearance(2), &
+                                  b%material(BODY_CAGE)%density, b%mass(2), b%moments(:, 2))
+      end if
+      call hollow_cylinder_inertia(b%bearing_od, b%outer_raceway_dia, b%width_outer, &
+                                   b%material(BODY_OUTER)%density, b%mass(3), b%moments(:, 3))
+      call hollow_cylinder_inertia(b%inner_raceway_dia, b%shaft_od, b%width_inner, &
+                                   b%material(BODY_INNER)%density, b%mass(4), b%moments(:, 4))
+      call fit_traction_curve(k(1), k(2), k(3), k(4), b%traction, error)
+      if (allocated(error)) return
+
+      call get_real("9.0", "room_temperature", b%temperature(1))
+      call get_real("2.7", "housing_temperature", b%temperature(2))
+      call get_real("2.7", "shaft_temperature", b%temperature(3))
+      call get_real("2.7", "rolling_element_temperature", b%temperature(4))
+      call get_real("2.7", "cage_temperature", b%temperature(5))
+      call get_real("2.7", "outer_race_temperature", b%temperature(6))
+      call get_real("2.7", "inner_race_temperature", b%temperature(7))
+      call get_real("9.0", "outer_race_fit", b%fit_outer)
+      call get_real("9.0", "inner_race_fit", b%fit_inner)
+      call get_real("9.1.2", "inner_race_speed", b%speed_inner)
+      call get_real("9.1.1", "applied_force_x", b%force(1))
+      call get_real("9.1.1", "applied_force_y", b%force(2))
+      call get_real("9.1.1", "applied_force_z", b%force(3))
+      call get_real("9.1.1", "applied_moment_x", b%moment(1))
+      call get_real("9.1.1", "applied_moment_y", b%moment(2))
+      call get_real("9.1.1", "applied_moment_z", b%moment(3))
+      call get_real("11", "gravity_x", b%gravity(1))
+      call get_real("11", "gravity_y", b%gravity(2))
+      call get_real("11", "gravity_z", b%gravity(3))
+      if (allocated(error)) return
+      b%speed_inner = b%speed_inner*rpm
+
+   contains
+
+      !> Read a real field unless an earlier read failed (the first error is kept).
+      subroutine get_real(rid, field, value)
+         character(len=*), intent(in) :: rid, field
+         real(wp), intent(inout) :: value
+         type(error_type), allocatable :: e
+         if (allocated(error)) return
+         call deck_get_real(deck, rid, field, value, e)
+         if (allocated(e)) call move_alloc(e, error)
+      end subroutine get_real
+
+      !> Read an integer field unless an earlier read failed.
+      subroutine get_int(rid, field, value)
+         character(len=*), intent(in) :: rid, field
+         integer, intent(inout) :: value
+         type(error_type), allocatable :: e
+         if (allocated(error)) return
+         call deck_get_int(deck, rid, field, value, e)
+         if (allocated(e)) call move_alloc(e, error)
+      end subroutine get_int
+
+      !> Read a text field unless an earlier read failed.
+      subroutine get_text(rid, field, value)
+         character(len=*), intent(in) :: rid, field
+         character(len=:), allocatable, intent(inout) :: value
+         type(error_type), allocatable :: e
+         if (allocated(error)) return
+         call deck_get_text(deck, rid, field, value, e)
+         if (allocated(e)) call move_alloc(e, error)
+      end subroutine get_text
+
+   end subroutine build_bearing
+
+end module adore_model_bearing
