@@ -17,6 +17,7 @@ import time
 from pathlib import Path
 
 import pyadore
+from pyadore import _core
 
 ROOT = Path(__file__).resolve().parent.parent
 DECKS = [ROOT / "decks" / "appendix_c_ball.inp", ROOT / "decks" / "appendix_d_roller.inp"]
@@ -45,6 +46,10 @@ def main() -> int:
             ]:
                 best, median = _time(fn)
                 rows.append({"deck": deck.name, "case": label, "best_s": best, "median_s": median})
+        # the physics alone: Appendix C deck -> model -> mounting -> quasi-static start -> life
+        deck = DECKS[0]
+        best, median = _time(lambda: _core.ball_step0_from_deck(deck), repeat=20)
+        rows.append({"deck": deck.name, "case": "step-0 solve (ball)", "best_s": best, "median_s": median})
     print(f"{'deck':28s} {'case':22s} {'best (s)':>10s} {'median (s)':>11s}")
     for row in rows:
         print(f"{row['deck']:28s} {row['case']:22s} {row['best_s']:10.4f} {row['median_s']:11.4f}")

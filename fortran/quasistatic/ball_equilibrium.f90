@@ -214,11 +214,13 @@ contains
             step = step*(1.0_wp - ((b%f_o - 0.5_wp)*b%d + 1.0e-9_wp*b%d)/max(norm2(step), tiny(1.0_wp)))
             step = -step
          end if
+         if (norm2(step) <= 1.0e-15_wp*b%dm) return   ! converged to round-off
          do half = 0, 40
             trial = bpos + step*0.5_wp**half
             call ball_residual(b, trial, c_o, c_i, k_o, k_i, w, res_t, jac_t, kmi_t)
-            if (norm2(res_t) < res_norm .or. half == 40) exit
+            if (norm2(res_t) < res_norm) exit
          end do
+         if (norm2(res_t) >= res_norm) return          ! no descent left: round-off level
          bpos = trial
          res = res_t
          jac = jac_t
