@@ -7,38 +7,6 @@
 !>             prescribed misalignment theta_2, theta_3 (rad)]
 !> solve_moment(2): 1 = moment equilibrium about y / z (kFS4/kFS5 = 0), 0 = prescribed.
 
-!> Build the solver's bearing and load types from the flat arrays.
-subroutine adore_qs_unpack(n, geom, load, solve_moment, b, ld)
-   use adore_core_kinds, only: wp
-   use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
-   implicit none
-   integer, intent(in) :: n
-   real(wp), intent(in) :: geom(13), load(11)
-   integer, intent(in) :: solve_moment(2)
-   type(ball_qs_bearing_t), intent(out) :: b
-   type(ball_qs_load_t), intent(out) :: ld
-
-   b%n_balls = n
-   b%d = geom(1)
-   b%dm = geom(2)
-   b%f_o = geom(3)
-   b%f_i = geom(4)
-   b%ball_mass = geom(6)
-   b%e_ball = geom(7)
-   b%nu_ball = geom(8)
-   b%e_outer = geom(9)
-   b%nu_outer = geom(10)
-   b%e_inner = geom(9)
-   b%nu_inner = geom(10)
-   b%inner_race_mass = geom(13)
-   call set_groove_centres(b, geom(5), geom(11), geom(12))
-   ld%force = load(1:3)
-   ld%moment = load(4:6)
-   ld%gravity = load(7:9)
-   ld%misalignment = load(10:11)
-   ld%solve_moment = solve_moment /= 0
-end subroutine adore_qs_unpack
-
 !> Quasi-static equilibrium of a ball bearing for given orbital speeds (rad/s),
 !> report section 3.1 eqs 54-72.
 !>
@@ -53,6 +21,7 @@ subroutine adore_ball_qs(n, geom, load, solve_moment, orbital_speed, balls, race
    use adore_core_error, only: error_type, ADORE_OK
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t, &
                                                  solve_ball_equilibrium
+   use adore_api_unpack, only: adore_qs_unpack
    implicit none
    integer, intent(in) :: n
    real(wp), intent(in) :: geom(13), load(11), orbital_speed(n)
@@ -60,18 +29,6 @@ subroutine adore_ball_qs(n, geom, load, solve_moment, orbital_speed, balls, race
    real(wp), intent(out) :: balls(n, 15), race(25)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
-
-   interface
-      subroutine adore_qs_unpack(n, geom, load, solve_moment, b, ld)
-         use adore_core_kinds, only: wp
-         use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t
-         integer, intent(in) :: n
-         real(wp), intent(in) :: geom(13), load(11)
-         integer, intent(in) :: solve_moment(2)
-         type(ball_qs_bearing_t), intent(out) :: b
-         type(ball_qs_load_t), intent(out) :: ld
-      end subroutine adore_qs_unpack
-   end interface
 
    type(ball_qs_bearing_t) :: b
    type(ball_qs_load_t) :: ld
@@ -122,6 +79,7 @@ subroutine adore_ball_race_jacobian(n, geom, load, solve_moment, orbital_speed, 
    use adore_core_error, only: error_type, ADORE_OK
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t, &
                                                  solve_ball_equilibrium, race_residual
+   use adore_api_unpack, only: adore_qs_unpack
    implicit none
    integer, intent(in) :: n
    real(wp), intent(in) :: geom(13), load(11), orbital_speed(n), u(5)
@@ -129,18 +87,6 @@ subroutine adore_ball_race_jacobian(n, geom, load, solve_moment, orbital_speed, 
    real(wp), intent(out) :: res(5), jac(5, 5)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
-
-   interface
-      subroutine adore_qs_unpack(n, geom, load, solve_moment, b, ld)
-         use adore_core_kinds, only: wp
-         use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t
-         integer, intent(in) :: n
-         real(wp), intent(in) :: geom(13), load(11)
-         integer, intent(in) :: solve_moment(2)
-         type(ball_qs_bearing_t), intent(out) :: b
-         type(ball_qs_load_t), intent(out) :: ld
-      end subroutine adore_qs_unpack
-   end interface
 
    type(ball_qs_bearing_t) :: b
    type(ball_qs_load_t) :: ld
