@@ -6,8 +6,10 @@ golden value is compared with the run's value under the tolerance rule that appl
 (``golden/tolerances.toml``; the last matching rule wins):
 ``|run - golden| <= max(abs, rel * |golden|)``, where ``abs`` defaults to
 ``rel * max |golden|`` over the same column of the same table (the zero rule).
-Golden values marked unknown (``?``) are skipped and counted.  The echo is compared
-exactly to printed precision.
+Golden values marked unknown (``?``) are skipped and counted.  A value the run prints
+as ``NaN`` (the engine does not compute it yet) is a failure of its own category, "not
+computed by the engine": counted, listed in the summary and failing the comparison, never
+skipped.  The echo is compared exactly to printed precision.
 """
 
 from __future__ import annotations
@@ -20,7 +22,8 @@ from pathlib import Path
 
 from .errors import AdoreInputError
 from .printout import PrintFormatError, read_print
-from .printout.model import OVERFLOW, UNKNOWN, UNKNOWN_VALUE, OVERFLOW_VALUE, PrintRun
+from .printout.model import (NOT_COMPUTED, NOT_COMPUTED_VALUE, OVERFLOW, OVERFLOW_VALUE, UNKNOWN, UNKNOWN_VALUE,
+                             PrintRun)
 
 try:  # Python 3.11+
     import tomllib
@@ -37,8 +40,9 @@ class Comparison:
     """One compared (or skipped) golden value.
 
     ``name`` is ``step <n> <table> <row> <column>`` (``echo <name>`` for the echo);
-    ``status`` is ``within``, ``outside``, ``unknown`` (golden marker, skipped) or
-    ``missing`` (the run lacks the value: counted as outside).
+    ``status`` is ``within``, ``outside``, ``unknown`` (golden marker, skipped),
+    ``missing`` (the run lacks the value: counted as outside) or ``not_computed`` (the
+    run prints ``NaN``: the engine does not compute it; a failure of its own).
     """
 
     name: str
@@ -53,7 +57,8 @@ class Comparison:
 
 @dataclass
 class DiffReport:
-    """Outcome of a comparison: every Comparison plus counts; ``exit_code`` 0 (all within) or 1."""
+    """Outcome of a comparison: every Comparison plus counts; ``exit_code`` 0 (all within) or 1
+    (some value outside tolerance, missing or not computed by the engine)."""
 
     run_path: str
     golden_path: str
@@ -65,8 +70,8 @@ class DiffReport:
 
     @property
     def compared(self) -> int:
-        """Values compared (within + outside + missing)."""
-        return self._count("within", "outside", "missing")
+        """Values compared (within + outside + missing + not computed)."""
+        return self._count("within", "outside", "missing", "not_computed")
 
     @property
     def within(self) -> int:
@@ -84,14 +89,28 @@ class DiffReport:
         return self._count("missing")
 
     @property
+    def not_computed(self) -> int:
+        """Golden values the run prints as ``NaN``: not computed by the engine (a failure, not in ``outside``)."""
+        return self._count("not_computed")
+
+    def not_computed_columns(self) -> dict:
+        """Count of not-computed values per ``table.column`` (echo values per name)."""
+        out: dict = {}
+        for c in self.comparisons:
+            if c.status == "not_computed":
+                key = f"{c.table}.{c.column}"
+                out[key] = out.get(key, 0) + 1
+        return out
+
+    @property
     def unknown(self) -> int:
         """Golden values marked unknown (``?``): skipped, not compared."""
         return self._count("unknown")
 
     @property
     def exit_code(self) -> int:
-        """0 when every compared value is within tolerance, 1 otherwise."""
-        return 0 if self.outside == 0 else 1
+        """0 when every compared value is within tolerance, 1 otherwise (outside, missing, not computed)."""
+        return 0 if self.outside == 0 and self.not_computed == 0 else 1
 
     def offenders(self, limit: int | None = 10) -> list:
         """Values outside tolerance, worst relative error first (missing ones last)."""
@@ -118,7 +137,9 @@ class DiffReport:
             return json.dumps({
                 "run": self.run_path, "golden": self.golden_path, "tolerances": self.tolerances_path,
                 "compared": self.compared, "within": self.within, "outside": self.outside,
-                "missing": self.missing, "unknown": self.unknown, "exit_code": self.exit_code,
+                "missing": self.missing, "not_computed": self.not_computed,
+                "not_computed_columns": self.not_computed_columns(),
+                "unknown": self.unknown, "exit_code": self.exit_code,
                 "offenders": [{"name": c.name, "golden": num(c.golden), "run": num(c.run), "status": c.status,
                                "rel_error": num(c.rel_error), "tolerance": c.tolerance}
                               for c in self.offenders(None)],
@@ -129,7 +150,8 @@ class DiffReport:
         lines = [f"run:        {self.run_path}", f"golden:     {self.golden_path}",
                  f"tolerances: {self.tolerances_path}",
                  f"compared {self.compared}  within {self.within}  outside {self.outside}"
-                 f" (missing {self.missing})  unknown {self.unknown} (golden '?', not compared)"]
+                 f" (missing {self.missing})  not computed by the engine {self.not_computed}"
+                 f"  unknown {self.unknown} (golden '?', not compared)"]
         off = self.offenders(20)
         if off:
             lines.append("")
@@ -140,6 +162,12 @@ class DiffReport:
                 r = _show(c.run)
                 e = "-" if math.isnan(c.rel_error) else f"{c.rel_error:.3%}"
                 lines.append(f"  {c.name:<60} {g:>12} {r:>12} {e:>10}  {c.tolerance}")
+        nc = self.not_computed_columns()
+        if nc:
+            lines.append("")
+            lines.append(f"not computed by the engine ({self.not_computed} value(s) printed NaN), per column:")
+            for key in sorted(nc):
+                lines.append(f"  {key:<52} {nc[key]}")
         cm = self.column_max()
         if cm:
             lines.append("")
@@ -147,8 +175,14 @@ class DiffReport:
             for key in sorted(cm):
                 lines.append(f"  {key:<52} {cm[key]:.3%}")
         lines.append("")
-        lines.append("result: " + ("all compared values within tolerance" if self.exit_code == 0
-                                   else f"{self.outside} value(s) outside tolerance"))
+        if self.exit_code == 0:
+            result = "all compared values within tolerance"
+        else:
+            parts = [f"{self.outside} value(s) outside tolerance"] if self.outside else []
+            if self.not_computed:
+                parts.append(f"{self.not_computed} value(s) not computed by the engine")
+            result = ", ".join(parts)
+        lines.append("result: " + result)
         return "\n".join(lines)
 
 
@@ -222,6 +256,8 @@ def _compare_value(name, table, column, g, gmark, r, rmark, rule: _Rule, scale: 
     tol = f"rel {rule.rel:g}" + (f", abs {rule.abs:g}" if rule.abs is not None else "")
     if gmark == UNKNOWN:
         return Comparison(name, table, column, "?", r, "unknown", tolerance=tol)
+    if rmark == NOT_COMPUTED:
+        return Comparison(name, table, column, g, "NaN", "not_computed", tolerance=tol)
     if rmark == UNKNOWN or r is None:
         return Comparison(name, table, column, g, "?" if rmark == UNKNOWN else None, "missing", tolerance=tol)
     if gmark == OVERFLOW or rmark == OVERFLOW:
@@ -241,6 +277,9 @@ def _compare_echo(report: DiffReport, golden: PrintRun, run: PrintRun) -> None:
         r = run.echo.get(key)
         if g is UNKNOWN_VALUE:
             report.comparisons.append(Comparison(name, "echo", key, "?", r, "unknown", tolerance="printed"))
+            continue
+        if r is NOT_COMPUTED_VALUE:
+            report.comparisons.append(Comparison(name, "echo", key, g, "NaN", "not_computed", tolerance="printed"))
             continue
         if r is None or r is UNKNOWN_VALUE:
             report.comparisons.append(Comparison(name, "echo", key, g, r, "missing", tolerance="printed"))

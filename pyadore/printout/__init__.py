@@ -4,12 +4,13 @@
 and friends format tables in the same layout (used to build golden files and in tests).
 """
 
-from .model import (OVERFLOW, OVERFLOW_VALUE, UNKNOWN, UNKNOWN_VALUE, PrintFormatError, PrintRun, Step,
-                    parse_field, parse_number)
+from .model import (NOT_COMPUTED, NOT_COMPUTED_VALUE, OVERFLOW, OVERFLOW_VALUE, UNKNOWN, UNKNOWN_VALUE,
+                    PrintFormatError, PrintRun, Step, parse_field, parse_number)
 from .reader import read_print
 from .writer import format_step, format_table, format_value
 
 __all__ = [
     "read_print", "PrintRun", "Step", "PrintFormatError", "UNKNOWN", "OVERFLOW", "UNKNOWN_VALUE",
-    "OVERFLOW_VALUE", "parse_field", "parse_number", "format_step", "format_table", "format_value",
+    "OVERFLOW_VALUE", "NOT_COMPUTED", "NOT_COMPUTED_VALUE", "parse_field", "parse_number", "format_step",
+    "format_table", "format_value",
 ]

@@ -17,12 +17,10 @@ from __future__ import annotations
 
 import re
 
+from .echo_layout import BLOCK_TITLES
 from .model import NUMBER_TOKEN, UNKNOWN_VALUE, parse_echo_token
 
-ECHO_BLOCKS = (
-    "BEARING GEOMETRY", "MATERIAL PROPERTIES", "INERTIAL PARAMETERS", "LUBRICATION PARAMETERS",
-    "FATIGUE PARAMETERS", "INITIAL OPERATING CONDITIONS", "SCALE FACTORS AND OUTPUT CONTROLS",
-)
+ECHO_BLOCKS = BLOCK_TITLES
 _WHOLE_NUMBERS = re.compile(rf"^(?:{NUMBER_TOKEN.pattern})+$")
 _BANNER = re.compile(r"Bearing Type\s*=\s*(\S+)\s+Program\s+Mode\s*=\s*(\S+)\s+Run Id\s*=\s*(.*?)\s*\*?\s*$")
 

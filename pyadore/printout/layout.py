@@ -15,7 +15,12 @@ Widths (characters):
 
 A field holding :data:`UNKNOWN_TOKEN` right-aligned means "unknown, not compared" (only
 golden files use it; a Fortran numeric write never produces ``?``).  A field made only
-of ``*`` is a Fortran overflow.
+of ``*`` is a Fortran overflow.  A field holding :data:`NOT_COMPUTED_TOKEN` (``NaN``, what
+a Fortran write prints for IEEE NaN) is a value the engine does not compute; integer
+fields print it for :data:`INT_NOT_COMPUTED`.
+
+``pyadore/printout/fortran_layout.py`` turns this module into Fortran parameter data
+(``fortran/output/layout_table.f90``) for the engine's print writer.
 """
 
 from __future__ import annotations
@@ -25,6 +30,10 @@ from dataclasses import dataclass, field
 LINE_WIDTH = 132
 VALUE_WIDTH = 11  # 1X,ES10.3
 UNKNOWN_TOKEN = "?"
+NOT_COMPUTED_TOKEN = "NaN"
+#: Integer fields (codes, echo integers) that the engine does not compute carry this
+#: value (-huge(0) of a default Fortran integer) and print ``NaN`` right-aligned.
+INT_NOT_COMPUTED = -(2**31 - 1)
 
 BANNER_LINE = "ADVANCED DYNAMICS OF ROLLING ELEMENTS"
 STEP_HEADING = "  step        tau       Time Outer Race Rot Inner Race Rot  (ADORE 5.0)"
@@ -39,6 +48,9 @@ SECTION_TITLES = {
     "4": "4. Time Step Summary",
 }
 TERMINATION_PREFIX = "Normal termination:"
+#: ``(5X,A,I8,5X,A,1X,ES10.4)`` with these two texts.
+TERMINATION_STEP_TEXT = "Normal termination: Last Step Number ="
+TERMINATION_TIME_TEXT = "Final Time ="
 STATISTICS_TITLE = "Statistics of this Run"
 
 
@@ -251,6 +263,10 @@ SUMMARY = TableSpec(
      "average_re_excursion_m"),
     label="step", label_width=6,
 )
+#: Row labels of the text-labelled tables, in print order.
+BODY_ROWS = ("Cage", "ORace", "IRace")
+LOAD_ROWS = ("Cage", "Int ORace", "Int IRace", "Ext ORace", "Ext IRace")
+ACC_ROWS = ("Cage", "ORace", "IRace")
 HEADER_COLUMNS = ("tau", "time_s", "outer_race_rot_rev", "inner_race_rot_rev")
 PERFORMANCE_COLUMNS = tuple(RIGHT_LABELS)
 TERMINATION_COLUMNS = ("last_step_number", "final_time")

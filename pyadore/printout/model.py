@@ -3,12 +3,14 @@
 A :class:`PrintRun` holds the banner facts, the input echo as named values, every
 printed step (:class:`Step`) with its tables as pandas DataFrames, the termination line
 and the run statistics.  Table values are floats in the units named by the column suffix
-(``_N``, ``_m``, ``_deg`` ...); a field that is unknown (golden ``?``) or overflowed
-(Fortran ``****``) is NaN in the values frame and flagged in the parallel marker frame.
+(``_N``, ``_m``, ``_deg`` ...); a field that is unknown (golden ``?``), overflowed
+(Fortran ``****`` or ``Infinity``) or not computed by the engine (Fortran ``NaN``) is NaN
+(``+-inf`` for ``Infinity``) in the values frame and flagged in the parallel marker frame.
 """
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 
@@ -19,6 +21,9 @@ from ..errors import AdoreInputError
 #: Marker codes used in :attr:`Step.markers` (``""`` = an ordinary printed value).
 UNKNOWN = "unknown"
 OVERFLOW = "overflow"
+#: The engine printed ``NaN``: a value it does not compute (yet).  Not unknown (that is a
+#: golden-file marker) and not overflow; ``pyadore diff`` counts it as a failure of its own.
+NOT_COMPUTED = "not_computed"
 
 
 class PrintFormatError(AdoreInputError):
@@ -26,7 +31,7 @@ class PrintFormatError(AdoreInputError):
 
 
 class _Marker:
-    """A non-numeric echo value: :data:`UNKNOWN_VALUE` or :data:`OVERFLOW_VALUE`."""
+    """A non-numeric echo value: :data:`UNKNOWN_VALUE`, :data:`OVERFLOW_VALUE` or :data:`NOT_COMPUTED_VALUE`."""
 
     def __init__(self, name: str) -> None:
         self.name = name
@@ -37,11 +42,16 @@ class _Marker:
 
 UNKNOWN_VALUE = _Marker(UNKNOWN)
 OVERFLOW_VALUE = _Marker(OVERFLOW)
+NOT_COMPUTED_VALUE = _Marker(NOT_COMPUTED)
+
+#: How a Fortran numeric write prints NaN (right-aligned in the field) and infinities.
+NAN_TOKEN = "NaN"
+_INFINITY = re.compile(r"^[-+]?(?:Infinity|Inf)$")
 
 _FLOAT = re.compile(r"^[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+|[-+]\d{2,3})?$")
 _INT = re.compile(r"^[-+]?\d+$")
 #: One numeric token, also when several are run together (``1.0E+00-2.0E-01``).
-NUMBER_TOKEN = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+)(?:[EeDd][-+]?\d+|[-+]\d{3})|[-+]?\d+|\?|\*+")
+NUMBER_TOKEN = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+)(?:[EeDd][-+]?\d+|[-+]\d{3})|[-+]?\d+|\?|\*+|NaN|[-+]?Infinity")
 
 
 def parse_number(text: str) -> float | None:
@@ -58,12 +68,20 @@ def parse_number(text: str) -> float | None:
 
 
 def parse_field(text: str) -> tuple[float, str] | None:
-    """Parse one table field: (value, marker) with marker "", UNKNOWN or OVERFLOW; None if invalid."""
+    """Parse one table field: (value, marker) with marker "", UNKNOWN, OVERFLOW or NOT_COMPUTED; None if invalid.
+
+    ``NaN`` (what a Fortran write prints for IEEE NaN) is NOT_COMPUTED; ``Infinity`` /
+    ``-Infinity`` (``Inf`` in narrow fields) is OVERFLOW with the value +-inf.
+    """
     t = text.strip()
     if t == "?":
         return float("nan"), UNKNOWN
     if t and set(t) == {"*"}:
         return float("nan"), OVERFLOW
+    if t == NAN_TOKEN:
+        return float("nan"), NOT_COMPUTED
+    if _INFINITY.match(t):
+        return (-math.inf if t.startswith("-") else math.inf), OVERFLOW
     v = parse_number(t)
     if v is None:
         return None
@@ -71,12 +89,17 @@ def parse_field(text: str) -> tuple[float, str] | None:
 
 
 def parse_echo_token(text: str):
-    """Parse one echo value token: int, float, UNKNOWN_VALUE or OVERFLOW_VALUE; None if not a value."""
+    """Parse one echo value token: int, float, UNKNOWN_VALUE, OVERFLOW_VALUE or NOT_COMPUTED_VALUE.
+
+    None if the token is not a value.
+    """
     t = text.strip()
     if t == "?":
         return UNKNOWN_VALUE
-    if t and set(t) == {"*"}:
+    if (t and set(t) == {"*"}) or _INFINITY.match(t):
         return OVERFLOW_VALUE
+    if t == NAN_TOKEN:
+        return NOT_COMPUTED_VALUE
     if _INT.match(t):
         return int(t)
     return parse_number(t)
@@ -90,7 +113,7 @@ class Step:
     ``tables`` maps a table name (``re_contact``, ``re_motion``, ``re_traction``,
     ``re_thermal``, ``slices_<roller>``, ``re_cage``, ``race_cage``, ``bodies``, ``loads``,
     ``accelerations``, ``performance``, ``summary``) to a float DataFrame; ``markers`` has
-    the same shape with "" / "unknown" / "overflow" per cell.
+    the same shape with "" / "unknown" / "overflow" / "not_computed" per cell.
     """
 
     number: int
@@ -112,10 +135,11 @@ class PrintRun:
     """A whole print file: banner facts, echo, steps (by step number), termination, statistics.
 
     ``echo`` maps ``block.label`` names (snake_case, units as suffix, ``[i]`` for the i-th
-    of several values on one label) to int, float, str, UNKNOWN_VALUE or OVERFLOW_VALUE.
+    of several values on one label) to int, float, str, UNKNOWN_VALUE, OVERFLOW_VALUE or
+    NOT_COMPUTED_VALUE.
     ``termination`` has ``last_step_number`` and ``final_time`` (dimensionless tau);
     ``statistics`` has the step sizes and truncation (dimensionless) and the derivative calls;
-    ``termination_markers`` / ``statistics_markers`` flag unknown or overflowed entries.
+    ``termination_markers`` / ``statistics_markers`` flag unknown, overflowed or not computed entries.
     """
 
     path: str

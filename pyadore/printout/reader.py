@@ -23,8 +23,8 @@ _BANNER_INFO = re.compile(r"Bearing Type\s*=\s*(\S+)\s+Program\s+Mode\s*=\s*(\S+
 _TERMINATION = re.compile(r"Last Step Number\s*=\s*(\S+)\s+Final Time\s*=\s*(\S+)")
 _SLICES_TITLE = re.compile(r"^1a\.\s+Load Distribution Along Roller no\.\s*(\d+)\s*$")
 _SECTION_TITLE = re.compile(r"^(1|1a|2|3|4)\.\s")
-_LOAD_ROWS = ("Cage", "Int ORace", "Int IRace", "Ext ORace", "Ext IRace")
-_ACC_ROWS = ("Cage", "ORace", "IRace")
+_LOAD_ROWS = L.LOAD_ROWS
+_ACC_ROWS = L.ACC_ROWS
 
 
 def _norm(text: str) -> str:

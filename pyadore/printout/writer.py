@@ -11,36 +11,59 @@ import math
 import pandas as pd
 
 from . import layout as L
-from .model import OVERFLOW, UNKNOWN, Step
+from .model import NOT_COMPUTED, OVERFLOW, UNKNOWN, Step
 
 
 def format_value(value: float, marker: str = "", width: int = 10, decimals: int = 3) -> str:
-    """One field ``1X,ESw.d`` (``width + 1`` characters) as Fortran writes it.
+    """One field ``1X,ESw.d`` (``width + 1`` characters) as gfortran writes it.
 
-    Unknown prints ``?`` right-aligned, overflow (or a value too wide) prints ``*``.
-    Exponents beyond two digits drop the ``E`` (``1.000-100``), as Fortran does.
+    Unknown prints ``?`` right-aligned; overflow, or a value too wide for the field, prints
+    ``*`` (Fortran's overflow).  NaN - a value the engine does not compute, or the marker
+    NOT_COMPUTED - prints ``NaN`` right-aligned, +-inf ``Infinity`` / ``-Infinity``, as
+    gfortran does.  Exponents beyond two digits drop the ``E`` (``1.000-100``).
     """
     if marker == UNKNOWN:
-        return " " + "?".rjust(width)
-    if marker == OVERFLOW or value is None or (isinstance(value, float) and math.isnan(value)):
+        return " " + L.UNKNOWN_TOKEN.rjust(width)
+    if marker == OVERFLOW:
         return " " + "*" * width
-    text = f"{value:.{decimals}E}"
-    mant, exp = text.split("E")
-    if abs(int(exp)) >= 100:
-        text = mant + exp
+    if marker == NOT_COMPUTED or value is None or (isinstance(value, float) and math.isnan(value)):
+        text = L.NOT_COMPUTED_TOKEN
+    elif math.isinf(value):
+        text = "Infinity" if width >= 9 or (value > 0 and width >= 8) else "Inf"
+        text = ("-" + text) if value < 0 else text
+    else:
+        text = f"{value:.{decimals}E}"
+        mant, exp = text.split("E")
+        if abs(int(exp)) >= 100:
+            text = mant + exp
     if len(text) > width:
         return " " + "*" * width
     return " " + text.rjust(width)
+
+
+def format_int(value, marker: str = "", width: int = 3) -> str:
+    """One integer field ``Iw`` as Fortran writes it: ``*`` when too wide, ``?`` unknown,
+    ``NaN`` when not computed (NaN, the marker NOT_COMPUTED or :data:`layout.INT_NOT_COMPUTED`)."""
+    if marker == UNKNOWN:
+        return L.UNKNOWN_TOKEN.rjust(width)
+    if marker == OVERFLOW:
+        return "*" * width
+    if (marker == NOT_COMPUTED or value is None or (isinstance(value, float) and math.isnan(value))
+            or int(value) == L.INT_NOT_COMPUTED):
+        text = L.NOT_COMPUTED_TOKEN
+    else:
+        text = str(int(value))
+    return "*" * width if len(text) > width else text.rjust(width)
 
 
 def format_label(spec: L.TableSpec, label) -> str:
     """The row label of ``spec`` (``I5``/``I6``, ``A5``/``A10`` or ``I5,I3`` for roller ends)."""
     if spec.label == "re_end":
         re_no, end = label
-        return f"{int(re_no):5d}{int(end):3d}"
+        return format_int(re_no, width=5) + format_int(end, width=3)
     if spec.label == "text":
         return f"{label:<{spec.label_width}}"[: spec.label_width]
-    return f"{int(label):{spec.label_width}d}"
+    return format_int(label, width=spec.label_width)
 
 
 def format_row(spec: L.TableSpec, label, values: list, markers: list) -> str:
@@ -48,7 +71,7 @@ def format_row(spec: L.TableSpec, label, values: list, markers: list) -> str:
     out = format_label(spec, label)
     ncode = len(spec.codes)
     for v, m in zip(values[:ncode], markers[:ncode]):
-        out += "  ?" if m == UNKNOWN else ("***" if m == OVERFLOW else f"{int(v):3d}")
+        out += format_int(v, m, 3)
     for v, m in zip(values[ncode:], markers[ncode:]):
         out += format_value(v, m)
     return out.rstrip()
@@ -68,7 +91,7 @@ def header_block(number: int, header: dict, run_id: str, marks: dict | None = No
     """The four-line step header: headings, units, values ``(I6,2(1X,ES10.3),2(5X,ES10.3),2X,A)``, rule."""
     marks = marks or {}
     vals = [format_value(header[c], marks.get(c, "")) for c in L.HEADER_COLUMNS]
-    line = f"{number:6d}" + vals[0] + vals[1] + "    " + vals[2] + "    " + vals[3] + "  " + run_id
+    line = format_int(number, width=6) + vals[0] + vals[1] + "    " + vals[2] + "    " + vals[3] + "  " + run_id
     return [L.STEP_HEADING, L.STEP_UNITS, line.rstrip(), L.STEP_RULE, ""]
 
 
@@ -98,7 +121,7 @@ def format_step(step: Step) -> list[str]:
     out += [L.SECTION_TITLES["1"], ""]
     for spec in L.SECTION_TABLES["1"]:
         out += format_table(spec, step.tables[spec.name], step.markers.get(spec.name)) + [""]
-    for name in sorted(n for n in step.tables if n.startswith("slices_")):
+    for name in sorted((n for n in step.tables if n.startswith("slices_")), key=lambda n: int(n.split("_")[1])):
         out += header_block(step.number, step.header, step.run_id, step.markers.get("header"))
         out += [f"{L.SECTION_TITLES['1a']} {name.split('_')[1]}", ""]
         out += format_table(L.SLICES, step.tables[name], step.markers.get(name)) + [""]
@@ -121,7 +144,7 @@ def termination_line(last_step: int, final_time: float, marks: dict | None = Non
     """``(5X,'Normal termination: Last Step Number =',I8,5X,'Final Time =',1X,ES10.4)``."""
     marks = marks or {}
     ft = format_value(final_time, marks.get("final_time", ""), width=10, decimals=4)
-    return f"     Normal termination: Last Step Number ={last_step:8d}     Final Time ={ft}"
+    return "     " + L.TERMINATION_STEP_TEXT + format_int(last_step, width=8) + "     " + L.TERMINATION_TIME_TEXT + ft
 
 
 def statistics_lines(stats: dict, marks: dict | None = None) -> list[str]:
@@ -133,7 +156,7 @@ def statistics_lines(stats: dict, marks: dict | None = None) -> list[str]:
             continue
         mark = marks.get(name, "")
         if name == "total_derivative_calls":
-            val = "?".rjust(13) if mark == UNKNOWN else f"{int(stats[name]):13d}"
+            val = format_int(stats.get(name), mark, 13)
         else:
             val = format_value(stats.get(name, float("nan")), mark, width=12, decimals=5)
         out.append(f"     {label:<22} ={val}")
