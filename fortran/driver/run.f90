@@ -9,7 +9,12 @@ module adore_driver_run
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
    use adore_deck_reader, only: deck_t, parse_deck
+   use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING
    use adore_output_banner, only: write_listing, write_banner
+   use adore_output_echo_data, only: echo_data_t
+   use adore_output_print_echo, only: write_echo
+   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_driver_report, only: fill_echo, write_ball_step0
    implicit none
    private
 
@@ -31,6 +36,10 @@ contains
 
       type(deck_text_t) :: text
       type(deck_t) :: deck
+      type(bearing_t) :: bearing
+      type(echo_data_t) :: echo
+      type(ball_step0_t) :: ball0
+      logical :: have_ball0
       character(len=:), allocatable :: part_path
       character(len=256) :: iomsg
       integer :: unit, stat
@@ -52,6 +61,17 @@ contains
       ! malformed deck stops here, before any print file exists.
       call parse_deck(text, deck, error)
       if (allocated(error)) return
+      ! The model and the step-0 solution are computed before the print file is opened:
+      ! a deck the physics cannot use fails without leaving any output behind.
+      call build_bearing(deck, bearing, error)
+      if (allocated(error)) return
+      call fill_echo(deck, bearing, echo, error)
+      if (allocated(error)) return
+      have_ball0 = bearing%bearing_type == BALL_BEARING
+      if (have_ball0) then
+         call solve_ball_step0(bearing, ball0, error)
+         if (allocated(error)) return
+      end if
 
       part_path = trim(out_path)//".part"
       open (newunit=unit, file=part_path, status="replace", action="write", &
@@ -63,6 +83,10 @@ contains
 
       call write_listing(unit, text)
       call write_banner(unit)
+      call write_echo(unit, echo)
+      ! Step 0 (the quasi-static start) of ball bearings.  Roller bearings and the time
+      ! integration of later steps come with their issues; the print then ends here.
+      if (have_ball0) call write_ball_step0(unit, bearing, ball0)
 
       close (unit, iostat=stat, iomsg=iomsg)
       if (stat /= 0) then

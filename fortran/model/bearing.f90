@@ -62,6 +62,7 @@ module adore_model_bearing
       ! cage, Rec 7.1
       real(wp) :: cage_od = 0.0_wp, cage_id = 0.0_wp, cage_width = 0.0_wp
       real(wp) :: pocket_clearance(2) = 0.0_wp
+      integer :: n_lands = 0                   !< cage guide lands (Rec 7.0)
       ! materials (echo order: element, outer, inner, cage, shaft, housing)
       type(material_t) :: material(6)
       ! inertia (element, cage, outer race, inner race): kg and kg m**2 (x, y, z)
@@ -69,6 +70,8 @@ module adore_model_bearing
       real(wp) :: moments(3, 4) = 0.0_wp
       ! traction curves (RE/race): kappa(u) = (A + B u) exp(-C u) + D, Rec 10.1x
       real(wp) :: traction(4) = 0.0_wp
+      !> its deck inputs: kappa at zero slip, maximum kappa, kappa at infinite slip, slip at the maximum (m/s)
+      real(wp) :: traction_input(4) = 0.0_wp
       ! operating conditions, Rec 2.7, 9.0, 9.1.x, 11
       !> initial temperatures (K): room, housing, shaft, element, cage, outer race, inner race
       real(wp) :: temperature(7) = 293.0_wp
@@ -108,6 +111,7 @@ contains
       call get_real("7.1", "cage_width", b%cage_width)
       call get_real("7.1", "pocket_clearance_1", b%pocket_clearance(1))
       call get_real("7.1", "pocket_clearance_2", b%pocket_clearance(2))
+      call get_int("7.0", "n_guide_lands", b%n_lands)
       if (allocated(error)) return
 
       ! materials: default steel (cage: its own expansion, hardness and wear), Rec 8.n when present
@@ -168,6 +172,7 @@ contains
                                    b%material(BODY_OUTER)%density, b%mass(3), b%moments(:, 3))
       call hollow_cylinder_inertia(b%inner_raceway_dia, b%shaft_od, b%width_inner, &
                                    b%material(BODY_INNER)%density, b%mass(4), b%moments(:, 4))
+      b%traction_input = k
       call fit_traction_curve(k(1), k(2), k(3), k(4), b%traction, error)
       if (allocated(error)) return
 

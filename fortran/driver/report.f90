@@ -1,0 +1,276 @@
+!> Assembly of the print output from the model and the solution (no formatting here, no
+!> physics): the input echo record from the deck and the bearing model, and the step-0
+!> tables of a ball bearing from its quasi-static start.
+!>
+!> A value pyadore does not compute yet (traction, film, temperatures rise, power loss,
+!> cage contacts, modified life, deck fields whose meaning is not identified) is left as
+!> IEEE NaN / INT_NOT_COMPUTED and prints "NaN": the print never shows a made-up number.
+module adore_driver_report
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type
+   use adore_deck_reader, only: deck_t, deck_get_real, deck_get_int, deck_count, deck_has
+   use adore_model_bearing, only: bearing_t, BALL_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, &
+                                  BODY_SHAFT, BODY_HOUSING
+   use adore_model_scales, only: scale_factors
+   use adore_output_echo_data, only: echo_data_t, echo_data_init
+   use adore_output_layout, only: ELEMENT_BALL, ELEMENT_ROLLER, INT_NOT_COMPUTED, ECHO_MAX_GUIDE, N_PERFORMANCE
+   use adore_output_print_tables, only: write_step
+   use adore_driver_ball_step0, only: ball_step0_t
+   implicit none
+   private
+
+   public :: fill_echo, write_ball_step0
+
+   real(wp), parameter :: pi = acos(-1.0_wp)
+
+contains
+
+   !> The input echo record of deck / bearing model b (SI units; angles in deg as printed).
+   subroutine fill_echo(deck, b, e, error)
+      type(deck_t), intent(in) :: deck
+      type(bearing_t), intent(in) :: b
+      type(echo_data_t), intent(out) :: e
+      type(error_type), allocatable, intent(out) :: error
+
+      real(wp) :: v(9), scales(3)
+      integer :: k, body
+
+      e = echo_data_init()
+      e%run_id = b%run_id
+      e%title = b%run_id
+      e%program_mode = b%mode
+      e%n_elements = b%n_elements
+      e%element_dia = b%d
+      e%pitch_dia = b%dm
+      e%dia_play = b%dia_play
+      e%fit = [b%fit_outer, b%fit_inner]
+      e%width = [b%width_outer, b%width_inner]
+      e%shaft_od = b%shaft_od
+      e%shaft_id = b%shaft_id
+      e%bearing_od = b%bearing_od
+      e%housing_od = b%housing_od
+      if (b%bearing_type == BALL_BEARING) then
+         e%bearing_type = "BALL"
+         e%element_kind = ELEMENT_BALL
+         e%contact_angle = b%alpha0*180.0_wp/pi
+         e%cur_fac = [b%f_o, b%f_i]
+         e%end_play = b%end_play
+      else
+         e%bearing_type = "ROLLER"
+         e%element_kind = ELEMENT_ROLLER
+         e%roller_len = b%roller_length
+         call get("5B", "central_land_length", e%cen_land)
+         call get("5B", "crown_radius", e%crown_rad)
+         call get("5B", "corner_radius_1", e%cor_rad(1))
+         call get("5B", "corner_radius_2", e%cor_rad(2))
+         call get("5B", "outer_race_crown_radius", e%race_crown(1))
+         call get("5B", "inner_race_crown_radius", e%race_crown(2))
+         call get("5B.1", "outer_race_len1", e%outer_len(1))
+         call get("5B.1", "outer_race_len2", e%outer_len(2))
+         call get("5B.1", "inner_race_len1", e%inner_len(1))
+         call get("5B.1", "inner_race_len2", e%inner_len(2))
+      end if
+
+      ! cage and guide lands (Rec 7.x)
+      e%cage_od = b%cage_od
+      e%cage_id = b%cage_id
+      e%cage_width = b%cage_width
+      e%poc_cls = b%pocket_clearance
+      call get("7.1", "segment_cut_angle", e%seg_cut)
+      call get("7.1", "cage_cone_angle", e%cage_cone)
+      call get("7.1", "cage_outer_clearance", e%race_cls(1))
+      call get("7.1", "cage_inner_clearance", e%race_cls(2))
+      e%pocket_shape = INT_NOT_COMPUTED     ! kPocType: its Rec 7.0 position is not identified
+      e%n_cage_segs = INT_NOT_COMPUTED
+      call get_int("7.0", "n_guide_lands", e%n_lands)
+      e%n_guide = min(deck_count(deck, "7.2"), ECHO_MAX_GUIDE)
+      do k = 1, e%n_guide
+         e%guide_land(k) = k
+         call get_int("7.0", "guide_type["//achar(iachar("0") + k)//"]", e%guide_type(k))
+         call get("7.2", "guide_land_diameter", e%guide(1, k), k)
+         call get("7.2", "guide_land_clearance", e%guide(2, k), k)
+         call get("7.2", "guide_land_width", e%guide(3, k), k)
+         call get("7.2", "guide_land_position", e%guide(4, k), k)
+      end do
+
+      ! materials: rows = properties, columns = RE, outer, inner, cage, shaft, housing
+      do body = 1, 6
+         associate (m => b%material(body))
+            v = [m%density, m%modulus, m%poisson, m%expansion, m%conductivity, m%heat_capacity, &
+                 m%strain_limit, m%hardness, m%wear]
+         end associate
+         e%material(body, :) = v
+      end do
+      ! inertia rows: RE, cage, outer race, inner race: mass, 3 moments, 3 offsets (0: centred)
+      do k = 1, 4
+         e%inertia(:, k) = [b%mass(k), b%moments(:, k), 0.0_wp, 0.0_wp, 0.0_wp]
+         e%principal(:, k) = 0.0_wp
+      end do
+
+      ! lubrication: RE/race traction curve coefficients (Rec 10.1x fit); cage friction (Rec 10.5.x)
+      e%lubrication(2:5, 1) = b%traction_input
+      e%lubrication(2:5, 2) = b%traction_input
+      e%lubrication(6:9, 1) = b%traction
+      e%lubrication(6:9, 2) = b%traction
+      call get("10.5.1B", "re_cage_coeff_d", e%lubrication(9, 3))
+      call get("10.5.2B", "race_cage_coeff_d", e%lubrication(9, 4))
+      call get("10.5.1B", "re_cage_coeff_a", e%lubrication(6, 3))
+      call get("10.5.1B", "re_cage_coeff_b", e%lubrication(7, 3))
+      call get("10.5.1B", "re_cage_coeff_c", e%lubrication(8, 3))
+      call get("10.5.2B", "race_cage_coeff_a", e%lubrication(6, 4))
+      call get("10.5.2B", "race_cage_coeff_b", e%lubrication(7, 4))
+      call get("10.5.2B", "race_cage_coeff_c", e%lubrication(8, 4))
+
+      ! initial operating conditions
+      e%room_temp = b%temperature(1)
+      e%housing_temp = b%temperature(2)
+      e%shaft_temp = b%temperature(3)
+      e%re_temp = b%temperature(4)
+      e%cage_temp = b%temperature(5)
+      e%race_temp = b%temperature(6:7)
+      e%race_speed = [b%speed_outer, b%speed_inner]*30.0_wp/pi
+      e%misalign_y = 0.0_wp
+      e%misalign_z = 0.0_wp
+      e%n_qs = 0
+      e%trans_constraints = INT_NOT_COMPUTED
+      e%rot_constraints = INT_NOT_COMPUTED
+      call get("2.1", "constraining_load_fraction", e%load_fraction)
+      e%applied_load = b%force
+      e%rel_disp = 0.0_wp
+      e%applied_moment = b%moment
+      e%gravity = b%gravity
+      call get("9.5.1", "cage_center_x", e%cage_position(1))
+      call get("9.5.1", "cage_center_y", e%cage_position(2))
+      call get("9.5.1", "cage_center_z", e%cage_position(3))
+      call get("9.5.1", "cage_angle_x", e%cage_angle(1))
+      call get("9.5.1", "cage_angle_y", e%cage_angle(2))
+      call get("9.5.1", "cage_angle_z", e%cage_angle(3))
+      call get("9.5.1", "cage_whirl_ratio", e%whirl_ratio)
+      call get("9.5.1", "cage_epicyclic_ratio", e%epicyclic_ratio)
+
+      ! scale factors and output controls
+      call scale_factors(b%d, b%mass(1), b%force, scales, error)
+      if (allocated(error)) return
+      e%scale_length = scales(1)
+      e%scale_load = scales(2)
+      e%scale_time = scales(3)
+      call get("2.1", "step_min", e%step_min)
+      call get("2.1", "step_max", e%step_max)
+      call get("2.1", "step_initial", e%step_initial)
+      call get("2.1", "error_limit", e%error_limit)
+      e%n_steps = b%n_steps
+      call get_int("1", "data_control_1", e%data_control(1))
+      call get_int("1", "data_control_2", e%data_control(2))
+      e%data_control(3) = INT_NOT_COMPUTED
+      e%auto_plots = INT_NOT_COMPUTED
+      call get_int("1", "int_method", e%int_method)
+
+   contains
+
+      !> A real deck field into the echo (occurrence of a repeated record); the first
+      !> failure is kept in error.
+      subroutine get(rid, field, value, occurrence)
+         character(len=*), intent(in) :: rid, field
+         real(wp), intent(inout) :: value
+         integer, intent(in), optional :: occurrence
+         type(error_type), allocatable :: err
+         if (allocated(error)) return
+         if (.not. deck_has(deck, rid)) return
+         call deck_get_real(deck, rid, field, value, err, occurrence)
+         if (allocated(err)) call move_alloc(err, error)
+      end subroutine get
+
+      !> An integer deck field into the echo.
+      subroutine get_int(rid, field, value)
+         character(len=*), intent(in) :: rid, field
+         integer, intent(inout) :: value
+         type(error_type), allocatable :: err
+         if (allocated(error)) return
+         call deck_get_int(deck, rid, field, value, err)
+         if (allocated(err)) call move_alloc(err, error)
+      end subroutine get_int
+
+   end subroutine fill_echo
+
+   !> Write step 0 of a ball bearing (sections 1-4) from its quasi-static start s.
+   subroutine write_ball_step0(unit, b, s)
+      integer, intent(in) :: unit
+      type(bearing_t), intent(in) :: b
+      type(ball_step0_t), intent(in) :: s
+
+      real(wp), parameter :: deg = 180.0_wp/pi, rpm = 30.0_wp/pi
+      real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
+      real(wp) :: slices(1, 10, 0), race_cage(max(b%n_lands, 1), 7), bodies(3, 11)
+      real(wp) :: loads(5, 6), acc(3, 7), perf(N_PERFORMANCE), summary(1, 10), nan
+      integer, allocatable :: re_no(:), cage_code(:), cage_end(:)
+      integer :: n, k
+      integer :: land_no(max(b%n_lands, 1)), land_code(max(b%n_lands, 1))
+
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      n = b%n_elements
+      allocate (contact(n, 11), motion(n, 11), traction(n, 11), thermal(n, 11), re_cage(n, 8))
+      allocate (re_no(n), cage_code(n), cage_end(n))
+      re_no = [(k, k=1, n)]
+      motion = nan
+      traction = nan
+      thermal = nan
+      re_cage = nan
+      cage_code = INT_NOT_COMPUTED
+      cage_end = 0
+      associate (e => s%start%equilibrium, kin => s%start%kinematics)
+         contact(:, 1) = e%azimuth*deg
+         contact(:, 2) = e%alpha_o*deg
+         contact(:, 3) = e%alpha_i*deg
+         contact(:, 4) = e%q_o
+         contact(:, 5) = e%q_i
+         contact(:, 6) = e%c_o%max_pressure
+         contact(:, 7) = e%c_i%max_pressure
+         contact(:, 8) = e%c_o%semi_major
+         contact(:, 9) = e%c_i%semi_major
+         contact(:, 10) = e%c_o%semi_minor
+         contact(:, 11) = e%c_i%semi_minor
+         motion(:, 1) = kin%orbital_speed*rpm
+         motion(:, 2) = abs(kin%spin_speed)*rpm
+         thermal(:, 2) = e%delta_o
+         thermal(:, 3) = e%delta_i
+         thermal(:, 4:5) = 0.0_wp                      ! rigid races: no race flexing
+         ! section 2 bodies: Cage, ORace, IRace
+         bodies = nan
+         bodies(2, 1:2) = 0.0_wp                       ! outer race fixed
+         bodies(2, 5) = b%speed_outer*rpm
+         bodies(3, 2) = hypot(e%u(2), e%u(3))
+         bodies(3, 5) = b%speed_inner*rpm
+         ! section 3: forces of the balls on the races and the reactions holding them
+         loads = nan
+         loads(2, 1:3) = e%outer_force
+         loads(2, 4:6) = e%outer_moment
+         loads(3, 1:3) = e%inner_force
+         loads(3, 4:6) = e%inner_moment
+         loads(4, 1:3) = -(e%outer_force + s%outer_weight)
+         loads(4, 4:6) = -e%outer_moment
+         loads(5, 1:3) = -(e%inner_force + s%inner_weight)
+         loads(5, 4:6) = -e%inner_moment
+      end associate
+      land_no = [(k, k=1, size(land_no))]
+      land_code = INT_NOT_COMPUTED
+      race_cage = nan
+      acc = nan
+      acc(2, 1:6) = 0.0_wp                             ! quasi-static: races at rest / in equilibrium
+      acc(3, 1:6) = 0.0_wp
+      acc(2, 7) = b%temperature(6)
+      acc(3, 7) = b%temperature(7)
+      perf = nan
+      perf(1) = s%basic_life_hours
+      perf(2) = s%modified_life_hours
+      perf(3) = s%mounting%outer_fit
+      perf(4) = s%mounting%inner_fit
+      perf(5) = s%mounting%clearance
+      summary = nan
+      summary(1, 1:3) = 0.0_wp
+      call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
+                      thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
+                      land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)
+   end subroutine write_ball_step0
+
+end module adore_driver_report

@@ -1,0 +1,95 @@
+"""Golden-output regression of whole runs: the engine's print file of each appendix deck
+against the report's print (golden/*.prt) with the tolerances of golden/tolerances.toml.
+
+Only what the engine computes so far is gated: the input echo and the step-0 mechanics
+of the ball bearing (issue "Ball step 0").  Everything else prints NaN ("not computed")
+or is absent (later steps), and the diff counts it as such - the whole-file diff still
+fails, honestly, until the remaining issues land.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import pyadore
+from pyadore.diff import diff_prints
+
+ROOT = Path(__file__).resolve().parents[1]
+
+#: (table, column) of step 0 that the engine computes for a ball bearing.
+BALL_STEP0_COMPUTED = [
+    ("re_contact", "*"),
+    ("re_thermal", "contact_deflection_outer_m"),
+    ("re_thermal", "contact_deflection_inner_m"),
+    ("re_motion", "orbital_velocity_rpm"),
+    ("re_motion", "ang_vel_amplitude_rpm"),
+    ("performance", "outer_race_fit_m"),
+    ("performance", "inner_race_fit_m"),
+    ("performance", "internal_clearance_m"),
+    ("performance", "basic_fatigue_life_hours"),
+]
+
+
+def _run(tmp_path, deck):
+    out = tmp_path / (deck + ".prt")
+    pyadore.run(ROOT / "decks" / f"{deck}.inp", steps=0, out=out)
+    return out
+
+
+@pytest.fixture(scope="module")
+def ball_report(tmp_path_factory):
+    out = _run(tmp_path_factory.mktemp("ball"), "appendix_c_ball")
+    return diff_prints(out, ROOT / "golden" / "appendix_c_ball.prt")
+
+
+@pytest.fixture(scope="module")
+def roller_report(tmp_path_factory):
+    out = _run(tmp_path_factory.mktemp("roller"), "appendix_d_roller")
+    return diff_prints(out, ROOT / "golden" / "appendix_d_roller.prt")
+
+
+def _selected(report, step_prefix, wanted):
+    out = []
+    for c in report.comparisons:
+        if not c.name.startswith(step_prefix):
+            continue
+        table = c.table.split()[-1]
+        if any(table == t and (col == "*" or c.column == col) for t, col in wanted):
+            out.append(c)
+    return out
+
+
+def test_ball_echo_has_no_value_outside_its_printed_precision(ball_report):
+    echo = [c for c in ball_report.comparisons if c.name.startswith("echo ")]
+    outside = [f"{c.name}: golden {c.golden} run {c.run}" for c in echo if c.status == "outside"]
+    assert outside == []
+    assert sum(c.status == "within" for c in echo) >= 170
+
+
+def test_ball_step0_mechanics_within_tolerance(ball_report):
+    comps = _selected(ball_report, "step 0 ", BALL_STEP0_COMPUTED)
+    compared = [c for c in comps if c.status != "unknown"]
+    assert len(compared) >= 250, "the step-0 mechanics columns were not found in the run"
+    bad = [f"{c.name}: golden {c.golden} run {c.run} ({c.rel_error:.2%}, {c.tolerance})"
+           for c in compared if c.status != "within"]
+    assert bad == []
+
+
+def test_ball_run_reports_what_it_does_not_compute(ball_report):
+    """Columns of later issues print NaN and the differ counts them, never as a pass."""
+    assert ball_report.exit_code == 1
+    not_computed = {c.column for c in ball_report.comparisons if c.status == "not_computed"}
+    assert {"trac_coeff_outer", "film_thickness_inner_m", "contact_loss_outer_W"} <= not_computed
+
+
+def test_roller_echo_matches_except_the_roller_mass(roller_report):
+    """The roller's printed mass (and the inertia and time scale derived from it) is 0.45 %
+    below rho pi D^2 L / 4; how ADORE reduces it is not identified (see test_model_echo)."""
+    echo = [c for c in roller_report.comparisons if c.name.startswith("echo ")]
+    outside = {c.name for c in echo if c.status == "outside"}
+    assert outside == {"echo inertial_parameters.re[1]", "echo inertial_parameters.re[2]",
+                       "echo inertial_parameters.re[3]", "echo inertial_parameters.re[4]",
+                       "echo scale_factors_and_output_controls.time_s"}
+    assert sum(c.status == "within" for c in echo) >= 150
