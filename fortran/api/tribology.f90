@@ -1,0 +1,176 @@
+!> Flat f2py wrappers of the step-0 tribology building blocks (module pyadore._engine):
+!> film thickness, thermal reduction factor, lubricant library, contact slip / traction,
+!> flash temperature (report sections 2.1, 2.7-2.8).
+
+!> Hamrock-Dowson central film thickness h (m); see adore_tribology_film.
+subroutine adore_tribo_film(rx, k, u, q, e_prime, eta0, alpha, h, status, message)
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_tribology_film, only: central_film_thickness
+   implicit none
+   real(wp), intent(in) :: rx, k, u, q, e_prime, eta0, alpha
+   real(wp), intent(out) :: h
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+   type(error_type), allocatable :: error
+
+   status = ADORE_OK
+   message = ""
+   call central_film_thickness(rx, k, u, q, e_prime, eta0, alpha, h, error)
+   if (allocated(error)) then
+      status = error%stat
+      message = error%message
+   end if
+end subroutine adore_tribo_film
+
+!> Thermal reduction factor phi(1:n) (Gupta et al. 1992) for max pressure p_h (Pa),
+!> E' (Pa), thermal loading l(1:n) and slide-to-roll ratio s.
+subroutine adore_tribo_thermal_factor(n, p_h, e_prime, l, s, phi)
+   use adore_core_kinds, only: wp
+   use adore_tribology_film, only: thermal_reduction_factor
+   implicit none
+   integer, intent(in) :: n
+   real(wp), intent(in) :: p_h, e_prime, l(n), s
+   real(wp), intent(out) :: phi(n)
+
+   phi = thermal_reduction_factor(p_h, e_prime, l, s)
+end subroutine adore_tribo_thermal_factor
+
+!> Lubricant of the library at temperature t (K): result = [kinematic viscosity (m**2/s),
+!> dynamic viscosity (Pa s), beta (1/K), alpha (1/Pa), conductivity (W/m/K), density].
+subroutine adore_tribo_lubricant(code, t, density, alpha, conductivity, result, status, message)
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_tribology_film, only: lubricant_t, lubricant_from_code, kinematic_viscosity, &
+                                   dynamic_viscosity, temperature_viscosity_coefficient
+   implicit none
+   integer, intent(in) :: code
+   real(wp), intent(in) :: t, density, alpha, conductivity
+   real(wp), intent(out) :: result(6)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+   type(error_type), allocatable :: error
+   type(lubricant_t) :: lub
+
+   result = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   call lubricant_from_code(code, density, alpha, conductivity, lub, error)
+   if (allocated(error)) then
+      status = error%stat
+      message = error%message
+      return
+   end if
+   result = [kinematic_viscosity(lub, t), dynamic_viscosity(lub, t), &
+             temperature_viscosity_coefficient(lub, t), lub%alpha, lub%conductivity, lub%density]
+end subroutine adore_tribo_lubricant
+
+!> Ball/race contact traction.  geom = [side (+1 outer, -1 inner), alpha (rad), rho (m),
+!> r_b (m), w_x, w_r (rad/s), Omega - w_m (rad/s), a (m), Q (N)]; coef = [A, B, C, D].
+!> result = [force (N), coefficient, power (W), max slip (m/s), centre slip (m/s),
+!> rolling speed (m/s), spin (rad/s), spin/roll, R_x (m), n rolling points, s1, s2 (m)].
+subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status, message)
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
+   implicit none
+   real(wp), intent(in) :: geom(9), coef(4), kappa_scale
+   integer, intent(in) :: n_gauss
+   real(wp), intent(out) :: result(12)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+   type(error_type), allocatable :: error
+   type(ball_race_contact_t) :: c
+   type(contact_traction_t) :: t
+
+   result = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   c = contact_from(geom)
+   call contact_traction(c, coef, kappa_scale, n_gauss, t, error)
+   if (allocated(error)) then
+      status = error%stat
+      message = error%message
+      return
+   end if
+   result = [t%force, t%coefficient, t%power, t%max_slip, t%centre_slip, t%rolling_speed, t%spin, &
+             t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points]
+
+contains
+
+   !> Contact from the flat geometry vector.
+   function contact_from(g) result(cc)
+      real(wp), intent(in) :: g(9)
+      type(ball_race_contact_t) :: cc
+      cc%side = nint(g(1))
+      cc%alpha = g(2)
+      cc%rho = g(3)
+      cc%r_b = g(4)
+      cc%omega = g(5:6)
+      cc%race_speed = g(7)
+      cc%a = g(8)
+      cc%load = g(9)
+   end function contact_from
+
+end subroutine adore_tribo_contact
+
+!> Slip u(s) (m/s) at major-axis positions s(1:n) (m); geom as in adore_tribo_contact.
+subroutine adore_tribo_slip(geom, n, s, u)
+   use adore_core_kinds, only: wp
+   use adore_tribology_slip, only: ball_race_contact_t, contact_slip
+   implicit none
+   real(wp), intent(in) :: geom(9)
+   integer, intent(in) :: n
+   real(wp), intent(in) :: s(n)
+   real(wp), intent(out) :: u(n)
+   type(ball_race_contact_t) :: c
+
+   c%side = nint(geom(1))
+   c%alpha = geom(2)
+   c%rho = geom(3)
+   c%r_b = geom(4)
+   c%omega = geom(5:6)
+   c%race_speed = geom(7)
+   c%a = geom(8)
+   c%load = geom(9)
+   u = contact_slip(c, s)
+end subroutine adore_tribo_slip
+
+!> Dimensionless flash temperature rise (eq 53) on the grid xi(1:n) for flux q(1:n).
+subroutine adore_tribo_flash_strip(n, xi, q, dt)
+   use adore_core_kinds, only: wp
+   use adore_tribology_flash, only: flash_rise_dimensionless
+   implicit none
+   integer, intent(in) :: n
+   real(wp), intent(in) :: xi(n), q(n)
+   real(wp), intent(out) :: dt(n)
+
+   call flash_rise_dimensionless(xi, q, dt)
+end subroutine adore_tribo_flash_strip
+
+!> Contact temperature rise (eq 36): result = [average (K), largest (K)]; see
+!> adore_tribology_flash.contact_temperature_rise for the arguments.
+subroutine adore_tribo_contact_temperature(a, b, p0, m, xk, wk, g, u1, u2, th1, th2, ny, result, &
+                                           status, message)
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_tribology_flash, only: contact_temperature_rise
+   implicit none
+   real(wp), intent(in) :: a, b, p0
+   integer, intent(in) :: m
+   real(wp), intent(in) :: xk(m), wk(m), g(m), u1, u2, th1(3), th2(3)
+   integer, intent(in) :: ny
+   real(wp), intent(out) :: result(2)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+   type(error_type), allocatable :: error
+
+   result = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   call contact_temperature_rise(a, b, p0, xk, wk, g, u1, u2, th1, th2, ny, result(1), result(2), error)
+   if (allocated(error)) then
+      status = error%stat
+      message = error%message
+   end if
+end subroutine adore_tribo_contact_temperature

@@ -1,0 +1,162 @@
+!> Engine unit tests of the step-0 tribology building blocks (fortran/tribology/):
+!> closed forms and defining conditions only; the comparison with the report's print is
+!> in tests/test_tribology.py.
+program test_tribology
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, ADORE_INPUT_ERROR
+   use adore_core_quadrature, only: gauss_legendre
+   use adore_tribology_film, only: lubricant_t, central_film_thickness, thermal_reduction_factor, &
+                                   lubricant_from_code, kinematic_viscosity, &
+                                   temperature_viscosity_coefficient, LUBRICANT_MIL_L_7808
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
+                                   contact_slip, pure_rolling_points, SIDE_OUTER, SIDE_INNER
+   use adore_tribology_flash, only: flash_rise_dimensionless, contact_temperature_rise
+   implicit none
+
+   real(wp), parameter :: pi = acos(-1.0_wp)
+   integer :: failures = 0
+
+   call test_gauss()
+   call test_film()
+   call test_lubricant()
+   call test_slip()
+   call test_flash()
+
+   if (failures > 0) then
+      write (*, "(i0,a)") failures, " tribology unit test(s) failed"
+      error stop 1
+   end if
+   write (*, "(a)") "all tribology unit tests passed"
+
+contains
+
+   subroutine check(cond, what)
+      logical, intent(in) :: cond
+      character(len=*), intent(in) :: what
+      if (.not. cond) then
+         failures = failures + 1
+         write (*, "(a)") "FAIL: "//what
+      end if
+   end subroutine check
+
+   !> n-point Gauss-Legendre integrates x**(2n-1) and x**(2n-2) exactly.
+   subroutine test_gauss()
+      real(wp) :: x(7), w(7)
+      call gauss_legendre(7, x, w)
+      call check(abs(sum(w) - 2.0_wp) < 1.0e-14_wp, "gauss: weights sum to 2")
+      call check(abs(sum(w*x**12) - 2.0_wp/13.0_wp) < 1.0e-14_wp, "gauss: x**12 exact")
+      call check(abs(sum(w*x**13)) < 1.0e-14_wp, "gauss: x**13 exact")
+   end subroutine test_gauss
+
+   !> Scaling laws of the Hamrock-Dowson formula and the limits of the thermal factor.
+   subroutine test_film()
+      type(error_type), allocatable :: error
+      real(wp) :: h1, h2
+      call central_film_thickness(0.01_wp, 5.0_wp, 20.0_wp, 1000.0_wp, 2.2e11_wp, 0.01_wp, 1.0e-8_wp, h1, error)
+      call check(.not. allocated(error), "film: accepted")
+      call central_film_thickness(0.01_wp, 5.0_wp, 40.0_wp, 1000.0_wp, 2.2e11_wp, 0.01_wp, 1.0e-8_wp, h2, error)
+      call check(abs(h2/h1 - 2.0_wp**0.67_wp) < 1.0e-12_wp, "film: h ~ u**0.67")
+      call central_film_thickness(0.01_wp, 5.0_wp, 20.0_wp, 2000.0_wp, 2.2e11_wp, 0.01_wp, 1.0e-8_wp, h2, error)
+      call check(abs(h2/h1 - 2.0_wp**(-0.067_wp)) < 1.0e-12_wp, "film: h ~ Q**-0.067")
+      call central_film_thickness(0.01_wp, 5.0_wp, 20.0_wp, 1000.0_wp, 2.2e11_wp, 0.01_wp, 2.0e-8_wp, h2, error)
+      call check(abs(h2/h1 - 2.0_wp**0.53_wp) < 1.0e-12_wp, "film: h ~ alpha**0.53")
+      call central_film_thickness(0.01_wp, 5.0_wp, -1.0_wp, 1000.0_wp, 2.2e11_wp, 0.01_wp, 1.0e-8_wp, h2, error)
+      call check(allocated(error), "film: negative speed rejected")
+      call check(abs(thermal_reduction_factor(1.0e9_wp, 2.2e11_wp, 0.0_wp, 0.0_wp) - 1.0_wp) < 1.0e-15_wp, &
+                 "thermal factor: 1 at zero thermal loading")
+      call check(thermal_reduction_factor(1.0e9_wp, 2.2e11_wp, 5.0_wp, 0.1_wp) < &
+                 thermal_reduction_factor(1.0e9_wp, 2.2e11_wp, 5.0_wp, 0.0_wp), "thermal factor: falls with slip")
+   end subroutine test_film
+
+   !> The MIL-L-7808 line passes through its two specification points; beta matches a
+   !> central difference; unknown codes and missing properties are input errors.
+   subroutine test_lubricant()
+      type(error_type), allocatable :: error
+      type(lubricant_t) :: lub
+      real(wp) :: t, fd, eps
+      call lubricant_from_code(LUBRICANT_MIL_L_7808, 950.0_wp, 1.0e-8_wp, 0.15_wp, lub, error)
+      call check(.not. allocated(error), "lubricant: MIL-L-7808 accepted")
+      call check(abs(kinematic_viscosity(lub, 313.15_wp)/11.5e-6_wp - 1.0_wp) < 1.0e-12_wp, "lubricant: 40 C point")
+      call check(abs(kinematic_viscosity(lub, 373.15_wp)/3.0e-6_wp - 1.0_wp) < 1.0e-12_wp, "lubricant: 100 C point")
+      t = 323.0_wp
+      eps = 1.0e-3_wp
+      fd = -(log(kinematic_viscosity(lub, t + eps)) - log(kinematic_viscosity(lub, t - eps)))/(2.0_wp*eps)
+      call check(abs(temperature_viscosity_coefficient(lub, t)/fd - 1.0_wp) < 1.0e-7_wp, "lubricant: beta = -dln(eta)/dT")
+      call lubricant_from_code(99, 950.0_wp, 1.0e-8_wp, 0.15_wp, lub, error)
+      call check(allocated(error), "lubricant: unknown code rejected")
+      if (allocated(error)) call check(error%stat == ADORE_INPUT_ERROR, "lubricant: unknown code is an input error")
+      call lubricant_from_code(LUBRICANT_MIL_L_7808, 950.0_wp, 0.0_wp, 0.15_wp, lub, error)
+      call check(allocated(error), "lubricant: missing alpha rejected")
+   end subroutine test_lubricant
+
+   !> Pure rolling points are roots; the zone-split Gauss integral equals a fine midpoint
+   !> sum; power equals the integral of traction times slip.
+   subroutine test_slip()
+      type(ball_race_contact_t) :: c
+      type(contact_traction_t) :: t
+      type(error_type), allocatable :: error
+      real(wp) :: coef(4), s, ds, u, f, p, dq, kap, pts(2)
+      integer :: n, j, m
+
+      c%side = SIDE_INNER
+      c%alpha = 0.48_wp
+      c%rho = 0.009525_wp
+      c%r_b = 0.07_wp
+      c%omega = [-7800.0_wp, 1140.0_wp]
+      c%race_speed = 1151.0_wp
+      c%a = 1.25e-3_wp
+      c%load = 770.0_wp
+      coef = [-0.016_wp, 0.0382896_wp, 1.71782_wp, 0.016_wp]
+      call pure_rolling_points(c, n, pts)
+      do j = 1, n
+         call check(abs(contact_slip(c, pts(j))) < 1.0e-9_wp, "slip: rolling point is a root")
+      end do
+      call contact_traction(c, coef, 1.0_wp, 24, t, error)
+      call check(.not. allocated(error), "slip: accepted")
+      m = 200000
+      ds = 2.0_wp*c%a/m
+      f = 0.0_wp
+      p = 0.0_wp
+      do j = 1, m
+         s = -c%a + (j - 0.5_wp)*ds
+         u = contact_slip(c, s)
+         kap = (coef(1) + coef(2)*abs(u))*exp(-coef(3)*abs(u)) + coef(4)
+         dq = 0.75_wp*c%load/c%a*(1.0_wp - (s/c%a)**2)*ds
+         f = f + sign(kap, u)*dq
+         p = p + kap*abs(u)*dq
+      end do
+      call check(abs(t%force - f) <= 1.0e-6_wp*abs(p/1.0_wp), "slip: traction = fine midpoint sum")
+      call check(abs(t%power/p - 1.0_wp) < 1.0e-7_wp, "slip: power = fine midpoint sum")
+      call check(n >= 1, "slip: the test contact has a pure-rolling point")
+      c%a = 2.0_wp*c%rho
+      call contact_traction(c, coef, 1.0_wp, 24, t, error)
+      call check(allocated(error), "slip: a > rho rejected")
+   end subroutine test_slip
+
+   !> Uniform flux: dT~(xi) = 2 q sqrt(xi + 1) exactly (the linear quadrature is exact);
+   !> elliptical flux on a circle: contact average positive and below the maximum.
+   subroutine test_flash()
+      real(wp) :: xi(41), q(41), dt(41), xk(16), wk(16), g(16), avg, mx
+      type(error_type), allocatable :: error
+      integer :: i
+      xi = [(-1.0_wp + 2.0_wp*(i - 1)/40.0_wp, i=1, 41)]
+      q = 3.0_wp
+      call flash_rise_dimensionless(xi, q, dt)
+      call check(maxval(abs(dt - 6.0_wp*sqrt(xi + 1.0_wp))) < 1.0e-12_wp, "flash: uniform flux closed form")
+      q = xi
+      call flash_rise_dimensionless(xi, q, dt)
+      ! integral of xi / sqrt(y - xi) from -1 to y = (2/3) (2 y - 1) sqrt(y + 1)
+      call check(maxval(abs(dt - (2.0_wp/3.0_wp)*(2.0_wp*xi - 1.0_wp)*sqrt(xi + 1.0_wp))) < 1.0e-12_wp, &
+                 "flash: linear flux closed form")
+      call gauss_legendre(16, xk, wk)
+      xk = 1.0e-3_wp*xk
+      wk = 1.0e-3_wp*wk
+      g = 0.01_wp
+      call contact_temperature_rise(1.0e-3_wp, 1.0e-3_wp, 1.0e9_wp, xk, wk, g, 10.0_wp, 10.0_wp, &
+                                    [7750.0_wp, 470.0_wp, 43.0_wp], [7750.0_wp, 470.0_wp, 43.0_wp], 201, &
+                                    avg, mx, error)
+      call check(.not. allocated(error), "flash: contact accepted")
+      call check(avg > 0.0_wp .and. avg < mx, "flash: 0 < average < maximum")
+   end subroutine test_flash
+
+end program test_tribology

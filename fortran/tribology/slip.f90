@@ -1,0 +1,205 @@
+!> Slip along the major axis of a ball/race contact and the traction and power loss it
+!> produces with the four-parameter traction curve (report section 2.1, eqs 1, 3, 4).
+!>
+!> Frame: the one that orbits with the ball (orbital speed w_m about the bearing axis x);
+!> components (axial x, radial r) in the ball's meridian plane, as in
+!> adore_quasistatic_ball_kinematics.  The ball turns at omega = (w_x, w_r) (the print's
+!> "Angular Velocity" with phi = 0), the race at w = Omega - w_m about x.  A point of the
+!> major axis lies at angle psi from the contact centre on a circle of radius rho about
+!> the ball centre, on the normal n(psi) = side (sin(alpha + psi), cos(alpha + psi))
+!> (side = +1 outer race, -1 inner race).  Eq (3), rolling (circumferential) component:
+!>     u(psi) = rho (w_x n_r - w_r n_x) - w (r_b + rho n_r)
+!>            = A cos(theta) + B sin(theta) + C,  theta = alpha + psi,
+!>     A = side rho (w_x - w),  B = -side rho w_r,  C = -w r_b,
+!> so the pure-rolling points (u = 0) are found in closed form; the major axis (s = rho psi
+!> in [-a, a]) is split there and each zone integrated by Gauss-Legendre (report 2.1).
+!> Load per unit length along the major axis (Hertz): dQ/ds = 3 Q / (4 a) (1 - (s/a)**2).
+!> Traction per strip: kappa(|u|) sign(u) dQ (eq 1, one-dimensional model); power: the
+!> integral of kappa(|u|) |u| dQ (eq 4).
+module adore_tribology_slip
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
+   use adore_core_quadrature, only: gauss_legendre
+   use adore_model_traction_fit, only: traction_coefficient
+   implicit none
+   private
+
+   public :: ball_race_contact_t, contact_traction_t
+   public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics
+
+   integer, parameter, public :: SIDE_OUTER = 1   !< contact with the outer race
+   integer, parameter, public :: SIDE_INNER = -1  !< contact with the inner race
+
+   !> One ball/race contact at a given instant (SI units, angles in rad).
+   type :: ball_race_contact_t
+      integer :: side = SIDE_OUTER      !< SIDE_OUTER or SIDE_INNER
+      real(wp) :: alpha = 0.0_wp        !< contact angle (rad)
+      real(wp) :: rho = 0.0_wp          !< radius of the contact surface about the ball centre (m)
+      real(wp) :: r_b = 0.0_wp          !< radius of the ball centre from the bearing axis (m)
+      real(wp) :: omega(2) = 0.0_wp     !< ball angular velocity (axial, radial) in the orbit frame (rad/s)
+      real(wp) :: race_speed = 0.0_wp   !< race angular speed relative to the orbit frame, Omega - w_m (rad/s)
+      real(wp) :: a = 0.0_wp            !< semi-major axis of the contact ellipse (m)
+      real(wp) :: load = 0.0_wp         !< normal load (N)
+   end type ball_race_contact_t
+
+   !> Integrated contact quantities.
+   type :: contact_traction_t
+      real(wp) :: force = 0.0_wp        !< traction on the race along the slip direction (N)
+      real(wp) :: coefficient = 0.0_wp  !< force / load (-)
+      real(wp) :: power = 0.0_wp        !< heat generated, integral of kappa |u| dQ (W)
+      real(wp) :: max_slip = 0.0_wp     !< largest |u| on the major axis (m/s)
+      real(wp) :: centre_slip = 0.0_wp  !< u at the contact centre (m/s)
+      real(wp) :: rolling_speed = 0.0_wp  !< mean entraining speed (u_ball + u_race)/2 at the centre (m/s)
+      real(wp) :: spin = 0.0_wp         !< spin of the ball relative to the race about the normal (rad/s)
+      real(wp) :: spin_roll = 0.0_wp    !< spin / (rolling_speed / R_x) (-)
+      real(wp) :: rx = 0.0_wp           !< effective radius in the rolling direction (m)
+      integer :: n_rolling = 0          !< number of pure-rolling points inside (-a, a)
+      real(wp) :: rolling_points(2) = 0.0_wp  !< their positions s (m), ascending
+   end type contact_traction_t
+
+contains
+
+   !> Slip velocity u(s) (m/s) at position s (m) on the major axis, eq (3) rolling
+   !> component (ball surface speed minus race surface speed).
+   elemental function contact_slip(c, s) result(u)
+      type(ball_race_contact_t), intent(in) :: c
+      real(wp), intent(in) :: s
+      real(wp) :: u, th
+
+      th = c%alpha + s/c%rho
+      u = c%side*c%rho*(c%omega(1) - c%race_speed)*cos(th) - c%side*c%rho*c%omega(2)*sin(th) &
+          - c%race_speed*c%r_b
+   end function contact_slip
+
+   !> Pure-rolling points s (m) of the contact: roots of u(s) strictly inside (-a, a),
+   !> ascending (at most two: u is a shifted sinusoid in s / rho with period >> 2 a).
+   pure subroutine pure_rolling_points(c, n, s)
+      type(ball_race_contact_t), intent(in) :: c
+      integer, intent(out) :: n
+      real(wp), intent(out) :: s(2)
+      real(wp), parameter :: pi = acos(-1.0_wp)
+      real(wp) :: aa, bb, cc, r, delta, gam, cand, psi
+      integer :: k, m
+
+      n = 0
+      s = 0.0_wp
+      aa = c%side*c%rho*(c%omega(1) - c%race_speed)
+      bb = -c%side*c%rho*c%omega(2)
+      cc = -c%race_speed*c%r_b
+      r = hypot(aa, bb)
+      if (r <= 0.0_wp) return
+      if (abs(cc) > r) return
+      delta = atan2(bb, aa)
+      gam = acos(-cc/r)
+      do k = 1, 2
+         cand = delta + merge(gam, -gam, k == 1)
+         do m = -2, 2                       ! bring psi = theta - alpha to its principal value
+            psi = cand + 2.0_wp*pi*m - c%alpha
+            if (abs(psi*c%rho) < c%a) then
+               if (n == 1) then
+                  if (abs(psi*c%rho - s(1)) <= 1.0e-14_wp*c%a) cycle
+               end if
+               n = n + 1
+               s(n) = psi*c%rho
+               exit
+            end if
+         end do
+      end do
+      if (n == 2) then
+         if (s(2) < s(1)) s = [s(2), s(1)]
+      end if
+   end subroutine pure_rolling_points
+
+   !> Centre kinematics (no traction): spin (rad/s), entraining speed (m/s), R_x (m),
+   !> spin/roll ratio and centre slip, filled into t.
+   pure subroutine contact_kinematics(c, t)
+      type(ball_race_contact_t), intent(in) :: c
+      type(contact_traction_t), intent(inout) :: t
+      real(wp) :: n(2), u_ball, u_race, r_race
+
+      n = c%side*[sin(c%alpha), cos(c%alpha)]
+      u_ball = c%rho*(c%omega(1)*n(2) - c%omega(2)*n(1))
+      r_race = c%r_b + c%rho*n(2)
+      u_race = c%race_speed*r_race
+      t%centre_slip = u_ball - u_race
+      t%rolling_speed = 0.5_wp*(u_ball + u_race)
+      t%spin = dot_product(c%omega, n) - c%race_speed*n(1)
+      ! 1/R_x = 1/rho - side/R (outer race concave, inner race convex in the rolling direction)
+      t%rx = 1.0_wp/(1.0_wp/c%rho - real(c%side, wp)/r_race)
+      t%spin_roll = 0.0_wp
+      if (t%rolling_speed /= 0.0_wp) t%spin_roll = t%spin*t%rx/t%rolling_speed
+   end subroutine contact_kinematics
+
+   !> Traction, power loss and kinematics of the contact (report eqs 1, 3, 4): traction
+   !> curve coef = [A, B, C, D] (s/m units for B, C), each zone between pure-rolling points
+   !> integrated with an n_gauss-point Gauss-Legendre rule; kappa is multiplied by
+   !> kappa_scale (1 for the bare curve).  Input error for a bad contact or n_gauss < 1.
+   subroutine contact_traction(c, coef, kappa_scale, n_gauss, t, error)
+      type(ball_race_contact_t), intent(in) :: c
+      real(wp), intent(in) :: coef(4), kappa_scale
+      integer, intent(in) :: n_gauss
+      type(contact_traction_t), intent(out) :: t
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: x(:), w(:)
+      real(wp) :: edges(4), lo, hi, s, ds, u, kap, dq
+      integer :: nz, z, j, nr
+      real(wp) :: pts(2)
+
+      if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load >= 0.0_wp &
+                 .and. c%r_b > c%rho .and. abs(c%side) == 1)) then
+         call input_error(error, "contact traction: need 0 < a < rho < r_b, load >= 0, side = +-1")
+         return
+      end if
+      if (n_gauss < 1) then
+         call input_error(error, "contact traction: need at least one Gauss point per zone")
+         return
+      end if
+      call contact_kinematics(c, t)
+      call pure_rolling_points(c, nr, pts)
+      t%n_rolling = nr
+      t%rolling_points = pts
+      edges(1) = -c%a
+      edges(2:nr + 1) = pts(1:nr)
+      edges(nr + 2) = c%a
+      nz = nr + 1
+      allocate (x(n_gauss), w(n_gauss))
+      call gauss_legendre(n_gauss, x, w)
+      t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
+      do z = 1, nz
+         lo = edges(z)
+         hi = edges(z + 1)
+         ds = 0.5_wp*(hi - lo)
+         do j = 1, n_gauss
+            s = 0.5_wp*(lo + hi) + ds*x(j)
+            u = contact_slip(c, s)
+            kap = kappa_scale*traction_coefficient(coef(1), coef(2), coef(3), coef(4), abs(u))
+            dq = 0.75_wp*c%load/c%a*(1.0_wp - (s/c%a)**2)*ds*w(j)
+            t%force = t%force + sign(kap, u)*dq
+            t%power = t%power + kap*abs(u)*dq
+            t%max_slip = max(t%max_slip, abs(u))
+         end do
+      end do
+      ! a stationary point of u inside the contact (the sinusoid's extremum)
+      call interior_extremum(c, t%max_slip)
+      if (c%load > 0.0_wp) t%coefficient = t%force/c%load
+   end subroutine contact_traction
+
+   !> Raise umax to |u| at the extremum of u(s) when it lies inside (-a, a).
+   pure subroutine interior_extremum(c, umax)
+      type(ball_race_contact_t), intent(in) :: c
+      real(wp), intent(inout) :: umax
+      real(wp), parameter :: pi = acos(-1.0_wp)
+      real(wp) :: aa, bb, delta, psi
+      integer :: m
+
+      aa = c%side*c%rho*(c%omega(1) - c%race_speed)
+      bb = -c%side*c%rho*c%omega(2)
+      if (hypot(aa, bb) <= 0.0_wp) return
+      delta = atan2(bb, aa)                 ! u' = 0 where theta = delta (+ k pi)
+      do m = -3, 3
+         psi = delta + pi*m - c%alpha
+         if (abs(psi*c%rho) < c%a) umax = max(umax, abs(contact_slip(c, psi*c%rho)))
+      end do
+   end subroutine interior_extremum
+
+end module adore_tribology_slip
