@@ -474,8 +474,10 @@ def thermal_reduction_factor(p_h: float, e_prime: float, loading, slide_roll: fl
     """Gupta et al. (1992) inlet-shear thermal reduction factor for thermal loading(s) L."""
     import numpy as np
 
-    return _engine().adore_tribo_thermal_factor(p_h, e_prime, np.atleast_1d(np.asarray(loading, float)),
-                                                slide_roll)
+    phi, status, message = _engine().adore_tribo_thermal_factor(
+        p_h, e_prime, np.atleast_1d(np.asarray(loading, float)), slide_roll)
+    check(int(status), message)
+    return phi
 
 
 def lubricant(code: int, temperature: float, *, density: float, alpha: float, conductivity: float) -> dict:
@@ -516,15 +518,19 @@ def contact_slip(side: int, alpha: float, rho: float, r_b: float, omega, race_sp
     """Slip velocity (m/s) at major-axis positions s (m) (report eq 3, rolling component)."""
     import numpy as np
 
-    return _engine().adore_tribo_slip(_contact_geom(side, alpha, rho, r_b, omega, race_speed, a, 0.0),
-                                      np.asarray(s, float))
+    u, status, message = _engine().adore_tribo_slip(
+        _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, 0.0), np.asarray(s, float))
+    check(int(status), message)
+    return u
 
 
 def flash_rise(xi, q):
     """Dimensionless flash temperature rise (report eq 53) on the grid xi for flux q."""
     import numpy as np
 
-    return _engine().adore_tribo_flash_strip(np.asarray(xi, float), np.asarray(q, float))
+    dt, status, message = _engine().adore_tribo_flash_strip(np.asarray(xi, float), np.asarray(q, float))
+    check(int(status), message)
+    return dt
 
 
 def contact_temperature_rise(a: float, b: float, p0: float, xk, wk, g, u1: float, u2: float, th1, th2,

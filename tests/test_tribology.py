@@ -266,3 +266,17 @@ def test_step0_tribology_column_matches_report(column):
         print(f"{column} {side}: worst {100 * worst:.2f} % ({where}), {len(sub)} contacts")
     worst, where = _worst(errors)
     assert worst <= 0.05, f"{column}: worst {100 * worst:.2f} % at {where}"
+
+
+def test_flat_wrappers_refuse_bad_input_with_a_message():
+    """Bad geometry gives AdoreInputError, never NaN (the wrappers return a status)."""
+    from pyadore import AdoreInputError
+
+    geo = {k: v for k, v in CONTACTS["outer"].items() if k != "load"}
+    geo["a"] = 0.0
+    with pytest.raises(AdoreInputError, match="half width"):
+        _core.contact_slip(**geo, s=[0.0])
+    with pytest.raises(AdoreInputError, match="increase strictly"):
+        _core.flash_rise([0.0, 0.0, 1.0], [1.0, 1.0, 1.0])
+    with pytest.raises(AdoreInputError, match="p_h > 0"):
+        _core.thermal_reduction_factor(0.0, 2.2e11, [1.0], 0.1)

@@ -25,15 +25,28 @@ end subroutine adore_tribo_film
 
 !> Thermal reduction factor phi(1:n) (Gupta et al. 1992) for max pressure p_h (Pa),
 !> E' (Pa), thermal loading l(1:n) and slide-to-roll ratio s.
-subroutine adore_tribo_thermal_factor(n, p_h, e_prime, l, s, phi)
+subroutine adore_tribo_thermal_factor(n, p_h, e_prime, l, s, phi, status, message)
    use adore_core_kinds, only: wp
+   use adore_core_error, only: ADORE_OK, ADORE_INPUT_ERROR
    use adore_tribology_film, only: thermal_reduction_factor
    implicit none
    integer, intent(in) :: n
    real(wp), intent(in) :: p_h, e_prime, l(n), s
    real(wp), intent(out) :: phi(n)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
 
-   phi = thermal_reduction_factor(p_h, e_prime, l, s)
+   phi = 0.0_wp
+   status = ADORE_INPUT_ERROR
+   if (.not. (p_h > 0.0_wp .and. e_prime > 0.0_wp)) then
+      message = "thermal reduction factor: need p_h > 0 and E' > 0"
+   else if (.not. all(l >= 0.0_wp)) then
+      message = "thermal reduction factor: thermal loading L must be >= 0"
+   else
+      status = ADORE_OK
+      message = ""
+      phi = thermal_reduction_factor(p_h, e_prime, l, s)
+   end if
 end subroutine adore_tribo_thermal_factor
 
 !> Lubricant of the library at temperature t (K): result = [kinematic viscosity (m**2/s),
@@ -115,15 +128,30 @@ contains
 end subroutine adore_tribo_contact
 
 !> Slip u(s) (m/s) at major-axis positions s(1:n) (m); geom as in adore_tribo_contact.
-subroutine adore_tribo_slip(geom, n, s, u)
+subroutine adore_tribo_slip(geom, n, s, u, status, message)
    use adore_core_kinds, only: wp
+   use adore_core_error, only: ADORE_OK, ADORE_INPUT_ERROR
    use adore_tribology_slip, only: ball_race_contact_t, contact_slip
    implicit none
    real(wp), intent(in) :: geom(9)
    integer, intent(in) :: n
    real(wp), intent(in) :: s(n)
    real(wp), intent(out) :: u(n)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
    type(ball_race_contact_t) :: c
+
+   u = 0.0_wp
+   status = ADORE_INPUT_ERROR
+   if (nint(geom(1)) /= 1 .and. nint(geom(1)) /= -1) then
+      message = "contact slip: side must be +1 (outer race) or -1 (inner race)"
+      return
+   else if (.not. (geom(3) > 0.0_wp .and. geom(4) > 0.0_wp .and. geom(8) > 0.0_wp)) then
+      message = "contact slip: need rho > 0, ball centre radius > 0 and half width a > 0"
+      return
+   end if
+   status = ADORE_OK
+   message = ""
 
    c%side = nint(geom(1))
    c%alpha = geom(2)
@@ -137,14 +165,30 @@ subroutine adore_tribo_slip(geom, n, s, u)
 end subroutine adore_tribo_slip
 
 !> Dimensionless flash temperature rise (eq 53) on the grid xi(1:n) for flux q(1:n).
-subroutine adore_tribo_flash_strip(n, xi, q, dt)
+subroutine adore_tribo_flash_strip(n, xi, q, dt, status, message)
    use adore_core_kinds, only: wp
+   use adore_core_error, only: ADORE_OK, ADORE_INPUT_ERROR
    use adore_tribology_flash, only: flash_rise_dimensionless
    implicit none
    integer, intent(in) :: n
    real(wp), intent(in) :: xi(n), q(n)
    real(wp), intent(out) :: dt(n)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
 
+   dt = 0.0_wp
+   if (n < 2) then
+      status = ADORE_INPUT_ERROR
+      message = "flash temperature: need at least two grid points"
+      return
+   end if
+   if (any(xi(2:n) <= xi(1:n - 1))) then
+      status = ADORE_INPUT_ERROR
+      message = "flash temperature: the grid xi must increase strictly"
+      return
+   end if
+   status = ADORE_OK
+   message = ""
    call flash_rise_dimensionless(xi, q, dt)
 end subroutine adore_tribo_flash_strip
 
