@@ -26,7 +26,7 @@ __all__ = ["check", "run_file", "engine_version", "hertz_point", "ball_quasi_sta
            "life_default_constants", "ball_bearing_life", "deck_field_table", "ball_step0_from_deck",
            "fortran_print_step", "fortran_print_end", "fortran_print_echo",
            "film_thickness", "thermal_reduction_factor", "lubricant", "contact_traction", "contact_slip",
-           "flash_rise", "contact_temperature_rise"]
+           "flash_rise", "contact_temperature_rise", "line_contact", "roller_step0_from_deck"]
 
 
 def _engine():
@@ -544,3 +544,59 @@ def contact_temperature_rise(a: float, b: float, p0: float, xk, wk, g, u1: float
         np.asarray(th1, float), np.asarray(th2, float), int(ny))
     check(int(status), message)
     return float(values[0]), float(values[1])
+
+
+# --- roller bearings: line contact by slices, step 0 (fortran/contact/line_slices.f90,
+# fortran/driver/roller_step0.f90) ---------------------------------------------------
+
+LINE_CONTACT_RESULT = ["in_contact", "x1", "x2", "half_length", "load", "moment", "max_deflection",
+                       "mean_half_width", "stress", "peak_pressure", "k0", "k_line"]
+
+
+def line_contact(profile, race_crown: float, h, lim, e_star: float, r_eq: float, *, l_ref: float = 0.0,
+                 k_line: float = 0.0, n_sub: int = 3) -> tuple[dict, dict]:
+    """One roller/race line contact by slices (SI).
+
+    profile: [length, land, crown radius, corner radius -x, corner radius +x] (m);
+    h: [approach (m), tilt (rad), curvature (1/m)] of delta(x); lim: permissible ends (m);
+    l_ref > 0: slice stiffness from Palmgren at reference length l_ref, else k_line.
+    Returns (slices: x, weight, delta, q, b arrays; totals: LINE_CONTACT_RESULT).
+    """
+    import numpy as np
+
+    nmax = 4 * int(n_sub)
+    n, slices, result, status, message = _engine().adore_line_contact(
+        np.asarray(profile, dtype=float), float(race_crown), np.asarray(h, dtype=float),
+        np.asarray(lim, dtype=float), float(e_star), float(r_eq), float(l_ref), float(k_line),
+        int(n_sub), nmax)
+    check(int(status), message)
+    cols = {name: slices[: int(n), k].copy() for k, name in enumerate(["x", "weight", "delta", "q", "b"])}
+    return cols, {name: float(v) for name, v in zip(LINE_CONTACT_RESULT, result)}
+
+
+ROLLER_STEP0_COLUMNS = ["azimuth", "r", "tilt", "q_o", "q_i", "p_o", "p_i", "a_o", "a_i", "b_o", "b_i",
+                        "delta_o", "delta_i", "centrifugal", "orbital_speed", "spin_speed", "peak_o", "peak_i"]
+ROLLER_STEP0_SLICES = ["x_o", "delta_o", "b_o", "q_o", "x_i", "delta_i", "b_i", "q_i"]
+ROLLER_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "contact_clearance", "u_y", "u_z",
+                        "inner_force_x", "inner_force_y", "inner_force_z", "inner_moment_x", "inner_moment_y",
+                        "inner_moment_z", "race_residual_y", "race_residual_z", "max_roller_residual",
+                        "iterations", "inner_raceway_growth", "outer_raceway_shrink", "k_line_outer",
+                        "k_line_inner"]
+
+
+def roller_step0_from_deck(deck_path: str | os.PathLike, *, growth_count: int = 2,
+                           nmax: int = 200) -> tuple[dict, dict, dict]:
+    """Step 0 of a roller-bearing deck computed by the engine end to end (SI, rad, rad/s).
+
+    growth_count 2 reproduces ADORE 5.0 (raceway growth applied twice in the contact
+    geometry, see fortran/driver/roller_step0.f90), 1 is the consistent clearance.
+    Returns (per-roller arrays ROLLER_STEP0_COLUMNS, per-roller slice arrays (n, 12)
+    ROLLER_STEP0_SLICES, scalars ROLLER_STEP0_SUMMARY).
+    """
+    n, rollers, slices, summary, status, message = _engine().adore_roller_step0_deck(
+        os.fspath(deck_path), int(growth_count), int(nmax))
+    check(int(status), message)
+    n = int(n)
+    per_roller = {name: rollers[:n, k].copy() for k, name in enumerate(ROLLER_STEP0_COLUMNS)}
+    per_slice = {name: slices[:n, :, k].copy() for k, name in enumerate(ROLLER_STEP0_SLICES)}
+    return per_roller, per_slice, {name: float(summary[k]) for k, name in enumerate(ROLLER_STEP0_SUMMARY)}

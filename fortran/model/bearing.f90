@@ -55,6 +55,11 @@ module adore_model_bearing
       real(wp) :: alpha0 = 0.0_wp              !< free contact angle (rad), ball
       real(wp) :: f_o = 0.0_wp, f_i = 0.0_wp   !< groove curvature factors, ball
       real(wp) :: roller_length = 0.0_wp       !< (m), roller
+      real(wp) :: roller_land = 0.0_wp         !< central flat land length (m), roller
+      real(wp) :: crown_radius = 1.0e10_wp     !< roller crown radius (m), roller
+      real(wp) :: corner_radius(2) = 0.0_wp    !< roller corner radii, -x and +x end (m)
+      real(wp) :: race_crown(2) = 1.0e10_wp    !< outer, inner race crown radii (m)
+      real(wp) :: race_length(2) = 0.0_wp      !< outer, inner race length 1 (Rec 5B.1, m; 0 = none)
       real(wp) :: dia_play = 0.0_wp            !< unmounted diametral play (m)
       real(wp) :: end_play = 0.0_wp            !< unmounted end play (m), ball
       real(wp) :: outer_raceway_dia = 0.0_wp   !< outer groove bottom / raceway diameter (m)
@@ -156,6 +161,14 @@ contains
          call get_real("5B", "roller_length", b%roller_length)
          call get_real("5B", "pitch_diameter", b%dm)
          call get_real("5B", "diametral_play", b%dia_play)
+         call get_real("5B", "central_land_length", b%roller_land)
+         call get_real("5B", "crown_radius", b%crown_radius)
+         call get_real("5B", "corner_radius_1", b%corner_radius(1))
+         call get_real("5B", "corner_radius_2", b%corner_radius(2))
+         call get_real("5B", "outer_race_crown_radius", b%race_crown(1))
+         call get_real("5B", "inner_race_crown_radius", b%race_crown(2))
+         call get_real("5B.1", "outer_race_len1", b%race_length(1))
+         call get_real("5B.1", "inner_race_len1", b%race_length(2))
          call get_real("10.1B", "traction_at_zero_slip", k(1))
          call get_real("10.1B", "max_traction", k(2))
          call get_real("10.1B", "traction_at_infinite_slip", k(3))

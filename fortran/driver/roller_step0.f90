@@ -1,0 +1,142 @@
+!> Step 0 of a cylindrical roller bearing run: mounting, kinematics and the quasi-static
+!> start with line contacts by slices (ADORE's start-up: ADRA4 with ADRC1 LineContact).
+!> Pure compute, no printing.
+!>
+!> * Mounting (section 3 of the print): adore_mounting_fits, as for the ball bearing.
+!> * Contact geometry: raceway radii R_o = d_o/2 - n s_o, R_i = d_i/2 + n g_i with the
+!>   raceway displacements of the mounting (g_i inner growth, s_o outer shrink).
+!>   n = growth_count = 1 is the consistent model (the operating clearance of the print is
+!>   then R_o - R_i - D, doubled).  The report's step-0 contacts need n = 2: its unloaded
+!>   rollers (90..270 deg) have outer/inner interactions 2.413e-6 / -1.534e-7 m and its
+!>   inner race moves 7.758e-6 m, which makes the effective diametral clearance
+!>   -4.52e-6 m = (printed clearance 1.774e-5) - 2 x (inner raceway growth 1.113e-5):
+!>   ADORE 5.0 apparently applies the raceway growth to raceways already built from the
+!>   mounted clearance.  The driver's default is n = 2 (reproduce the report).
+!> * Kinematics: orbital speed epicyclic at the pitch diameter,
+!>   w_m = (w_i (1 - D/d_m) + w_o (1 + D/d_m))/2, roller spin from pure rolling on the
+!>   outer raceway, w_R = (w_o - w_m) R_o/(D/2) (outer race control).  Both reproduce
+!>   the report (2.849e4 and 1.817e5 rpm; pure rolling at the pitch diameter would give
+!>   1.816e5).
+!> * Slices: the report's grid (3 zones x 4 Gauss points), slice reference length the
+!>   length scale D/2 (adore_contact_line_slices).
+!> * Flanges: none.  Rec 5B/5B.1 carry no flange geometry (the flag records 3.3/3.4 are not
+!>   decoded), the rollers carry no axial load at step 0 (zero thrust, no misalignment,
+!>   symmetric profile) and the report prints no flange loads at step 0.  Roller skew is
+!>   prescribed 0; roller tilt is solved.
+!> * Race and roller weights are left out of the start (see solve_roller_step0).
+!> * Roller mass: the crowned roller (roller_mass), which is the echo's RE mass.
+module adore_driver_roller_step0
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
+   use adore_model_bearing, only: bearing_t, ROLLER_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, &
+                                  BODY_SHAFT, BODY_HOUSING
+   use adore_model_scales, only: length_scale
+   use adore_mounting_fits, only: ring_t, mounting_t, mount_races
+   use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness, roller_mass
+   use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
+                                                   roller_qs_solution_t, solve_roller_equilibrium
+   implicit none
+   private
+
+   public :: roller_step0_t, solve_roller_step0, roller_qs_model
+
+   !> The step-0 state of a roller bearing.
+   type :: roller_step0_t
+      type(mounting_t) :: mounting
+      type(roller_qs_bearing_t) :: model       !< the contact model actually solved
+      type(roller_qs_solution_t) :: equilibrium
+      real(wp) :: orbital_speed = 0.0_wp       !< w_m (rad/s)
+      real(wp) :: spin_speed = 0.0_wp          !< roller spin about its axis, w_R (rad/s, <0: -x)
+      real(wp) :: contact_clearance = 0.0_wp   !< 2 (R_o - R_i - D) of the contact geometry (m)
+   end type roller_step0_t
+
+contains
+
+   !> The quasi-static contact model of bearing b mounted as m; growth_count as in the
+   !> module header (1 consistent, 2 ADORE 5.0), n_sub slice zones.
+   function roller_qs_model(b, m, growth_count, n_sub) result(q)
+      type(bearing_t), intent(in) :: b
+      type(mounting_t), intent(in) :: m
+      integer, intent(in) :: growth_count, n_sub
+      type(roller_qs_bearing_t) :: q
+      real(wp) :: half, l_ref
+
+      q%n_rollers = b%n_elements
+      q%d = b%d
+      q%profile = roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, b%corner_radius)
+      q%mass = roller_mass(q%profile, b%d, b%material(BODY_ELEMENT)%density)   ! crowned roller
+      q%race_crown = b%race_crown
+      q%r_o = 0.5_wp*b%outer_raceway_dia - real(growth_count, wp)*m%outer_raceway_shrink
+      q%r_i = 0.5_wp*b%inner_raceway_dia + real(growth_count, wp)*m%inner_raceway_growth
+      half = 0.5_wp*b%roller_length
+      q%lim_o = [-half, half]
+      q%lim_i = [-half, half]
+      if (b%race_length(1) > 0.0_wp) q%lim_o = max(-0.5_wp*b%race_length(1), min(0.5_wp*b%race_length(1), q%lim_o))
+      if (b%race_length(2) > 0.0_wp) q%lim_i = max(-0.5_wp*b%race_length(2), min(0.5_wp*b%race_length(2), q%lim_i))
+      q%e_o = contact_modulus(b%material(BODY_ELEMENT)%modulus, b%material(BODY_ELEMENT)%poisson, &
+                              b%material(BODY_OUTER)%modulus, b%material(BODY_OUTER)%poisson)
+      q%e_i = contact_modulus(b%material(BODY_ELEMENT)%modulus, b%material(BODY_ELEMENT)%poisson, &
+                              b%material(BODY_INNER)%modulus, b%material(BODY_INNER)%poisson)
+      l_ref = length_scale(b%d)
+      q%k_o = line_stiffness(q%e_o, l_ref)
+      q%k_i = line_stiffness(q%e_i, l_ref)
+      q%n_sub = n_sub
+      q%inner_race_mass = b%mass(4)
+   end function roller_qs_model
+
+   !> Solve step 0 for the roller bearing b (sections 3.1, 4.4.1, Appendix B).
+   !> growth_count: 2 reproduces the report (default), 1 the consistent clearance.
+   subroutine solve_roller_step0(b, s, error, growth_count)
+      type(bearing_t), intent(in) :: b
+      type(roller_step0_t), intent(out) :: s
+      type(error_type), allocatable, intent(out) :: error
+      integer, intent(in), optional :: growth_count
+
+      type(ring_t) :: shaft, inner_race, outer_race, housing
+      type(roller_qs_load_t) :: ld
+      real(wp), allocatable :: w(:)
+      integer :: ng
+
+      if (b%bearing_type /= ROLLER_BEARING .or. b%n_elements < 1 .or. b%d <= 0.0_wp .or. &
+          b%dm <= b%d .or. b%roller_length <= 0.0_wp .or. b%crown_radius <= 0.0_wp) then
+         call input_error(error, "roller bearing: need rollers with 0 < diameter < pitch diameter, "// &
+                          "a length and a crown radius > 0")
+         return
+      end if
+      ng = 2
+      if (present(growth_count)) ng = growth_count
+      shaft = ring_of(b%shaft_id, b%shaft_od, BODY_SHAFT)
+      inner_race = ring_of(b%shaft_od, b%inner_raceway_dia, BODY_INNER)
+      outer_race = ring_of(b%outer_raceway_dia, b%bearing_od, BODY_OUTER)
+      housing = ring_of(b%bearing_od, b%housing_od, BODY_HOUSING)
+      s%mounting = mount_races(shaft, inner_race, outer_race, housing, b%fit_inner, b%fit_outer, &
+                               b%speed_inner, b%speed_outer, b%dia_play)
+      s%model = roller_qs_model(b, s%mounting, ng, 3)
+      s%contact_clearance = 2.0_wp*(s%model%r_o - s%model%r_i - b%d)
+
+      s%orbital_speed = 0.5_wp*(b%speed_inner*(1.0_wp - b%d/b%dm) + b%speed_outer*(1.0_wp + b%d/b%dm))
+      s%spin_speed = (b%speed_outer - s%orbital_speed)*s%model%r_o/(0.5_wp*b%d)
+
+      ld%force = b%force
+      ! no race weight: the report's step-0 roller force on the inner race is -1.000e3 N,
+      ! with the weight (0.23 N) it would print -9.998e2
+      ld%gravity = 0.0_wp
+      ld%misalignment = 0.0_wp
+      ld%skew = 0.0_wp
+      allocate (w(b%n_elements))
+      w = s%orbital_speed
+      call solve_roller_equilibrium(s%model, ld, w, s%equilibrium, error)
+
+   contains
+
+      !> An elastic ring of body `body`'s material between two diameters (m).
+      function ring_of(d_in, d_out, body) result(r)
+         real(wp), intent(in) :: d_in, d_out
+         integer, intent(in) :: body
+         type(ring_t) :: r
+         r = ring_t(d_in, d_out, b%material(body)%modulus, b%material(body)%poisson, b%material(body)%density)
+      end function ring_of
+
+   end subroutine solve_roller_step0
+
+end module adore_driver_roller_step0
