@@ -17,10 +17,11 @@ module adore_driver_report
    use adore_output_layout, only: ELEMENT_BALL, ELEMENT_ROLLER, INT_NOT_COMPUTED, ECHO_MAX_GUIDE, N_PERFORMANCE
    use adore_output_print_tables, only: write_step
    use adore_driver_ball_step0, only: ball_step0_t
+   use adore_driver_roller_step0, only: roller_step0_t
    implicit none
    private
 
-   public :: fill_echo, write_ball_step0
+   public :: fill_echo, write_ball_step0, write_roller_step0
 
    real(wp), parameter :: pi = acos(-1.0_wp)
 
@@ -232,6 +233,7 @@ contains
          contact(:, 11) = e%c_i%semi_minor
          motion(:, 1) = kin%orbital_speed*rpm
          motion(:, 2) = abs(kin%spin_speed)*rpm
+         motion(:, 5:6) = 0.0_wp                       ! angular positions at time 0
          thermal(:, 2) = e%delta_o
          thermal(:, 3) = e%delta_i
          thermal(:, 4:5) = 0.0_wp                      ! rigid races: no race flexing
@@ -272,5 +274,98 @@ contains
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)
    end subroutine write_ball_step0
+
+   !> Write step 0 of a cylindrical roller bearing (sections 1, 1a for roller 1, 2-4) from
+   !> its quasi-static start s.  Section 1a: axial positions in each contact's frame (the
+   !> inner contact's axis runs opposite to the outer one, as the report prints them) and
+   !> loads per unit length in N/m for both races (the report's outer column appears to be
+   !> scaled by the length scale D/2; pyadore prints N/m as the heading says - a known
+   !> difference, see tests/test_run_golden.py).
+   subroutine write_roller_step0(unit, b, s)
+      integer, intent(in) :: unit
+      type(bearing_t), intent(in) :: b
+      type(roller_step0_t), intent(in) :: s
+
+      real(wp), parameter :: deg = 180.0_wp/pi, rpm = 30.0_wp/pi
+      real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
+      real(wp), allocatable :: slices(:, :, :)
+      real(wp) :: race_cage(max(b%n_lands, 1), 7), bodies(3, 11), loads(5, 6), acc(3, 7)
+      real(wp) :: perf(N_PERFORMANCE), summary(1, 10), nan
+      integer, allocatable :: re_no(:), slice_no(:), cage_el(:), cage_end(:), cage_code(:)
+      integer :: land_no(max(b%n_lands, 1)), land_code(max(b%n_lands, 1))
+      integer :: n, k, ns
+
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      n = b%n_elements
+      allocate (contact(n, 11), motion(n, 11), traction(n, 11), thermal(n, 11))
+      allocate (re_no(n), cage_el(2*n), cage_end(2*n), cage_code(2*n), re_cage(2*n, 8))
+      re_no = [(k, k=1, n)]
+      motion = nan
+      traction = nan
+      thermal = nan
+      associate (e => s%equilibrium)
+         ns = size(e%c_o(1)%x)
+         allocate (slices(ns, 10, 1), slice_no(ns))
+         slice_no = [(k, k=1, ns)]
+         do k = 1, n
+            contact(k, :) = [e%azimuth(k)*deg, 0.0_wp, 0.0_wp, e%c_o(k)%load, e%c_i(k)%load, &
+                             e%c_o(k)%stress, e%c_i(k)%stress, e%c_o(k)%half_length, e%c_i(k)%half_length, &
+                             e%c_o(k)%mean_half_width, e%c_i(k)%mean_half_width]
+            thermal(k, 1) = 0.0_wp                    ! rollers stay axially centred at step 0
+            thermal(k, 2) = e%c_o(k)%max_deflection
+            thermal(k, 3) = e%c_i(k)%max_deflection
+            thermal(k, 4:5) = 0.0_wp                  ! rigid races: no race flexing
+         end do
+         motion(:, 1) = e%orbital_speed*rpm
+         motion(:, 2) = abs(s%spin_speed)*rpm
+         motion(:, 3) = merge(180.0_wp, 0.0_wp, s%spin_speed < 0.0_wp)   ! spin axis along -x or +x
+         motion(:, 4) = 0.0_wp                        ! no skew at the start
+         motion(:, 5:6) = 0.0_wp                      ! angular positions at time 0
+         motion(:, 7:8) = 0.0_wp                      ! cylindrical contact: no spin
+         slices = nan
+         slices(:, 1, 1) = e%c_o(1)%x
+         slices(:, 2, 1) = e%c_o(1)%delta
+         slices(:, 3, 1) = e%c_o(1)%b
+         slices(:, 4, 1) = e%c_o(1)%q
+         slices(:, 6, 1) = -e%c_i(1)%x                ! in the inner contact frame (axis reversed)
+         slices(:, 7, 1) = e%c_i(1)%delta
+         slices(:, 8, 1) = e%c_i(1)%b
+         slices(:, 9, 1) = e%c_i(1)%q
+         bodies = nan
+         bodies(2, 1:2) = 0.0_wp
+         bodies(2, 5) = b%speed_outer*rpm
+         bodies(3, 2) = hypot(e%u(1), e%u(2))
+         bodies(3, 5) = b%speed_inner*rpm
+         loads = nan
+         loads(2, 1:3) = e%outer_force
+         loads(2, 4:6) = e%outer_moment
+         loads(3, 1:3) = e%inner_force
+         loads(3, 4:6) = e%inner_moment
+         loads(4, 1:3) = -e%outer_force               ! the start leaves race weights out
+         loads(4, 4:6) = -e%outer_moment
+         loads(5, 1:3) = -e%inner_force
+         loads(5, 4:6) = -e%inner_moment
+      end associate
+      cage_el = [(1 + (k - 1)/2, k=1, 2*n)]
+      cage_end = [(1 + mod(k - 1, 2), k=1, 2*n)]
+      cage_code = INT_NOT_COMPUTED
+      re_cage = nan
+      land_no = [(k, k=1, size(land_no))]
+      land_code = INT_NOT_COMPUTED
+      race_cage = nan
+      acc = nan
+      acc(2:3, 1:6) = 0.0_wp
+      acc(2, 7) = b%temperature(6)
+      acc(3, 7) = b%temperature(7)
+      perf = nan
+      perf(3) = s%mounting%outer_fit
+      perf(4) = s%mounting%inner_fit
+      perf(5) = s%mounting%clearance
+      summary = nan
+      summary(1, 1:3) = 0.0_wp
+      call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
+                      thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
+                      land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)
+   end subroutine write_roller_step0
 
 end module adore_driver_report

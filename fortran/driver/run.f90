@@ -9,12 +9,13 @@ module adore_driver_run
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
    use adore_deck_reader, only: deck_t, parse_deck
-   use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING
+   use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING, ROLLER_BEARING
    use adore_output_banner, only: write_listing, write_banner
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
-   use adore_driver_report, only: fill_echo, write_ball_step0
+   use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
+   use adore_driver_report, only: fill_echo, write_ball_step0, write_roller_step0
    implicit none
    private
 
@@ -39,7 +40,7 @@ contains
       type(bearing_t) :: bearing
       type(echo_data_t) :: echo
       type(ball_step0_t) :: ball0
-      logical :: have_ball0
+      type(roller_step0_t) :: roller0
       character(len=:), allocatable :: part_path
       character(len=256) :: iomsg
       integer :: unit, stat
@@ -67,11 +68,13 @@ contains
       if (allocated(error)) return
       call fill_echo(deck, bearing, echo, error)
       if (allocated(error)) return
-      have_ball0 = bearing%bearing_type == BALL_BEARING
-      if (have_ball0) then
+      select case (bearing%bearing_type)
+      case (BALL_BEARING)
          call solve_ball_step0(bearing, ball0, error)
-         if (allocated(error)) return
-      end if
+      case (ROLLER_BEARING)
+         call solve_roller_step0(bearing, roller0, error)
+      end select
+      if (allocated(error)) return
 
       part_path = trim(out_path)//".part"
       open (newunit=unit, file=part_path, status="replace", action="write", &
@@ -84,9 +87,14 @@ contains
       call write_listing(unit, text)
       call write_banner(unit)
       call write_echo(unit, echo)
-      ! Step 0 (the quasi-static start) of ball bearings.  Roller bearings and the time
-      ! integration of later steps come with their issues; the print then ends here.
-      if (have_ball0) call write_ball_step0(unit, bearing, ball0)
+      ! Step 0, the quasi-static start.  The time integration of later steps comes with
+      ! its issue; until then the print ends here.
+      select case (bearing%bearing_type)
+      case (BALL_BEARING)
+         call write_ball_step0(unit, bearing, ball0)
+      case (ROLLER_BEARING)
+         call write_roller_step0(unit, bearing, roller0)
+      end select
 
       close (unit, iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
