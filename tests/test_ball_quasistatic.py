@@ -281,3 +281,21 @@ def test_race_control_satisfies_rolling_and_no_spin(solution, deck, report_speed
             assert surface == pytest.approx((w - wm) * (rb + d / 2 * n[1]), rel=1e-9)
         assert abs(axis @ n_o + (wm - 0.0) * n_o[0]) <= 1e-9 * abs(wb)
         assert wm == pytest.approx(report_speeds[k], rel=0.01)
+
+
+@pytest.mark.parametrize("z", [9, 18, 40])
+def test_radial_load_distribution_stribeck(z):
+    """Zero clearance, pure radial load at rest: ball k carries Q_max cos(phi_k)**1.5 and
+    F_r = sum Q_k cos(phi_k) gives Q_max = F_r / sum cos**2.5 exactly; for many balls this
+    is Stribeck's published Q_max = 4.37 F_r / Z (Harris & Kotzalas, Rolling Bearing
+    Analysis, 'radially loaded ball bearing', zero clearance)."""
+    d, dm, f, fr = 0.0125, 0.0625, 0.52, 5000.0
+    geom = [d, dm, f, f, 0.0, 0.0, 2.0e11, 0.3, 2.0e11, 0.3, 0.0, 0.0, 0.0]
+    sol = _core.ball_quasi_static(geom, [0, 0, fr, 0, 0, 0, 0, 0, 0, 0, 0], [0, 0], np.zeros(z))
+    phi = 2 * math.pi * np.arange(z) / z
+    cos = np.clip(np.cos(phi), 0.0, None)
+    q_max = fr / np.sum(cos**2.5)
+    assert sol["q_i"] == pytest.approx(q_max * cos**1.5, rel=1e-8, abs=1e-9 * q_max)
+    assert sol["q_o"] == pytest.approx(sol["q_i"], rel=1e-8, abs=1e-9 * q_max)
+    if z >= 18:
+        assert sol["q_i"][0] * z / fr == pytest.approx(4.37, rel=0.02)
