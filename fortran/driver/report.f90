@@ -13,6 +13,7 @@ module adore_driver_report
    use adore_model_bearing, only: bearing_t, BALL_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, &
                                   BODY_SHAFT, BODY_HOUSING
    use adore_model_scales, only: scale_factors
+   use adore_tribology_film, only: LUBRICANT_MIL_L_7808
    use adore_output_echo_data, only: echo_data_t, echo_data_init
    use adore_output_layout, only: ELEMENT_BALL, ELEMENT_ROLLER, INT_NOT_COMPUTED, ECHO_MAX_GUIDE, N_PERFORMANCE
    use adore_output_print_tables, only: write_step
@@ -35,7 +36,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       real(wp) :: v(9), scales(3)
-      integer :: k, body
+      integer :: k, body, code
 
       e = echo_data_init()
       e%run_id = b%run_id
@@ -123,7 +124,22 @@ contains
       call get("10.5.2B", "race_cage_coeff_b", e%lubrication(7, 4))
       call get("10.5.2B", "race_cage_coeff_c", e%lubrication(8, 4))
 
+      ! lubricant of the library (Rec 10.0 lubricant code); none printed for other codes
+      if (deck_has(deck, "10.0")) then
+         call get_int("10.0", "lubricant_code", code)
+         if (code == LUBRICANT_MIL_L_7808) e%lubricant = "MIL-L-7808"
+      end if
+
       ! initial operating conditions
+      ! coolant type (Rec 2.4): 0 prints "No Coolant" (Appendix D echo), 1 "Lubricant"
+      ! (Table 5 of the report for the Appendix C deck, whose echo line is lost)
+      call get_int("2.4", "coolant_type", code)
+      select case (code)
+      case (0)
+         e%coolant_type = "No Coolant"
+      case (1)
+         e%coolant_type = "Lubricant"
+      end select
       e%room_temp = b%temperature(1)
       e%housing_temp = b%temperature(2)
       e%shaft_temp = b%temperature(3)
