@@ -225,6 +225,7 @@ LIFE_CONSTANT_NAMES = (
     "phi0lp_root_per_pa", "phi1_asperity", "phi1_furrow", "phi1_subsurface", "processing_i",
     "phi2f_clean", "contamination", "spectrum_alpha", "sigma_rms", "theta_rms", "z_frac",
     "mu_asperity", "hoop_factor", "sigma_residual", "e_prime", "stationary_rule",
+    "line_length_factor",
 )
 
 _HUGE = 1.0e300  # the engine's huge(1.0_wp) ("never fails") is returned as math.inf
@@ -581,7 +582,7 @@ ROLLER_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "contact_clearanc
                         "inner_force_x", "inner_force_y", "inner_force_z", "inner_moment_x", "inner_moment_y",
                         "inner_moment_z", "race_residual_y", "race_residual_z", "max_roller_residual",
                         "iterations", "inner_raceway_growth", "outer_raceway_shrink", "k_line_outer",
-                        "k_line_inner"]
+                        "k_line_inner", "basic_life_outer_h", "basic_life_inner_h", "basic_life_h"]
 
 
 def roller_step0_from_deck(deck_path: str | os.PathLike, *, growth_count: int = 2,

@@ -2,17 +2,17 @@
 
 !> Default fatigue constants (report section 3.2, Tables 3-4, Appendix C echo).
 !>
-!> constants(29) in the order documented at life_params_to_array
+!> constants(30) in the order documented at life_params_to_array
 !> (fortran/life/lundberg_palmgren.f90); units SI.
 subroutine adore_life_default_constants(constants)
    use adore_core_kinds, only: wp
    use adore_life_lundberg_palmgren, only: life_params_t, life_params_to_array
    implicit none
-   real(wp), intent(out) :: constants(29)
+   real(wp), intent(out) :: constants(30)
 
    type(life_params_t) :: defaults
 
-   constants = life_params_to_array(defaults)   ! shapes checked at compile time (LIFE_N_CONSTANTS = 29)
+   constants = life_params_to_array(defaults)   ! shapes checked at compile time (LIFE_N_CONSTANTS = 30)
 end subroutine adore_life_default_constants
 
 !> Basic (Lundberg-Palmgren) and modified (Tallian) life of a ball bearing,
@@ -26,7 +26,7 @@ end subroutine adore_life_default_constants
 !> hoop_outer, hoop_inner race hoop stress (Pa); d_ball, d_pitch (m); f_outer,
 !> f_inner groove curvature factors; outer_speed, inner_speed race speeds (rpm);
 !> outer_rotating, inner_rotating = 1 when the race turns relative to the load;
-!> constants(29) as adore_life_default_constants.
+!> constants(30) as adore_life_default_constants.
 !> result = [basic outer, basic inner, basic bearing, modified outer,
 !>           modified inner, modified bearing (all hours), Psi outer, Psi inner];
 !> lives_outer, lives_inner: contact lives (10**6 relative revolutions).
@@ -49,7 +49,7 @@ subroutine adore_life_ball_bearing(m, q_outer, q_inner, alpha_outer, alpha_inner
    real(wp), intent(in) :: hoop_outer, hoop_inner, d_ball, d_pitch, f_outer, f_inner
    real(wp), intent(in) :: outer_speed, inner_speed
    integer, intent(in) :: outer_rotating, inner_rotating
-   real(wp), intent(in) :: constants(29)
+   real(wp), intent(in) :: constants(30)
    real(wp), intent(out) :: result(8), lives_outer(m), lives_inner(m)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
@@ -85,6 +85,8 @@ subroutine adore_life_ball_bearing(m, q_outer, q_inner, alpha_outer, alpha_inner
       message = "life: need sigma_rms >= 0, theta_rms > 0 and E' > 0 (constants 22, 23, 28)"
    else if (constants(29) /= 0.0_wp .and. constants(29) /= 1.0_wp) then
       message = "life: stationary_rule (constant 29) must be 0 (report) or 1 (Lundberg-Palmgren)"
+   else if (.not. (constants(30) > 0.0_wp)) then
+      message = "life: line_length_factor (constant 30) must be > 0"
    else
       status = ADORE_OK
    end if

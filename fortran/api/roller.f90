@@ -60,10 +60,11 @@ end subroutine adore_line_contact
 !>   a_o, a_i, b_o, b_i (m, half contact length, mean half width), delta_o, delta_i (m, max
 !>   interaction), centrifugal (N), orbital speed, spin speed (rad/s), peak p_o, p_i (Pa)];
 !> slices(nmax, 12, 8): per roller [x, delta, b, q] outer then inner (m, m, m, N/m);
-!> summary(20): [inner fit, outer fit, clearance, contact clearance, Y, Z (m),
+!> summary(23): [inner fit, outer fit, clearance, contact clearance, Y, Z (m),
 !>   inner race force x, y, z (N), moment x, y, z (N m), race residual y, z (N),
 !>   largest roller residual (N), race iterations, inner raceway growth, outer raceway
-!>   shrink (m), K_L outer, K_L inner].
+!>   shrink (m), K_L outer, K_L inner, basic life outer race, inner race, bearing (h;
+!>   eqs 73, 75, 76, 102; huge = never fails)].
 subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, slices, summary, status, message)
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
@@ -75,7 +76,7 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: growth_count, nmax
    integer, intent(out) :: n
-   real(wp), intent(out) :: rollers(nmax, 18), slices(nmax, 12, 8), summary(20)
+   real(wp), intent(out) :: rollers(nmax, 18), slices(nmax, 12, 8), summary(23)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
 
@@ -144,5 +145,6 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
       summary(16) = real(e%iterations, wp)
       summary(17:18) = [s%mounting%inner_raceway_growth, s%mounting%outer_raceway_shrink]
       summary(19:20) = [s%model%k_o, s%model%k_i]
+      summary(21:23) = [s%life%outer_hours, s%life%inner_hours, s%life%bearing_hours]
    end associate
 end subroutine adore_roller_step0_deck

@@ -374,6 +374,8 @@ contains
       acc(2, 7) = b%temperature(6)
       acc(3, 7) = b%temperature(7)
       perf = nan
+      perf(1) = s%basic_life_hours       ! eqs 73, 75, 76, 102 (adore_life_roller)
+      perf(2) = s%modified_life_hours    ! NaN: no Tallian life for line contacts
       perf(3) = s%mounting%outer_fit
       perf(4) = s%mounting%inner_fit
       perf(5) = s%mounting%clearance

@@ -25,8 +25,12 @@
 !>   prescribed 0; roller tilt is solved.
 !> * Race and roller weights are left out of the start (see solve_roller_step0).
 !> * Roller mass: the crowned roller (roller_mass), which is the echo's RE mass.
+!> * Basic fatigue life (ADRF1): adore_life_roller from the slice contacts, eqs 73, 75, 76,
+!>   102, with the default life_params_t (the deck has no fatigue records).  The modified
+!>   (Tallian) life is not computed for line contacts and stays NaN.
 module adore_driver_roller_step0
    use adore_core_kinds, only: wp
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_error, only: error_type, input_error
    use adore_model_bearing, only: bearing_t, ROLLER_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, &
                                   BODY_SHAFT, BODY_HOUSING
@@ -35,6 +39,8 @@ module adore_driver_roller_step0
    use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness, roller_mass
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
+   use adore_life_lundberg_palmgren, only: life_params_t
+   use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    implicit none
    private
 
@@ -48,6 +54,9 @@ module adore_driver_roller_step0
       real(wp) :: orbital_speed = 0.0_wp       !< w_m (rad/s)
       real(wp) :: spin_speed = 0.0_wp          !< roller spin about its axis, w_R (rad/s, <0: -x)
       real(wp) :: contact_clearance = 0.0_wp   !< 2 (R_o - R_i - D) of the contact geometry (m)
+      type(roller_lives_t) :: life             !< basic (Lundberg-Palmgren) lives, outer/inner/bearing
+      real(wp) :: basic_life_hours = 0.0_wp    !< bearing basic life (h), = life%bearing_hours
+      real(wp) :: modified_life_hours = 0.0_wp !< NaN: Tallian life of line contacts not computed
    end type roller_step0_t
 
 contains
@@ -94,6 +103,7 @@ contains
 
       type(ring_t) :: shaft, inner_race, outer_race, housing
       type(roller_qs_load_t) :: ld
+      type(life_params_t) :: lp
       real(wp), allocatable :: w(:)
       integer :: ng
 
@@ -126,6 +136,14 @@ contains
       allocate (w(b%n_elements))
       w = s%orbital_speed
       call solve_roller_equilibrium(s%model, ld, w, s%equilibrium, error)
+      if (allocated(error)) return
+
+      ! basic life from the slice contacts (eqs 73, 75, 76, 102); default constants
+      call roller_bearing_lp_life(lp, s%equilibrium%c_o, s%equilibrium%c_i, s%equilibrium%orbital_speed, &
+                                  b%speed_outer, b%speed_inner, &
+                                  b%d, b%dm, s%life)
+      s%basic_life_hours = s%life%bearing_hours
+      s%modified_life_hours = ieee_value(1.0_wp, ieee_quiet_nan)
 
    contains
 

@@ -23,6 +23,15 @@
 !>    elements).  w = 1 is NOT Lundberg-Palmgren: it is the rule that reproduces
 !>    the report's printed basic life; it gives a stationary race m**0.1 times
 !>    the Lundberg-Palmgren life.
+!>  * line contacts (eqs 75-76, line_contact_lp_life): with p e = 4.5 (p = 4,
+!>    e = 9/8) the Lundberg-Palmgren lamina model makes Q_e/Q_c independent of
+!>    the length l, provided eqs 75 and 76 use the same length.  ADORE does not:
+!>    its printed roller life needs l of eq 76 = half the contact length of eq 75
+!>    (line_length_factor = 0.5) together with B = 1.6655e8 (the echo's line
+!>    constant) and the point-contact cycle_factor = 2.  All three are chosen
+!>    ONLY to reproduce the report (Appendix D, 136.9 h); the Lundberg-Palmgren /
+!>    Harris values are line_length_factor = 1, B = 1.98e8 (552 N/mm**(50/27)),
+!>    cycle_factor = 2 (docs/life-model.md, "Roller bearings").
 module adore_life_lundberg_palmgren
    use adore_core_kinds, only: wp
    implicit none
@@ -31,14 +40,15 @@ module adore_life_lundberg_palmgren
    public :: life_params_t, LIFE_N_CONSTANTS, life_params_from_array, life_params_to_array
    public :: reduced_modulus, pass_cycles, point_contact_capacity, line_contact_capacity
    public :: line_equivalent_load, contact_life, race_life, bearing_life, life_hours
-   public :: ball_race_lp_life
+   public :: ball_race_lp_life, line_contact_lp_life
 
    !> Fatigue model constants; defaults are the report's (section 3.2, Tables 3-4)
    !> or, where the report gives none, the Appendix C echo (FATIGUE PARAMETERS).
    type :: life_params_t
       ! --- Lundberg-Palmgren (eqs 73-76, 102)
       real(wp) :: a_point = 2.3615e7_wp          !< A, point-contact constant (N/m**1.8), eq 74
-      real(wp) :: b_line = 1.98e8_wp             !< B, line-contact constant (N/m**(50/27)), eq 76
+      real(wp) :: b_line = 1.6655e8_wp           !< B, line-contact constant (N/m**(50/27)), eq 76: the
+                                                 !< ADORE echo's value (text: 1.98e8), see module doc
       real(wp) :: dm_exponent = 0.3_wp           !< exponent of D/d_m in eq 74 (text: 0.39, see module doc)
       real(wp) :: cycle_factor = 2.0_wp          !< n of eqs 74/76 = cycle_factor * ball passes per revolution
       real(wp) :: load_exp_point = 3.0_wp        !< p, point contact, eq 73
@@ -68,10 +78,13 @@ module adore_life_lundberg_palmgren
       real(wp) :: e_prime = 2.0e11_wp/(2.0_wp*(1.0_wp - 0.25_wp**2))  !< E' (Pa), eq 98; steel/steel
       ! --- race summation (section 3.2 step 5; see race_life)
       real(wp) :: stationary_rule = 0.0_wp       !< race sum of a stationary race: 0 report (ADORE), 1 Lundberg-Palmgren
+      ! --- line contacts (eqs 75-76; see line_contact_lp_life)
+      real(wp) :: line_length_factor = 0.5_wp    !< l of eq 76 = factor * contact length 2a of eq 75:
+                                                 !< 0.5 report (ADORE), 1 Lundberg-Palmgren
    end type life_params_t
 
    !> Number of constants in life_params_t, in the order of life_params_to_array.
-   integer, parameter :: LIFE_N_CONSTANTS = 29
+   integer, parameter :: LIFE_N_CONSTANTS = 30
 
 contains
 
@@ -80,8 +93,8 @@ contains
    !> weibull_e_point, weibull_e_line, scale_a, beta, zeta, matrix_m, tau0,
    !> phi0lp_root_per_pa, phi1_asperity, phi1_furrow, phi1_subsurface, processing_i,
    !> phi2f_clean, contamination, spectrum_alpha, sigma_rms, theta_rms, z_frac,
-   !> mu_asperity, hoop_factor, sigma_residual, e_prime, stationary_rule (units as in
-   !> life_params_t).
+   !> mu_asperity, hoop_factor, sigma_residual, e_prime, stationary_rule,
+   !> line_length_factor (units as in life_params_t).
    pure function life_params_to_array(params) result(v)
       type(life_params_t), intent(in) :: params
       real(wp) :: v(LIFE_N_CONSTANTS)
@@ -92,7 +105,7 @@ contains
            params%phi0lp_root_per_pa, params%phi1_asperity, params%phi1_furrow, params%phi1_subsurface, &
            params%processing_i, params%phi2f_clean, params%contamination, params%spectrum_alpha, &
            params%sigma_rms, params%theta_rms, params%z_frac, params%mu_asperity, params%hoop_factor, &
-           params%sigma_residual, params%e_prime, params%stationary_rule]
+           params%sigma_residual, params%e_prime, params%stationary_rule, params%line_length_factor]
    end function life_params_to_array
 
    !> Constants from a flat array in the order of life_params_to_array.
@@ -110,6 +123,7 @@ contains
       params%spectrum_alpha = v(21); params%sigma_rms = v(22); params%theta_rms = v(23)
       params%z_frac = v(24); params%mu_asperity = v(25); params%hoop_factor = v(26)
       params%sigma_residual = v(27); params%e_prime = v(28); params%stationary_rule = v(29)
+      params%line_length_factor = v(30)
    end function life_params_from_array
 
    !> E' of eq 98 (Pa): 1/E' = (1-nu1**2)/E1 + (1-nu2**2)/E2, E in Pa.
@@ -194,6 +208,30 @@ contains
       pe = p*e
       qe = length*(sum(max(q, 0.0_wp)**pe*dx)/length)**(1.0_wp/pe)
    end function line_equivalent_load
+
+   !> Life N_LP (10**6 relative revolutions) of one line contact of a roller with
+   !> slices, eqs 73, 75, 76: N = (Q_e/Q_c)**(-p_line).
+   !>
+   !> q(:) load per unit length (N/m) on slices of width dx(:) (m; sum(dx) is the
+   !> contact length 2a of eq 75); alpha contact angle (rad, 0 for a cylindrical
+   !> roller bearing); d_roller, d_pitch (m); passes and outer as for
+   !> line_contact_capacity.  l of eq 76 is params%line_length_factor * sum(dx).
+   !> An empty or never-cycled contact returns huge(1.0_wp) ("never fails").
+   pure function line_contact_lp_life(params, q, dx, alpha, d_roller, d_pitch, passes, outer) result(n)
+      type(life_params_t), intent(in) :: params
+      real(wp), intent(in) :: q(:), dx(:), alpha, d_roller, d_pitch, passes
+      logical, intent(in) :: outer
+      real(wp) :: n
+
+      real(wp) :: length, qe, qc
+
+      n = huge(1.0_wp)
+      length = sum(dx)
+      if (size(q) /= size(dx) .or. length <= 0.0_wp) return
+      qe = line_equivalent_load(q, dx, params%load_exp_line, params%weibull_e_line)
+      qc = line_contact_capacity(params, alpha, d_roller, d_pitch, params%line_length_factor*length, passes, outer)
+      n = contact_life(qe, qc, params%load_exp_line)
+   end function line_contact_lp_life
 
    !> Life N_LP of one contact (10**6 relative revolutions), eq 73: (q/qc)**(-p).
    !>

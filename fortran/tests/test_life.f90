@@ -7,7 +7,9 @@ program test_life
    use adore_core_kinds, only: wp
    use adore_life_lundberg_palmgren, only: life_params_t, pass_cycles, point_contact_capacity, &
       contact_life, race_life, bearing_life, life_hours, line_equivalent_load, ball_race_lp_life, &
-      life_params_to_array, life_params_from_array
+      life_params_to_array, life_params_from_array, line_contact_lp_life
+   use adore_life_roller, only: roller_lives_t, roller_race_lp_life, roller_bearing_lp_life
+   use adore_contact_line_slices, only: line_contact_t
    use adore_life_tallian, only: contact_hazard_products, race_psi, tallian_life, &
       ball_race_modified_life, gauss_upper_tail
    implicit none
@@ -21,6 +23,7 @@ program test_life
    integer :: failures = 0
 
    call test_truths()
+   call test_roller_truths()
    call test_appendix_c_step0()
    call test_appendix_c_step2500()
 
@@ -144,6 +147,124 @@ contains
                      == life_params_to_array(lp)), "constants array round trip")
       call check(close_to(p%e_prime, 2.0e11_wp/(2.0_wp*0.9375_wp), 1.0e-14_wp), "default E' steel/steel")
    end subroutine test_truths
+
+   ! ------------------------------------------------------------ roller truths
+
+   !> A straight roller with uniform load per unit length q over its contact length,
+   !> on n slices of the given widths (in_contact, x at slice centres).
+   function uniform_contact(q, widths) result(c)
+      real(wp), intent(in) :: q, widths(:)
+      type(line_contact_t) :: c
+      integer :: j
+      c%in_contact = q > 0.0_wp
+      c%weight = widths
+      c%q = [(q, j = 1, size(widths))]
+      c%x = [(sum(widths(1:j)) - 0.5_wp*widths(j) - 0.5_wp*sum(widths), j = 1, size(widths))]
+      c%load = q*sum(widths)
+      c%half_length = 0.5_wp*sum(widths)
+   end function uniform_contact
+
+   !> Line-contact life (eqs 73, 75, 76) and the roller race/bearing sums against
+   !> hand evaluations; Lundberg-Palmgren lamina consistency; Harris's line-contact
+   !> race capacity.
+   subroutine test_roller_truths()
+      real(wp), parameter :: d = 8.0e-3_wp, dm = 4.3e-2_wp, g = d/dm, e = 9.0_wp/8.0_wp
+      real(wp), parameter :: widths(7) = [0.3e-3_wp, 0.9e-3_wp, 1.1e-3_wp, 0.7e-3_wp, 1.4e-3_wp, 0.8e-3_wp, 0.8e-3_wp]
+      type(life_params_t) :: p, lp
+      type(line_contact_t) :: c(4), ci(4), cu(3)
+      type(roller_lives_t) :: rl
+      real(wp) :: q0, l, n, qc, n_hand, qx(12), dx(12), n_all, n_a, n_b, lives(4), nr, ho, hi, qcr, harris
+      real(wp) :: om(4), passes
+      integer :: j, k
+
+      ! uniformly loaded straight roller: eq 75 is the plain load, eq 73/76 by hand
+      q0 = 1.25e5_wp
+      l = sum(widths)
+      passes = 0.4_wp
+      call check(close_to(line_equivalent_load([(q0, j = 1, 7)], widths, 4.0_wp, e), q0*l, 1.0e-13_wp), &
+                 "eq 75: uniform q on unequal slices gives Q_e = q l")
+      n = line_contact_lp_life(p, [(q0, j = 1, 7)], widths, 0.0_wp, d, dm, passes, .true.)
+      qc = 1.6655e8_wp*(1.0_wp + g)**(29.0_wp/27.0_wp)*g**(2.0_wp/9.0_wp)*d**(29.0_wp/27.0_wp) &
+           *(0.5_wp*l)**(7.0_wp/9.0_wp)*(2.0_wp*passes)**(-0.25_wp)
+      n_hand = (q0*l/qc)**(-4)
+      call check(close_to(n, n_hand, 1.0e-12_wp), "uniform roller, outer race: N = (Q/Q_c)**-4, eq 76 by hand")
+      n = line_contact_lp_life(p, [(q0, j = 1, 7)], widths, 0.0_wp, d, dm, passes, .false.)
+      call check(close_to(n, n_hand*((1.0_wp - g)/(1.0_wp + g))**(4.0_wp*29.0_wp/27.0_wp), 1.0e-12_wp), &
+                 "uniform roller, inner race: (1 - gamma)**(29/27) in eq 76")
+      call check(line_contact_lp_life(p, [(0.0_wp, j = 1, 7)], widths, 0.0_wp, d, dm, passes, .true.) &
+                 >= huge(1.0_wp), "unloaded line contact never fails")
+
+      ! Lundberg-Palmgren lamina consistency (p e = 4.5, l**(7/9)): the contact cut in two
+      ! parts, each part a contact of its own, gives N**-e = N_a**-e + N_b**-e
+      qx = [(1.0e5_wp*(1.0_wp + 0.3_wp*sin(real(j, wp))), j = 1, 12)]
+      dx = [(1.0e-4_wp*(1.0_wp + 0.5_wp*cos(real(j, wp))), j = 1, 12)]
+      n_all = line_contact_lp_life(p, qx, dx, 0.0_wp, d, dm, passes, .true.)
+      n_a = line_contact_lp_life(p, qx(1:5), dx(1:5), 0.0_wp, d, dm, passes, .true.)
+      n_b = line_contact_lp_life(p, qx(6:12), dx(6:12), 0.0_wp, d, dm, passes, .true.)
+      call check(close_to(n_all, (n_a**(-e) + n_b**(-e))**(-1.0_wp/e), 1.0e-12_wp), &
+                 "eqs 75-76: a line contact is the Weibull sum of its laminae")
+
+      ! race sums by hand: three loaded rollers and one out of contact
+      do k = 1, 3
+         c(k) = uniform_contact(q0*(1.0_wp + 0.2_wp*k), widths)
+      end do
+      c(4) = uniform_contact(0.0_wp, widths)
+      do k = 1, 4
+         lives(k) = huge(1.0_wp)
+         if (k < 4) lives(k) = line_contact_lp_life(p, c(k)%q, c(k)%weight, 0.0_wp, d, dm, passes, .true.)
+      end do
+      call roller_race_lp_life(p, c, [(passes, k = 1, 4)], d, dm, .true., .true., lives, nr)
+      call check(close_to(nr, 1.0_wp/sum(1.0_wp/lives(1:3)), 1.0e-13_wp), "roller race, rotating: 1/N = sum 1/N_k")
+      call roller_race_lp_life(p, c, [(passes, k = 1, 4)], d, dm, .true., .false., lives, nr)
+      call check(close_to(nr, sum(lives(1:3)**(-e))**(-1.0_wp/e), 1.0e-13_wp), &
+                 "roller race, stationary (report rule): N**-e = sum N_k**-e, e = 9/8")
+      lp = p
+      lp%stationary_rule = 1.0_wp
+      call roller_race_lp_life(lp, c, [(passes, k = 1, 4)], d, dm, .true., .false., lives, nr)
+      call check(close_to(nr, (4.0_wp**(e - 1.0_wp)*sum(lives(1:3)**(-e)))**(-1.0_wp/e), 1.0e-13_wp), &
+                 "roller race, stationary (Lundberg-Palmgren): N**-e = m**(e-1) sum N_k**-e, m = 4")
+
+      ! bearing: outer fixed, inner at 7e4 rpm (speeds in rad/s), orbit by pure rolling;
+      ! eq 102 and hours by hand
+      om = 0.5_wp*(1.0_wp - g)*7.0e4_wp*pi/30.0_wp
+      do k = 1, 4
+         ci(k) = uniform_contact(0.8_wp*q0*(1.0_wp + 0.1_wp*k), widths)
+      end do
+      call roller_bearing_lp_life(p, c, ci, om, 0.0_wp, 7.0e4_wp*pi/30.0_wp, d, dm, rl)
+      ho = sum([(line_contact_lp_life(p, c(k)%q, c(k)%weight, 0.0_wp, d, dm, 0.5_wp*(1.0_wp - g), .true.), &
+                 k = 1, 3)]**(-e))**(-1.0_wp/e)
+      hi = 1.0_wp/sum([(1.0_wp/line_contact_lp_life(p, ci(k)%q, ci(k)%weight, 0.0_wp, d, dm, &
+                                                    0.5_wp*(1.0_wp + g), .false.), k = 1, 4)])
+      call check(close_to(rl%outer_mrev, ho, 1.0e-12_wp), "roller bearing: outer race stationary sum")
+      call check(close_to(rl%inner_mrev, hi, 1.0e-12_wp), "roller bearing: inner race rotating sum")
+      call check(close_to(rl%bearing_mrev, (ho**(-e) + hi**(-e))**(-1.0_wp/e), 1.0e-12_wp), &
+                 "roller bearing: eq 102 with e = 9/8")
+      call check(close_to(rl%bearing_hours, rl%bearing_mrev*1.0e6_wp/(60.0_wp*7.0e4_wp), 1.0e-12_wp), &
+                 "roller bearing: hours at the relative race speed")
+
+      ! Harris (Rolling Bearing Analysis, Lundberg-Palmgren line contact): Z equal uniformly
+      ! loaded rollers in pure rolling with B = 552 N/mm**(50/27), n = 2 x passes, the
+      ! Lundberg-Palmgren stationary sum and l = contact length give the race capacity
+      !   outer: 552 (1+g)**(29/27) (1-g)**(-1/4) g**(2/9) D**(29/27) l**(7/9) Z**(-1/4)  (N, mm)
+      lp = p
+      lp%b_line = 552.0_wp*1.0e3_wp**(50.0_wp/27.0_wp)
+      lp%cycle_factor = 2.0_wp
+      lp%line_length_factor = 1.0_wp
+      lp%stationary_rule = 1.0_wp
+      do k = 1, 3
+         cu(k) = uniform_contact(q0, widths)
+      end do
+      call roller_race_lp_life(lp, cu, [(0.5_wp*(1.0_wp - g), k = 1, 3)], d, dm, .true., .false., lives(1:3), nr)
+      qcr = q0*l*nr**0.25_wp
+      harris = 552.0_wp*(1.0_wp + g)**(29.0_wp/27.0_wp)*(1.0_wp - g)**(-0.25_wp)*g**(2.0_wp/9.0_wp) &
+               *(d*1.0e3_wp)**(29.0_wp/27.0_wp)*(l*1.0e3_wp)**(7.0_wp/9.0_wp)*3.0_wp**(-0.25_wp)
+      call check(close_to(qcr, harris, 1.0e-12_wp), "outer race capacity = Harris/Lundberg-Palmgren line contact")
+      call roller_race_lp_life(lp, cu, [(0.5_wp*(1.0_wp + g), k = 1, 3)], d, dm, .false., .true., lives(1:3), nr)
+      qcr = q0*l*nr**0.25_wp
+      harris = 552.0_wp*(1.0_wp - g)**(29.0_wp/27.0_wp)*(1.0_wp + g)**(-0.25_wp)*g**(2.0_wp/9.0_wp) &
+               *(d*1.0e3_wp)**(29.0_wp/27.0_wp)*(l*1.0e3_wp)**(7.0_wp/9.0_wp)*3.0_wp**(-0.25_wp)
+      call check(close_to(qcr, harris, 1.0e-12_wp), "inner race capacity = Harris/Lundberg-Palmgren line contact")
+   end subroutine test_roller_truths
 
    ! ------------------------------------------------------------- step 0
    subroutine test_appendix_c_step0()
