@@ -300,10 +300,13 @@ def test_line_contact_rejects_bad_input():
 REPORT_BASIC_LIFE_H = 136.9   # "Basic Fatigue Life (hours) 1.369E+02", report line 3898
 
 
+@pytest.mark.xfail(strict=True, reason=(
+    "roller basic life not reproduced: 1213.5 h (outer 3126, inner 1767) against the "
+    "report's 136.9 h (+786 %) with l of eq 76 = the contact length, as the report's text "
+    "defines it; l = half the contact length would give 140.4 h (+2.6 %), see "
+    "docs/life-model.md 'Roller bearings' R3"))
 def test_basic_life_reproduces_the_report(step0, golden):
-    """Within 3 % with the choices of docs/life-model.md "Roller bearings": B = 1.6655e8 (the
-    echo), n = 2 x passes (as for balls), stationary race N**-e = sum N_k**-e (as for balls)
-    and l of eq 76 = half the contact length of eq 75 (chosen only to match the report)."""
+    """Within 3 % (issue "Roller step 0")."""
     _, _, s = step0
     perf = golden.table("performance")
     assert float(perf["basic_fatigue_life_hours"].iloc[0]) == REPORT_BASIC_LIFE_H
@@ -311,6 +314,15 @@ def test_basic_life_reproduces_the_report(step0, golden):
     print(f"basic life: run {s['basic_life_h']:.1f} h (outer {s['basic_life_outer_h']:.1f}, "
           f"inner {s['basic_life_inner_h']:.1f}), report {REPORT_BASIC_LIFE_H} h, {err:+.2%}")
     assert abs(err) <= 0.03
+
+
+def test_basic_life_half_length_hypothesis(step0):
+    """Record of the hypothesis of R3: every contact's Q_c scales as l**(7/9) and N as
+    Q_c**p (p = 4), race and bearing lives (eq 102) are homogeneous, so halving l of eq 76
+    multiplies the life by 2**(-28/9) exactly; that lands within 3 % of the report."""
+    _, _, s = step0
+    hypothesis = s["basic_life_h"] * 2.0 ** (-28 / 9)
+    assert hypothesis == pytest.approx(REPORT_BASIC_LIFE_H, rel=0.03)
 
 
 def test_basic_life_race_combination_eq102(step0):

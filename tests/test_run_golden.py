@@ -113,7 +113,6 @@ ROLLER_STEP0_COMPUTED = [
     ("performance", "outer_race_fit_m"),
     ("performance", "inner_race_fit_m"),
     ("performance", "internal_clearance_m"),
-    ("performance", "basic_fatigue_life_hours"),
 ]
 
 

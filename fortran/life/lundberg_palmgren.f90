@@ -26,12 +26,12 @@
 !>  * line contacts (eqs 75-76, line_contact_lp_life): with p e = 4.5 (p = 4,
 !>    e = 9/8) the Lundberg-Palmgren lamina model makes Q_e/Q_c independent of
 !>    the length l, provided eqs 75 and 76 use the same length.  ADORE does not:
-!>    its printed roller life needs l of eq 76 = half the contact length of eq 75
-!>    (line_length_factor = 0.5) together with B = 1.6655e8 (the echo's line
-!>    constant) and the point-contact cycle_factor = 2.  All three are chosen
-!>    ONLY to reproduce the report (Appendix D, 136.9 h); the Lundberg-Palmgren /
-!>    Harris values are line_length_factor = 1, B = 1.98e8 (552 N/mm**(50/27)),
-!>    cycle_factor = 2 (docs/life-model.md, "Roller bearings").
+!>    its printed roller life (Appendix D, 136.9 h) would need l of eq 76 = half
+!>    the contact length (line_length_factor = 0.5), against the report's own text
+!>    ("l is the length of contact").  The text wins where it speaks: the default
+!>    is line_length_factor = 1 and the report's roller life is NOT reproduced
+!>    (an open gap, docs/life-model.md "Roller bearings").  B = 1.6655e8 is the
+!>    line constant the report's echo prints for its runs (the text quotes 1.98e8).
 module adore_life_lundberg_palmgren
    use adore_core_kinds, only: wp
    implicit none
@@ -79,7 +79,7 @@ module adore_life_lundberg_palmgren
       ! --- race summation (section 3.2 step 5; see race_life)
       real(wp) :: stationary_rule = 0.0_wp       !< race sum of a stationary race: 0 report (ADORE), 1 Lundberg-Palmgren
       ! --- line contacts (eqs 75-76; see line_contact_lp_life)
-      real(wp) :: line_length_factor = 0.5_wp    !< l of eq 76 = factor * contact length 2a of eq 75:
+      real(wp) :: line_length_factor = 1.0_wp    !< l of eq 76 = factor * contact length 2a of eq 75:
                                                  !< 0.5 report (ADORE), 1 Lundberg-Palmgren
    end type life_params_t
 

@@ -185,7 +185,7 @@ contains
                  "eq 75: uniform q on unequal slices gives Q_e = q l")
       n = line_contact_lp_life(p, [(q0, j = 1, 7)], widths, 0.0_wp, d, dm, passes, .true.)
       qc = 1.6655e8_wp*(1.0_wp + g)**(29.0_wp/27.0_wp)*g**(2.0_wp/9.0_wp)*d**(29.0_wp/27.0_wp) &
-           *(0.5_wp*l)**(7.0_wp/9.0_wp)*(2.0_wp*passes)**(-0.25_wp)
+           *(p%line_length_factor*l)**(7.0_wp/9.0_wp)*(2.0_wp*passes)**(-0.25_wp)
       n_hand = (q0*l/qc)**(-4)
       call check(close_to(n, n_hand, 1.0e-12_wp), "uniform roller, outer race: N = (Q/Q_c)**-4, eq 76 by hand")
       n = line_contact_lp_life(p, [(q0, j = 1, 7)], widths, 0.0_wp, d, dm, passes, .false.)
