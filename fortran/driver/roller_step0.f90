@@ -35,6 +35,7 @@ module adore_driver_roller_step0
    use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness, roller_mass
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
+   use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    implicit none
    private
 
@@ -48,6 +49,7 @@ module adore_driver_roller_step0
       real(wp) :: orbital_speed = 0.0_wp       !< w_m (rad/s)
       real(wp) :: spin_speed = 0.0_wp          !< roller spin about its axis, w_R (rad/s, <0: -x)
       real(wp) :: contact_clearance = 0.0_wp   !< 2 (R_o - R_i - D) of the contact geometry (m)
+      type(cage_step0_t) :: cage               !< cage state and geometric interactions
    end type roller_step0_t
 
 contains
@@ -94,7 +96,8 @@ contains
 
       type(ring_t) :: shaft, inner_race, outer_race, housing
       type(roller_qs_load_t) :: ld
-      real(wp), allocatable :: w(:)
+      real(wp), allocatable :: w(:), centres(:, :)
+      real(wp) :: race_centre(3, 2)
       integer :: ng
 
       if (b%bearing_type /= ROLLER_BEARING .or. b%n_elements < 1 .or. b%d <= 0.0_wp .or. &
@@ -126,6 +129,23 @@ contains
       allocate (w(b%n_elements))
       w = s%orbital_speed
       call solve_roller_equilibrium(s%model, ld, w, s%equilibrium, error)
+      if (allocated(error)) return
+
+      ! cage (section 4.4.4): rectangular pockets (kPocType 0, the echo's POCKET SHAPE 0;
+      ! the kPocType field of Rec 7.0 is not identified, so cylindrical pockets are not
+      ! selectable); rollers axially centred; land growth from the mounting, applied once
+      associate (e => s%equilibrium)
+         allocate (centres(3, b%n_elements))
+         centres(1, :) = 0.0_wp
+         centres(2, :) = -e%r*sin(e%azimuth)
+         centres(3, :) = e%r*cos(e%azimuth)
+         race_centre(:, 1) = 0.0_wp
+         race_centre(:, 2) = [0.0_wp, e%u(1), e%u(2)]
+         call solve_cage_step0(b%cage_initial, centres, e%azimuth, sum(e%orbital_speed)/b%n_elements, b%d, &
+                               POCKET_RECTANGULAR, b%pocket_clearance(1), b%cage_od, b%cage_id, b%lands, &
+                               race_centre, [-s%mounting%outer_raceway_shrink, s%mounting%inner_raceway_growth], &
+                               s%cage, error)
+      end associate
 
    contains
 
