@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-LIBRARY_DIRS = ["core", "contact", "life", "model", "mounting", "quasistatic", "tribology", "deck", "output", "driver", "api"]
+LIBRARY_DIRS = ["core", "cage", "contact", "life", "model", "mounting", "quasistatic", "tribology", "deck", "output", "driver", "api"]
 
 
 def test_engine_unit_tests_pass(build_dir):

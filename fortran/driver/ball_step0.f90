@@ -13,6 +13,7 @@ module adore_driver_ball_step0
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
+   use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
                                            life_hours
    implicit none
@@ -31,6 +32,9 @@ module adore_driver_ball_step0
       real(wp) :: basic_life_inner = 0.0_wp        !< inner race (h)
       real(wp) :: modified_life_hours = 0.0_wp     !< NaN: needs film and traction
       real(wp) :: inner_weight(3) = 0.0_wp, outer_weight(3) = 0.0_wp   !< race weights (N)
+      !> cage state and geometric interactions; axial positions from the outer groove
+      !> curvature centre plane (the print's axial frame, see adore_cage_step0)
+      type(cage_step0_t) :: cage
    end type ball_step0_t
 
 contains
@@ -50,7 +54,8 @@ contains
       type(ball_qs_load_t) :: ld
       type(life_params_t) :: lp
       real(wp), allocatable :: lives(:), speed_rpm(:)
-      real(wp) :: n_o, n_i, wi_rpm, wo_rpm
+      real(wp) :: n_o, n_i, wi_rpm, wo_rpm, race_centre(3, 2)
+      real(wp), allocatable :: centres(:, :)
 
       if (b%n_elements < 1 .or. b%d <= 0.0_wp .or. b%dm <= b%d) then
          call input_error(error, "ball bearing: need at least one ball and 0 < ball diameter < pitch diameter")
@@ -103,6 +108,20 @@ contains
       s%basic_life_inner = life_hours(n_i, wi_rpm - wo_rpm)
       s%basic_life_hours = life_hours(bearing_life(n_o, n_i, lp%weibull_e_point), wi_rpm - wo_rpm)
       s%modified_life_hours = ieee_value(1.0_wp, ieee_quiet_nan)
+
+      ! cage (section 4.4.4): ball centres and race centres in the print's axial frame
+      associate (e => s%start%equilibrium)
+         allocate (centres(3, b%n_elements))
+         centres(1, :) = e%x - qb%x_o
+         centres(2, :) = -e%r*sin(e%azimuth)
+         centres(3, :) = e%r*cos(e%azimuth)
+         race_centre(:, 1) = 0.0_wp
+         race_centre(:, 2) = [e%u(1), e%u(2), e%u(3)]
+         call solve_cage_step0(b%cage_initial, centres, e%azimuth, &
+                               sum(s%start%kinematics%orbital_speed)/b%n_elements, b%d, POCKET_BALL, &
+                               b%pocket_clearance(1), b%cage_od, b%cage_id, b%lands, race_centre, &
+                               [-s%mounting%outer_raceway_shrink, s%mounting%inner_raceway_growth], s%cage, error)
+      end associate
 
    contains
 

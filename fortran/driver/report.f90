@@ -19,10 +19,11 @@ module adore_driver_report
    use adore_output_print_tables, only: write_step
    use adore_driver_ball_step0, only: ball_step0_t
    use adore_driver_roller_step0, only: roller_step0_t
+   use adore_cage_step0, only: cage_step0_t
    implicit none
    private
 
-   public :: fill_echo, write_ball_step0, write_roller_step0
+   public :: fill_echo, write_ball_step0, write_roller_step0, cage_tables
 
    real(wp), parameter :: pi = acos(-1.0_wp)
 
@@ -254,7 +255,7 @@ contains
          thermal(:, 3) = e%delta_i
          thermal(:, 4:5) = 0.0_wp                      ! rigid races: no race flexing
          ! section 2 bodies: Cage, ORace, IRace
-         bodies = nan
+         bodies(2:3, :) = nan
          bodies(2, 1:2) = 0.0_wp                       ! outer race fixed
          bodies(2, 5) = b%speed_outer*rpm
          bodies(3, 2) = hypot(e%u(2), e%u(3))
@@ -271,8 +272,7 @@ contains
          loads(5, 4:6) = -e%inner_moment
       end associate
       land_no = [(k, k=1, size(land_no))]
-      land_code = INT_NOT_COMPUTED
-      race_cage = nan
+      call cage_tables(s%cage, cage_code, re_cage, land_code, race_cage, bodies(1, :))
       acc = nan
       acc(2, 1:6) = 0.0_wp                             ! quasi-static: races at rest / in equilibrium
       acc(3, 1:6) = 0.0_wp
@@ -347,7 +347,7 @@ contains
          slices(:, 7, 1) = e%c_i(1)%delta
          slices(:, 8, 1) = e%c_i(1)%b
          slices(:, 9, 1) = e%c_i(1)%q
-         bodies = nan
+         bodies(2:3, :) = nan
          bodies(2, 1:2) = 0.0_wp
          bodies(2, 5) = b%speed_outer*rpm
          bodies(3, 2) = hypot(e%u(1), e%u(2))
@@ -364,11 +364,8 @@ contains
       end associate
       cage_el = [(1 + (k - 1)/2, k=1, 2*n)]
       cage_end = [(1 + mod(k - 1, 2), k=1, 2*n)]
-      cage_code = INT_NOT_COMPUTED
-      re_cage = nan
       land_no = [(k, k=1, size(land_no))]
-      land_code = INT_NOT_COMPUTED
-      race_cage = nan
+      call cage_tables(s%cage, cage_code, re_cage, land_code, race_cage, bodies(1, :))
       acc = nan
       acc(2:3, 1:6) = 0.0_wp
       acc(2, 7) = b%temperature(6)
@@ -385,5 +382,79 @@ contains
                       thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)
    end subroutine write_roller_step0
+
+   !> Section 2 cage rows from the step-0 cage c: RE/cage rows (one per ball, or end 1 and
+   !> end 2 of each roller, in that order), race/cage rows (one per guide land; rows beyond
+   !> the lands stay NaN) and the Cage row of the bodies table.
+   !>
+   !> Contact force, loss and wear rate are 0 and the code 0 where there is no contact
+   !> (pocket: gap >= 0; land: gap > 0, see adore_cage_step0); a contact needs the cage
+   !> contact model (Rec 10.5.x, not done): NaN / not computed.  Land contact and attitude angles print 0 without contact
+   !> (as the report's ball step 0), NaN with contact.  The cage's angular velocity is about
+   !> +x (theta = phi = 0); its angular position theta, phi is 0 for an untilted cage (the
+   !> mapping of Rec 9.5.1 angles y, z onto theta, phi is not identified: NaN otherwise).
+   !> Hoop stress: not computed (NaN; the report prints 0 for the ball cage).
+   subroutine cage_tables(c, code, re_cage, land_code, race_cage, cage_row)
+      type(cage_step0_t), intent(in) :: c
+      integer, intent(out) :: code(:), land_code(:)
+      real(wp), intent(out) :: re_cage(:, :), race_cage(:, :), cage_row(:)
+
+      real(wp), parameter :: deg = 180.0_wp/pi, rpm = 30.0_wp/pi
+      real(wp) :: nan
+      integer :: k, j, row
+      logical :: any_contact, contact
+
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      code = INT_NOT_COMPUTED
+      re_cage = nan
+      land_code = INT_NOT_COMPUTED
+      race_cage = nan
+      cage_row = nan
+      any_contact = .false.
+      if (allocated(c%pocket)) then
+         do k = 1, size(c%pocket, 2)
+            do j = 1, size(c%pocket, 1)
+               row = (k - 1)*size(c%pocket, 1) + j
+               if (row > size(re_cage, 1)) cycle
+               associate (p => c%pocket(j, k))
+                  re_cage(row, 1) = p%geo_int
+                  re_cage(row, 3) = p%theta*deg
+                  re_cage(row, 4) = p%phi*deg
+                  re_cage(row, 5) = p%pos(1)
+                  re_cage(row, 6) = p%pos(3)
+                  contact = p%in_contact
+               end associate
+               if (.not. contact) then
+                  code(row) = 0
+                  re_cage(row, [2, 7, 8]) = 0.0_wp
+               else
+                  any_contact = .true.
+               end if
+            end do
+         end do
+      end if
+      if (allocated(c%land)) then
+         do k = 1, min(size(c%land), size(race_cage, 1))
+            race_cage(k, 1) = c%land(k)%geo_int
+            race_cage(k, 5) = c%land(k)%effective_play
+            if (.not. c%land(k)%in_contact) then
+               land_code(k) = 0
+               race_cage(k, [2, 3, 4, 6, 7]) = 0.0_wp
+            else
+               any_contact = .true.
+            end if
+         end do
+      end if
+      associate (st => c%state)
+         cage_row(1) = st%centre(1)
+         cage_row(2) = hypot(st%centre(2), st%centre(3))
+         cage_row(3) = st%orbital_angle*deg
+         cage_row(4) = st%whirl_speed*rpm
+         cage_row(5) = abs(st%angular_speed)*rpm
+         if (st%angular_speed >= 0.0_wp) cage_row(6:7) = 0.0_wp   ! along +x
+         if (c%geometry_known) cage_row(8:9) = 0.0_wp
+         if (.not. any_contact) cage_row(11) = 0.0_wp
+      end associate
+   end subroutine cage_tables
 
 end module adore_driver_report

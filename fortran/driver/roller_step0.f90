@@ -41,6 +41,7 @@ module adore_driver_roller_step0
                                                    roller_qs_solution_t, solve_roller_equilibrium
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
+   use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    implicit none
    private
 
@@ -57,6 +58,7 @@ module adore_driver_roller_step0
       type(roller_lives_t) :: life             !< basic (Lundberg-Palmgren) lives, outer/inner/bearing
       real(wp) :: basic_life_hours = 0.0_wp    !< bearing basic life (h), = life%bearing_hours
       real(wp) :: modified_life_hours = 0.0_wp !< NaN: Tallian life of line contacts not computed
+      type(cage_step0_t) :: cage               !< cage state and geometric interactions
    end type roller_step0_t
 
 contains
@@ -104,7 +106,8 @@ contains
       type(ring_t) :: shaft, inner_race, outer_race, housing
       type(roller_qs_load_t) :: ld
       type(life_params_t) :: lp
-      real(wp), allocatable :: w(:)
+      real(wp), allocatable :: w(:), centres(:, :)
+      real(wp) :: race_centre(3, 2)
       integer :: ng
 
       if (b%bearing_type /= ROLLER_BEARING .or. b%n_elements < 1 .or. b%d <= 0.0_wp .or. &
@@ -144,6 +147,21 @@ contains
                                   b%d, b%dm, s%life)
       s%basic_life_hours = s%life%bearing_hours
       s%modified_life_hours = ieee_value(1.0_wp, ieee_quiet_nan)
+      ! cage (section 4.4.4): rectangular pockets (kPocType 0, the echo's POCKET SHAPE 0;
+      ! the kPocType field of Rec 7.0 is not identified, so cylindrical pockets are not
+      ! selectable); rollers axially centred; land growth from the mounting, applied once
+      associate (e => s%equilibrium)
+         allocate (centres(3, b%n_elements))
+         centres(1, :) = 0.0_wp
+         centres(2, :) = -e%r*sin(e%azimuth)
+         centres(3, :) = e%r*cos(e%azimuth)
+         race_centre(:, 1) = 0.0_wp
+         race_centre(:, 2) = [0.0_wp, e%u(1), e%u(2)]
+         call solve_cage_step0(b%cage_initial, centres, e%azimuth, sum(e%orbital_speed)/b%n_elements, b%d, &
+                               POCKET_RECTANGULAR, b%pocket_clearance(1), b%cage_od, b%cage_id, b%lands, &
+                               race_centre, [-s%mounting%outer_raceway_shrink, s%mounting%inner_raceway_growth], &
+                               s%cage, error)
+      end associate
 
    contains
 

@@ -4,12 +4,13 @@
 module adore_model_bearing
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
-   use adore_deck_reader, only: deck_t, deck_has, deck_get_real, deck_get_int, deck_get_text
+   use adore_deck_reader, only: deck_t, deck_has, deck_count, deck_get_real, deck_get_int, deck_get_text
    use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
                                     roller_race_diameters
    use adore_model_inertia, only: sphere_inertia, hollow_cylinder_inertia, ball_cage_inertia, &
                                   roller_cage_inertia, solid_cylinder_inertia
    use adore_model_traction_fit, only: fit_traction_curve
+   use adore_cage_step0, only: guide_land_t, cage_input_t
    implicit none
    private
 
@@ -68,6 +69,8 @@ module adore_model_bearing
       real(wp) :: cage_od = 0.0_wp, cage_id = 0.0_wp, cage_width = 0.0_wp
       real(wp) :: pocket_clearance(2) = 0.0_wp
       integer :: n_lands = 0                   !< cage guide lands (Rec 7.0)
+      type(guide_land_t), allocatable :: lands(:)   !< Rec 7.0 guide types, Rec 7.2.n (n_lands)
+      type(cage_input_t) :: cage_initial       !< Rec 9.5.1 (angles in rad)
       ! materials (echo order: element, outer, inner, cage, shaft, housing)
       type(material_t) :: material(6)
       ! inertia (element, cage, outer race, inner race): kg and kg m**2 (x, y, z)
@@ -96,8 +99,9 @@ contains
       type(bearing_t), intent(out) :: b
       type(error_type), allocatable, intent(out) :: error
 
-      real(wp) :: k(4), deg, pocket
+      real(wp) :: k(4), deg, pocket, angle(3)
       integer :: j
+      character(len=8) :: digits
       character(len=*), parameter :: material_rid(6) = ["8.1", "8.2", "8.3", "8.4", "8.5", "8.6"]
 
       call get_text("3.1", "run_id", b%run_id)
@@ -117,6 +121,32 @@ contains
       call get_real("7.1", "pocket_clearance_1", b%pocket_clearance(1))
       call get_real("7.1", "pocket_clearance_2", b%pocket_clearance(2))
       call get_int("7.0", "n_guide_lands", b%n_lands)
+      if (allocated(error)) return
+      if (b%n_lands < 0 .or. deck_count(deck, "7.2") < b%n_lands) then
+         call input_error(error, "Rec 7.0: n_guide_lands must be >= 0 with one Rec 7.2.n per land")
+         return
+      end if
+      allocate (b%lands(b%n_lands))
+      do j = 1, b%n_lands
+         write (digits, "(i0)") j
+         call get_int("7.0", "guide_type["//trim(digits)//"]", b%lands(j)%guide)
+         call get_real("7.2", "guide_land_diameter", b%lands(j)%diameter, j)
+         call get_real("7.2", "guide_land_width", b%lands(j)%width, j)
+         call get_real("7.2", "guide_land_position", b%lands(j)%position, j)
+         call get_real("7.2", "guide_land_clearance", b%lands(j)%clearance, j)
+      end do
+      if (deck_has(deck, "9.5.1")) then
+         call get_real("9.5.1", "cage_whirl_radius", b%cage_initial%whirl_radius)
+         call get_real("9.5.1", "cage_whirl_ratio", b%cage_initial%whirl_ratio)
+         call get_real("9.5.1", "cage_epicyclic_ratio", b%cage_initial%epicyclic_ratio)
+         call get_real("9.5.1", "cage_center_x", b%cage_initial%centre(1))
+         call get_real("9.5.1", "cage_center_y", b%cage_initial%centre(2))
+         call get_real("9.5.1", "cage_center_z", b%cage_initial%centre(3))
+         call get_real("9.5.1", "cage_angle_x", angle(1))
+         call get_real("9.5.1", "cage_angle_y", angle(2))
+         call get_real("9.5.1", "cage_angle_z", angle(3))
+         b%cage_initial%angle = angle*pi/180.0_wp
+      end if
       if (allocated(error)) return
 
       ! materials: default steel (cage: its own expansion, hardness and wear), Rec 8.n when present
@@ -214,12 +244,13 @@ contains
    contains
 
       !> Read a real field unless an earlier read failed (the first error is kept).
-      subroutine get_real(rid, field, value)
+      subroutine get_real(rid, field, value, occurrence)
          character(len=*), intent(in) :: rid, field
          real(wp), intent(inout) :: value
+         integer, intent(in), optional :: occurrence
          type(error_type), allocatable :: e
          if (allocated(error)) return
-         call deck_get_real(deck, rid, field, value, e)
+         call deck_get_real(deck, rid, field, value, e, occurrence)
          if (allocated(e)) call move_alloc(e, error)
       end subroutine get_real
 
