@@ -14,6 +14,7 @@ module adore_driver_report
                                   BODY_SHAFT, BODY_HOUSING
    use adore_model_scales, only: scale_factors
    use adore_tribology_film, only: LUBRICANT_MIL_L_7808
+   use adore_life_lundberg_palmgren, only: life_params_t
    use adore_output_echo_data, only: echo_data_t, echo_data_init
    use adore_output_layout, only: ELEMENT_BALL, ELEMENT_ROLLER, INT_NOT_COMPUTED, ECHO_MAX_GUIDE, N_PERFORMANCE
    use adore_output_print_tables, only: write_step
@@ -38,6 +39,7 @@ contains
 
       real(wp) :: v(9), scales(3)
       integer :: k, body, code
+      type(life_params_t) :: life
 
       e = echo_data_init()
       e%run_id = b%run_id
@@ -124,6 +126,20 @@ contains
       call get("10.5.2B", "race_cage_coeff_a", e%lubrication(6, 4))
       call get("10.5.2B", "race_cage_coeff_b", e%lubrication(7, 4))
       call get("10.5.2B", "race_cage_coeff_c", e%lubrication(8, 4))
+
+      ! fatigue parameters: the constants the life model uses (the decks carry no fatigue
+      ! records; these are the model's defaults, docs/life-model.md), same for both races
+      do k = 1, 2
+         if (b%bearing_type == BALL_BEARING) then
+            e%fatigue(:, k) = [life%b_line, life%load_exp_line, life%a_point, life%load_exp_point, &
+                               life%weibull_e_point]
+         else
+            e%fatigue(:, k) = [life%b_line, life%load_exp_line, life%a_point, life%load_exp_point, &
+                               life%weibull_e_line]
+         end if
+         e%asperity(:, k) = [life%sigma_rms, life%theta_rms, life%mu_asperity, life%tau0, life%sigma_residual, &
+                             life%matrix_m, life%contamination, life%processing_i]
+      end do
 
       ! lubricant of the library (Rec 10.0 lubricant code); none printed for other codes
       if (deck_has(deck, "10.0")) then
