@@ -2,6 +2,7 @@
 !> geometry checks only (a centred cage, a whirl offset, the land play); the comparison
 !> with the report is in tests/test_cage_step0.py.
 program test_cage
+   use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_cage_step0, only: guide_land_t, cage_input_t, cage_step0_t, solve_cage_step0, &
@@ -13,7 +14,6 @@ program test_cage
    integer, parameter :: n = 12
    real(wp), parameter :: d = 0.02_wp, pitch_r = 0.07_wp, c = 1.0e-3_wp
    real(wp), parameter :: cage_od = 0.15_wp, cage_id = 0.13_wp     ! R_c = 0.07
-   integer :: failures = 0
 
    call test_centred_cage_gives_uniform_clearances()
    call test_whirl_offset_gives_sine_clearance()
@@ -22,22 +22,9 @@ program test_cage
    call test_initial_speeds()
    call test_bad_input_is_an_input_error()
 
-   if (failures > 0) then
-      write (*, "(i0,a)") failures, " cage unit test(s) failed"
-      error stop 1
-   end if
-   write (*, "(a)") "all cage unit tests passed"
+   call finish("cage")
 
 contains
-
-   subroutine check(cond, what)
-      logical, intent(in) :: cond
-      character(len=*), intent(in) :: what
-      if (.not. cond) then
-         failures = failures + 1
-         write (*, "(a)") "FAIL: "//what
-      end if
-   end subroutine check
 
    !> n elements on the pitch circle at axial x (m), radial r.
    subroutine ring_of_elements(x, r, centres, azimuth)

@@ -2,6 +2,7 @@
 !> (adore_deck_reader).  Run by `meson test` with the decks/ directory as argument;
 !> pytest runs it from tests/test_engine_units.py.
 program test_deck_reader
+   use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR, ADORE_ENGINE_ERROR
    use adore_deck_tokenizer, only: split_label, cut_field, parse_int_field, parse_real_field, show_real
@@ -9,7 +10,6 @@ program test_deck_reader
                                 deck_get_text
    implicit none
 
-   integer :: failures = 0
    character(len=:), allocatable :: decks
 
    call get_decks_dir(decks)
@@ -23,22 +23,9 @@ program test_deck_reader
    call test_roller_deck_accessors()
    call test_bad_deck_message()
 
-   if (failures > 0) then
-      write (*, "(i0,a)") failures, " deck reader unit test(s) failed"
-      error stop 1
-   end if
-   write (*, "(a)") "all deck tokenizer/reader unit tests passed"
+   call finish("deck reader")
 
 contains
-
-   subroutine check(cond, what)
-      logical, intent(in) :: cond
-      character(len=*), intent(in) :: what
-      if (.not. cond) then
-         failures = failures + 1
-         write (*, "(a)") "FAIL: "//what
-      end if
-   end subroutine check
 
    subroutine get_decks_dir(path)
       character(len=:), allocatable, intent(out) :: path

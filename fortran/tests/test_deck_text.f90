@@ -1,12 +1,12 @@
 !> Engine unit tests of the deck text reader and the error/run plumbing.
 !> Run by `meson test` (pytest calls it from tests/test_fortran_units.py).
 program test_deck_text
+   use adore_test_support, only: check, finish
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
    use adore_deck_text, only: deck_text_t, read_deck_text
    use adore_driver_run, only: run_deck
    implicit none
 
-   integer :: failures = 0
 
    call test_missing_file()
    call test_empty_file()
@@ -15,22 +15,9 @@ program test_deck_text
    call test_lines_crlf_and_no_final_newline()
    call test_failed_run_leaves_no_output()
 
-   if (failures > 0) then
-      write (*, "(i0,a)") failures, " engine unit test(s) failed"
-      error stop 1
-   end if
-   write (*, "(a)") "all engine unit tests passed"
+   call finish("engine")
 
 contains
-
-   subroutine check(cond, what)
-      logical, intent(in) :: cond
-      character(len=*), intent(in) :: what
-      if (.not. cond) then
-         failures = failures + 1
-         write (*, "(a)") "FAIL: "//what
-      end if
-   end subroutine check
 
    subroutine write_bytes(path, bytes)
       character(len=*), intent(in) :: path, bytes

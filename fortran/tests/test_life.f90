@@ -4,6 +4,7 @@
 !> Report numbers below are quoted from the PDF-to-text file
 !> /work/shared/seed/000_f0ab926e9a2b5d30.txt ("line NNNN" = its line number).
 program test_life
+   use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_life_lundberg_palmgren, only: life_params_t, pass_cycles, point_contact_capacity, &
       contact_life, race_life, bearing_life, life_hours, line_equivalent_load, ball_race_lp_life, &
@@ -20,29 +21,15 @@ program test_life
    ! Appendix C bearing (BEARING GEOMETRY echo, line ~3080; Table 5)
    real(wp), parameter :: d_ball = 1.905e-2_wp, d_pitch = 0.140_wp, f_outer = 0.52_wp, f_inner = 0.54_wp
    real(wp), parameter :: inner_rpm = 2.0e4_wp      ! inner race speed, input deck line 3047 / IRace line 3290
-   integer :: failures = 0
 
    call test_truths()
    call test_roller_truths()
    call test_appendix_c_step0()
    call test_appendix_c_step2500()
 
-   if (failures > 0) then
-      write (*, "(i0,a)") failures, " life test(s) failed"
-      error stop 1
-   end if
-   write (*, "(a)") "all life tests passed"
+   call finish("life")
 
 contains
-
-   subroutine check(cond, what)
-      logical, intent(in) :: cond
-      character(len=*), intent(in) :: what
-      if (.not. cond) then
-         failures = failures + 1
-         write (*, "(a)") "FAIL: "//what
-      end if
-   end subroutine check
 
    logical function close_to(a, b, rtol)
       real(wp), intent(in) :: a, b, rtol

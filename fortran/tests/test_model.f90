@@ -2,6 +2,7 @@
 !> checks only (closed forms, defining conditions, input errors); the comparison with
 !> the report's echo is in tests/test_model_echo.py.
 program test_model
+   use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
    use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
@@ -13,7 +14,6 @@ program test_model
    implicit none
 
    real(wp), parameter :: pi = acos(-1.0_wp)
-   integer :: failures = 0
 
    call test_clearance()
    call test_inertia()
@@ -21,22 +21,9 @@ program test_model
    call test_traction_errors()
    call test_scales()
 
-   if (failures > 0) then
-      write (*, "(i0,a)") failures, " model unit test(s) failed"
-      error stop 1
-   end if
-   write (*, "(a)") "all model unit tests passed"
+   call finish("model")
 
 contains
-
-   subroutine check(cond, what)
-      logical, intent(in) :: cond
-      character(len=*), intent(in) :: what
-      if (.not. cond) then
-         failures = failures + 1
-         write (*, "(a)") "FAIL: "//what
-      end if
-   end subroutine check
 
    logical function close(a, b, rtol)
       real(wp), intent(in) :: a, b, rtol

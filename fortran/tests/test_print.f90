@@ -3,6 +3,7 @@
 !> INT_NOT_COMPUTED prints "NaN" - on lines written to a scratch file and read back.
 !> (Byte-identity with the Python writer on the golden files: tests/test_print_writer.py.)
 program test_print
+   use adore_test_support, only: check, finish
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_output_layout, only: INT_NOT_COMPUTED, TABLE_RACE_CAGE, TABLE_SUMMARY, STEP_HEADING
@@ -11,7 +12,6 @@ program test_print
    use adore_output_print_echo, only: write_echo
    implicit none
 
-   integer :: failures = 0
    real(wp) :: nan
 
    nan = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -19,22 +19,9 @@ program test_print
    call test_rows()
    call test_echo_defaults()
 
-   if (failures > 0) then
-      write (*, "(i0,a)") failures, " print test(s) failed"
-      error stop 1
-   end if
-   write (*, "(a)") "all print tests passed"
+   call finish("print")
 
 contains
-
-   subroutine check(cond, what)
-      logical, intent(in) :: cond
-      character(len=*), intent(in) :: what
-      if (.not. cond) then
-         failures = failures + 1
-         write (*, "(a)") "FAIL: "//what
-      end if
-   end subroutine check
 
    subroutine test_int_field()
       call check(int_field(7, 3) == "  7", "I3 of 7")

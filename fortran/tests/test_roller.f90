@@ -3,6 +3,7 @@
 !> defining conditions, finite differences); the comparison with the report is in
 !> tests/test_roller_step0.py.
 program test_roller
+   use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_contact_line_slices, only: roller_profile_t, line_contact_t, profile_drop, roller_mass, &
@@ -13,29 +14,15 @@ program test_roller
    implicit none
 
    real(wp), parameter :: pi = acos(-1.0_wp)
-   integer :: failures = 0
 
    call test_profile_and_mass()
    call test_roller_response_matches_finite_differences()
    call test_misaligned_race()
    call test_skew_shortens_the_inner_contact()
 
-   if (failures > 0) then
-      write (*, "(i0,a)") failures, " roller unit test(s) failed"
-      error stop 1
-   end if
-   write (*, "(a)") "all roller unit tests passed"
+   call finish("roller")
 
 contains
-
-   subroutine check(cond, what)
-      logical, intent(in) :: cond
-      character(len=*), intent(in) :: what
-      if (.not. cond) then
-         failures = failures + 1
-         write (*, "(a)") "FAIL: "//what
-      end if
-   end subroutine check
 
    !> The Appendix D roller as a contact model (growth applied as in the report).
    function appendix_d() result(b)

@@ -1,0 +1,34 @@
+!> Shared helpers of the engine's unit-test programs (fortran/tests): a failure counter,
+!> check() and the final verdict.  Test code only; the engine library keeps no state.
+module adore_test_support
+   implicit none
+   private
+
+   public :: check, finish
+
+   !> Failed checks of this test program so far.
+   integer :: failures = 0
+
+contains
+
+   !> Count and report a failed condition (the test program goes on).
+   subroutine check(cond, what)
+      logical, intent(in) :: cond
+      character(len=*), intent(in) :: what
+      if (.not. cond) then
+         failures = failures + 1
+         write (*, "(a)") "FAIL: "//what
+      end if
+   end subroutine check
+
+   !> Print the verdict of test program `suite`; exit status 1 when a check failed.
+   subroutine finish(suite)
+      character(len=*), intent(in) :: suite
+      if (failures > 0) then
+         write (*, "(i0,a)") failures, " "//suite//" test(s) failed"
+         error stop 1
+      end if
+      write (*, "(a)") "all "//suite//" tests passed"
+   end subroutine finish
+
+end module adore_test_support
