@@ -327,11 +327,12 @@ def deck_field_table(deck_path: str | os.PathLike) -> list[tuple[str, int, str, 
 
 
 BALL_STEP0_COLUMNS = ["azimuth", "x", "r", "alpha_o", "alpha_i", "q_o", "q_i", "p_o", "p_i", "a_o", "a_i",
-                      "b_o", "b_i", "delta_o", "delta_i", "orbital_speed", "spin_speed"]
+                      "b_o", "b_i", "delta_o", "delta_i", "orbital_speed", "spin_speed", "pitch",
+                      "slip_o", "slip_i", "trac_o", "trac_i", "spin_roll_o", "spin_roll_i", "loss_o", "loss_i"]
 BALL_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "basic_life_h", "basic_life_outer_h",
                       "basic_life_inner_h", "u_x", "u_y", "u_z", "theta_y", "theta_z", "inner_force_x",
                       "inner_force_y", "inner_force_z", "inner_moment_x", "inner_moment_y", "inner_moment_z",
-                      "passes"]
+                      "passes", "power_loss"]
 
 
 def ball_step0_from_deck(deck_path: str | os.PathLike, nmax: int = 200) -> tuple[dict, dict]:
@@ -492,7 +493,7 @@ def lubricant(code: int, temperature: float, *, density: float, alpha: float, co
 
 
 CONTACT_TRACTION_KEYS = ["force", "coefficient", "power", "max_slip", "centre_slip", "rolling_speed", "spin",
-                         "spin_roll", "rx", "n_rolling", "s1", "s2"]
+                         "spin_roll", "rx", "n_rolling", "s1", "s2", "node_slip"]
 
 
 def _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load):

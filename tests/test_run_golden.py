@@ -90,7 +90,7 @@ def test_ball_run_reports_what_it_does_not_compute(ball_report):
     """Columns of later issues print NaN and the differ counts them, never as a pass."""
     assert ball_report.exit_code == 1
     not_computed = {c.column for c in ball_report.comparisons if c.status == "not_computed"}
-    assert {"trac_coeff_outer", "film_thickness_inner_m", "contact_loss_outer_W"} <= not_computed
+    assert {"film_thickness_inner_m", "thermal_red_fac_outer", "contact_temp_rise_inner_K"} <= not_computed
 
 
 def test_roller_echo_matches_except_the_roller_mass(roller_report):

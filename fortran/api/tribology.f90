@@ -89,7 +89,7 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
    implicit none
    real(wp), intent(in) :: geom(9), coef(4), kappa_scale
    integer, intent(in) :: n_gauss
-   real(wp), intent(out) :: result(12)
+   real(wp), intent(out) :: result(13)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
    type(error_type), allocatable :: error
@@ -107,7 +107,7 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
       return
    end if
    result = [t%force, t%coefficient, t%power, t%max_slip, t%centre_slip, t%rolling_speed, t%spin, &
-             t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points]
+             t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points, t%node_slip]
 
 contains
 

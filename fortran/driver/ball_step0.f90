@@ -1,9 +1,11 @@
 !> Step 0 of a ball bearing run: mounting, the consistent quasi-static start and the basic
 !> fatigue life (ADORE's start-up: ADRA4 equilibrium, initial ball velocities, ADRF1).
 !>
-!> Everything printed at step 0 that needs no traction or time integration.  Quantities
-!> of later issues (traction, film, temperatures rise, power loss, cage contacts, Tallian
-!> life) are not computed here and stay NaN, so the print shows them as not computed.
+!> Everything printed at step 0 that needs no time integration: the ball speeds by
+!> minimum contact dissipation (report 4.4.7) and the race-contact tribology of those
+!> speeds (slip, traction coefficient, spin/roll, contact power loss, report 2.1).
+!> Quantities of later issues (film, thermal reduction, temperature rise, cage contacts,
+!> Tallian life) are not computed here and stay NaN, so the print shows them as not computed.
 module adore_driver_ball_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
@@ -11,7 +13,8 @@ module adore_driver_ball_step0
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_SHAFT, BODY_HOUSING
    use adore_mounting_fits, only: ring_t, mounting_t, mount_races
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
-   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
+   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, MIN_DISSIPATION, ball_contacts
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
@@ -22,6 +25,12 @@ module adore_driver_ball_step0
    public :: ball_step0_t, solve_ball_step0
 
    real(wp), parameter :: pi = acos(-1.0_wp)
+   !> Ball start hypothesis of step 0 (report 4.4.7: minimum dissipation; CONTROL_OUTER is
+   !> the race-control alternative, see docs/tribology.md for the comparison).
+   integer, parameter, public :: BALL_START_METHOD = MIN_DISSIPATION
+   !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
+   !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
+   integer, parameter, public :: PRINT_GAUSS = 4
 
    !> The step-0 state of a ball bearing.
    type :: ball_step0_t
@@ -35,6 +44,12 @@ module adore_driver_ball_step0
       !> cage state and geometric interactions; axial positions from the outer groove
       !> curvature centre plane (the print's axial frame, see adore_cage_step0)
       type(cage_step0_t) :: cage
+      ! race-contact tribology, (1, k) outer and (2, k) inner contact of ball k
+      real(wp), allocatable :: slip(:, :)          !< printed slip velocity, max |u| at the nodes (m/s)
+      real(wp), allocatable :: trac_coeff(:, :)    !< net rolling traction / load (-)
+      real(wp), allocatable :: spin_roll(:, :)     !< spin to roll ratio (-)
+      real(wp), allocatable :: loss(:, :)          !< contact power loss (W), eq (4)
+      real(wp) :: power_loss = 0.0_wp              !< bearing power loss: sum of contact losses (W)
    end type ball_step0_t
 
 contains
@@ -90,7 +105,10 @@ contains
       s%inner_weight = b%mass(4)*b%gravity
       s%outer_weight = b%mass(3)*b%gravity
 
-      call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, CONTROL_OUTER, s%start, error)
+      call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, BALL_START_METHOD, s%start, error, &
+                            b%traction)
+      if (allocated(error)) return
+      call contact_tribology(error)
       if (allocated(error)) return
 
       ! basic life, eqs 73-74 and 102 (inner race rotating, outer stationary)
@@ -124,6 +142,44 @@ contains
       end associate
 
    contains
+
+      !> Slip, traction, spin/roll and power loss of every loaded race contact at the
+      !> start's speeds (report 2.1, eqs 3-4; PRINT_GAUSS points per slip zone); NaN for an
+      !> unloaded contact.  Bearing power loss = sum of the contact losses (no cage loss at
+      !> step 0: the report prints zero cage contact forces).
+      subroutine contact_tribology(error)
+         type(error_type), allocatable, intent(out) :: error
+         type(ball_race_contact_t) :: c(2)
+         type(contact_traction_t) :: t
+         real(wp) :: nan
+         integer :: k, j
+
+         nan = ieee_value(1.0_wp, ieee_quiet_nan)
+         allocate (s%slip(2, b%n_elements), s%trac_coeff(2, b%n_elements), s%spin_roll(2, b%n_elements), &
+                   s%loss(2, b%n_elements))
+         s%slip = nan
+         s%trac_coeff = nan
+         s%spin_roll = nan
+         s%loss = nan
+         s%power_loss = 0.0_wp
+         associate (e => s%start%equilibrium, kin => s%start%kinematics)
+            do k = 1, b%n_elements
+               c = ball_contacts(b%d, e%r(k), e%n_o(:, k), e%n_i(:, k), b%speed_outer, b%speed_inner, &
+                                 [e%c_o(k)%semi_major, e%c_i(k)%semi_major], [e%q_o(k), e%q_i(k)], &
+                                 kin(k)%pitch, kin(k)%spin_speed, kin(k)%orbital_speed)
+               do j = 1, 2
+                  if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
+                  call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
+                  if (allocated(error)) return
+                  s%slip(j, k) = t%node_slip
+                  s%trac_coeff(j, k) = abs(t%coefficient)
+                  s%spin_roll(j, k) = t%spin_roll
+                  s%loss(j, k) = t%power
+                  s%power_loss = s%power_loss + t%power
+               end do
+            end do
+         end associate
+      end subroutine contact_tribology
 
       !> An elastic ring of body `body`'s material between two diameters (m).
       function ring_of(d_in, d_out, body) result(r)

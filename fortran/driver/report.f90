@@ -267,6 +267,17 @@ contains
          motion(:, 1) = kin%orbital_speed*rpm
          motion(:, 2) = abs(kin%spin_speed)*rpm
          motion(:, 5:6) = 0.0_wp                       ! angular positions at time 0
+         ! spin axis in the print's convention: omega = -amplitude (cos theta, sin theta)
+         motion(:, 3) = atan2(-kin%spin_speed*sin(kin%pitch), -kin%spin_speed*cos(kin%pitch))*deg
+         motion(:, 4) = 0.0_wp                         ! no out-of-plane component at step 0
+         motion(:, 7) = s%spin_roll(1, :)
+         motion(:, 8) = s%spin_roll(2, :)
+         motion(:, 9) = s%loss(1, :)
+         motion(:, 10) = s%loss(2, :)
+         traction(:, 1) = s%slip(1, :)
+         traction(:, 2) = s%slip(2, :)
+         traction(:, 3) = s%trac_coeff(1, :)
+         traction(:, 4) = s%trac_coeff(2, :)
          thermal(:, 2) = e%delta_o
          thermal(:, 3) = e%delta_i
          thermal(:, 4:5) = 0.0_wp                      ! rigid races: no race flexing
@@ -300,8 +311,10 @@ contains
       perf(3) = s%mounting%outer_fit
       perf(4) = s%mounting%inner_fit
       perf(5) = s%mounting%clearance
+      perf(6) = s%power_loss                           ! energy balance: sum of the contact losses
       summary = nan
       summary(1, 1:3) = 0.0_wp
+      summary(1, 5) = s%power_loss
       call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)

@@ -12,21 +12,38 @@
 !>         w_b (cos beta n_cx + sin beta n_cr) + (w_m - w_c) n_cx = 0.
 !> The first two equations are linear in (w_m, w_b) for a given beta; beta is found by
 !> bisection on the spin equation.  Speeds in rad/s, lengths in m, angles in rad.
+!>
+!> Minimum dissipation (report 4.4.7, the ADORE 5.0 default): the inner race contact rolls
+!> at its centre (first equation, j = i), and the pitch beta and spin speed w_b minimise the
+!> power lost in both race contacts (eq 4 with the deck's traction curve, zone-split Gauss,
+!> adore_tribology_slip).  For each beta of a grid the best w_b is found by golden section;
+!> the minimum over beta is bracketed on the grid, located by parabolic interpolation and
+!> polished by golden section inside the bracket.  Why the inner contact: the Appendix C
+!> step 0 (the report's printed speeds and contact angles) rolls at the inner contact centre
+!> to print precision (rolling radius within 2e-6 m of D/2 for all balls), while its outer
+!> centre slides at -0.14 to -0.23 m/s; see docs/tribology.md.
 module adore_quasistatic_ball_kinematics
    use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
+                                   SIDE_OUTER, SIDE_INNER
    implicit none
    private
 
    public :: ball_kinematics_t, race_control_kinematics, CONTROL_OUTER, CONTROL_INNER
+   public :: MIN_DISSIPATION, min_dissipation_kinematics, ball_contacts, dissipation
 
    integer, parameter :: CONTROL_OUTER = 1  !< no spin at the outer race contact
    integer, parameter :: CONTROL_INNER = 2  !< no spin at the inner race contact
+   integer, parameter :: MIN_DISSIPATION = 3  !< inner centre rolling, least contact power loss
+   integer, parameter :: N_GAUSS_MIN = 4    !< Gauss points per slip zone (as the report prints)
 
    !> Result of the kinematic solution for one ball.
    type :: ball_kinematics_t
       real(wp) :: orbital_speed = 0.0_wp  !< w_m, ball orbital speed (rad/s)
       real(wp) :: spin_speed = 0.0_wp     !< w_b, ball angular speed relative to the orbit frame (rad/s)
       real(wp) :: pitch = 0.0_wp          !< beta, angle of the ball spin axis to the bearing axis (rad)
+      real(wp) :: power = 0.0_wp          !< power lost in both race contacts (W), minimum dissipation only
       logical :: ok = .false.             !< .false. when the equations are singular
    end type ball_kinematics_t
 
@@ -131,5 +148,166 @@ contains
       end function determinant
 
    end function race_control_kinematics
+
+   !> The two race contacts of a ball turning at pitch beta (rad) and speed w_b (rad/s)
+   !> with orbital speed w_m (rad/s): contact(1) outer, contact(2) inner, for
+   !> adore_tribology_slip.  a(2), q(2): semi-major axes (m) and loads (N), outer first.
+   pure function ball_contacts(d, r_b, n_o, n_i, w_o, w_i, a, q, beta, w_b, w_m) result(c)
+      real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), beta, w_b, w_m
+      type(ball_race_contact_t) :: c(2)
+
+      c(1) = ball_race_contact_t(SIDE_OUTER, atan2(n_o(1), n_o(2)), 0.5_wp*d, r_b, &
+                                 w_b*[cos(beta), sin(beta)], w_o - w_m, a(1), q(1))
+      c(2) = ball_race_contact_t(SIDE_INNER, atan2(-n_i(1), -n_i(2)), 0.5_wp*d, r_b, &
+                                 w_b*[cos(beta), sin(beta)], w_i - w_m, a(2), q(2))
+   end function ball_contacts
+
+   !> Power (W) lost in the loaded race contacts (load > 0 and a > 0) of the ball state
+   !> (beta, w_b, w_m): eq (4) with traction curve coef, n_gauss points per slip zone.
+   subroutine dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, n_gauss, beta, w_b, w_m, p, error)
+      real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), coef(4), beta, w_b, w_m
+      integer, intent(in) :: n_gauss
+      real(wp), intent(out) :: p
+      type(error_type), allocatable, intent(out) :: error
+      type(ball_race_contact_t) :: c(2)
+      type(contact_traction_t) :: t
+      integer :: j
+
+      p = 0.0_wp
+      c = ball_contacts(d, r_b, n_o, n_i, w_o, w_i, a, q, beta, w_b, w_m)
+      do j = 1, 2
+         if (.not. (q(j) > 0.0_wp .and. a(j) > 0.0_wp)) cycle
+         call contact_traction(c(j), coef, 1.0_wp, n_gauss, t, error)
+         if (allocated(error)) return
+         p = p + t%power
+      end do
+   end subroutine dissipation
+
+   !> Ball orbital speed, spin speed and pitch by minimum contact dissipation (report
+   !> 4.4.7): inner contact centre in pure rolling, (beta, w_b) minimising the power of
+   !> both race contacts.  Arguments as race_control_kinematics plus a(2), q(2): semi-major
+   !> axes (m) and loads (N) of the outer and inner contact; coef: traction curve [A, B, C, D]
+   !> (Rec 10.1, u in m/s).  Pitch searched in [-30, 30] deg (grid step 1 deg).
+   !> Input error when neither contact is loaded or the inner contact geometry is degenerate.
+   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, k, error)
+      real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), coef(4)
+      type(ball_kinematics_t), intent(out) :: k
+      type(error_type), allocatable, intent(out) :: error
+
+      real(wp), parameter :: pi = acos(-1.0_wp), step = pi/180.0_wp
+      integer, parameter :: n_grid = 61
+      real(wp), parameter :: gr = 0.5_wp*(sqrt(5.0_wp) - 1.0_wp)
+      real(wp) :: betas(n_grid), powers(n_grid), speeds(n_grid), scale, lo, hi, x1, x2, f1, f2, bp, den
+      integer :: j, i, it
+
+      if (.not. ((q(1) > 0.0_wp .and. a(1) > 0.0_wp) .or. (q(2) > 0.0_wp .and. a(2) > 0.0_wp))) then
+         call input_error(error, "minimum dissipation kinematics: no loaded race contact")
+         return
+      end if
+      if (.not. (d > 0.0_wp .and. r_b + 0.5_wp*d*n_i(2) > 0.0_wp)) then
+         call input_error(error, "minimum dissipation kinematics: degenerate inner contact geometry")
+         return
+      end if
+      ! speed scale: the spin speed of a ball rolling on the inner race at zero pitch
+      scale = abs((w_i - w_o)*(r_b + 0.5_wp*d*n_i(2))/(0.5_wp*d))
+      if (scale <= 0.0_wp) scale = 1.0_wp
+      do j = 1, n_grid
+         betas(j) = (j - 1 - (n_grid - 1)/2)*step
+         call best_speed(betas(j), speeds(j), powers(j))
+         if (allocated(error)) return
+      end do
+      i = minloc(powers, 1)
+      i = min(max(i, 2), n_grid - 1)
+      ! parabolic interpolation through the grid minimum and its neighbours ...
+      den = powers(i - 1) - 2.0_wp*powers(i) + powers(i + 1)
+      bp = betas(i)
+      if (den > 0.0_wp) bp = betas(i) + 0.5_wp*step*(powers(i - 1) - powers(i + 1))/den
+      ! ... polished by golden section on the bracket [beta(i-1), beta(i+1)]
+      lo = betas(i - 1)
+      hi = betas(i + 1)
+      x1 = hi - gr*(hi - lo)
+      x2 = lo + gr*(hi - lo)
+      call best_speed(x1, k%spin_speed, f1)
+      call best_speed(x2, k%spin_speed, f2)
+      do it = 1, 60
+         if (allocated(error)) return
+         if (f1 <= f2) then
+            hi = x2
+            x2 = x1
+            f2 = f1
+            x1 = hi - gr*(hi - lo)
+            call best_speed(x1, k%spin_speed, f1)
+         else
+            lo = x1
+            x1 = x2
+            f1 = f2
+            x2 = lo + gr*(hi - lo)
+            call best_speed(x2, k%spin_speed, f2)
+         end if
+         if (hi - lo < 1.0e-10_wp) exit
+      end do
+      if (allocated(error)) return
+      bp = 0.5_wp*(lo + hi)
+      call best_speed(bp, k%spin_speed, k%power)
+      if (allocated(error)) return
+      k%pitch = bp
+      k%orbital_speed = inner_rolling_orbit(bp, k%spin_speed)
+      k%ok = .true.
+
+   contains
+
+      !> Orbital speed (rad/s) for which the inner contact centre rolls at (beta, w_b).
+      pure function inner_rolling_orbit(beta, w_b) result(w_m)
+         real(wp), intent(in) :: beta, w_b
+         real(wp) :: w_m
+         w_m = w_i - w_b*0.5_wp*d*(cos(beta)*n_i(2) - sin(beta)*n_i(1))/(r_b + 0.5_wp*d*n_i(2))
+      end function inner_rolling_orbit
+
+      !> Least power p (W) over the spin speed w_b (rad/s) at pitch beta (golden section on
+      !> w_b in -scale*[0.5, 1.5], the ball turning against the inner race).
+      subroutine best_speed(beta, w_b, p)
+         real(wp), intent(in) :: beta
+         real(wp), intent(out) :: w_b, p
+         real(wp) :: l, h, y1, y2, g1, g2
+         integer :: m
+
+         l = -1.5_wp*scale*sign(1.0_wp, w_i - w_o)
+         h = -0.5_wp*scale*sign(1.0_wp, w_i - w_o)
+         y1 = h - gr*(h - l)
+         y2 = l + gr*(h - l)
+         g1 = power_at(beta, y1)
+         g2 = power_at(beta, y2)
+         do m = 1, 80
+            if (allocated(error)) return
+            if (g1 <= g2) then
+               h = y2
+               y2 = y1
+               g2 = g1
+               y1 = h - gr*(h - l)
+               g1 = power_at(beta, y1)
+            else
+               l = y1
+               y1 = y2
+               g1 = g2
+               y2 = l + gr*(h - l)
+               g2 = power_at(beta, y2)
+            end if
+            if (abs(h - l) < 1.0e-10_wp*scale) exit
+         end do
+         w_b = 0.5_wp*(l + h)
+         p = power_at(beta, w_b)
+      end subroutine best_speed
+
+      !> Power (W) of both contacts at (beta, w_b) with the inner centre rolling.
+      function power_at(beta, w_b) result(p)
+         real(wp), intent(in) :: beta, w_b
+         real(wp) :: p
+         p = 0.0_wp
+         if (allocated(error)) return
+         call dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, N_GAUSS_MIN, beta, w_b, &
+                          inner_rolling_orbit(beta, w_b), p, error)
+      end function power_at
+
+   end subroutine min_dissipation_kinematics
 
 end module adore_quasistatic_ball_kinematics

@@ -4,16 +4,17 @@
 !> The centrifugal force of each ball depends on its orbital speed, and the orbital speed
 !> (race control) depends on the contact angles: solve the equilibrium for the current
 !> speeds, update the speeds from the contact angles, and repeat until the speeds change
-!> by less than 1e-12 relative.  The equilibrium is warm-started from the previous pass.
-!> The report's start chooses the spin-axis pitch by minimum contact dissipation (needs
-!> traction, issue "Step-0 tribology"); until then race control is used (ADORE's
-!> kAngVel alternative), outer race control by default.
+!> by less than 1e-12 relative (1e-7 for minimum dissipation).  The equilibrium is warm-started from the previous pass.
+!> The report's start chooses the spin-axis pitch by minimum contact dissipation
+!> (MIN_DISSIPATION, needs the traction curve); race control (CONTROL_OUTER,
+!> CONTROL_INNER) is ADORE's kAngVel alternative.
 module adore_quasistatic_ball_start
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, engine_error
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t, &
                                                  solve_ball_equilibrium
-   use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, race_control_kinematics
+   use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, race_control_kinematics, &
+                                                MIN_DISSIPATION, min_dissipation_kinematics
    implicit none
    private
 
@@ -29,19 +30,27 @@ module adore_quasistatic_ball_start
 contains
 
    !> Solve the coupled start for race speeds w_outer, w_inner (rad/s); control selects
-   !> the race-control hypothesis (CONTROL_OUTER or CONTROL_INNER).
-   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error)
+   !> the kinematic hypothesis: CONTROL_OUTER, CONTROL_INNER (race control) or
+   !> MIN_DISSIPATION (report 4.4.7; needs coef, the RE/race traction curve [A, B, C, D]).
+   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error, coef)
       type(ball_qs_bearing_t), intent(in) :: b
       type(ball_qs_load_t), intent(in) :: ld
       real(wp), intent(in) :: w_outer, w_inner
       integer, intent(in) :: control
+      real(wp), intent(in), optional :: coef(4)
       type(ball_start_t), intent(out) :: start
       type(error_type), allocatable, intent(out) :: error
 
       real(wp), allocatable :: speed(:), new_speed(:)
-      real(wp) :: d_i(2), d_o(2), change
+      real(wp) :: d_i(2), d_o(2), change, tol
       integer :: pass, k
 
+      if (control == MIN_DISSIPATION .and. .not. present(coef)) then
+         call engine_error(error, "ball start: minimum dissipation needs the traction curve")
+         return
+      end if
+      ! a minimum is located to ~sqrt(epsilon) of its argument: looser consistency test
+      tol = merge(1.0e-7_wp, 1.0e-12_wp, control == MIN_DISSIPATION)
       allocate (speed(b%n_balls), new_speed(b%n_balls), start%kinematics(b%n_balls))
       ! first guess: the epicyclic speed of a ball at the pitch diameter and zero angles
       speed = 0.5_wp*(w_inner*(1.0_wp - b%d/b%dm) + w_outer*(1.0_wp + b%d/b%dm))
@@ -51,8 +60,17 @@ contains
          do k = 1, b%n_balls
             d_o = start%equilibrium%n_o(:, k)
             d_i = start%equilibrium%n_i(:, k)
-            start%kinematics(k) = race_control_kinematics(b%d, start%equilibrium%r(k), d_o, d_i, &
-                                                          w_outer, w_inner, control)
+            if (control == MIN_DISSIPATION) then
+               associate (e => start%equilibrium)
+                  call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
+                                                  [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
+                                                  [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error)
+               end associate
+               if (allocated(error)) return
+            else
+               start%kinematics(k) = race_control_kinematics(b%d, start%equilibrium%r(k), d_o, d_i, &
+                                                             w_outer, w_inner, control)
+            end if
             if (.not. start%kinematics(k)%ok) then
                call engine_error(error, "ball start: race control kinematics has no solution")
                return
@@ -62,9 +80,9 @@ contains
          change = maxval(abs(new_speed - speed))/max(maxval(abs(new_speed)), tiny(1.0_wp))
          speed = new_speed
          start%passes = pass
-         if (change <= 1.0e-12_wp) exit
+         if (change <= tol) exit
       end do
-      if (change > 1.0e-12_wp) then
+      if (change > tol) then
          call engine_error(error, "ball start: orbital speeds and equilibrium did not become consistent")
          return
       end if

@@ -48,6 +48,8 @@ module adore_tribology_slip
       real(wp) :: coefficient = 0.0_wp  !< force / load (-)
       real(wp) :: power = 0.0_wp        !< heat generated, integral of kappa |u| dQ (W)
       real(wp) :: max_slip = 0.0_wp     !< largest |u| on the major axis (m/s)
+      real(wp) :: node_slip = 0.0_wp    !< largest |u| at the quadrature nodes (m/s): the
+                                        !< report's printed "Slip Velocity" with n_gauss = 4
       real(wp) :: centre_slip = 0.0_wp  !< u at the contact centre (m/s)
       real(wp) :: rolling_speed = 0.0_wp  !< mean entraining speed (u_ball + u_race)/2 at the centre (m/s)
       real(wp) :: spin = 0.0_wp         !< spin of the ball relative to the race about the normal (rad/s)
@@ -177,6 +179,7 @@ contains
             t%force = t%force + sign(kap, u)*dq
             t%power = t%power + kap*abs(u)*dq
             t%max_slip = max(t%max_slip, abs(u))
+            t%node_slip = max(t%node_slip, abs(u))
          end do
       end do
       ! a stationary point of u inside the contact (the sinusoid's extremum)

@@ -1,0 +1,181 @@
+"""Step-0 ball kinematics by minimum contact dissipation (report 4.4.7) and the race-contact
+tribology printed at step 0 (report 2.1), computed end to end by the engine from the
+Appendix C deck and compared with the report's print (golden/appendix_c_ball.prt).
+
+Issue "[Step-0 tribology]" asks 5 % per column; a column that misses is a strict xfail with
+its numbers and the believed cause (docs/tribology.md).  Independent checks: the energy
+balance of the printed power loss, and the engine's minimum against a brute-force scan of
+the dissipation with the inner contact centre rolling.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pyadore import _core
+from pyadore.printout import read_print
+
+ROOT = Path(__file__).resolve().parents[1]
+RPM = math.pi / 30
+DEG = math.pi / 180
+D_BALL = 0.01905
+COEF = [-1.6e-2, 3.82896e-2, 1.71782, 1.6e-2]
+INNER_SPEED = 20000 * RPM
+
+
+@lru_cache(maxsize=1)
+def _step0():
+    return _core.ball_step0_from_deck(ROOT / "decks" / "appendix_c_ball.inp")
+
+
+@lru_cache(maxsize=1)
+def _golden():
+    step = read_print(ROOT / "golden" / "appendix_c_ball.prt").steps[0]
+    return {n: step.table(n) for n in ("re_motion", "re_traction", "performance")}
+
+
+def _theta_deg(b):
+    """Print convention: omega = -amplitude (cos theta, sin theta) in the orbit frame."""
+    w, beta = b["spin_speed"], b["pitch"]
+    return np.degrees(np.arctan2(-w * np.sin(beta), -w * np.cos(beta)))
+
+
+def _column(key):
+    balls, _ = _step0()
+    if key == "theta":
+        return _theta_deg(balls)
+    return balls[key]
+
+
+COLUMNS = {  # printed column: (engine key, table, scale, absolute tolerance or None, xfail reason)
+    # spin-axis pitch, gated at 0.75 deg (percent is meaningless near 0): balls 1-7 within
+    # 0.23 deg, balls 8-12 0.63-0.71 deg; the report jumps by 1.5 deg between balls 7 and 8
+    "ang_vel_theta_deg": ("theta", "re_motion", 1.0, 0.75, None),
+    "orbital_velocity_rpm": ("orbital_speed", "re_motion", 1 / RPM, None, None),
+    "slip_velocity_outer_m_s": ("slip_o", "re_traction", 1.0, None,
+                                "worst 8.9 % (ball 16 1.727 vs 1.895 m/s): the definition reproduces the report "
+                                "within 0.6 % with the report's speeds (tests/test_tribology.py); here the "
+                                "outer centre slip of this model's speeds differs (inner-centre rolling plus "
+                                "least dissipation of an eq-4 loss that itself misses the report's)"),
+    "slip_velocity_inner_m_s": ("slip_i", "re_traction", 1.0, None, None),
+    "spin_roll_inner": ("spin_roll_i", "re_motion", 1.0, None, None),
+    "spin_roll_outer": ("spin_roll_o", "re_motion", 1.0, None,
+                        "outer spin/roll is a small difference (-0.015 vs -0.019 ball 2; report +0.0070 for "
+                        "balls 8-12, here -0.0065, 193 %): follows the pitch error"),
+    "trac_coeff_outer": ("trac_o", "re_traction", 1.0, None,
+                         "|net traction| / load worst 80 % (ball 1 0.0015 vs 0.0077): printed definition not identified, "
+                         "see tests/test_tribology.py"),
+    "trac_coeff_inner": ("trac_i", "re_traction", 1.0, None,
+                         "worst 99 % (ball 10 7.9e-5 vs 0.0087): the inner centre rolls, net traction ~0; see "
+                         "tests/test_tribology.py"),
+    "contact_loss_outer_W": ("loss_o", "re_motion", 1.0, None,
+                             "worst 29 % (ball 1 13.1 vs 18.5 W); ball 10 10.0 vs 10.5 W: report losses depend on the "
+                             "load more strongly than eq (4) with kappa(u) (see tests/test_tribology.py)"),
+    "contact_loss_inner_W": ("loss_i", "re_motion", 1.0, None,
+                             "worst 36 % (ball 10 7.50 vs 5.51 W); ball 1 20.6 vs 31.7 W: as the outer contact"),
+}
+
+
+def _errors(column):
+    key, table, scale, _, _ = COLUMNS[column]
+    calc = np.asarray(_column(key)) * scale
+    ref = _golden()[table][column].to_numpy()
+    return [(k + 1, c, r) for k, (c, r) in enumerate(zip(calc, ref)) if not math.isnan(r)]
+
+
+@pytest.mark.parametrize("column", [
+    pytest.param(c, marks=pytest.mark.xfail(strict=True, reason=v[4])) if v[4] else c
+    for c, v in COLUMNS.items()])
+def test_step0_tribology_column_matches_report(column):
+    atol = COLUMNS[column][3]
+    errs = _errors(column)
+    assert len(errs) >= 14
+    if atol is not None:
+        worst = max(errs, key=lambda e: abs(e[1] - e[2]))
+        print(f"{column}: worst {worst[1] - worst[2]:+.3f} at ball {worst[0]} ({worst[1]:.4g} vs {worst[2]:.4g})")
+        assert abs(worst[1] - worst[2]) <= atol
+        return
+    worst = max(errs, key=lambda e: abs(e[1] / e[2] - 1))
+    rel = abs(worst[1] / worst[2] - 1)
+    print(f"{column}: worst {100 * rel:.2f} % at ball {worst[0]} ({worst[1]:.4g} vs {worst[2]:.4g})")
+    assert rel <= 0.05
+
+
+@pytest.mark.xfail(strict=True, reason="sum of the contact losses 449.3 W (outer 203.3, inner 246.0) vs the "
+                   "report's 546.4 W (249.1, 297.3): 18 % low, follows the contact-loss columns")
+def test_total_power_loss_matches_report():
+    _, summary = _step0()
+    ref = _golden()["performance"]["total_power_loss_W"].iloc[0]
+    assert summary["power_loss"] == pytest.approx(ref, rel=0.05)
+
+
+def test_power_loss_is_sum_of_contact_losses():
+    """Energy balance at step 0: bearing power loss = the race contacts' losses (no cage
+    contact force, no drag at step 0); the report's own columns obey it too (546.4 W)."""
+    balls, summary = _step0()
+    assert summary["power_loss"] == pytest.approx(np.sum(balls["loss_o"]) + np.sum(balls["loss_i"]), rel=1e-12)
+    g = _golden()
+    mot = read_print(ROOT / "golden" / "appendix_c_ball.prt").steps[0].table("re_motion")
+    total = mot["contact_loss_outer_W"].sum() + mot["contact_loss_inner_W"].sum()
+    assert total == pytest.approx(g["performance"]["total_power_loss_W"].iloc[0], rel=2e-3)
+
+
+def _dissipation(b, k, beta, w_b):
+    """Both contacts' eq-4 power (4 Gauss points per zone) at (beta, w_b), inner centre rolling."""
+    r = b["r"][k]
+    ao, ai = b["alpha_o"][k], b["alpha_i"][k]
+    n_i = (-math.sin(ai), -math.cos(ai))
+    ri = r + D_BALL / 2 * n_i[1]
+    w_m = INNER_SPEED - w_b * D_BALL / 2 * (math.cos(beta) * n_i[1] - math.sin(beta) * n_i[0]) / ri
+    om = (w_b * math.cos(beta), w_b * math.sin(beta))
+    p = 0.0
+    for side, al, a, q, wr in ((1, ao, b["a_o"][k], b["q_o"][k], 0.0), (-1, ai, b["a_i"][k], b["q_i"][k],
+                                                                      INNER_SPEED)):
+        p += _core.contact_traction(side, al, D_BALL / 2, r, om, wr - w_m, a, q, COEF, n_gauss=4)["power"]
+    return p, w_m
+
+
+@pytest.mark.parametrize("k", [1, 9])
+def test_minimum_dissipation_beats_a_brute_force_scan(k):
+    """The engine's (pitch, spin speed) is the least dissipation of a 21 x 21 scan around it
+    (+-2 deg, +-0.5 %), and its orbital speed is the inner-rolling one."""
+    balls, _ = _step0()
+    beta0, w0 = balls["pitch"][k], balls["spin_speed"][k]
+    p0, wm0 = _dissipation(balls, k, beta0, w0)
+    assert wm0 == pytest.approx(balls["orbital_speed"][k], rel=1e-6)
+    best = min(_dissipation(balls, k, beta0 + db * DEG, w0 * (1 + f))[0]
+               for db in np.linspace(-2, 2, 21) for f in np.linspace(-5e-3, 5e-3, 21))
+    assert p0 <= best * (1 + 1e-9)
+    assert p0 == pytest.approx(balls["loss_o"][k] + balls["loss_i"][k], rel=1e-6)
+
+
+def test_minimum_dissipation_is_closer_to_the_report_than_outer_race_control():
+    """Why minimum dissipation is the step-0 default: worst pitch error 0.71 vs 0.99 deg and
+    worst orbital-speed error 0.37 vs 0.44 % against outer race control on the same contact
+    geometry, and nearer on balls 1-7 and 13-18.  Balls 8-12 are the exception: there the
+    report's speeds are within 0.04 % of outer race control (its outer spin/roll turns
+    positive; docs/tribology.md)."""
+    balls, _ = _step0()
+    mot = _golden()["re_motion"]
+    theta_md = _theta_deg(balls)
+    err = {"md_t": [], "rc_t": [], "md_w": [], "rc_w": []}
+    for k in range(18):
+        ao, ai = balls["alpha_o"][k], balls["alpha_i"][k]
+        wm_rc, w, beta = _core.race_control(D_BALL, balls["r"][k], (math.sin(ao), math.cos(ao)),
+                                            (-math.sin(ai), -math.cos(ai)), 0.0, INNER_SPEED, 1)
+        theta_rc = math.degrees(math.atan2(-w * math.sin(beta), -w * math.cos(beta)))
+        ref_t, ref_w = mot["ang_vel_theta_deg"].iloc[k], mot["orbital_velocity_rpm"].iloc[k] * RPM
+        err["md_t"].append(abs(theta_md[k] - ref_t))
+        err["rc_t"].append(abs(theta_rc - ref_t))
+        err["md_w"].append(abs(balls["orbital_speed"][k] / ref_w - 1))
+        err["rc_w"].append(abs(wm_rc / ref_w - 1))
+    e = {key: np.array(v) for key, v in err.items()}
+    assert e["md_t"].max() < e["rc_t"].max()
+    assert e["md_w"].max() < e["rc_w"].max()
+    better = (e["md_t"] < e["rc_t"]) & (e["md_w"] < e["rc_w"])
+    assert list(np.flatnonzero(~better) + 1) == [8, 9, 10, 11, 12]
