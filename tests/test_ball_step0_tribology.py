@@ -53,9 +53,12 @@ def _column(key):
 
 
 COLUMNS = {  # printed column: (engine key, table, scale, absolute tolerance or None, xfail reason)
-    # spin-axis pitch, gated at 0.75 deg (percent is meaningless near 0): balls 1-7 within
-    # 0.23 deg, balls 8-12 0.63-0.71 deg; the report jumps by 1.5 deg between balls 7 and 8
-    "ang_vel_theta_deg": ("theta", "re_motion", 1.0, 0.75, None),
+    # spin-axis pitch: golden/tolerances.toml's rule for re_motion (5 %, zero rule: 5 % of
+    # the column's largest |value| = 0.42 deg); balls 1-7 within 0.23 deg, balls 8-12 miss
+    "ang_vel_theta_deg": ("theta", "re_motion", 1.0, "zero-rule",
+                          "worst 0.71 deg (ball 12) against 0.42 deg: on balls 8-12 the report's pitch is "
+                          "within 0.04 % of outer race control (it jumps 1.5 deg between balls 7 and 8), "
+                          "minimum dissipation gives 0.63-0.71 deg off; why ADORE switches is not known"),
     "orbital_velocity_rpm": ("orbital_speed", "re_motion", 1 / RPM, None, None),
     "slip_velocity_outer_m_s": ("slip_o", "re_traction", 1.0, None,
                                 "worst 8.9 % (ball 16 1.727 vs 1.895 m/s): the definition reproduces the report "
@@ -95,6 +98,8 @@ def test_step0_tribology_column_matches_report(column):
     atol = COLUMNS[column][3]
     errs = _errors(column)
     assert len(errs) >= 14
+    if atol == "zero-rule":   # as golden/tolerances.toml: rel 5 % of the column's largest |golden|
+        atol = 0.05 * max(abs(e[2]) for e in errs)
     if atol is not None:
         worst = max(errs, key=lambda e: abs(e[1] - e[2]))
         print(f"{column}: worst {worst[1] - worst[2]:+.3f} at ball {worst[0]} ({worst[1]:.4g} vs {worst[2]:.4g})")
