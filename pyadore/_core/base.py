@@ -1,0 +1,54 @@
+"""The engine handle and the status check shared by every wrapper group."""
+
+from __future__ import annotations
+
+import os
+
+from ..errors import (
+    STATUS_ENGINE,
+    STATUS_INPUT,
+    STATUS_OK,
+    AdoreEngineError,
+    AdoreError,
+    AdoreInputError,
+)
+
+
+def _engine():
+    try:
+        from .. import _engine as engine
+    except ImportError as exc:  # the package was installed without its extension
+        raise AdoreEngineError(
+            "the pyadore engine extension (pyadore._engine) is not built; "
+            "run `make setup` (or `pip install -e .`) first"
+        ) from exc
+    return engine
+
+
+def _text(value) -> str:
+    if isinstance(value, bytes):
+        value = value.decode("utf-8", errors="replace")
+    return str(value).rstrip()
+
+
+def check(status: int, message) -> None:
+    """Raise the AdoreError subclass that ``status`` stands for (0: return)."""
+    if status == STATUS_OK:
+        return
+    text = _text(message) or f"engine returned status {status}"
+    if status == STATUS_INPUT:
+        raise AdoreInputError(text)
+    if status == STATUS_ENGINE:
+        raise AdoreEngineError(text)
+    raise AdoreError(f"{text} (unknown engine status {status})")
+
+
+def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: int) -> None:
+    """Run the engine on a deck file and write the print file (status checked)."""
+    status, message = _engine().adore_run_file(os.fspath(deck_path), os.fspath(out_path), int(steps))
+    check(int(status), message)
+
+
+def engine_version() -> str:
+    """Version string compiled into the engine."""
+    return _text(_engine().adore_version())

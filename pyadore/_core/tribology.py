@@ -1,0 +1,94 @@
+"""Tribology building blocks (fortran/tribology): film, thermal reduction, slip/traction, flash temperature."""
+
+from __future__ import annotations
+
+from .base import _engine, check
+
+
+def film_thickness(rx: float, k: float, u: float, load: float, e_prime: float, eta0: float,
+                   alpha: float) -> float:
+    """Hamrock-Dowson isothermal central film thickness (m): R_x (m), ellipticity a/b,
+    mean entraining speed (m/s), load (N), E' (Pa), eta0 (Pa s), alpha (1/Pa)."""
+    h, status, message = _engine().adore_tribo_film(rx, k, u, load, e_prime, eta0, alpha)
+    check(int(status), message)
+    return float(h)
+
+
+def thermal_reduction_factor(p_h: float, e_prime: float, loading, slide_roll: float = 0.0):
+    """Gupta et al. (1992) inlet-shear thermal reduction factor for thermal loading(s) L."""
+    import numpy as np
+
+    phi, status, message = _engine().adore_tribo_thermal_factor(
+        p_h, e_prime, np.atleast_1d(np.asarray(loading, float)), slide_roll)
+    check(int(status), message)
+    return phi
+
+
+def lubricant(code: int, temperature: float, *, density: float, alpha: float, conductivity: float) -> dict:
+    """Lubricant of the engine's library at temperature (K); density, alpha and conductivity
+    are explicit inputs (not sourced).  Keys: nu (m**2/s), eta (Pa s), beta (1/K), alpha,
+    conductivity, density."""
+    values, status, message = _engine().adore_tribo_lubricant(int(code), temperature, density, alpha,
+                                                              conductivity)
+    check(int(status), message)
+    return dict(zip(["nu", "eta", "beta", "alpha", "conductivity", "density"], map(float, values)))
+
+
+CONTACT_TRACTION_KEYS = ["force", "coefficient", "power", "max_slip", "centre_slip", "rolling_speed", "spin",
+                         "spin_roll", "rx", "n_rolling", "s1", "s2", "node_slip"]
+
+
+def _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load):
+    import numpy as np
+
+    return np.array([float(side), alpha, rho, r_b, omega[0], omega[1], race_speed, a, load], dtype=float)
+
+
+def contact_traction(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float,
+                     load: float, coef, kappa_scale: float = 1.0, n_gauss: int = 16) -> dict:
+    """Ball/race contact traction, power loss and kinematics (report eqs 1, 3, 4); side +1
+    outer / -1 inner; omega = ball angular velocity (axial, radial) in the orbit frame
+    (rad/s); race_speed = Omega - w_m (rad/s).  Keys: CONTACT_TRACTION_KEYS."""
+    import numpy as np
+
+    values, status, message = _engine().adore_tribo_contact(
+        _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load), np.asarray(coef, float),
+        kappa_scale, int(n_gauss))
+    check(int(status), message)
+    return dict(zip(CONTACT_TRACTION_KEYS, map(float, values)))
+
+
+def contact_slip(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float, s):
+    """Slip velocity (m/s) at major-axis positions s (m) (report eq 3, rolling component)."""
+    import numpy as np
+
+    u, status, message = _engine().adore_tribo_slip(
+        _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, 0.0), np.asarray(s, float))
+    check(int(status), message)
+    return u
+
+
+def flash_rise(xi, q):
+    """Dimensionless flash temperature rise (report eq 53) on the grid xi for flux q."""
+    import numpy as np
+
+    dt, status, message = _engine().adore_tribo_flash_strip(np.asarray(xi, float), np.asarray(q, float))
+    check(int(status), message)
+    return dt
+
+
+def contact_temperature_rise(a: float, b: float, p0: float, xk, wk, g, u1: float, u2: float, th1, th2,
+                             ny: int = 201) -> tuple[float, float]:
+    """(average, largest) contact temperature rise (K), report eqs 35-36; see the engine's
+    adore_tribology_flash.contact_temperature_rise."""
+    import numpy as np
+
+    values, status, message = _engine().adore_tribo_contact_temperature(
+        a, b, p0, np.asarray(xk, float), np.asarray(wk, float), np.asarray(g, float), u1, u2,
+        np.asarray(th1, float), np.asarray(th2, float), int(ny))
+    check(int(status), message)
+    return float(values[0]), float(values[1])
+
+
+# --- roller bearings: line contact by slices, step 0 (fortran/contact/line_slices.f90,
+# fortran/driver/roller_step0.f90) ---------------------------------------------------
