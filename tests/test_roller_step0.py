@@ -332,3 +332,32 @@ def test_basic_life_race_combination_eq102(step0):
     by_hand = (s["basic_life_outer_h"] ** -e + s["basic_life_inner_h"] ** -e) ** (-1 / e)
     assert s["basic_life_h"] == pytest.approx(by_hand, rel=1e-12)
     assert s["basic_life_h"] < min(s["basic_life_outer_h"], s["basic_life_inner_h"])
+
+
+@pytest.mark.parametrize("z", [8, 16])
+def test_radial_load_distribution_of_straight_rollers(tmp_path, z):
+    """Published case: zero clearance, straight rollers at rest under a radial load carry
+    Q_k = Q_max cos(phi_k)**(10/9) (q ~ delta**(10/9) along the roller), so
+    F_r = sum Q_k cos(phi_k) fixes Q_max exactly; for many rollers this is the classical
+    Q_max = 4.08 F_r / Z of line contacts (Harris & Kotzalas, Rolling Bearing Analysis,
+    'radially loaded roller bearing', zero clearance).  The Appendix D deck is modified
+    with pyadore.deck: no crown, ~no corner radii, no play, no fit, no speed, Z rollers."""
+    from pyadore.deck import read_deck
+
+    deck = read_deck(ROOT / "decks" / "appendix_d_roller.inp")
+    deck.set("3.2", "n_rolling_elements", z)
+    deck.set("5B", "crown_radius", 1.0e10)
+    deck.set("5B", "corner_radius_1", 1.0e-6)
+    deck.set("5B", "corner_radius_2", 1.0e-6)
+    deck.set("5B", "diametral_play", 0.0)
+    deck.set("9.0", "inner_race_fit", 0.0)
+    deck.set("9.1.2", "inner_race_speed", 0.0)
+    path = tmp_path / "straight.inp"
+    deck.save(path)
+    balls, _, _ = _core.roller_step0_from_deck(path)
+    fr = deck.get("9.1.1", "applied_force_z")
+    phi = 2 * math.pi * np.arange(z) / z
+    cos = np.clip(np.cos(phi), 0.0, None)
+    q_max = fr / np.sum(cos ** (19 / 9))
+    assert balls["q_i"] == pytest.approx(q_max * cos ** (10 / 9), rel=1e-4, abs=1e-4 * q_max)
+    assert balls["q_i"][0] * z / fr == pytest.approx(4.08, rel=0.02)
