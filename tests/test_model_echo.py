@@ -5,6 +5,7 @@ plus independent checks of the formulas."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -130,21 +131,35 @@ def test_roller_rolling_element_moments_from_printed_mass(roller):
     check_body(mass, moments, echo, "re")
 
 
-@pytest.mark.xfail(strict=True, reason="ADORE's roller mass is 0.44 % below rho*pi*D**2*L/4; "
-                   "the reduction (corner radii / crown?) is not identified")
-def test_roller_rolling_element_mass(roller):
+def _engine_echo_roller_mass(tmp_path):
+    """RE mass as the engine's print of the Appendix D deck echoes it."""
+    import pyadore
+
+    deck_path = Path(__file__).resolve().parents[1] / "decks" / "appendix_d_roller.inp"
+    out = pyadore.run(deck_path, steps=0, out=tmp_path / "r.prt").print_path
+    return read_print(out).echo["inertial_parameters.re[1]"]
+
+
+@pytest.mark.xfail(strict=True, reason="the engine's crowned roller (land + crown arcs, "
+                   "adore_contact_line_slices.roller_mass) weighs 1.28102e-3 kg against the echo's "
+                   "1.28108e-3 (4.7e-5 relative, outside the printed 6 digits); the plain cylinder "
+                   "rho pi D**2 L / 4 is 0.45 % heavier")
+def test_roller_rolling_element_mass(roller, tmp_path):
+    """The echo's RE mass to printed precision (the engine's model: the crowned roller)."""
     deck, echo = roller
-    d, length = deck.get("5B", "roller_diameter"), deck.get("5B", "roller_length")
-    mass, _ = _core.body_inertia("solid_cylinder", [d, length], deck.get("8.1", "density"))
-    assert agrees(mass, body(echo, "re")[0])
+    run_mass = _engine_echo_roller_mass(tmp_path)
+    assert agrees(run_mass, body(echo, "re")[0])
 
 
-def test_roller_mass_residual_is_the_known_one(roller):
-    """Pins the unexplained residual so that a change in it is noticed."""
+def test_roller_mass_crown_explains_most_of_the_plain_cylinder_residual(roller, tmp_path):
+    """The plain cylinder is 0.446 % above the echo; the crowned roller the engine uses is
+    within 5e-5 of it: the crown, not an unknown factor, is the difference."""
     deck, echo = roller
     d, length = deck.get("5B", "roller_diameter"), deck.get("5B", "roller_length")
     mass, _ = _core.body_inertia("solid_cylinder", [d, length], deck.get("8.1", "density"))
     assert mass / body(echo, "re")[0] - 1 == pytest.approx(4.4621e-3, abs=1e-5)
+    run_mass = _engine_echo_roller_mass(tmp_path)
+    assert abs(run_mass / body(echo, "re")[0] - 1) < 5e-5
 
 
 def test_roller_cage(roller):

@@ -8,7 +8,8 @@ module adore_model_bearing
    use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
                                     roller_race_diameters
    use adore_model_inertia, only: sphere_inertia, hollow_cylinder_inertia, ball_cage_inertia, &
-                                  roller_cage_inertia, solid_cylinder_inertia
+                                  roller_cage_inertia, roller_moments
+   use adore_contact_line_slices, only: roller_profile_t, roller_mass
    use adore_model_traction_fit, only: fit_traction_curve
    use adore_cage_step0, only: guide_land_t, cage_input_t
    implicit none
@@ -205,8 +206,11 @@ contains
          call get_real("10.1B", "slip_at_max_traction", k(4))
          if (allocated(error)) return
          call roller_race_diameters(b%dm, b%d, b%dia_play, b%outer_raceway_dia, b%inner_raceway_dia)
-         call solid_cylinder_inertia(b%d, b%roller_length, b%material(BODY_ELEMENT)%density, b%mass(1), &
-                                     b%moments(:, 1))
+         ! the crowned roller (land and crown arcs; adore_contact_line_slices): the same mass
+         ! for the centrifugal force, the echo and the time scale
+         b%mass(1) = roller_mass(roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, &
+                                                  b%corner_radius), b%d, b%material(BODY_ELEMENT)%density)
+         b%moments(:, 1) = roller_moments(b%mass(1), b%d, b%roller_length)
          call roller_cage_inertia(b%cage_od, b%cage_id, b%cage_width, b%n_elements, &
                                   b%d + b%pocket_clearance(1), b%roller_length + b%pocket_clearance(2), &
                                   b%material(BODY_CAGE)%density, b%mass(2), b%moments(:, 2))
