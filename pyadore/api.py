@@ -24,6 +24,9 @@ class Result:
     print_path: Path
     steps: int | None
     text: str = field(repr=False)
+    #: what the run did not do that was asked for (e.g. time steps the engine does not
+    #: integrate yet); empty for a complete run
+    notes: list[str] = field(default_factory=list)
 
     def print_run(self):
         """The print file parsed by :func:`pyadore.printout.read_print`."""
@@ -55,5 +58,9 @@ def run(deck_path, steps: int | None = None, out=None) -> Result:
         if out_path.parent and not out_path.parent.exists():
             raise AdoreInputError(f"{out_path}: the output directory {out_path.parent} does not exist")
     _core.run_file(deck, out_path, engine_steps)
+    notes = []
+    if engine_steps != 0 and _core.time_steps_implemented() == 0:
+        notes.append("time integration is not implemented yet; the print file ends after step 0 "
+                     "(the quasi-static start)")
     return Result(deck_path=deck, print_path=out_path, steps=steps,
-                  text=out_path.read_text(encoding="utf-8", errors="replace"))
+                  text=out_path.read_text(encoding="utf-8", errors="replace"), notes=notes)

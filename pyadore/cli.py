@@ -56,6 +56,8 @@ def run(deck: Path, out: Path | None, steps: int | None) -> None:
     except AdoreError as exc:
         _fail(exc)
     click.echo(f"print file written: {result.print_path}")
+    for note in result.notes:
+        click.echo(f"pyadore: note: {note}", err=True)
 
 
 @cli.command()

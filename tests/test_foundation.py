@@ -152,3 +152,15 @@ def test_cli_rejects_negative_steps(tmp_path, ball_deck):
     result = CliRunner().invoke(cli, ["run", str(ball_deck), "--steps", "-2"])
     assert result.exit_code == 2  # click's usage error
     assert "Traceback" not in result.output
+
+
+def test_run_says_when_time_steps_were_asked_for_but_not_integrated(tmp_path, ball_deck, run_exe):
+    """The engine does not integrate time steps yet: a run asking for them says so (Python
+    notes, CLI and executable on stderr); a step-0 run has nothing to say."""
+    full = pyadore.run(ball_deck, out=tmp_path / "full.prt")
+    assert full.notes and "ends after step 0" in full.notes[0]
+    assert pyadore.run(ball_deck, steps=0, out=tmp_path / "s0.prt").notes == []
+    proc = run_exe(ball_deck, tmp_path / "exe.prt")
+    assert proc.returncode == 0 and "ends after step 0" in proc.stderr
+    proc = run_exe(ball_deck, tmp_path / "exe0.prt", "--steps", "0")
+    assert proc.returncode == 0 and proc.stderr == ""

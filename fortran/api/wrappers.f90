@@ -31,6 +31,15 @@ subroutine adore_run_file(deck_path, out_path, steps, status, message)
    end if
 end subroutine adore_run_file
 
+!> Number of time steps the engine integrates (0: the print ends after step 0).
+subroutine adore_time_steps_implemented(n)
+   use adore_driver_run, only: TIME_STEPS_IMPLEMENTED
+   implicit none
+   integer, intent(out) :: n
+
+   n = TIME_STEPS_IMPLEMENTED
+end subroutine adore_time_steps_implemented
+
 !> The engine's version string.
 subroutine adore_version(version)
    use adore_core_version, only: adore_version_string

@@ -4,7 +4,7 @@
 program adore
    use adore_core_error, only: error_type, input_error, ADORE_OK
    use adore_core_version, only: adore_version_string
-   use adore_driver_run, only: run_deck, STEPS_FROM_DECK
+   use adore_driver_run, only: run_deck, STEPS_FROM_DECK, TIME_STEPS_IMPLEMENTED
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    implicit none
 
@@ -75,6 +75,9 @@ program adore
       call exit_with(error%stat)
    end if
    write (output_unit, "(a)") "print file written: "//out_path
+   if (steps /= 0 .and. TIME_STEPS_IMPLEMENTED == 0) write (error_unit, "(a)") &
+      "adore: note: time integration is not implemented yet; the print file ends after step 0 "// &
+      "(the quasi-static start)"
    call exit_with(ADORE_OK)
 
 contains

@@ -19,10 +19,14 @@ module adore_driver_run
    implicit none
    private
 
-   public :: run_deck, STEPS_FROM_DECK
+   public :: run_deck, STEPS_FROM_DECK, TIME_STEPS_IMPLEMENTED
 
    !> `steps` value meaning "as many steps as the deck asks for".
    integer, parameter :: STEPS_FROM_DECK = -1
+
+   !> Time steps this engine integrates: 0 until the dynamics issue lands (the print file
+   !> ends after step 0, the quasi-static start, whatever `steps` asks for).
+   integer, parameter :: TIME_STEPS_IMPLEMENTED = 0
 
 contains
 

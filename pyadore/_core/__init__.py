@@ -7,7 +7,7 @@ concept (base, contact, quasistatic, model, life, deck, printer, tribology), eve
 re-exported here: ``from pyadore import _core; _core.hertz_point(...)``.
 """
 
-from .base import check, run_file, engine_version  # noqa: F401
+from .base import check, run_file, engine_version, time_steps_implemented  # noqa: F401
 from .contact import hertz_point, LINE_CONTACT_RESULT, line_contact  # noqa: F401
 from .quasistatic import BALL_QS_COLUMNS, ball_quasi_static, ball_race_jacobian, race_control, mount_races, BALL_STEP0_COLUMNS, BALL_STEP0_SUMMARY, ball_step0_from_deck, ROLLER_STEP0_COLUMNS, ROLLER_STEP0_SLICES, ROLLER_STEP0_SUMMARY, roller_step0_from_deck  # noqa: F401
 from .model import ball_clearance, roller_races, body_inertia, traction_fit, traction_eval, scale_factors  # noqa: F401
@@ -20,6 +20,7 @@ __all__ = [
     "check",
     "run_file",
     "engine_version",
+    "time_steps_implemented",
     "hertz_point",
     "LINE_CONTACT_RESULT",
     "line_contact",

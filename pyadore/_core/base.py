@@ -52,3 +52,8 @@ def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: i
 def engine_version() -> str:
     """Version string compiled into the engine."""
     return _text(_engine().adore_version())
+
+
+def time_steps_implemented() -> int:
+    """Time steps the engine integrates (0: every print ends after step 0)."""
+    return int(_engine().adore_time_steps_implemented())
