@@ -184,9 +184,7 @@ end subroutine adore_mount_races
 subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, message)
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
-   use adore_deck_text, only: deck_text_t, read_deck_text
-   use adore_deck_reader, only: deck_t, parse_deck
-   use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING
+   use adore_model_bearing, only: bearing_t, read_bearing, BALL_BEARING
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
    implicit none
    character(len=*), intent(in) :: deck_path
@@ -196,8 +194,6 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
 
-   type(deck_text_t) :: text
-   type(deck_t) :: deck
    type(bearing_t) :: b
    type(ball_step0_t) :: s
    type(error_type), allocatable :: error
@@ -207,9 +203,7 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
    summary = 0.0_wp
    status = ADORE_OK
    message = ""
-   call read_deck_text(deck_path, text, error)
-   if (.not. allocated(error)) call parse_deck(text, deck, error)
-   if (.not. allocated(error)) call build_bearing(deck, b, error)
+   call read_bearing(deck_path, b, error)
    if (.not. allocated(error)) then
       if (b%bearing_type /= BALL_BEARING) then
          status = ADORE_INPUT_ERROR

@@ -68,9 +68,7 @@ end subroutine adore_line_contact
 subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, slices, summary, status, message)
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
-   use adore_deck_text, only: deck_text_t, read_deck_text
-   use adore_deck_reader, only: deck_t, parse_deck
-   use adore_model_bearing, only: bearing_t, build_bearing, ROLLER_BEARING
+   use adore_model_bearing, only: bearing_t, read_bearing, ROLLER_BEARING
    use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
    implicit none
    character(len=*), intent(in) :: deck_path
@@ -80,8 +78,6 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
 
-   type(deck_text_t) :: text
-   type(deck_t) :: deck
    type(bearing_t) :: b
    type(roller_step0_t) :: s
    type(error_type), allocatable :: error
@@ -98,9 +94,7 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
       message = "roller step 0: growth_count must be 1 or 2"
       return
    end if
-   call read_deck_text(deck_path, text, error)
-   if (.not. allocated(error)) call parse_deck(text, deck, error)
-   if (.not. allocated(error)) call build_bearing(deck, b, error)
+   call read_bearing(deck_path, b, error)
    if (.not. allocated(error)) then
       if (b%bearing_type /= ROLLER_BEARING) then
          status = ADORE_INPUT_ERROR

@@ -10,8 +10,9 @@ module adore_driver_ball_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
-   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_SHAFT, BODY_HOUSING
-   use adore_mounting_fits, only: ring_t, mounting_t, mount_races
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
+   use adore_mounting_fits, only: mounting_t
+   use adore_driver_mount, only: mount_bearing
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, MIN_DISSIPATION, ball_contacts
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
@@ -64,7 +65,6 @@ contains
       type(ball_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
 
-      type(ring_t) :: shaft, inner_race, outer_race, housing
       type(ball_qs_bearing_t) :: qb
       type(ball_qs_load_t) :: ld
       type(life_params_t) :: lp
@@ -76,12 +76,7 @@ contains
          call input_error(error, "ball bearing: need at least one ball and 0 < ball diameter < pitch diameter")
          return
       end if
-      shaft = ring_of(b%shaft_id, b%shaft_od, BODY_SHAFT)
-      inner_race = ring_of(b%shaft_od, b%inner_raceway_dia, BODY_INNER)
-      outer_race = ring_of(b%outer_raceway_dia, b%bearing_od, BODY_OUTER)
-      housing = ring_of(b%bearing_od, b%housing_od, BODY_HOUSING)
-      s%mounting = mount_races(shaft, inner_race, outer_race, housing, b%fit_inner, b%fit_outer, &
-                               b%speed_inner, b%speed_outer, b%dia_play)
+      s%mounting = mount_bearing(b)
 
       qb%n_balls = b%n_elements
       qb%d = b%d
@@ -180,14 +175,6 @@ contains
             end do
          end associate
       end subroutine contact_tribology
-
-      !> An elastic ring of body `body`'s material between two diameters (m).
-      function ring_of(d_in, d_out, body) result(r)
-         real(wp), intent(in) :: d_in, d_out
-         integer, intent(in) :: body
-         type(ring_t) :: r
-         r = ring_t(d_in, d_out, b%material(body)%modulus, b%material(body)%poisson, b%material(body)%density)
-      end function ring_of
 
    end subroutine solve_ball_step0
 

@@ -32,11 +32,11 @@ module adore_driver_roller_step0
    use adore_core_kinds, only: wp
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_error, only: error_type, input_error
-   use adore_model_bearing, only: bearing_t, ROLLER_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, &
-                                  BODY_SHAFT, BODY_HOUSING
+   use adore_model_bearing, only: bearing_t, ROLLER_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_model_scales, only: length_scale
-   use adore_mounting_fits, only: ring_t, mounting_t, mount_races
-   use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness, roller_mass
+   use adore_mounting_fits, only: mounting_t
+   use adore_driver_mount, only: mount_bearing
+   use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
    use adore_life_lundberg_palmgren, only: life_params_t
@@ -75,7 +75,7 @@ contains
       q%n_rollers = b%n_elements
       q%d = b%d
       q%profile = roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, b%corner_radius)
-      q%mass = roller_mass(q%profile, b%d, b%material(BODY_ELEMENT)%density)   ! crowned roller
+      q%mass = b%mass(1)   ! the crowned roller of the bearing model
       q%race_crown = b%race_crown
       q%r_o = 0.5_wp*b%outer_raceway_dia - real(growth_count, wp)*m%outer_raceway_shrink
       q%r_i = 0.5_wp*b%inner_raceway_dia + real(growth_count, wp)*m%inner_raceway_growth
@@ -103,7 +103,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: growth_count
 
-      type(ring_t) :: shaft, inner_race, outer_race, housing
       type(roller_qs_load_t) :: ld
       type(life_params_t) :: lp
       real(wp), allocatable :: w(:), centres(:, :)
@@ -118,12 +117,7 @@ contains
       end if
       ng = 2
       if (present(growth_count)) ng = growth_count
-      shaft = ring_of(b%shaft_id, b%shaft_od, BODY_SHAFT)
-      inner_race = ring_of(b%shaft_od, b%inner_raceway_dia, BODY_INNER)
-      outer_race = ring_of(b%outer_raceway_dia, b%bearing_od, BODY_OUTER)
-      housing = ring_of(b%bearing_od, b%housing_od, BODY_HOUSING)
-      s%mounting = mount_races(shaft, inner_race, outer_race, housing, b%fit_inner, b%fit_outer, &
-                               b%speed_inner, b%speed_outer, b%dia_play)
+      s%mounting = mount_bearing(b)
       s%model = roller_qs_model(b, s%mounting, ng, 3)
       s%contact_clearance = 2.0_wp*(s%model%r_o - s%model%r_i - b%d)
 
@@ -162,16 +156,6 @@ contains
                                race_centre, [-s%mounting%outer_raceway_shrink, s%mounting%inner_raceway_growth], &
                                s%cage, error)
       end associate
-
-   contains
-
-      !> An elastic ring of body `body`'s material between two diameters (m).
-      function ring_of(d_in, d_out, body) result(r)
-         real(wp), intent(in) :: d_in, d_out
-         integer, intent(in) :: body
-         type(ring_t) :: r
-         r = ring_t(d_in, d_out, b%material(body)%modulus, b%material(body)%poisson, b%material(body)%density)
-      end function ring_of
 
    end subroutine solve_roller_step0
 

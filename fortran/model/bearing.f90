@@ -4,7 +4,7 @@
 module adore_model_bearing
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
-   use adore_deck_reader, only: deck_t, deck_has, deck_count, deck_get_real, deck_get_int, deck_get_text
+   use adore_deck_reader, only: deck_t, read_deck, deck_has, deck_count, deck_get_real, deck_get_int, deck_get_text
    use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
                                     roller_race_diameters
    use adore_model_inertia, only: sphere_inertia, hollow_cylinder_inertia, ball_cage_inertia, &
@@ -15,7 +15,7 @@ module adore_model_bearing
    implicit none
    private
 
-   public :: material_t, bearing_t, build_bearing
+   public :: material_t, bearing_t, build_bearing, read_bearing
    public :: BALL_BEARING, ROLLER_BEARING
    public :: BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, BODY_SHAFT, BODY_HOUSING
 
@@ -279,5 +279,17 @@ contains
       end subroutine get_text
 
    end subroutine build_bearing
+
+   !> Read the deck at `path` (all checks of adore_deck_reader) and build its bearing model.
+   subroutine read_bearing(path, b, error)
+      character(len=*), intent(in) :: path
+      type(bearing_t), intent(out) :: b
+      type(error_type), allocatable, intent(out) :: error
+      type(deck_t) :: deck
+
+      call read_deck(path, deck, error)
+      if (allocated(error)) return
+      call build_bearing(deck, b, error)
+   end subroutine read_bearing
 
 end module adore_model_bearing

@@ -2,6 +2,7 @@
 !> closed forms and defining conditions only; the comparison with the report's print is
 !> in tests/test_tribology.py.
 program test_tribology
+   use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
    use adore_core_quadrature, only: gauss_legendre
@@ -14,7 +15,6 @@ program test_tribology
    implicit none
 
    real(wp), parameter :: pi = acos(-1.0_wp)
-   integer :: failures = 0
 
    call test_gauss()
    call test_film()
@@ -22,22 +22,9 @@ program test_tribology
    call test_slip()
    call test_flash()
 
-   if (failures > 0) then
-      write (*, "(i0,a)") failures, " tribology unit test(s) failed"
-      error stop 1
-   end if
-   write (*, "(a)") "all tribology unit tests passed"
+   call finish("tribology")
 
 contains
-
-   subroutine check(cond, what)
-      logical, intent(in) :: cond
-      character(len=*), intent(in) :: what
-      if (.not. cond) then
-         failures = failures + 1
-         write (*, "(a)") "FAIL: "//what
-      end if
-   end subroutine check
 
    !> n-point Gauss-Legendre integrates x**(2n-1) and x**(2n-2) exactly.
    subroutine test_gauss()
