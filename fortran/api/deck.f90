@@ -8,6 +8,7 @@
 !> double) or the text itself.  Values in the schema's SI units.
 subroutine adore_deck_table(deck_path, table_path, status, message)
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
+   use adore_api_status, only: set_error
    use adore_deck_reader, only: deck_t, read_deck, FIELD_INT, FIELD_REAL
    implicit none
    character(len=*), intent(in) :: deck_path    !< deck file to read
@@ -27,12 +28,7 @@ subroutine adore_deck_table(deck_path, table_path, status, message)
    message = ""
    call read_deck(deck_path, deck, error)
    if (allocated(error)) then
-      status = error%stat
-      if (len(error%message) > len(message)) then
-         message = error%message(1:len(message) - 32)//new_line("a")//"... (message truncated)"
-      else
-         message = error%message
-      end if
+      call set_error(error, status, message)
       return
    end if
    open (newunit=unit, file=table_path, status="replace", action="write", form="formatted", &

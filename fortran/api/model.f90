@@ -54,6 +54,7 @@ end subroutine adore_model_roller_races
 !> rho = mass in kg); n = number of pockets.  result = [mass (kg), Ix, Iy, Iz (kg m**2)].
 subroutine adore_model_inertia(kind, p, n, rho, result, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
    use adore_model_inertia, only: sphere_inertia, solid_cylinder_inertia, hollow_cylinder_inertia, &
                                   ball_cage_inertia, roller_cage_inertia, roller_moments, check_positive
@@ -114,8 +115,7 @@ subroutine adore_model_inertia(kind, p, n, rho, result, status, message)
       return
    end select
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
       return
    end if
    result = [mass, moments]
@@ -124,6 +124,7 @@ end subroutine adore_model_inertia
 !> Traction curve fit: result = [A, B (s/m), C (s/m), D] from k0, kmax, kinf, umax (m/s).
 subroutine adore_model_traction_fit(k0, kmax, kinf, umax, result, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_model_traction_fit, only: fit_traction_curve
    implicit none
@@ -138,8 +139,7 @@ subroutine adore_model_traction_fit(k0, kmax, kinf, umax, result, status, messag
    message = ""
    call fit_traction_curve(k0, kmax, kinf, umax, result, error)
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
    end if
 end subroutine adore_model_traction_fit
 
@@ -165,6 +165,7 @@ end subroutine adore_model_traction_eval
 !> diameter (m), mass (kg) and applied load vector [Fx, Fy, Fz] (N).
 subroutine adore_model_scales(d_re, mass_re, load, result, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_model_scales, only: scale_factors
    implicit none
@@ -179,7 +180,6 @@ subroutine adore_model_scales(d_re, mass_re, load, result, status, message)
    message = ""
    call scale_factors(d_re, mass_re, load, result, error)
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
    end if
 end subroutine adore_model_scales

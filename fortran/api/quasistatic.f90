@@ -18,6 +18,7 @@
 !>   largest ball residual (N), race Newton iterations].
 subroutine adore_ball_qs(n, geom, load, solve_moment, orbital_speed, balls, race, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t, &
                                                  solve_ball_equilibrium
@@ -42,8 +43,7 @@ subroutine adore_ball_qs(n, geom, load, solve_moment, orbital_speed, balls, race
    call adore_qs_unpack(n, geom, load, solve_moment, b, ld)
    call solve_ball_equilibrium(b, ld, orbital_speed, sol, error)
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
       return
    end if
    balls(:, 1) = sol%x
@@ -76,6 +76,7 @@ end subroutine adore_ball_qs
 !> Jacobian against finite differences.  Stiffnesses are those of the equilibrium.
 subroutine adore_ball_race_jacobian(n, geom, load, solve_moment, orbital_speed, u, res, jac, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t, &
                                                  solve_ball_equilibrium, race_residual
@@ -100,8 +101,7 @@ subroutine adore_ball_race_jacobian(n, geom, load, solve_moment, orbital_speed, 
    call adore_qs_unpack(n, geom, load, solve_moment, b, ld)
    call solve_ball_equilibrium(b, ld, orbital_speed, sol, error)
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
       return
    end if
    call race_residual(b, ld, u, sol, res, jac)
@@ -183,6 +183,7 @@ end subroutine adore_mount_races
 !>   inner race u(5), inner force(3), inner moment(3), passes]
 subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
    use adore_model_bearing, only: bearing_t, read_bearing, BALL_BEARING
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
@@ -218,8 +219,7 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
       call solve_ball_step0(b, s, error)
    end if
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
       return
    end if
    n = b%n_elements

@@ -67,6 +67,7 @@ end subroutine adore_line_contact
 !>   eqs 73, 75, 76, 102; huge = never fails)].
 subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, slices, summary, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
    use adore_model_bearing, only: bearing_t, read_bearing, ROLLER_BEARING
    use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
@@ -109,8 +110,7 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
       call solve_roller_step0(b, s, error, growth_count)
    end if
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
       return
    end if
    n = b%n_elements

@@ -5,6 +5,7 @@
 !> Hamrock-Dowson central film thickness h (m); see adore_tribology_film.
 subroutine adore_tribo_film(rx, k, u, q, e_prime, eta0, alpha, h, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_tribology_film, only: central_film_thickness
    implicit none
@@ -18,8 +19,7 @@ subroutine adore_tribo_film(rx, k, u, q, e_prime, eta0, alpha, h, status, messag
    message = ""
    call central_film_thickness(rx, k, u, q, e_prime, eta0, alpha, h, error)
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
    end if
 end subroutine adore_tribo_film
 
@@ -53,6 +53,7 @@ end subroutine adore_tribo_thermal_factor
 !> dynamic viscosity (Pa s), beta (1/K), alpha (1/Pa), conductivity (W/m/K), density].
 subroutine adore_tribo_lubricant(code, t, density, alpha, conductivity, result, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_tribology_film, only: lubricant_t, lubricant_from_code, kinematic_viscosity, &
                                    dynamic_viscosity, temperature_viscosity_coefficient
@@ -70,8 +71,7 @@ subroutine adore_tribo_lubricant(code, t, density, alpha, conductivity, result, 
    message = ""
    call lubricant_from_code(code, density, alpha, conductivity, lub, error)
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
       return
    end if
    result = [kinematic_viscosity(lub, t), dynamic_viscosity(lub, t), &
@@ -84,6 +84,7 @@ end subroutine adore_tribo_lubricant
 !> rolling speed (m/s), spin (rad/s), spin/roll, R_x (m), n rolling points, s1, s2 (m)].
 subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
    implicit none
@@ -102,8 +103,7 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
    c = contact_from(geom)
    call contact_traction(c, coef, kappa_scale, n_gauss, t, error)
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
       return
    end if
    result = [t%force, t%coefficient, t%power, t%max_slip, t%centre_slip, t%rolling_speed, t%spin, &
@@ -197,6 +197,7 @@ end subroutine adore_tribo_flash_strip
 subroutine adore_tribo_contact_temperature(a, b, p0, m, xk, wk, g, u1, u2, th1, th2, ny, result, &
                                            status, message)
    use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_tribology_flash, only: contact_temperature_rise
    implicit none
@@ -214,7 +215,6 @@ subroutine adore_tribo_contact_temperature(a, b, p0, m, xk, wk, g, u1, u2, th1, 
    message = ""
    call contact_temperature_rise(a, b, p0, xk, wk, g, u1, u2, th1, th2, ny, result(1), result(2), error)
    if (allocated(error)) then
-      status = error%stat
-      message = error%message
+      call set_error(error, status, message)
    end if
 end subroutine adore_tribo_contact_temperature

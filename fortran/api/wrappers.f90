@@ -8,6 +8,7 @@
 !> Run a deck and write its print file (see adore_driver_run::run_deck).
 subroutine adore_run_file(deck_path, out_path, steps, status, message)
    use adore_core_error, only: error_type, ADORE_OK
+   use adore_api_status, only: set_error
    use adore_driver_run, only: run_deck
    implicit none
    character(len=*), intent(in) :: deck_path   !< deck file path
@@ -22,12 +23,7 @@ subroutine adore_run_file(deck_path, out_path, steps, status, message)
    status = ADORE_OK
    message = ""
    if (allocated(error)) then
-      status = error%stat
-      if (len(error%message) > len(message)) then
-         message = error%message(1:len(message) - 32)//new_line("a")//"... (message truncated)"
-      else
-         message = error%message
-      end if
+      call set_error(error, status, message)
    end if
 end subroutine adore_run_file
 
