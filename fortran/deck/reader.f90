@@ -43,6 +43,7 @@ module adore_deck_reader
    public :: deck_field_t, deck_record_t, deck_t
    public :: read_deck, parse_deck, deck_has, deck_count
    public :: deck_get_real, deck_get_int, deck_get_text
+   public :: deck_collect_real, deck_collect_int, deck_collect_text
    public :: FIELD_INT, FIELD_REAL, FIELD_TEXT
 
    !> Field kinds of deck_field_t%kind.
@@ -277,6 +278,72 @@ contains
       if (.not. record_matches .and. len_trim(REC_REPEAT(rec%spec)) > 0) &
          record_matches = sid(1:len(sid) - 2) == rid
    end function record_matches
+
+   !> deck_get_real for reading many fields in a row: does nothing once `error` holds a
+   !> failure (the first one is kept); with if_present = .true. an absent record leaves
+   !> `value` unchanged instead of failing.
+   subroutine deck_collect_real(deck, rid, field, value, error, occurrence, if_present)
+      type(deck_t), intent(in) :: deck
+      character(len=*), intent(in) :: rid, field
+      real(wp), intent(inout) :: value
+      type(error_type), allocatable, intent(inout) :: error
+      integer, intent(in), optional :: occurrence
+      logical, intent(in), optional :: if_present
+      type(error_type), allocatable :: e
+      real(wp) :: v
+
+      if (allocated(error)) return
+      if (present(if_present)) then
+         if (if_present .and. .not. deck_has(deck, rid)) return
+      end if
+      call deck_get_real(deck, rid, field, v, e, occurrence)
+      if (allocated(e)) then
+         call move_alloc(e, error)
+      else
+         value = v
+      end if
+   end subroutine deck_collect_real
+
+   !> deck_get_int in the manner of deck_collect_real.
+   subroutine deck_collect_int(deck, rid, field, value, error, occurrence, if_present)
+      type(deck_t), intent(in) :: deck
+      character(len=*), intent(in) :: rid, field
+      integer, intent(inout) :: value
+      type(error_type), allocatable, intent(inout) :: error
+      integer, intent(in), optional :: occurrence
+      logical, intent(in), optional :: if_present
+      type(error_type), allocatable :: e
+      integer :: v
+
+      if (allocated(error)) return
+      if (present(if_present)) then
+         if (if_present .and. .not. deck_has(deck, rid)) return
+      end if
+      call deck_get_int(deck, rid, field, v, e, occurrence)
+      if (allocated(e)) then
+         call move_alloc(e, error)
+      else
+         value = v
+      end if
+   end subroutine deck_collect_int
+
+   !> deck_get_text in the manner of deck_collect_real.
+   subroutine deck_collect_text(deck, rid, field, value, error)
+      type(deck_t), intent(in) :: deck
+      character(len=*), intent(in) :: rid, field
+      character(len=:), allocatable, intent(inout) :: value
+      type(error_type), allocatable, intent(inout) :: error
+      type(error_type), allocatable :: e
+      character(len=:), allocatable :: v
+
+      if (allocated(error)) return
+      call deck_get_text(deck, rid, field, v, e)
+      if (allocated(e)) then
+         call move_alloc(e, error)
+      else
+         value = v
+      end if
+   end subroutine deck_collect_text
 
    !> Locate field `field` of the `occurrence`-th record answering to `rid`.
    subroutine find_field(deck, rid, field, kind, r, f, error, occurrence)

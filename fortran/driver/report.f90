@@ -9,7 +9,7 @@ module adore_driver_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
-   use adore_deck_reader, only: deck_t, deck_get_real, deck_get_int, deck_count, deck_has
+   use adore_deck_reader, only: deck_t, deck_collect_real, deck_collect_int, deck_count, deck_has
    use adore_model_bearing, only: bearing_t, BALL_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, &
                                   BODY_SHAFT, BODY_HOUSING
    use adore_model_scales, only: scale_factors
@@ -65,16 +65,16 @@ contains
          e%bearing_type = "ROLLER"
          e%element_kind = ELEMENT_ROLLER
          e%roller_len = b%roller_length
-         call get("5B", "central_land_length", e%cen_land)
-         call get("5B", "crown_radius", e%crown_rad)
-         call get("5B", "corner_radius_1", e%cor_rad(1))
-         call get("5B", "corner_radius_2", e%cor_rad(2))
-         call get("5B", "outer_race_crown_radius", e%race_crown(1))
-         call get("5B", "inner_race_crown_radius", e%race_crown(2))
-         call get("5B.1", "outer_race_len1", e%outer_len(1))
-         call get("5B.1", "outer_race_len2", e%outer_len(2))
-         call get("5B.1", "inner_race_len1", e%inner_len(1))
-         call get("5B.1", "inner_race_len2", e%inner_len(2))
+         call deck_collect_real(deck, "5B", "central_land_length", e%cen_land, error, if_present=.true.)
+         call deck_collect_real(deck, "5B", "crown_radius", e%crown_rad, error, if_present=.true.)
+         call deck_collect_real(deck, "5B", "corner_radius_1", e%cor_rad(1), error, if_present=.true.)
+         call deck_collect_real(deck, "5B", "corner_radius_2", e%cor_rad(2), error, if_present=.true.)
+         call deck_collect_real(deck, "5B", "outer_race_crown_radius", e%race_crown(1), error, if_present=.true.)
+         call deck_collect_real(deck, "5B", "inner_race_crown_radius", e%race_crown(2), error, if_present=.true.)
+         call deck_collect_real(deck, "5B.1", "outer_race_len1", e%outer_len(1), error, if_present=.true.)
+         call deck_collect_real(deck, "5B.1", "outer_race_len2", e%outer_len(2), error, if_present=.true.)
+         call deck_collect_real(deck, "5B.1", "inner_race_len1", e%inner_len(1), error, if_present=.true.)
+         call deck_collect_real(deck, "5B.1", "inner_race_len2", e%inner_len(2), error, if_present=.true.)
       end if
 
       ! cage and guide lands (Rec 7.x)
@@ -82,21 +82,21 @@ contains
       e%cage_id = b%cage_id
       e%cage_width = b%cage_width
       e%poc_cls = b%pocket_clearance
-      call get("7.1", "segment_cut_angle", e%seg_cut)
-      call get("7.1", "cage_cone_angle", e%cage_cone)
-      call get("7.1", "cage_outer_clearance", e%race_cls(1))
-      call get("7.1", "cage_inner_clearance", e%race_cls(2))
+      call deck_collect_real(deck, "7.1", "segment_cut_angle", e%seg_cut, error, if_present=.true.)
+      call deck_collect_real(deck, "7.1", "cage_cone_angle", e%cage_cone, error, if_present=.true.)
+      call deck_collect_real(deck, "7.1", "cage_outer_clearance", e%race_cls(1), error, if_present=.true.)
+      call deck_collect_real(deck, "7.1", "cage_inner_clearance", e%race_cls(2), error, if_present=.true.)
       e%pocket_shape = INT_NOT_COMPUTED     ! kPocType: its Rec 7.0 position is not identified
       e%n_cage_segs = INT_NOT_COMPUTED
-      call get_int("7.0", "n_guide_lands", e%n_lands)
+      call deck_collect_int(deck, "7.0", "n_guide_lands", e%n_lands, error)
       e%n_guide = min(deck_count(deck, "7.2"), ECHO_MAX_GUIDE)
       do k = 1, e%n_guide
          e%guide_land(k) = k
-         call get_int("7.0", "guide_type["//achar(iachar("0") + k)//"]", e%guide_type(k))
-         call get("7.2", "guide_land_diameter", e%guide(1, k), k)
-         call get("7.2", "guide_land_clearance", e%guide(2, k), k)
-         call get("7.2", "guide_land_width", e%guide(3, k), k)
-         call get("7.2", "guide_land_position", e%guide(4, k), k)
+         call deck_collect_int(deck, "7.0", "guide_type["//achar(iachar("0") + k)//"]", e%guide_type(k), error)
+         call deck_collect_real(deck, "7.2", "guide_land_diameter", e%guide(1, k), error, k, .true.)
+         call deck_collect_real(deck, "7.2", "guide_land_clearance", e%guide(2, k), error, k, .true.)
+         call deck_collect_real(deck, "7.2", "guide_land_width", e%guide(3, k), error, k, .true.)
+         call deck_collect_real(deck, "7.2", "guide_land_position", e%guide(4, k), error, k, .true.)
       end do
 
       ! materials: rows = properties, columns = RE, outer, inner, cage, shaft, housing
@@ -118,14 +118,14 @@ contains
       e%lubrication(2:5, 2) = b%traction_input
       e%lubrication(6:9, 1) = b%traction
       e%lubrication(6:9, 2) = b%traction
-      call get("10.5.1B", "re_cage_coeff_d", e%lubrication(9, 3))
-      call get("10.5.2B", "race_cage_coeff_d", e%lubrication(9, 4))
-      call get("10.5.1B", "re_cage_coeff_a", e%lubrication(6, 3))
-      call get("10.5.1B", "re_cage_coeff_b", e%lubrication(7, 3))
-      call get("10.5.1B", "re_cage_coeff_c", e%lubrication(8, 3))
-      call get("10.5.2B", "race_cage_coeff_a", e%lubrication(6, 4))
-      call get("10.5.2B", "race_cage_coeff_b", e%lubrication(7, 4))
-      call get("10.5.2B", "race_cage_coeff_c", e%lubrication(8, 4))
+      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_d", e%lubrication(9, 3), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_d", e%lubrication(9, 4), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_a", e%lubrication(6, 3), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_b", e%lubrication(7, 3), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_c", e%lubrication(8, 3), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_a", e%lubrication(6, 4), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_b", e%lubrication(7, 4), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_c", e%lubrication(8, 4), error, if_present=.true.)
 
       ! fatigue parameters: the constants the life model uses (the decks carry no fatigue
       ! records; these are the model's defaults, docs/life-model.md), same for both races
@@ -143,14 +143,14 @@ contains
 
       ! lubricant of the library (Rec 10.0 lubricant code); none printed for other codes
       if (deck_has(deck, "10.0")) then
-         call get_int("10.0", "lubricant_code", code)
+         call deck_collect_int(deck, "10.0", "lubricant_code", code, error)
          if (code == LUBRICANT_MIL_L_7808) e%lubricant = "MIL-L-7808"
       end if
 
       ! initial operating conditions
       ! coolant type (Rec 2.4): 0 prints "No Coolant" (Appendix D echo), 1 "Lubricant"
       ! (Table 5 of the report for the Appendix C deck, whose echo line is lost)
-      call get_int("2.4", "coolant_type", code)
+      call deck_collect_int(deck, "2.4", "coolant_type", code, error)
       select case (code)
       case (0)
          e%coolant_type = "No Coolant"
@@ -169,19 +169,19 @@ contains
       e%n_qs = 0
       e%trans_constraints = INT_NOT_COMPUTED
       e%rot_constraints = INT_NOT_COMPUTED
-      call get("2.1", "constraining_load_fraction", e%load_fraction)
+      call deck_collect_real(deck, "2.1", "constraining_load_fraction", e%load_fraction, error, if_present=.true.)
       e%applied_load = b%force
       e%rel_disp = 0.0_wp
       e%applied_moment = b%moment
       e%gravity = b%gravity
-      call get("9.5.1", "cage_center_x", e%cage_position(1))
-      call get("9.5.1", "cage_center_y", e%cage_position(2))
-      call get("9.5.1", "cage_center_z", e%cage_position(3))
-      call get("9.5.1", "cage_angle_x", e%cage_angle(1))
-      call get("9.5.1", "cage_angle_y", e%cage_angle(2))
-      call get("9.5.1", "cage_angle_z", e%cage_angle(3))
-      call get("9.5.1", "cage_whirl_ratio", e%whirl_ratio)
-      call get("9.5.1", "cage_epicyclic_ratio", e%epicyclic_ratio)
+      call deck_collect_real(deck, "9.5.1", "cage_center_x", e%cage_position(1), error, if_present=.true.)
+      call deck_collect_real(deck, "9.5.1", "cage_center_y", e%cage_position(2), error, if_present=.true.)
+      call deck_collect_real(deck, "9.5.1", "cage_center_z", e%cage_position(3), error, if_present=.true.)
+      call deck_collect_real(deck, "9.5.1", "cage_angle_x", e%cage_angle(1), error, if_present=.true.)
+      call deck_collect_real(deck, "9.5.1", "cage_angle_y", e%cage_angle(2), error, if_present=.true.)
+      call deck_collect_real(deck, "9.5.1", "cage_angle_z", e%cage_angle(3), error, if_present=.true.)
+      call deck_collect_real(deck, "9.5.1", "cage_whirl_ratio", e%whirl_ratio, error, if_present=.true.)
+      call deck_collect_real(deck, "9.5.1", "cage_epicyclic_ratio", e%epicyclic_ratio, error, if_present=.true.)
 
       ! scale factors and output controls
       call scale_factors(b%d, b%mass(1), b%force, scales, error)
@@ -189,41 +189,16 @@ contains
       e%scale_length = scales(1)
       e%scale_load = scales(2)
       e%scale_time = scales(3)
-      call get("2.1", "step_min", e%step_min)
-      call get("2.1", "step_max", e%step_max)
-      call get("2.1", "step_initial", e%step_initial)
-      call get("2.1", "error_limit", e%error_limit)
+      call deck_collect_real(deck, "2.1", "step_min", e%step_min, error, if_present=.true.)
+      call deck_collect_real(deck, "2.1", "step_max", e%step_max, error, if_present=.true.)
+      call deck_collect_real(deck, "2.1", "step_initial", e%step_initial, error, if_present=.true.)
+      call deck_collect_real(deck, "2.1", "error_limit", e%error_limit, error, if_present=.true.)
       e%n_steps = b%n_steps
-      call get_int("1", "data_control_1", e%data_control(1))
-      call get_int("1", "data_control_2", e%data_control(2))
+      call deck_collect_int(deck, "1", "data_control_1", e%data_control(1), error)
+      call deck_collect_int(deck, "1", "data_control_2", e%data_control(2), error)
       e%data_control(3) = INT_NOT_COMPUTED
       e%auto_plots = INT_NOT_COMPUTED
-      call get_int("1", "int_method", e%int_method)
-
-   contains
-
-      !> A real deck field into the echo (occurrence of a repeated record); the first
-      !> failure is kept in error.
-      subroutine get(rid, field, value, occurrence)
-         character(len=*), intent(in) :: rid, field
-         real(wp), intent(inout) :: value
-         integer, intent(in), optional :: occurrence
-         type(error_type), allocatable :: err
-         if (allocated(error)) return
-         if (.not. deck_has(deck, rid)) return
-         call deck_get_real(deck, rid, field, value, err, occurrence)
-         if (allocated(err)) call move_alloc(err, error)
-      end subroutine get
-
-      !> An integer deck field into the echo.
-      subroutine get_int(rid, field, value)
-         character(len=*), intent(in) :: rid, field
-         integer, intent(inout) :: value
-         type(error_type), allocatable :: err
-         if (allocated(error)) return
-         call deck_get_int(deck, rid, field, value, err)
-         if (allocated(err)) call move_alloc(err, error)
-      end subroutine get_int
+      call deck_collect_int(deck, "1", "int_method", e%int_method, error)
 
    end subroutine fill_echo
 

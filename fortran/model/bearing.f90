@@ -4,7 +4,8 @@
 module adore_model_bearing
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
-   use adore_deck_reader, only: deck_t, read_deck, deck_has, deck_count, deck_get_real, deck_get_int, deck_get_text
+   use adore_deck_reader, only: deck_t, read_deck, deck_has, deck_count, deck_collect_real, deck_collect_int, &
+                                deck_collect_text
    use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
                                     roller_race_diameters
    use adore_model_inertia, only: sphere_inertia, hollow_cylinder_inertia, ball_cage_inertia, &
@@ -105,23 +106,23 @@ contains
       character(len=8) :: digits
       character(len=*), parameter :: material_rid(6) = ["8.1", "8.2", "8.3", "8.4", "8.5", "8.6"]
 
-      call get_text("3.1", "run_id", b%run_id)
-      call get_int("1", "mode", b%mode)
-      call get_int("1", "n_steps", b%n_steps)
-      call get_int("3.2", "bearing_type", b%bearing_type)
-      call get_int("3.2", "n_rolling_elements", b%n_elements)
-      call get_real("4", "shaft_outer_diameter", b%shaft_od)
-      call get_real("4", "bearing_outer_diameter", b%bearing_od)
-      call get_real("4", "shaft_inner_diameter", b%shaft_id)
-      call get_real("4", "housing_outer_diameter", b%housing_od)
-      call get_real("4", "outer_race_width", b%width_outer)
-      call get_real("4", "inner_race_width", b%width_inner)
-      call get_real("7.1", "cage_outer_diameter", b%cage_od)
-      call get_real("7.1", "cage_inner_diameter", b%cage_id)
-      call get_real("7.1", "cage_width", b%cage_width)
-      call get_real("7.1", "pocket_clearance_1", b%pocket_clearance(1))
-      call get_real("7.1", "pocket_clearance_2", b%pocket_clearance(2))
-      call get_int("7.0", "n_guide_lands", b%n_lands)
+      call deck_collect_text(deck, "3.1", "run_id", b%run_id, error)
+      call deck_collect_int(deck, "1", "mode", b%mode, error)
+      call deck_collect_int(deck, "1", "n_steps", b%n_steps, error)
+      call deck_collect_int(deck, "3.2", "bearing_type", b%bearing_type, error)
+      call deck_collect_int(deck, "3.2", "n_rolling_elements", b%n_elements, error)
+      call deck_collect_real(deck, "4", "shaft_outer_diameter", b%shaft_od, error)
+      call deck_collect_real(deck, "4", "bearing_outer_diameter", b%bearing_od, error)
+      call deck_collect_real(deck, "4", "shaft_inner_diameter", b%shaft_id, error)
+      call deck_collect_real(deck, "4", "housing_outer_diameter", b%housing_od, error)
+      call deck_collect_real(deck, "4", "outer_race_width", b%width_outer, error)
+      call deck_collect_real(deck, "4", "inner_race_width", b%width_inner, error)
+      call deck_collect_real(deck, "7.1", "cage_outer_diameter", b%cage_od, error)
+      call deck_collect_real(deck, "7.1", "cage_inner_diameter", b%cage_id, error)
+      call deck_collect_real(deck, "7.1", "cage_width", b%cage_width, error)
+      call deck_collect_real(deck, "7.1", "pocket_clearance_1", b%pocket_clearance(1), error)
+      call deck_collect_real(deck, "7.1", "pocket_clearance_2", b%pocket_clearance(2), error)
+      call deck_collect_int(deck, "7.0", "n_guide_lands", b%n_lands, error)
       if (allocated(error)) return
       if (b%n_lands < 0 .or. deck_count(deck, "7.2") < b%n_lands) then
          call input_error(error, "Rec 7.0: n_guide_lands must be >= 0 with one Rec 7.2.n per land")
@@ -130,22 +131,22 @@ contains
       allocate (b%lands(b%n_lands))
       do j = 1, b%n_lands
          write (digits, "(i0)") j
-         call get_int("7.0", "guide_type["//trim(digits)//"]", b%lands(j)%guide)
-         call get_real("7.2", "guide_land_diameter", b%lands(j)%diameter, j)
-         call get_real("7.2", "guide_land_width", b%lands(j)%width, j)
-         call get_real("7.2", "guide_land_position", b%lands(j)%position, j)
-         call get_real("7.2", "guide_land_clearance", b%lands(j)%clearance, j)
+         call deck_collect_int(deck, "7.0", "guide_type["//trim(digits)//"]", b%lands(j)%guide, error)
+         call deck_collect_real(deck, "7.2", "guide_land_diameter", b%lands(j)%diameter, error, j)
+         call deck_collect_real(deck, "7.2", "guide_land_width", b%lands(j)%width, error, j)
+         call deck_collect_real(deck, "7.2", "guide_land_position", b%lands(j)%position, error, j)
+         call deck_collect_real(deck, "7.2", "guide_land_clearance", b%lands(j)%clearance, error, j)
       end do
       if (deck_has(deck, "9.5.1")) then
-         call get_real("9.5.1", "cage_whirl_radius", b%cage_initial%whirl_radius)
-         call get_real("9.5.1", "cage_whirl_ratio", b%cage_initial%whirl_ratio)
-         call get_real("9.5.1", "cage_epicyclic_ratio", b%cage_initial%epicyclic_ratio)
-         call get_real("9.5.1", "cage_center_x", b%cage_initial%centre(1))
-         call get_real("9.5.1", "cage_center_y", b%cage_initial%centre(2))
-         call get_real("9.5.1", "cage_center_z", b%cage_initial%centre(3))
-         call get_real("9.5.1", "cage_angle_x", angle(1))
-         call get_real("9.5.1", "cage_angle_y", angle(2))
-         call get_real("9.5.1", "cage_angle_z", angle(3))
+         call deck_collect_real(deck, "9.5.1", "cage_whirl_radius", b%cage_initial%whirl_radius, error)
+         call deck_collect_real(deck, "9.5.1", "cage_whirl_ratio", b%cage_initial%whirl_ratio, error)
+         call deck_collect_real(deck, "9.5.1", "cage_epicyclic_ratio", b%cage_initial%epicyclic_ratio, error)
+         call deck_collect_real(deck, "9.5.1", "cage_center_x", b%cage_initial%centre(1), error)
+         call deck_collect_real(deck, "9.5.1", "cage_center_y", b%cage_initial%centre(2), error)
+         call deck_collect_real(deck, "9.5.1", "cage_center_z", b%cage_initial%centre(3), error)
+         call deck_collect_real(deck, "9.5.1", "cage_angle_x", angle(1), error)
+         call deck_collect_real(deck, "9.5.1", "cage_angle_y", angle(2), error)
+         call deck_collect_real(deck, "9.5.1", "cage_angle_z", angle(3), error)
          b%cage_initial%angle = angle*pi/180.0_wp
       end if
       if (allocated(error)) return
@@ -156,28 +157,28 @@ contains
       b%material(BODY_CAGE)%wear = 5.0e-4_wp
       do j = 1, 6
          if (.not. deck_has(deck, material_rid(j))) cycle
-         call get_real(material_rid(j), "density", b%material(j)%density)
-         call get_real(material_rid(j), "elastic_modulus", b%material(j)%modulus)
-         call get_real(material_rid(j), "poisson_ratio", b%material(j)%poisson)
-         call get_real(material_rid(j), "thermal_expansion", b%material(j)%expansion)
-         call get_real(material_rid(j), "heat_capacity", b%material(j)%heat_capacity)
-         call get_real(material_rid(j), "thermal_conductivity", b%material(j)%conductivity)
-         call get_real(material_rid(j), "elastic_strain_limit", b%material(j)%strain_limit)
-         call get_real(material_rid(j), "hardness", b%material(j)%hardness)
-         call get_real(material_rid(j), "wear_coefficient", b%material(j)%wear)
+         call deck_collect_real(deck, material_rid(j), "density", b%material(j)%density, error)
+         call deck_collect_real(deck, material_rid(j), "elastic_modulus", b%material(j)%modulus, error)
+         call deck_collect_real(deck, material_rid(j), "poisson_ratio", b%material(j)%poisson, error)
+         call deck_collect_real(deck, material_rid(j), "thermal_expansion", b%material(j)%expansion, error)
+         call deck_collect_real(deck, material_rid(j), "heat_capacity", b%material(j)%heat_capacity, error)
+         call deck_collect_real(deck, material_rid(j), "thermal_conductivity", b%material(j)%conductivity, error)
+         call deck_collect_real(deck, material_rid(j), "elastic_strain_limit", b%material(j)%strain_limit, error)
+         call deck_collect_real(deck, material_rid(j), "hardness", b%material(j)%hardness, error)
+         call deck_collect_real(deck, material_rid(j), "wear_coefficient", b%material(j)%wear, error)
       end do
       if (allocated(error)) return
 
       if (b%bearing_type == BALL_BEARING) then
-         call get_real("5A", "ball_diameter", b%d)
-         call get_real("5A", "pitch_diameter", b%dm)
-         call get_real("5A", "free_contact_angle", deg)
-         call get_real("5A", "outer_curvature_factor", b%f_o)
-         call get_real("5A", "inner_curvature_factor", b%f_i)
-         call get_real("10.1C", "traction_at_zero_slip", k(1))
-         call get_real("10.1C", "max_traction", k(2))
-         call get_real("10.1C", "traction_at_infinite_slip", k(3))
-         call get_real("10.1C", "slip_at_max_traction", k(4))
+         call deck_collect_real(deck, "5A", "ball_diameter", b%d, error)
+         call deck_collect_real(deck, "5A", "pitch_diameter", b%dm, error)
+         call deck_collect_real(deck, "5A", "free_contact_angle", deg, error)
+         call deck_collect_real(deck, "5A", "outer_curvature_factor", b%f_o, error)
+         call deck_collect_real(deck, "5A", "inner_curvature_factor", b%f_i, error)
+         call deck_collect_real(deck, "10.1C", "traction_at_zero_slip", k(1), error)
+         call deck_collect_real(deck, "10.1C", "max_traction", k(2), error)
+         call deck_collect_real(deck, "10.1C", "traction_at_infinite_slip", k(3), error)
+         call deck_collect_real(deck, "10.1C", "slip_at_max_traction", k(4), error)
          if (allocated(error)) return
          b%alpha0 = deg*pi/180.0_wp
          b%dia_play = ball_diametral_play(b%d, b%f_o, b%f_i, b%alpha0)
@@ -188,22 +189,22 @@ contains
          call ball_cage_inertia(b%cage_od, b%cage_id, b%cage_width, b%n_elements, pocket, &
                                 b%material(BODY_CAGE)%density, b%mass(2), b%moments(:, 2))
       else
-         call get_real("5B", "roller_diameter", b%d)
-         call get_real("5B", "roller_length", b%roller_length)
-         call get_real("5B", "pitch_diameter", b%dm)
-         call get_real("5B", "diametral_play", b%dia_play)
-         call get_real("5B", "central_land_length", b%roller_land)
-         call get_real("5B", "crown_radius", b%crown_radius)
-         call get_real("5B", "corner_radius_1", b%corner_radius(1))
-         call get_real("5B", "corner_radius_2", b%corner_radius(2))
-         call get_real("5B", "outer_race_crown_radius", b%race_crown(1))
-         call get_real("5B", "inner_race_crown_radius", b%race_crown(2))
-         call get_real("5B.1", "outer_race_len1", b%race_length(1))
-         call get_real("5B.1", "inner_race_len1", b%race_length(2))
-         call get_real("10.1B", "traction_at_zero_slip", k(1))
-         call get_real("10.1B", "max_traction", k(2))
-         call get_real("10.1B", "traction_at_infinite_slip", k(3))
-         call get_real("10.1B", "slip_at_max_traction", k(4))
+         call deck_collect_real(deck, "5B", "roller_diameter", b%d, error)
+         call deck_collect_real(deck, "5B", "roller_length", b%roller_length, error)
+         call deck_collect_real(deck, "5B", "pitch_diameter", b%dm, error)
+         call deck_collect_real(deck, "5B", "diametral_play", b%dia_play, error)
+         call deck_collect_real(deck, "5B", "central_land_length", b%roller_land, error)
+         call deck_collect_real(deck, "5B", "crown_radius", b%crown_radius, error)
+         call deck_collect_real(deck, "5B", "corner_radius_1", b%corner_radius(1), error)
+         call deck_collect_real(deck, "5B", "corner_radius_2", b%corner_radius(2), error)
+         call deck_collect_real(deck, "5B", "outer_race_crown_radius", b%race_crown(1), error)
+         call deck_collect_real(deck, "5B", "inner_race_crown_radius", b%race_crown(2), error)
+         call deck_collect_real(deck, "5B.1", "outer_race_len1", b%race_length(1), error)
+         call deck_collect_real(deck, "5B.1", "inner_race_len1", b%race_length(2), error)
+         call deck_collect_real(deck, "10.1B", "traction_at_zero_slip", k(1), error)
+         call deck_collect_real(deck, "10.1B", "max_traction", k(2), error)
+         call deck_collect_real(deck, "10.1B", "traction_at_infinite_slip", k(3), error)
+         call deck_collect_real(deck, "10.1B", "slip_at_max_traction", k(4), error)
          if (allocated(error)) return
          call roller_race_diameters(b%dm, b%d, b%dia_play, b%outer_raceway_dia, b%inner_raceway_dia)
          ! the crowned roller (land and crown arcs; adore_contact_line_slices): the same mass
@@ -223,60 +224,27 @@ contains
       call fit_traction_curve(k(1), k(2), k(3), k(4), b%traction, error)
       if (allocated(error)) return
 
-      call get_real("9.0", "room_temperature", b%temperature(1))
-      call get_real("2.7", "housing_temperature", b%temperature(2))
-      call get_real("2.7", "shaft_temperature", b%temperature(3))
-      call get_real("2.7", "rolling_element_temperature", b%temperature(4))
-      call get_real("2.7", "cage_temperature", b%temperature(5))
-      call get_real("2.7", "outer_race_temperature", b%temperature(6))
-      call get_real("2.7", "inner_race_temperature", b%temperature(7))
-      call get_real("9.0", "outer_race_fit", b%fit_outer)
-      call get_real("9.0", "inner_race_fit", b%fit_inner)
-      call get_real("9.1.2", "inner_race_speed", b%speed_inner)
-      call get_real("9.1.1", "applied_force_x", b%force(1))
-      call get_real("9.1.1", "applied_force_y", b%force(2))
-      call get_real("9.1.1", "applied_force_z", b%force(3))
-      call get_real("9.1.1", "applied_moment_x", b%moment(1))
-      call get_real("9.1.1", "applied_moment_y", b%moment(2))
-      call get_real("9.1.1", "applied_moment_z", b%moment(3))
-      call get_real("11", "gravity_x", b%gravity(1))
-      call get_real("11", "gravity_y", b%gravity(2))
-      call get_real("11", "gravity_z", b%gravity(3))
+      call deck_collect_real(deck, "9.0", "room_temperature", b%temperature(1), error)
+      call deck_collect_real(deck, "2.7", "housing_temperature", b%temperature(2), error)
+      call deck_collect_real(deck, "2.7", "shaft_temperature", b%temperature(3), error)
+      call deck_collect_real(deck, "2.7", "rolling_element_temperature", b%temperature(4), error)
+      call deck_collect_real(deck, "2.7", "cage_temperature", b%temperature(5), error)
+      call deck_collect_real(deck, "2.7", "outer_race_temperature", b%temperature(6), error)
+      call deck_collect_real(deck, "2.7", "inner_race_temperature", b%temperature(7), error)
+      call deck_collect_real(deck, "9.0", "outer_race_fit", b%fit_outer, error)
+      call deck_collect_real(deck, "9.0", "inner_race_fit", b%fit_inner, error)
+      call deck_collect_real(deck, "9.1.2", "inner_race_speed", b%speed_inner, error)
+      call deck_collect_real(deck, "9.1.1", "applied_force_x", b%force(1), error)
+      call deck_collect_real(deck, "9.1.1", "applied_force_y", b%force(2), error)
+      call deck_collect_real(deck, "9.1.1", "applied_force_z", b%force(3), error)
+      call deck_collect_real(deck, "9.1.1", "applied_moment_x", b%moment(1), error)
+      call deck_collect_real(deck, "9.1.1", "applied_moment_y", b%moment(2), error)
+      call deck_collect_real(deck, "9.1.1", "applied_moment_z", b%moment(3), error)
+      call deck_collect_real(deck, "11", "gravity_x", b%gravity(1), error)
+      call deck_collect_real(deck, "11", "gravity_y", b%gravity(2), error)
+      call deck_collect_real(deck, "11", "gravity_z", b%gravity(3), error)
       if (allocated(error)) return
       b%speed_inner = b%speed_inner*rpm
-
-   contains
-
-      !> Read a real field unless an earlier read failed (the first error is kept).
-      subroutine get_real(rid, field, value, occurrence)
-         character(len=*), intent(in) :: rid, field
-         real(wp), intent(inout) :: value
-         integer, intent(in), optional :: occurrence
-         type(error_type), allocatable :: e
-         if (allocated(error)) return
-         call deck_get_real(deck, rid, field, value, e, occurrence)
-         if (allocated(e)) call move_alloc(e, error)
-      end subroutine get_real
-
-      !> Read an integer field unless an earlier read failed.
-      subroutine get_int(rid, field, value)
-         character(len=*), intent(in) :: rid, field
-         integer, intent(inout) :: value
-         type(error_type), allocatable :: e
-         if (allocated(error)) return
-         call deck_get_int(deck, rid, field, value, e)
-         if (allocated(e)) call move_alloc(e, error)
-      end subroutine get_int
-
-      !> Read a text field unless an earlier read failed.
-      subroutine get_text(rid, field, value)
-         character(len=*), intent(in) :: rid, field
-         character(len=:), allocatable, intent(inout) :: value
-         type(error_type), allocatable :: e
-         if (allocated(error)) return
-         call deck_get_text(deck, rid, field, value, e)
-         if (allocated(e)) call move_alloc(e, error)
-      end subroutine get_text
 
    end subroutine build_bearing
 
