@@ -13,8 +13,9 @@
 !> lives in 10**6 relative race revolutions.
 !>
 !> Choices where the text is garbled or silent (docs/life-model.md):
-!>  * 1 - G(x) (eqs 83-85) is evaluated exactly, 0.5 erfc(x/sqrt 2); the printed
-!>    curve fit of eq 84 is not legible enough to implement.
+!>  * 1 - G(x) (eqs 83-85) is evaluated exactly, 0.5 erfc(x/sqrt 2).  The printed
+!>    curve fit of eq 84 approximates the same Mills ratio only when read with
+!>    exp(-0.75 x) (the text's + sign grows with x), with 1/sqrt(2 pi) in eq 85.
 !>  * eq 83 holds for Lambda > 0.4; below, Lambda = 0.4 is used.  Lambda <= 0
 !>    means "no film": mu_eff = mu_a and mu_EHD = 0 (text after eq 99).
 !>  * eq 99 is undefined for Lambda > 4.3; the root is taken as 0 there
