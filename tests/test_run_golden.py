@@ -113,6 +113,12 @@ ROLLER_STEP0_COMPUTED = [
     ("re_motion", "ang_vel_amplitude_rpm"),
     ("re_motion", "spin_roll_outer"),
     ("re_motion", "spin_roll_inner"),
+    ("re_motion", "contact_loss_outer_W"),
+    ("re_motion", "contact_loss_inner_W"),
+    ("re_traction", "slip_velocity_outer_m_s"),
+    ("re_traction", "slip_velocity_inner_m_s"),
+    ("re_traction", "trac_coeff_outer"),
+    ("re_traction", "trac_coeff_inner"),
     ("slices_1", "axial_pos_outer_m"),
     ("slices_1", "geo_int_outer_m"),
     ("slices_1", "half_width_outer_m"),
@@ -120,6 +126,7 @@ ROLLER_STEP0_COMPUTED = [
     ("slices_1", "geo_int_inner_m"),
     ("slices_1", "half_width_inner_m"),
     ("slices_1", "normal_load_inner_N_m"),
+    ("slices_1", "trac_load_inner_N_m"),
     ("performance", "outer_race_fit_m"),
     ("performance", "inner_race_fit_m"),
     ("performance", "internal_clearance_m"),
@@ -152,3 +159,16 @@ def test_roller_section_1a_outer_load_is_printed_in_n_per_m(roller_report):
     ratios = [c.run / c.golden for c in comps if c.status != "unknown" and c.golden]
     assert len(ratios) == 12
     assert all(abs(r * 4.0e-3 - 1.0) < 0.01 for r in ratios)
+
+
+def test_roller_section_1a_outer_traction_is_printed_in_n_per_m(roller_report):
+    """Same known difference for the outer 'Trac Load (N/m)' column: the report's values
+    are the traction per unit length times D/2 = 4e-3 m (5.749 printed = 0.07979 x 18015
+    N/m x 4e-3); pyadore prints N/m.  Zero slices (the land rolls) compare exactly."""
+    comps = _selected(roller_report, "step 0 ", [("slices_1", "trac_load_outer_N_m")])
+    known = [c for c in comps if c.status != "unknown"]
+    assert len(known) == 12
+    ratios = [c.run / c.golden for c in known if c.golden]
+    assert len(ratios) == 8
+    assert all(abs(r * 4.0e-3 - 1.0) < 0.01 for r in ratios)
+    assert all(c.run == 0.0 for c in known if not c.golden)

@@ -89,7 +89,7 @@ contains
    !> Profile drop p(x) >= 0 (m) of roller profile p at axial position x (m); see the module
    !> header (land, crown arc centred on the mid-plane, corner radii).  Beyond the ends the
    !> drop is huge (no material).
-   pure function profile_drop(p, x) result(drop)
+   elemental function profile_drop(p, x) result(drop)
       type(roller_profile_t), intent(in) :: p
       real(wp), intent(in) :: x
       real(wp) :: drop

@@ -342,6 +342,14 @@ contains
          motion(:, 4) = 0.0_wp                        ! no skew at the start
          motion(:, 5:6) = 0.0_wp                      ! angular positions at time 0
          motion(:, 7:8) = 0.0_wp                      ! cylindrical contact: no spin
+         ! tribology (adore_tribology_roller_traction): printed slip = largest |u| over the
+         ! slices, coefficient = kappa of it, contact loss = eq 4 summed over the slices
+         motion(:, 9) = s%tr_o%power
+         motion(:, 10) = s%tr_i%power
+         traction(:, 1) = s%tr_o%max_slip
+         traction(:, 2) = s%tr_i%max_slip
+         traction(:, 3) = s%tr_o%max_slip_kappa
+         traction(:, 4) = s%tr_i%max_slip_kappa
          slices = nan
          slices(:, 1, 1) = e%c_o(1)%x
          slices(:, 2, 1) = e%c_o(1)%delta
@@ -351,6 +359,10 @@ contains
          slices(:, 7, 1) = e%c_i(1)%delta
          slices(:, 8, 1) = e%c_i(1)%b
          slices(:, 9, 1) = e%c_i(1)%q
+         ! traction on the race along the orbit direction, N/m (the report's outer column is
+         ! scaled by D/2 as its normal load column)
+         slices(:, 5, 1) = s%tr_o(1)%traction
+         slices(:, 10, 1) = s%tr_i(1)%traction
          bodies(2:3, :) = nan
          bodies(2, 1:2) = 0.0_wp
          bodies(2, 5) = b%speed_outer*rpm
@@ -380,8 +392,10 @@ contains
       perf(3) = s%mounting%outer_fit
       perf(4) = s%mounting%inner_fit
       perf(5) = s%mounting%clearance
+      perf(6) = s%power_loss             ! energy balance; NaN while a cage contact is not modelled
       summary = nan
       summary(1, 1:3) = 0.0_wp
+      summary(1, 5) = s%power_loss
       call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
                       thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)

@@ -24,6 +24,9 @@
 !>   symmetric profile) and the report prints no flange loads at step 0.  Roller skew is
 !>   prescribed 0; roller tilt is solved.
 !> * Race and roller weights are left out of the start (see solve_roller_step0).
+!> * Tribology (roller_tribology): slice slips, tractions and contact losses of both races
+!>   (adore_tribology_roller_traction, docs/tribology.md); spin SPIN_ROLLING (the report)
+!>   or SPIN_EQUILIBRIUM (moment balance); total power NaN while a cage contact touches.
 !> * Roller mass: the crowned roller (roller_mass), which is the echo's RE mass.
 !> * Basic fatigue life (ADRF1): adore_life_roller from the slice contacts, eqs 73, 75, 76,
 !>   102, with the default life_params_t (the deck has no fatigue records).  The modified
@@ -42,10 +45,15 @@ module adore_driver_roller_step0
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
+   use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
+                                              roller_equilibrium_spin, RACE_OUTER, RACE_INNER
    implicit none
    private
 
    public :: roller_step0_t, solve_roller_step0, roller_qs_model
+
+   integer, parameter, public :: SPIN_ROLLING = 1      !< land rolls on both races (ADORE's start, default)
+   integer, parameter, public :: SPIN_EQUILIBRIUM = 2  !< spin from the roller's traction moment balance
 
    !> The step-0 state of a roller bearing.
    type :: roller_step0_t
@@ -59,6 +67,15 @@ module adore_driver_roller_step0
       real(wp) :: basic_life_hours = 0.0_wp    !< bearing basic life (h), = life%bearing_hours
       real(wp) :: modified_life_hours = 0.0_wp !< NaN: Tallian life of line contacts not computed
       type(cage_step0_t) :: cage               !< cage state and geometric interactions
+      integer :: spin_method = SPIN_ROLLING
+      real(wp), allocatable :: roller_spin(:)  !< spin of each roller about +x (rad/s)
+      real(wp), allocatable :: moment_residual(:)  !< traction moment on each roller about its axis (N m)
+      type(line_traction_t), allocatable :: tr_o(:), tr_i(:)   !< slice tractions, outer / inner race
+      real(wp), allocatable :: tangential_force(:) !< net traction force on each roller along e_t (N)
+      real(wp) :: contact_power = 0.0_wp       !< sum of the roller/race contact losses (W), eq 4
+      !> total power loss (W): contact_power + cage contact losses; NaN while a cage contact
+      !> (pocket or land) touches, since the cage contact forces are not modelled
+      real(wp) :: power_loss = 0.0_wp
    end type roller_step0_t
 
 contains
@@ -97,17 +114,24 @@ contains
 
    !> Solve step 0 for the roller bearing b (sections 3.1, 4.4.1, Appendix B).
    !> growth_count: 2 reproduces the report (default), 1 the consistent clearance.
-   subroutine solve_roller_step0(b, s, error, growth_count)
+   !> spin_method: SPIN_ROLLING (default, the report) or SPIN_EQUILIBRIUM (traction moment
+   !> balance per roller, adore_tribology_roller_traction).
+   subroutine solve_roller_step0(b, s, error, growth_count, spin_method)
       type(bearing_t), intent(in) :: b
       type(roller_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
-      integer, intent(in), optional :: growth_count
+      integer, intent(in), optional :: growth_count, spin_method
 
       type(roller_qs_load_t) :: ld
       type(life_params_t) :: lp
       real(wp), allocatable :: w(:), centres(:, :)
       real(wp) :: race_centre(3, 2)
       integer :: ng
+      if (present(spin_method)) s%spin_method = spin_method
+      if (s%spin_method /= SPIN_ROLLING .and. s%spin_method /= SPIN_EQUILIBRIUM) then
+         call input_error(error, "roller step 0: unknown spin method")
+         return
+      end if
 
       if (b%bearing_type /= ROLLER_BEARING .or. b%n_elements < 1 .or. b%d <= 0.0_wp .or. &
           b%dm <= b%d .or. b%roller_length <= 0.0_wp .or. b%crown_radius <= 0.0_wp) then
@@ -156,7 +180,51 @@ contains
                                race_centre, [-s%mounting%outer_raceway_shrink, s%mounting%inner_raceway_growth], &
                                s%cage, error)
       end associate
+      if (allocated(error)) return
+      call roller_tribology(b, s, error)
 
    end subroutine solve_roller_step0
+
+   !> Step-0 tribology of the rollers (report 2.1, eqs 1, 3, 4 by slices): spin per roller
+   !> (s%spin_method), slice tractions and contact losses of both races, the net
+   !> tangential force each roller puts on the cage, and the power balance.  The spin does not
+   !> change the centrifugal forces (orbital speed unchanged), so no iteration with the
+   !> equilibrium is needed.
+   subroutine roller_tribology(b, s, error)
+      type(bearing_t), intent(in) :: b
+      type(roller_step0_t), intent(inout) :: s
+      type(error_type), allocatable, intent(out) :: error
+      type(roller_spin_t) :: k
+      real(wp) :: u_step
+      integer :: j, n
+
+      n = b%n_elements
+      allocate (s%roller_spin(n), s%moment_residual(n), s%tr_o(n), s%tr_i(n), s%tangential_force(n))
+      ! slip step of the spin search: the slip of maximum traction of the curve (>= 1 mm/s)
+      ! (kappa' = 0 at u = 1/C - A/B); 0.1 m/s for a curve without maximum
+      u_step = 0.1_wp
+      if (b%traction(2) /= 0.0_wp .and. b%traction(3) > 0.0_wp) &
+         u_step = max(1.0e-3_wp, 1.0_wp/b%traction(3) - b%traction(1)/b%traction(2))
+      associate (e => s%equilibrium)
+         do j = 1, n
+            k = roller_spin_t(b%d, s%spin_speed, s%spin_speed, &
+                              [b%speed_outer - e%orbital_speed(j), b%speed_inner - e%orbital_speed(j)])
+            if (s%spin_method == SPIN_EQUILIBRIUM) then
+               call roller_equilibrium_spin(s%model%profile, k, e%c_o(j), e%c_i(j), b%traction, 0.0_wp, &
+                                            u_step, k%spin, s%moment_residual(j), error)
+               if (allocated(error)) return
+            end if
+            s%roller_spin(j) = k%spin
+            call line_traction(s%model%profile, k, RACE_OUTER, e%c_o(j), b%traction, s%tr_o(j))
+            call line_traction(s%model%profile, k, RACE_INNER, e%c_i(j), b%traction, s%tr_i(j))
+            s%moment_residual(j) = s%tr_o(j)%moment + s%tr_i(j)%moment
+            s%tangential_force(j) = -(s%tr_o(j)%force + s%tr_i(j)%force)
+         end do
+      end associate
+      s%contact_power = sum(s%tr_o%power) + sum(s%tr_i%power)
+      s%power_loss = s%contact_power
+      if (any(s%cage%pocket%in_contact) .or. any(s%cage%land%in_contact)) &
+         s%power_loss = ieee_value(1.0_wp, ieee_quiet_nan)
+   end subroutine roller_tribology
 
 end module adore_driver_roller_step0

@@ -3,13 +3,14 @@
 Nothing else in pyadore imports ``pyadore._engine`` directly.  Every wrapper of the
 extension returns ``(status, message)``; :func:`check` raises the matching
 :class:`~pyadore.errors.AdoreError` subclass for a non-zero status.  One module per engine
-concept (base, contact, quasistatic, model, life, deck, printer, tribology), everything
+concept (base, contact, quasistatic, roller_tribology, model, life, deck, printer, tribology), everything
 re-exported here: ``from pyadore import _core; _core.hertz_point(...)``.
 """
 
 from .base import check, run_file, engine_version, time_steps_implemented  # noqa: F401
 from .contact import hertz_point, LINE_CONTACT_RESULT, line_contact  # noqa: F401
 from .quasistatic import BALL_QS_COLUMNS, ball_quasi_static, ball_race_jacobian, race_control, mount_races, BALL_STEP0_COLUMNS, BALL_STEP0_SUMMARY, ball_step0_from_deck, ROLLER_STEP0_COLUMNS, ROLLER_STEP0_SLICES, ROLLER_STEP0_SUMMARY, roller_step0_from_deck  # noqa: F401
+from .roller_tribology import ROLLER_TRIBOLOGY_COLUMNS, ROLLER_TRIBOLOGY_SLICES, ROLLER_TRIBOLOGY_SUMMARY, SPIN_ROLLING, SPIN_EQUILIBRIUM, roller_step0_tribology  # noqa: F401
 from .model import ball_clearance, roller_races, body_inertia, traction_fit, traction_eval, scale_factors  # noqa: F401
 from .life import LIFE_CONSTANT_NAMES, life_default_constants, ball_bearing_life  # noqa: F401
 from .deck import deck_field_table  # noqa: F401
@@ -36,6 +37,12 @@ __all__ = [
     "ROLLER_STEP0_SLICES",
     "ROLLER_STEP0_SUMMARY",
     "roller_step0_from_deck",
+    "ROLLER_TRIBOLOGY_COLUMNS",
+    "ROLLER_TRIBOLOGY_SLICES",
+    "ROLLER_TRIBOLOGY_SUMMARY",
+    "SPIN_ROLLING",
+    "SPIN_EQUILIBRIUM",
+    "roller_step0_tribology",
     "ball_clearance",
     "roller_races",
     "body_inertia",

@@ -1,0 +1,121 @@
+"""Step-0 roller/race tribology (fortran/tribology/roller_traction.f90, docs/tribology.md):
+the engine end to end from the Appendix D deck against the report's step-0 print, plus
+independent truths (energy balance, slice sums recomputed, roller moment balance).
+The slice quadrature against a fine uniform rule is fortran/tests/test_roller_traction.f90."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pyadore._core import SPIN_EQUILIBRIUM, roller_step0_tribology, traction_eval, traction_fit
+from pyadore.printout import read_print
+
+ROOT = Path(__file__).resolve().parents[1]
+DECK = ROOT / "decks" / "appendix_d_roller.inp"
+D = 8.0e-3
+TOL = 0.05
+
+
+@pytest.fixture(scope="module")
+def golden():
+    return read_print(ROOT / "golden" / "appendix_d_roller.prt").steps[0]
+
+
+@pytest.fixture(scope="module")
+def run():
+    return roller_step0_tribology(DECK)
+
+
+def _pairs(golden, table, column, values):
+    col = golden.table(table)[column].to_numpy(dtype=float)
+    return [(k, float(g), float(values[k])) for k, g in enumerate(col) if not np.isnan(g)]
+
+
+def _check(pairs, what):
+    assert pairs, what
+    bad = [(k + 1, g, r) for k, g, r in pairs
+           if not (abs(r - g) <= TOL * abs(g) if g else r == 0.0)]
+    assert bad == [], f"{what}: (row, golden, run) outside {TOL:.0%}: {bad}"
+
+
+@pytest.mark.parametrize("column,key", [
+    ("slip_velocity_outer_m_s", "slip_o"), ("slip_velocity_inner_m_s", "slip_i"),
+    ("trac_coeff_outer", "kappa_o"), ("trac_coeff_inner", "kappa_i")])
+def test_re_traction_columns(golden, run, column, key):
+    _check(_pairs(golden, "re_traction", column, run[0][key]), column)
+
+
+@pytest.mark.parametrize("column,key", [("contact_loss_outer_W", "power_o"), ("contact_loss_inner_W", "power_i")])
+def test_contact_losses(golden, run, column, key):
+    _check(_pairs(golden, "re_motion", column, run[0][key]), column)
+
+
+def test_slice_traction_loads_roller_1(golden, run):
+    """Section 1a: inner column in N/m, inner contact frame (axis reversed, same slice
+    order as the engine's since the contact is symmetric); the outer column of the report
+    is N/m x D/2 (as its normal load column, tests/test_run_golden.py)."""
+    s = run[1]
+    _check(_pairs(golden, "slices_1", "trac_load_inner_N_m", s["t_i"][0][::-1]), "inner trac load")
+    _check(_pairs(golden, "slices_1", "trac_load_outer_N_m", s["t_o"][0] * 0.5 * D), "outer trac load x D/2")
+
+
+def test_printed_coefficient_is_kappa_of_the_printed_slip(run):
+    coef = traction_fit(0.0, 0.1, 0.08, 0.2)
+    r = run[0]
+    for side in "oi":
+        expect = np.ravel(traction_eval(coef, np.asarray(r["slip_" + side])))
+        assert np.allclose(r["kappa_" + side], expect, rtol=1e-12, atol=0.0)
+
+
+def test_energy_balance(run):
+    """Total contact power = sum of the contact losses = sum over slices of w t u
+    (t u = kappa |u| q >= 0 slice by slice)."""
+    r, s, summ = run
+    assert summ["contact_power"] == pytest.approx(r["power_o"].sum() + r["power_i"].sum(), rel=1e-13)
+    for side in "oi":
+        tu = s["t_" + side] * s["u_" + side]
+        assert (tu >= 0.0).all()
+        assert np.allclose((s["w_" + side] * tu).sum(axis=1), r["power_" + side], rtol=1e-12, atol=1e-300)
+
+
+def test_land_rolls_and_tangential_force(run):
+    """Rolling start: slip and traction 0 on the land; the cage would have to carry the net
+    tangential traction (the report's roller 1: outer 8.48 N, inner 5.48 N)."""
+    r, s, _ = run
+    assert (s["u_o"][0][4:8] == 0.0).all() and (s["t_i"][0][3:9] == 0.0).all()
+    assert np.allclose(r["tangential_force"], -(r["force_o"] + r["force_i"]), rtol=1e-13)
+
+
+def test_spin_from_moment_balance():
+    """SPIN_EQUILIBRIUM: each roller's traction moment about its axis vanishes (relative
+    to the gross moment sum w D/2 |t| of both races), and recomputed from the slices with
+    rho = D/2 - p(x)."""
+    r, s, _ = roller_step0_tribology(DECK, spin_method=SPIN_EQUILIBRIUM)
+    scale = 0.5 * D * ((s["w_o"] * np.abs(s["t_o"])).sum(axis=1) + (s["w_i"] * np.abs(s["t_i"])).sum(axis=1))
+    assert (scale > 0.0).all()
+    assert (np.abs(r["moment_residual"]) <= 1e-9 * scale).all()
+
+    def drop(x):
+        ax = np.abs(x)
+        return np.where(ax > 1.0e-3, (ax**2 - 1.0e-6) / (2 * 0.25), 0.0)
+
+    m = (-(s["w_o"] * (0.5 * D - drop(s["x_o"])) * s["t_o"]).sum(axis=1)
+         + (s["w_i"] * (0.5 * D - drop(s["x_i"])) * s["t_i"]).sum(axis=1))
+    assert (np.abs(m) <= 1e-6 * scale).all()
+    # the balance spins the rollers up (the rolling start's tractions both drive them)
+    assert (r["spin"] < roller_step0_tribology(DECK)[0]["spin"]).all()
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "Total power loss 69.21 W includes the cage: engine contact losses 1.099 W (report's "
+    "printed contact losses agree within 0.2 %), the report's two land losses 2 x 0.6903 W, "
+    "and by difference ~66.7 W at a cage pocket (roller 1), which needs a pocket force of "
+    "~17.5 N at mu 0.05 and the roller surface speed 76 m/s; the net tangential traction of "
+    "roller 1 is 3.0 N (11.4 W).  Pocket and land forces are not modelled: total is NaN."))
+def test_total_power_loss(golden):
+    r, _, summ = roller_step0_tribology(DECK)
+    g = 69.21
+    assert abs(summ["power_loss"] - g) <= TOL * g
