@@ -69,8 +69,9 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
-   use adore_model_bearing, only: bearing_t, read_bearing, ROLLER_BEARING
-   use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
+   use adore_model_bearing, only: bearing_t
+   use adore_driver_roller_step0, only: roller_step0_t
+   use adore_api_unpack, only: roller_start_from_deck
    implicit none
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: growth_count, nmax
@@ -90,25 +91,7 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
    summary = 0.0_wp
    status = ADORE_OK
    message = ""
-   if (growth_count < 1 .or. growth_count > 2) then
-      status = ADORE_INPUT_ERROR
-      message = "roller step 0: growth_count must be 1 or 2"
-      return
-   end if
-   call read_bearing(deck_path, b, error)
-   if (.not. allocated(error)) then
-      if (b%bearing_type /= ROLLER_BEARING) then
-         status = ADORE_INPUT_ERROR
-         message = trim(deck_path)//": not a roller-bearing deck (Rec 3.2 bearing_type /= 2)"
-         return
-      end if
-      if (b%n_elements > nmax) then
-         status = ADORE_INPUT_ERROR
-         message = "roller step 0: more rollers than rows given (nmax)"
-         return
-      end if
-      call solve_roller_step0(b, s, error, growth_count)
-   end if
+   call roller_start_from_deck(deck_path, nmax, growth_count, b, s, error)
    if (allocated(error)) then
       call set_error(error, status, message)
       return

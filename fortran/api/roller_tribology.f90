@@ -16,9 +16,10 @@ subroutine adore_roller_step0_tribology(deck_path, growth_count, spin_method, nm
                                         summary, status, message)
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
-   use adore_core_error, only: error_type, input_error, ADORE_OK
-   use adore_model_bearing, only: bearing_t, read_bearing, ROLLER_BEARING
-   use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_model_bearing, only: bearing_t
+   use adore_driver_roller_step0, only: roller_step0_t
+   use adore_api_unpack, only: roller_start_from_deck
    implicit none
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: growth_count, spin_method, nmax
@@ -38,18 +39,7 @@ subroutine adore_roller_step0_tribology(deck_path, growth_count, spin_method, nm
    summary = 0.0_wp
    status = ADORE_OK
    message = ""
-   call read_bearing(deck_path, b, error)
-   if (.not. allocated(error)) then
-      if (b%bearing_type /= ROLLER_BEARING) then
-         call input_error(error, trim(deck_path)//": not a roller-bearing deck (Rec 3.2 bearing_type /= 2)")
-      else if (b%n_elements > nmax) then
-         call input_error(error, "roller step 0: more rollers than rows given (nmax)")
-      else if (growth_count < 1 .or. growth_count > 2) then
-         call input_error(error, "roller step 0: growth_count must be 1 or 2")
-      else
-         call solve_roller_step0(b, s, error, growth_count, spin_method)
-      end if
-   end if
+   call roller_start_from_deck(deck_path, nmax, growth_count, b, s, error, spin_method)
    if (allocated(error)) then
       call set_error(error, status, message)
       return

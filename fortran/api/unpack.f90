@@ -2,10 +2,13 @@
 module adore_api_unpack
    use adore_core_kinds, only: wp
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
+   use adore_core_error, only: error_type, input_error
+   use adore_model_bearing, only: bearing_t, read_bearing, ROLLER_BEARING
+   use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
    implicit none
    private
 
-   public :: adore_qs_unpack
+   public :: adore_qs_unpack, roller_start_from_deck
 
 contains
 
@@ -37,5 +40,30 @@ contains
       ld%misalignment = load(10:11)
       ld%solve_moment = solve_moment /= 0
    end subroutine adore_qs_unpack
+
+   !> Read a roller deck and solve its step 0 for the roller wrappers: input errors for a
+   !> non-roller deck, more rollers than nmax rows, growth_count outside 1..2.
+   subroutine roller_start_from_deck(deck_path, nmax, growth_count, b, s, error, spin_method)
+      character(len=*), intent(in) :: deck_path
+      integer, intent(in) :: nmax, growth_count
+      type(bearing_t), intent(out) :: b
+      type(roller_step0_t), intent(out) :: s
+      type(error_type), allocatable, intent(out) :: error
+      integer, intent(in), optional :: spin_method
+
+      if (growth_count < 1 .or. growth_count > 2) then
+         call input_error(error, "roller step 0: growth_count must be 1 or 2")
+         return
+      end if
+      call read_bearing(deck_path, b, error)
+      if (allocated(error)) return
+      if (b%bearing_type /= ROLLER_BEARING) then
+         call input_error(error, trim(deck_path)//": not a roller-bearing deck (Rec 3.2 bearing_type /= 2)")
+      else if (b%n_elements > nmax) then
+         call input_error(error, "roller step 0: more rollers than rows given (nmax)")
+      else
+         call solve_roller_step0(b, s, error, growth_count, spin_method)
+      end if
+   end subroutine roller_start_from_deck
 
 end module adore_api_unpack
