@@ -68,7 +68,7 @@ end subroutine adore_line_contact
 subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, slices, summary, status, message)
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
-   use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
+   use adore_core_error, only: error_type, ADORE_OK
    use adore_model_bearing, only: bearing_t
    use adore_driver_roller_step0, only: roller_step0_t
    use adore_api_unpack, only: roller_start_from_deck
