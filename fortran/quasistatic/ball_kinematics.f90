@@ -187,18 +187,22 @@ contains
    !> 4.4.7): inner contact centre in pure rolling, (beta, w_b) minimising the power of
    !> both race contacts.  Arguments as race_control_kinematics plus a(2), q(2): semi-major
    !> axes (m) and loads (N) of the outer and inner contact; coef: traction curve [A, B, C, D]
-   !> (Rec 10.1, u in m/s).  Pitch searched in [-30, 30] deg (grid step 1 deg).
+   !> (Rec 10.1, u in m/s).  Pitch searched in [-30, 30] deg (grid step 1 deg), or within
+   !> +-4 deg of `hint`, then refined by parabolic interpolation and golden section.
    !> Input error when neither contact is loaded or the inner contact geometry is degenerate.
-   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, k, error)
+   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, k, error, hint)
       real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), coef(4)
       type(ball_kinematics_t), intent(out) :: k
       type(error_type), allocatable, intent(out) :: error
+      !> pitch (rad) of a previous solution: the grid search is then limited to +-4 degrees
+      !> around it (the start's later passes move the minimum by far less)
+      real(wp), intent(in), optional :: hint
 
       real(wp), parameter :: pi = acos(-1.0_wp), step = pi/180.0_wp
-      integer, parameter :: n_grid = 61
+      integer, parameter :: n_full = 61, n_near = 9
       real(wp), parameter :: gr = 0.5_wp*(sqrt(5.0_wp) - 1.0_wp)
-      real(wp) :: betas(n_grid), powers(n_grid), speeds(n_grid), scale, lo, hi, x1, x2, f1, f2, bp, den
-      integer :: j, i, it
+      real(wp) :: betas(n_full), powers(n_full), speeds(n_full), scale, lo, hi, x1, x2, f1, f2, bp, den, centre
+      integer :: j, i, it, n_grid
 
       if (.not. ((q(1) > 0.0_wp .and. a(1) > 0.0_wp) .or. (q(2) > 0.0_wp .and. a(2) > 0.0_wp))) then
          call input_error(error, "minimum dissipation kinematics: no loaded race contact")
@@ -211,12 +215,18 @@ contains
       ! speed scale: the spin speed of a ball rolling on the inner race at zero pitch
       scale = abs((w_i - w_o)*(r_b + 0.5_wp*d*n_i(2))/(0.5_wp*d))
       if (scale <= 0.0_wp) scale = 1.0_wp
+      n_grid = n_full
+      centre = 0.0_wp
+      if (present(hint)) then
+         n_grid = n_near
+         centre = step*nint(hint/step)
+      end if
       do j = 1, n_grid
-         betas(j) = (j - 1 - (n_grid - 1)/2)*step
+         betas(j) = centre + (j - 1 - (n_grid - 1)/2)*step
          call best_speed(betas(j), speeds(j), powers(j))
          if (allocated(error)) return
       end do
-      i = minloc(powers, 1)
+      i = minloc(powers(1:n_grid), 1)
       i = min(max(i, 2), n_grid - 1)
       ! parabolic interpolation through the grid minimum and its neighbours ...
       den = powers(i - 1) - 2.0_wp*powers(i) + powers(i + 1)

@@ -42,7 +42,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       real(wp), allocatable :: speed(:), new_speed(:)
-      real(wp) :: d_i(2), d_o(2), change, tol
+      real(wp) :: d_i(2), d_o(2), change, previous, tol
       integer :: pass, k
 
       if (control == MIN_DISSIPATION .and. .not. present(coef)) then
@@ -62,9 +62,17 @@ contains
             d_i = start%equilibrium%n_i(:, k)
             if (control == MIN_DISSIPATION) then
                associate (e => start%equilibrium)
-                  call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
-                                                  [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
-                                                  [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error)
+                  if (pass == 1) then
+                     call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
+                                                     [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
+                                                     [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error)
+                  else   ! later passes: search near the previous pass's pitch
+                     previous = start%kinematics(k)%pitch
+                     call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
+                                                     [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
+                                                     [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error, &
+                                                     previous)
+                  end if
                end associate
                if (allocated(error)) return
             else
