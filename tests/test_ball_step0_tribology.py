@@ -4,8 +4,9 @@ Appendix C deck and compared with the report's print (golden/appendix_c_ball.prt
 
 Issue "[Step-0 tribology]" asks 5 % per column; a column that misses is a strict xfail with
 its numbers and the believed cause (docs/tribology.md).  Independent checks: the energy
-balance of the printed power loss, and the engine's minimum against a brute-force scan of
-the dissipation with the inner contact centre rolling.
+balance of the printed power loss, the engine's minimum against a brute-force scan of
+the dissipation with the inner contact centre rolling, and the run's film against the
+Hamrock-Dowson formula evaluated here.
 """
 
 from __future__ import annotations
@@ -70,17 +71,18 @@ COLUMNS = {  # printed column: (engine key, table, scale, absolute tolerance or 
     "spin_roll_outer": ("spin_roll_o", "re_motion", 1.0, None,
                         "outer spin/roll is a small difference (-0.015 vs -0.019 ball 2; report +0.0070 for "
                         "balls 8-12, here -0.0065, 193 %): follows the pitch error"),
+    # traction model 3 (EHD film, docs/tribology.md) at this model's own speeds and film; the
+    # printed coefficient is the local one at the node of the printed slip
     "trac_coeff_outer": ("trac_o", "re_traction", 1.0, None,
-                         "|net traction| / load worst 80 % (ball 1 0.0015 vs 0.0077): printed definition not identified, "
-                         "see tests/test_tribology.py"),
-    "trac_coeff_inner": ("trac_i", "re_traction", 1.0, None,
-                         "worst 99 % (ball 10 7.9e-5 vs 0.0087): the inner centre rolls, net traction ~0; see "
-                         "tests/test_tribology.py"),
+                         "worst 14.3 % (balls 4/16 low; -6 to -14 % on every ball): follows the outer slip "
+                         "distribution of this model's ball speeds (outer slip column 8.9 % off); with the "
+                         "report's own speeds the same EHD model is within 1.2 % (tests/test_tribology.py)"),
+    "trac_coeff_inner": ("trac_i", "re_traction", 1.0, None, None),
     "contact_loss_outer_W": ("loss_o", "re_motion", 1.0, None,
-                             "worst 29 % (ball 1 13.1 vs 18.5 W); ball 10 10.0 vs 10.5 W: report losses depend on the "
-                             "load more strongly than eq (4) with kappa(u) (see tests/test_tribology.py)"),
-    "contact_loss_inner_W": ("loss_i", "re_motion", 1.0, None,
-                             "worst 36 % (ball 10 7.50 vs 5.51 W); ball 1 20.6 vs 31.7 W: as the outer contact"),
+                             "worst 8.8 % (ball 10 high; +6.9 to +8.8 % on every ball): follows the outer slip "
+                             "as the coefficient; with the report's own speeds within 1.7 % "
+                             "(tests/test_tribology.py)"),
+    "contact_loss_inner_W": ("loss_i", "re_motion", 1.0, None, None),
 }
 
 
@@ -111,8 +113,6 @@ def test_step0_tribology_column_matches_report(column):
     assert rel <= 0.05
 
 
-@pytest.mark.xfail(strict=True, reason="sum of the contact losses 449.3 W (outer 203.3, inner 246.0) vs the "
-                   "report's 546.4 W (249.1, 297.3): 18 % low, follows the contact-loss columns")
 def test_total_power_loss_matches_report():
     _, summary = _step0()
     ref = _golden()["performance"]["total_power_loss_W"].iloc[0]
@@ -156,7 +156,8 @@ def test_minimum_dissipation_beats_a_brute_force_scan(k):
     best = min(_dissipation(balls, k, beta0 + db * DEG, w0 * (1 + f))[0]
                for db in np.linspace(-2, 2, 21) for f in np.linspace(-5e-3, 5e-3, 21))
     assert p0 <= best * (1 + 1e-9)
-    assert p0 == pytest.approx(balls["loss_o"][k] + balls["loss_i"][k], rel=1e-6)
+    # the printed losses are the EHD model's (traction model 3), not this curve dissipation:
+    # the start's speeds still minimise the deck curve's (docs/tribology.md, open point)
 
 
 def test_minimum_dissipation_is_closer_to_the_report_than_outer_race_control():
@@ -184,3 +185,23 @@ def test_minimum_dissipation_is_closer_to_the_report_than_outer_race_control():
     assert e["md_w"].max() < e["rc_w"].max()
     better = (e["md_t"] < e["rc_t"]) & (e["md_w"] < e["rc_w"])
     assert list(np.flatnonzero(~better) + 1) == [8, 9, 10, 11, 12]
+
+
+def test_run_film_is_hamrock_dowson_with_the_echoed_lubricant():
+    """Every race contact's film in the run equals the Hamrock-Dowson central film of its own
+    load, half widths, entraining speed and R_x with MIL-L-7808 at 323 K (independent
+    evaluation of the formula in Python)."""
+    balls, _ = _step0()
+    lub = _core.lubricant(1, 323.0)
+    e_prime = 2.0e11 / (1 - 0.25**2)
+    for k in (0, 9):
+        for tag, side, wr in (("o", 1, 0.0), ("i", -1, INNER_SPEED)):
+            w_b, beta = balls["spin_speed"][k], balls["pitch"][k]
+            t = _core.contact_traction(side, balls[f"alpha_{tag}"][k], D_BALL / 2, balls["r"][k],
+                                       (w_b * math.cos(beta), w_b * math.sin(beta)), wr - balls["orbital_speed"][k],
+                                       balls[f"a_{tag}"][k], balls[f"q_{tag}"][k], COEF, n_gauss=4)
+            u, rx = abs(t["rolling_speed"]), t["rx"]
+            ell = balls[f"a_{tag}"][k] / balls[f"b_{tag}"][k]
+            h = rx * 2.69 * (lub["eta"] * u / (e_prime * rx)) ** 0.67 * (lub["alpha"] * e_prime) ** 0.53 \
+                * (balls[f"q_{tag}"][k] / (e_prime * rx**2)) ** -0.067 * (1 - 0.61 * math.exp(-0.73 * ell))
+            assert balls[f"film_{tag}"][k] == pytest.approx(h, rel=1e-9)

@@ -24,6 +24,7 @@ COEF = [-1.6e-2, 3.82896e-2, 1.71782, 1.6e-2]  # Rec 10.1C fit (echo A, B, C; D 
 D_BALL, F_OUTER, F_INNER = 0.01905, 0.52, 0.54
 E_PRIME = 2.0e11 / (1 - 0.25**2)               # equal steels, E' = E / (1 - nu**2)
 INNER_SPEED = 20000 * RPM
+THERMAL_LOADING_SCALE = 1.2321                 # fortran/tribology/film.f90 (calibrated)
 STEEL = [7750.0, 470.0, 43.0]                  # echo: density, heat capacity, conductivity
 
 
@@ -47,13 +48,86 @@ def test_film_thickness_scaling_and_formula():
         _core.film_thickness(rx, k, u, q, E_PRIME, -eta, alpha)
 
 
-def test_lubricant_library_needs_unsourced_properties():
-    lub = _core.lubricant(1, 313.15, density=950.0, alpha=1.0e-8, conductivity=0.15)
-    assert lub["nu"] == pytest.approx(11.5e-6, rel=1e-12)       # MIL-L-7808 grade 3, 40 C
-    with pytest.raises(AdoreInputError, match="required inputs"):
-        _core.lubricant(1, 323.0, density=950.0, alpha=0.0, conductivity=0.15)
+def test_lubricant_library_is_the_reports_echo():
+    """MIL-L-7808 as the Appendix C echo prints it (text-copy lines 3112-3113): eta at the
+    reference temperature and p = 0 is the echoed 8.61565E-03 Pa s; pressure and
+    temperature act as exp(alpha p + B (1/T - 1/T_ref)); beta = -d ln(eta)/dT = B/T**2."""
+    lub = _core.lubricant(1, 323.0)
+    assert lub["eta"] == pytest.approx(8.61565e-3, rel=1e-14)
+    assert lub["alpha"] == pytest.approx(1.07562e-8, rel=1e-14)
+    assert lub["density"] == pytest.approx(945.429, rel=1e-14)
+    assert lub["heat_capacity"] == pytest.approx(1836.10, rel=1e-14)
+    assert lub["nu"] == pytest.approx(8.61565e-3 / 945.429, rel=1e-14)
+    # pressure: Barus law with the echoed alpha
+    assert _core.lubricant(1, 323.0, 1.0e8)["eta"] == pytest.approx(8.61565e-3 * math.exp(1.07562), rel=1e-13)
+    # beta against a central difference of ln(eta)
+    h = 1e-3
+    fd = -(math.log(_core.lubricant(1, 350 + h)["eta"]) - math.log(_core.lubricant(1, 350 - h)["eta"])) / (2 * h)
+    assert _core.lubricant(1, 350.0)["beta"] == pytest.approx(fd, rel=1e-8)
+    # the reference temperature (its leading digits are lost in the echo) is 323 K: at 40 C
+    # the viscosity meets the MIL-PRF-7808 grade-3 minimum (11.5 mm**2/s), at 313 K it would not
+    assert _core.lubricant(1, 313.15)["nu"] > 11.5e-6
     with pytest.raises(AdoreInputError, match="unknown lubricant code"):
-        _core.lubricant(7, 323.0, density=950.0, alpha=1.0e-8, conductivity=0.15)
+        _core.lubricant(7, 323.0)
+    with pytest.raises(AdoreInputError, match="temperature"):
+        _core.lubricant(1, 0.0)
+
+
+def _bratu_slip(tau, eta_w, beta, k_f, h, n=2000):
+    """Slip u (m/s) of a film carrying shear stress tau, from the energy equation
+    k T'' = -tau**2 / eta(T), eta = eta_w exp(-beta (T - T_w)), T = T_w on both walls,
+    solved by Newton on a finite-difference grid (lower branch), u = int tau / eta dz."""
+    z = np.linspace(0.0, h, n + 1)
+    dz = z[1] - z[0]
+    lam = beta * tau**2 / (k_f * eta_w)
+    th = np.zeros(n + 1)
+    for _ in range(50):
+        inner = th[1:-1]
+        res = (th[2:] - 2 * inner + th[:-2]) / dz**2 + lam * np.exp(inner)
+        jac = (np.diag(np.full(n - 1, -2.0 / dz**2) + lam * np.exp(inner)) + np.diag(np.full(n - 2, 1 / dz**2), 1)
+               + np.diag(np.full(n - 2, 1 / dz**2), -1))
+        step = np.linalg.solve(jac, -res)
+        th[1:-1] += step
+        if np.max(np.abs(step)) < 1e-13:
+            break
+    f = np.exp(th)
+    return tau / eta_w * dz * (f.sum() - 0.5 * (f[0] + f[-1]))
+
+
+def test_film_shear_stress_solves_the_film_energy_equation():
+    """The closed form of the EHD film shear against an independent numerical solution of
+    the film's energy equation (finite differences, Newton), and its isothermal limit."""
+    eta_w, beta, k_f, h = 0.5, 0.0425519, 0.1425185, 0.5e-6
+    u = np.array([0.05, 0.5, 2.0, 4.0])
+    tau = _core.film_shear_stress(u, eta_w, beta, k_f, h)
+    for ui, ti in zip(u, tau):
+        assert _bratu_slip(ti, eta_w, beta, k_f, h) == pytest.approx(ui, rel=1e-5)
+    assert tau[-1] < 0.99 * eta_w * u[-1] / h                      # heating thins the film's shear
+    iso = _core.film_shear_stress([1e-4, 2e-4], eta_w, beta, k_f, h)
+    assert iso[0] == pytest.approx(eta_w * 1e-4 / h, rel=1e-6)
+    assert _core.film_shear_stress([3.0], eta_w, 0.0, 0.0, h)[0] == pytest.approx(eta_w * 3.0 / h, rel=1e-14)
+    with pytest.raises(AdoreInputError, match="film shear"):
+        _core.film_shear_stress([1.0], eta_w, beta, 0.0, h)
+
+
+def test_ehd_contact_isothermal_limit_is_the_viscous_integral():
+    """beta = 0, alpha = 0: tau = eta |u| / h, so the heat is eta / h times the integral of
+    u**2 over the ellipse area - checked against a fine uniform grid."""
+    g = CONTACTS["outer"]
+    eta, h, b = 0.01, 1.0e-6, 0.4e-3
+    s = np.linspace(-g["a"], g["a"], 20001)
+    mid = 0.5 * (s[1:] + s[:-1])
+    u = np.asarray(_core.contact_slip(**{k: v for k, v in g.items() if k != "load"}, s=mid))
+    width = 2 * b * np.sqrt(1 - (mid / g["a"]) ** 2)
+    exact = np.sum(eta / h * u**2 * width) * (s[1] - s[0])
+    err = []
+    for n in (16, 64):
+        t = _core.ehd_contact_traction(g["side"], g["alpha"], g["rho"], g["r_b"], g["omega"], g["race_speed"],
+                                       g["a"], g["load"], (eta, 0.0, 0.0, 0.14), h, b, n_gauss=n, n_strip=24)
+        err.append(abs(t["power"] / exact - 1))
+    # the strip width's square root at the contact ends limits Gauss-Legendre to ~n**-3
+    assert err[0] < 5e-4
+    assert err[1] < err[0] / 10
 
 
 CONTACTS = {  # report-like contacts (ball 2 of Appendix C, outer and inner), orbit frame
@@ -146,6 +220,7 @@ def _report_step0():
             row["calc"] = t
             row["calc4"] = _core.contact_traction(side, row["alpha"], D_BALL / 2, balls["r"][k], omega, w_race - wm,
                                                   row["a"], row["load"], COEF, n_gauss=4)
+            row["geo"] = dict(side=side, r_b=balls["r"][k], omega=omega, race_speed=w_race - wm)
             rx = t["rx"]
             ry = 1 / (2 / D_BALL - 1 / (f * D_BALL))
             row["rx"], row["ry"], row["u"] = rx, ry, abs(t["rolling_speed"])
@@ -168,14 +243,11 @@ def _calibration_row(rows):
 
 
 def _film_errors():
-    """One lubricant constant, eta0^0.67 alpha^0.53 at 323 K, is not in the report (no
-    sourced alpha for MIL-L-7808): it is calibrated on ball 10's outer contact; the other
-    35 contacts test the formula's dependence on speed, load, R_x and k."""
-    rows = _report_step0()
-    c = _calibration_row(rows)
-    lub = c["film"] / _film_unit(c)
-    use = _usable(rows, "film", "b")
-    return [(r, lub * _film_unit(r), r["film"]) for r in use]
+    """No calibration: the echo's eta0 and alpha (MIL-L-7808 at the deck's 323 K) on every
+    contact with the report's own loads, half widths and speeds."""
+    lub = _core.lubricant(1, 323.0)
+    scale = lub["eta"] ** 0.67 * lub["alpha"] ** 0.53
+    return [(r, scale * _film_unit(r), r["film"]) for r in _usable(_report_step0(), "film", "b")]
 
 
 def _loading(r, p, phi):
@@ -190,17 +262,45 @@ def _loading(r, p, phi):
 
 
 def _thermal_errors():
-    """One constant eta0 beta / K_f (s**2/m**2) calibrated on ball 10's outer contact (the
-    report gives neither beta nor K_f of its MIL-L-7808); L = const * u**2; the slide-to-roll
+    """L = scale eta0 beta u**2 / K_f with the echo's eta0 and beta = B/T**2 (323 K), the
+    library's K_f and the engine's thermal-loading scale, calibrated on ball 10's outer
+    contact: that contact is left out, the other 29 test the form.  The slide-to-roll
     ratio is this code's centre slip over the entraining speed."""
-    rows = _report_step0()
-    c = _calibration_row(rows)
-    const = _loading(c, c["p0"], c["phi"]) / c["u"] ** 2
+    lub = _core.lubricant(1, 323.0)
     out = []
-    for r in _usable(rows, "phi", "p0"):
+    for r in _usable(_report_step0(), "phi", "p0"):
+        if r is _calibration_row(_report_step0()):
+            continue
         s = r["calc"]["centre_slip"] / r["calc"]["rolling_speed"]
-        out.append((r, _core.thermal_reduction_factor(r["p0"], E_PRIME, [const * r["u"] ** 2], s)[0], r["phi"]))
+        load = THERMAL_LOADING_SCALE * lub["eta"] * lub["beta"] * r["u"] ** 2 / lub["conductivity"]
+        out.append((r, _core.thermal_reduction_factor(r["p0"], E_PRIME, [load], s)[0], r["phi"]))
     return out
+
+
+def test_thermal_loading_scale_is_the_calibration_contacts_value():
+    """The engine's thermal-loading scale is the value that reproduces ball 10's outer
+    thermal factor with the library's K_f (to the 5 digits kept) - the calibration, stated
+    as a test so a change is seen; with scale 1 the printed factors miss by ~9.5 %."""
+    lub = _core.lubricant(1, 323.0)
+    c = _calibration_row(_report_step0())
+    needed = _loading(c, c["p0"], c["phi"]) / (lub["eta"] * lub["beta"] * c["u"] ** 2 / lub["conductivity"])
+    assert THERMAL_LOADING_SCALE == pytest.approx(needed, rel=5e-4)
+
+
+def _ehd(r, n_gauss):
+    """EHD traction (model 3) of one printed contact: the report's own speeds, load, half
+    widths, film x thermal reduction factor; MIL-L-7808's traction rheology at 323 K."""
+    lub = _core.lubricant(1, 323.0)
+    g = r["geo"]
+    return _core.ehd_contact_traction(g["side"], r["alpha"], D_BALL / 2, g["r_b"], g["omega"], g["race_speed"],
+                                      r["a"], r["load"], (lub["eta_t"], lub["alpha_t"], lub["beta_t"],
+                                                          lub["conductivity"]),
+                                      r["film"] * r["phi"], r["b"], n_gauss=n_gauss)
+
+
+def _ehd_errors(key, ref, n_gauss):
+    return lambda: [(r, _ehd(r, n_gauss)[key], r[ref])
+                    for r in _usable(_report_step0(), ref, "b", "film", "phi")]
 
 
 def _simple(key, ref, transform=lambda v: v):
@@ -249,6 +349,10 @@ COLUMNS = {  # column: (errors function, xfail reason or None)
                      "ball 10 to ball 2 while the slips at the Gauss nodes agree within 8 %: ADORE's 'EHD' "
                      "traction (report Table 5) depends on more than the slip (load, pressure or film); "
                      "two-dimensional slip (eq 5) adds only 4 %, a rescaled slip unit fits no two contacts"),
+    # ADORE's traction model 3 (EHD film, adore_tribology_ehd_traction), nothing fitted:
+    # the printed coefficient is the local one at the node of the printed slip (4 points)
+    "ehd_trac_coeff": (_ehd_errors("node_coefficient", "trac", 4), None),
+    "ehd_contact_loss": (_ehd_errors("power", "loss", 16), None),
     "contact_temp_rise": (_temperature_errors,
                           "eqs 35-36 with the report's own loss as a constant kappa u_s: worst 7.7 % high "
                           "(ball 2 inner 2.548 vs 2.365 K), outer 5.7 % (ball 7 0.4386 vs 0.4148 K); "

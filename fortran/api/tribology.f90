@@ -49,18 +49,20 @@ subroutine adore_tribo_thermal_factor(n, p_h, e_prime, l, s, phi, status, messag
    end if
 end subroutine adore_tribo_thermal_factor
 
-!> Lubricant of the library at temperature t (K): result = [kinematic viscosity (m**2/s),
-!> dynamic viscosity (Pa s), beta (1/K), alpha (1/Pa), conductivity (W/m/K), density].
-subroutine adore_tribo_lubricant(code, t, density, alpha, conductivity, result, status, message)
+!> Lubricant of the library at temperature t (K) and pressure p (Pa): result =
+!> [kinematic viscosity at p = 0 (m**2/s), dynamic viscosity at (t, p) (Pa s), beta (1/K),
+!> alpha (1/Pa), conductivity (W/m/K), density (kg/m**3), heat capacity (J/kg/K), T_ref (K),
+!> traction viscosity at t and p = 0 (Pa s), its pressure (1/Pa) and temperature (1/K) coefficients].
+subroutine adore_tribo_lubricant(code, t, p, result, status, message)
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
-   use adore_core_error, only: error_type, ADORE_OK
+   use adore_core_error, only: error_type, ADORE_OK, input_error
    use adore_tribology_film, only: lubricant_t, lubricant_from_code, kinematic_viscosity, &
-                                   dynamic_viscosity, temperature_viscosity_coefficient
+                                   dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity
    implicit none
    integer, intent(in) :: code
-   real(wp), intent(in) :: t, density, alpha, conductivity
-   real(wp), intent(out) :: result(6)
+   real(wp), intent(in) :: t, p
+   real(wp), intent(out) :: result(11)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
    type(error_type), allocatable :: error
@@ -69,13 +71,16 @@ subroutine adore_tribo_lubricant(code, t, density, alpha, conductivity, result, 
    result = 0.0_wp
    status = ADORE_OK
    message = ""
-   call lubricant_from_code(code, density, alpha, conductivity, lub, error)
+   call lubricant_from_code(code, lub, error)
+   if (.not. allocated(error) .and. .not. (t > 0.0_wp)) &
+      call input_error(error, "lubricant: temperature must be > 0 K")
    if (allocated(error)) then
       call set_error(error, status, message)
       return
    end if
-   result = [kinematic_viscosity(lub, t), dynamic_viscosity(lub, t), &
-             temperature_viscosity_coefficient(lub, t), lub%alpha, lub%conductivity, lub%density]
+   result = [kinematic_viscosity(lub, t), dynamic_viscosity(lub, t, p), &
+             temperature_viscosity_coefficient(lub, t), lub%alpha, lub%conductivity, lub%density, &
+             lub%heat_capacity, lub%t_ref, traction_viscosity(lub, t), lub%alpha_t, lub%beta_t]
 end subroutine adore_tribo_lubricant
 
 !> Ball/race contact traction.  geom = [side (+1 outer, -1 inner), alpha (rad), rho (m),
@@ -87,10 +92,11 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
+   use adore_api_unpack, only: contact_from_geom, traction_result
    implicit none
    real(wp), intent(in) :: geom(9), coef(4), kappa_scale
    integer, intent(in) :: n_gauss
-   real(wp), intent(out) :: result(13)
+   real(wp), intent(out) :: result(14)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
    type(error_type), allocatable :: error
@@ -100,30 +106,13 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
    result = 0.0_wp
    status = ADORE_OK
    message = ""
-   c = contact_from(geom)
+   c = contact_from_geom(geom)
    call contact_traction(c, coef, kappa_scale, n_gauss, t, error)
    if (allocated(error)) then
       call set_error(error, status, message)
       return
    end if
-   result = [t%force, t%coefficient, t%power, t%max_slip, t%centre_slip, t%rolling_speed, t%spin, &
-             t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points, t%node_slip]
-
-contains
-
-   !> Contact from the flat geometry vector.
-   function contact_from(g) result(cc)
-      real(wp), intent(in) :: g(9)
-      type(ball_race_contact_t) :: cc
-      cc%side = nint(g(1))
-      cc%alpha = g(2)
-      cc%rho = g(3)
-      cc%r_b = g(4)
-      cc%omega = g(5:6)
-      cc%race_speed = g(7)
-      cc%a = g(8)
-      cc%load = g(9)
-   end function contact_from
+   result = traction_result(t)
 
 end subroutine adore_tribo_contact
 
@@ -132,6 +121,7 @@ subroutine adore_tribo_slip(geom, n, s, u, status, message)
    use adore_core_kinds, only: wp
    use adore_core_error, only: ADORE_OK, ADORE_INPUT_ERROR
    use adore_tribology_slip, only: ball_race_contact_t, contact_slip
+   use adore_api_unpack, only: contact_from_geom
    implicit none
    real(wp), intent(in) :: geom(9)
    integer, intent(in) :: n
@@ -153,14 +143,7 @@ subroutine adore_tribo_slip(geom, n, s, u, status, message)
    status = ADORE_OK
    message = ""
 
-   c%side = nint(geom(1))
-   c%alpha = geom(2)
-   c%rho = geom(3)
-   c%r_b = geom(4)
-   c%omega = geom(5:6)
-   c%race_speed = geom(7)
-   c%a = geom(8)
-   c%load = geom(9)
+   c = contact_from_geom(geom)
    u = contact_slip(c, s)
 end subroutine adore_tribo_slip
 
@@ -218,3 +201,60 @@ subroutine adore_tribo_contact_temperature(a, b, p0, m, xk, wk, g, u1, u2, th1, 
       call set_error(error, status, message)
    end if
 end subroutine adore_tribo_contact_temperature
+
+!> Ball/race contact EHD traction (traction model 3, adore_tribology_ehd_traction): geom as
+!> adore_tribo_contact; rheo = [eta_w (Pa s), alpha_t (1/Pa), beta_t (1/K), K_f (W/m/K)];
+!> h film (m); b semi-minor axis (m).  result as adore_tribo_contact.
+subroutine adore_tribo_ehd_contact(geom, rheo, h, b, n_gauss, n_strip, result, status, message)
+   use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
+   use adore_api_unpack, only: contact_from_geom, traction_result
+   implicit none
+   real(wp), intent(in) :: geom(9), rheo(4), h, b
+   integer, intent(in) :: n_gauss, n_strip
+   real(wp), intent(out) :: result(14)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+   type(error_type), allocatable :: error
+   type(ball_race_contact_t) :: c
+   type(contact_traction_t) :: t
+
+   result = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   c = contact_from_geom(geom)
+   call ehd_contact_traction(c, ehd_rheology_t(eta_w=rheo(1), alpha=rheo(2), beta=rheo(3), conductivity=rheo(4)), &
+                             h, b, n_gauss, n_strip, t, error)
+   if (allocated(error)) then
+      call set_error(error, status, message)
+      return
+   end if
+   result = traction_result(t)
+end subroutine adore_tribo_ehd_contact
+
+!> Shear stress tau(n) (Pa) of a Newtonian film (thickness h, m) sheared at slips u(n)
+!> (m/s); wall viscosity eta_w (Pa s), beta (1/K), K_f (W/m/K); film_shear_stress.
+subroutine adore_tribo_film_shear(n, u, eta_w, beta, k_f, h, tau, status, message)
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: ADORE_OK, ADORE_INPUT_ERROR
+   use adore_tribology_ehd_traction, only: film_shear_stress
+   implicit none
+   integer, intent(in) :: n
+   real(wp), intent(in) :: u(n), eta_w, beta, k_f, h
+   real(wp), intent(out) :: tau(n)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+
+   tau = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   if (.not. (eta_w > 0.0_wp .and. h > 0.0_wp .and. beta >= 0.0_wp .and. (beta == 0.0_wp .or. k_f > 0.0_wp))) then
+      status = ADORE_INPUT_ERROR
+      message = "film shear: need eta_w > 0, h > 0, beta >= 0 and K_f > 0"
+      return
+   end if
+   tau = film_shear_stress(eta_w, beta, k_f, u, h)
+end subroutine adore_tribo_film_shear

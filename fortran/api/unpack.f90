@@ -3,12 +3,13 @@ module adore_api_unpack
    use adore_core_kinds, only: wp
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
    use adore_core_error, only: error_type, input_error
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t
    use adore_model_bearing, only: bearing_t, read_bearing, ROLLER_BEARING
    use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
    implicit none
    private
 
-   public :: adore_qs_unpack, roller_start_from_deck
+   public :: adore_qs_unpack, roller_start_from_deck, contact_from_geom, traction_result
 
 contains
 
@@ -65,5 +66,31 @@ contains
          call solve_roller_step0(b, s, error, growth_count, spin_method)
       end if
    end subroutine roller_start_from_deck
+
+   !> Ball/race contact from the flat geometry vector of the tribology wrappers:
+   !> [side (+1 outer, -1 inner), alpha (rad), rho (m), r_b (m), w_x, w_r (rad/s),
+   !> Omega - w_m (rad/s), a (m), Q (N)].
+   pure function contact_from_geom(g) result(c)
+      real(wp), intent(in) :: g(9)
+      type(ball_race_contact_t) :: c
+      c%side = nint(g(1))
+      c%alpha = g(2)
+      c%rho = g(3)
+      c%r_b = g(4)
+      c%omega = g(5:6)
+      c%race_speed = g(7)
+      c%a = g(8)
+      c%load = g(9)
+   end function contact_from_geom
+
+   !> The flat result vector of the contact traction wrappers: [force (N), coefficient,
+   !> power (W), max slip, centre slip, rolling speed (m/s), spin (rad/s), spin/roll, R_x (m),
+   !> n rolling points, s1, s2 (m), node slip (m/s), node coefficient].
+   pure function traction_result(t) result(r)
+      type(contact_traction_t), intent(in) :: t
+      real(wp) :: r(14)
+      r = [t%force, t%coefficient, t%power, t%max_slip, t%centre_slip, t%rolling_speed, t%spin, &
+           t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points, t%node_slip, t%node_coefficient]
+   end function traction_result
 
 end module adore_api_unpack

@@ -42,7 +42,7 @@ module adore_deck_schema
 
    integer, parameter :: N_RECORDS = 33
    integer, parameter :: N_FIELDS = 225
-   integer, parameter :: N_CHOICES = 18
+   integer, parameter :: N_CHOICES = 20
    integer, parameter :: ID_LEN = 7, NAME_LEN = 29, TITLE_LEN = 58
    integer, parameter :: RANGE_LEN = 21, MEANING_LEN = 170
 
@@ -275,7 +275,7 @@ module adore_deck_schema
       .true., .true., .true., .true., .true., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .true., .false., .false., .false., .true., .true., .true., .true., .true., .true., &
+      .false., .false., .false., .false., .true., .true., .true., .true., .true., .true., &
       .true., .true., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false. &
       ]
@@ -409,8 +409,8 @@ module adore_deck_schema
       17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
       17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
       17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
-      17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
-      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19 &
+      17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 19, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, &
+      21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21 &
       ]
    integer, parameter :: FLD_N_CHOICES(N_FIELDS) = [&
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
@@ -419,11 +419,11 @@ module adore_deck_schema
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
-      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
+      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 &
       ]
    integer, parameter :: CHOICES(N_CHOICES) = [&
-      1, 2, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 1, 2, 2, 3 &
+      1, 2, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 1, 2, 2, 3, 0, 1 &
       ]
    character(len=NAME_LEN), parameter :: FLD_COUNT(N_FIELDS) = [character(len=NAME_LEN) :: &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
@@ -456,7 +456,7 @@ module adore_deck_schema
       "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", &
       ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "any", "any", "any", "any", "any", &
       "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", ">= 0", "any", &
-      "any", "any", "any", "any", "any", "any", "any", "2, 3", ">= 0", "any", "any", "any", &
+      "any", "any", "any", "any", "any", "any", "any", "2, 3", "0, 1", "any", "any", "any", &
       ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", "any", "any", "any", "any", &
       "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any" &
       ]

@@ -3,9 +3,11 @@
 !>
 !> Everything printed at step 0 that needs no time integration: the ball speeds by
 !> minimum contact dissipation (report 4.4.7) and the race-contact tribology of those
-!> speeds (slip, traction coefficient, spin/roll, contact power loss, report 2.1).
-!> Quantities of later issues (film, thermal reduction, temperature rise, cage contacts,
-!> Tallian life) are not computed here and stay NaN, so the print shows them as not computed.
+!> speeds (slip, traction coefficient, spin/roll, contact power loss, report 2.1), and,
+!> for a lubricated deck, the isothermal central film and its thermal reduction factor
+!> (report 2.6; adore_tribology_film).  Quantities of later issues (temperature rise, cage
+!> contact forces, Tallian life) are not computed here and stay NaN, so the print shows
+!> them as not computed.
 module adore_driver_ball_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
@@ -16,6 +18,10 @@ module adore_driver_ball_step0
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, MIN_DISSIPATION, ball_contacts
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
+   use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
+                                   dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
+                                   THERMAL_LOADING_SCALE
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
@@ -32,6 +38,10 @@ module adore_driver_ball_step0
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
    integer, parameter, public :: PRINT_GAUSS = 4
+   !> Gauss points per slip zone and across each strip of the EHD traction's loss and force
+   integer, parameter, public :: EHD_GAUSS = 16, EHD_STRIP = 24
+   !> Rec 10.0 traction_model of the EHD film traction (report Table 5, model 3)
+   integer, parameter, public :: TRACTION_EHD = 3
 
    !> The step-0 state of a ball bearing.
    type :: ball_step0_t
@@ -47,9 +57,11 @@ module adore_driver_ball_step0
       type(cage_step0_t) :: cage
       ! race-contact tribology, (1, k) outer and (2, k) inner contact of ball k
       real(wp), allocatable :: slip(:, :)          !< printed slip velocity, max |u| at the nodes (m/s)
-      real(wp), allocatable :: trac_coeff(:, :)    !< net rolling traction / load (-)
+      real(wp), allocatable :: trac_coeff(:, :)    !< local traction coefficient at the node of the printed slip (-)
       real(wp), allocatable :: spin_roll(:, :)     !< spin to roll ratio (-)
       real(wp), allocatable :: loss(:, :)          !< contact power loss (W), eq (4)
+      real(wp), allocatable :: film(:, :)          !< isothermal central film (m); NaN unlubricated
+      real(wp), allocatable :: thermal_factor(:, :)  !< inlet thermal reduction factor (-); NaN unlubricated
       real(wp) :: power_loss = 0.0_wp              !< bearing power loss: sum of contact losses (W)
    end type ball_step0_t
 
@@ -151,11 +163,13 @@ contains
 
          nan = ieee_value(1.0_wp, ieee_quiet_nan)
          allocate (s%slip(2, b%n_elements), s%trac_coeff(2, b%n_elements), s%spin_roll(2, b%n_elements), &
-                   s%loss(2, b%n_elements))
+                   s%loss(2, b%n_elements), s%film(2, b%n_elements), s%thermal_factor(2, b%n_elements))
          s%slip = nan
          s%trac_coeff = nan
          s%spin_roll = nan
          s%loss = nan
+         s%film = nan
+         s%thermal_factor = nan
          s%power_loss = 0.0_wp
          associate (e => s%start%equilibrium, kin => s%start%kinematics)
             do k = 1, b%n_elements
@@ -166,8 +180,26 @@ contains
                   if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
                   call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
                   if (allocated(error)) return
+                  if (b%lubricant_code /= 0) then
+                     if (j == 1) then
+                        call lubricant_film(t, e%c_o(k)%semi_major/e%c_o(k)%semi_minor, e%q_o(k), &
+                                            e%c_o(k)%max_pressure, BODY_OUTER, s%film(j, k), &
+                                            s%thermal_factor(j, k), error)
+                     else
+                        call lubricant_film(t, e%c_i(k)%semi_major/e%c_i(k)%semi_minor, e%q_i(k), &
+                                            e%c_i(k)%max_pressure, BODY_INNER, s%film(j, k), &
+                                            s%thermal_factor(j, k), error)
+                     end if
+                     if (allocated(error)) return
+                     if (b%traction_model == TRACTION_EHD) then
+                        call ehd_traction(c(j), merge(e%c_o(k)%semi_minor, e%c_i(k)%semi_minor, j == 1), &
+                                          merge(BODY_OUTER, BODY_INNER, j == 1), &
+                                          s%film(j, k)*s%thermal_factor(j, k), t, error)
+                        if (allocated(error)) return
+                     end if
+                  end if
                   s%slip(j, k) = t%node_slip
-                  s%trac_coeff(j, k) = abs(t%coefficient)
+                  s%trac_coeff(j, k) = t%node_coefficient
                   s%spin_roll(j, k) = t%spin_roll
                   s%loss(j, k) = t%power
                   s%power_loss = s%power_loss + t%power
@@ -175,6 +207,58 @@ contains
             end do
          end associate
       end subroutine contact_tribology
+
+      !> Film of one race contact (report 2.6): Hamrock-Dowson isothermal central film
+      !> h (m) at the contact's entraining speed, R_x and ellipticity k = a/b, with the
+      !> lubricant's viscosity at the inlet temperature (mean of the ball and race
+      !> temperatures, Rec 2.7) and ambient pressure; the thermal reduction factor phi of
+      !> Gupta et al. with beta = B/T**2 at that temperature and the slide-to-roll ratio
+      !> centre slip / entraining speed.
+      subroutine lubricant_film(t, k_ell, q, p_h, race, h, phi, error)
+         type(contact_traction_t), intent(in) :: t
+         real(wp), intent(in) :: k_ell, q, p_h
+         integer, intent(in) :: race
+         real(wp), intent(out) :: h, phi
+         type(error_type), allocatable, intent(out) :: error
+         real(wp) :: e_prime, t_in, eta, u
+
+         e_prime = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
+                           (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
+         t_in = 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, race == BODY_OUTER)))
+         eta = dynamic_viscosity(b%lubricant, t_in, 0.0_wp)
+         u = abs(t%rolling_speed)
+         call central_film_thickness(t%rx, k_ell, u, q, e_prime, eta, b%lubricant%alpha, h, error)
+         if (allocated(error)) return
+         phi = thermal_reduction_factor(p_h, e_prime, THERMAL_LOADING_SCALE*thermal_loading(eta, &
+                                        temperature_viscosity_coefficient(b%lubricant, t_in), u, &
+                                        b%lubricant%conductivity), t%centre_slip/t%rolling_speed)
+      end subroutine lubricant_film
+
+      !> EHD traction of one race contact (traction model 3, adore_tribology_ehd_traction):
+      !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
+      !> lubricant's traction rheology at the wall temperature (mean of the ball and race
+      !> temperatures), PRINT_GAUSS points for the printed slip and coefficient and
+      !> EHD_GAUSS x EHD_STRIP points for the force and heat.
+      subroutine ehd_traction(cj, b_minor, race, h, t, error)
+         type(ball_race_contact_t), intent(in) :: cj
+         real(wp), intent(in) :: b_minor, h
+         integer, intent(in) :: race
+         type(contact_traction_t), intent(out) :: t
+         type(error_type), allocatable, intent(out) :: error
+         type(ehd_rheology_t) :: rheo
+         type(contact_traction_t) :: t_print
+         real(wp) :: t_w
+
+         t_w = 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, race == BODY_OUTER)))
+         rheo = ehd_rheology_t(eta_w=traction_viscosity(b%lubricant, t_w), alpha=b%lubricant%alpha_t, &
+                               beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity)
+         call ehd_contact_traction(cj, rheo, h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
+         if (allocated(error)) return
+         call ehd_contact_traction(cj, rheo, h, b_minor, PRINT_GAUSS, EHD_STRIP, t_print, error)
+         if (allocated(error)) return
+         t%node_slip = t_print%node_slip
+         t%node_coefficient = t_print%node_coefficient
+      end subroutine ehd_traction
 
    end subroutine solve_ball_step0
 

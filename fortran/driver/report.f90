@@ -253,6 +253,10 @@ contains
          traction(:, 2) = s%slip(2, :)
          traction(:, 3) = s%trac_coeff(1, :)
          traction(:, 4) = s%trac_coeff(2, :)
+         traction(:, 5) = s%film(1, :)
+         traction(:, 6) = s%film(2, :)
+         traction(:, 7) = s%thermal_factor(1, :)
+         traction(:, 8) = s%thermal_factor(2, :)
          thermal(:, 2) = e%delta_o
          thermal(:, 3) = e%delta_i
          thermal(:, 4:5) = 0.0_wp                      ! rigid races: no race flexing

@@ -12,6 +12,7 @@ module adore_model_bearing
                                   roller_cage_inertia, roller_moments
    use adore_contact_line_slices, only: roller_profile_t, roller_mass
    use adore_model_traction_fit, only: fit_traction_curve
+   use adore_tribology_film, only: lubricant_t, lubricant_from_code
    use adore_cage_step0, only: guide_land_t, cage_input_t
    implicit none
    private
@@ -82,6 +83,11 @@ module adore_model_bearing
       real(wp) :: traction(4) = 0.0_wp
       !> its deck inputs: kappa at zero slip, maximum kappa, kappa at infinite slip, slip at the maximum (m/s)
       real(wp) :: traction_input(4) = 0.0_wp
+      !> RE/race traction model (Rec 10.0 traction_model): 3 = EHD (report Table 5), else the curve
+      integer :: traction_model = 0
+      !> lubricant of the library (Rec 10.0 lubricant_code; 0: none, lubricant unset)
+      integer :: lubricant_code = 0
+      type(lubricant_t) :: lubricant
       ! operating conditions, Rec 2.7, 9.0, 9.1.x, 11
       !> initial temperatures (K): room, housing, shaft, element, cage, outer race, inner race
       real(wp) :: temperature(7) = 293.0_wp
@@ -223,6 +229,16 @@ contains
       b%traction_input = k
       call fit_traction_curve(k(1), k(2), k(3), k(4), b%traction, error)
       if (allocated(error)) return
+      call deck_collect_int(deck, "10.0", "traction_model", b%traction_model, error, if_present=.true.)
+      call deck_collect_int(deck, "10.0", "lubricant_code", b%lubricant_code, error, if_present=.true.)
+      if (allocated(error)) return
+      if (b%lubricant_code /= 0) then
+         call lubricant_from_code(b%lubricant_code, b%lubricant, error)
+         if (allocated(error)) then
+            error%message = "Rec 10.0 field lubricant_code: "//error%message
+            return
+         end if
+      end if
 
       call deck_collect_real(deck, "9.0", "room_temperature", b%temperature(1), error)
       call deck_collect_real(deck, "2.7", "housing_temperature", b%temperature(2), error)

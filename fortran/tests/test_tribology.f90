@@ -7,7 +7,7 @@ program test_tribology
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_film, only: lubricant_t, central_film_thickness, thermal_reduction_factor, &
-                                   lubricant_from_code, kinematic_viscosity, &
+                                   lubricant_from_code, kinematic_viscosity, dynamic_viscosity, &
                                    temperature_viscosity_coefficient, LUBRICANT_MIL_L_7808
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
                                    contact_slip, pure_rolling_points, SIDE_OUTER, SIDE_INNER
@@ -55,25 +55,26 @@ contains
                  thermal_reduction_factor(1.0e9_wp, 2.2e11_wp, 5.0_wp, 0.0_wp), "thermal factor: falls with slip")
    end subroutine test_film
 
-   !> The MIL-L-7808 line passes through its two specification points; beta matches a
-   !> central difference; unknown codes and missing properties are input errors.
+   !> MIL-L-7808 is the report's echoed library entry; beta matches a central difference;
+   !> an unknown code is an input error.
    subroutine test_lubricant()
       type(error_type), allocatable :: error
       type(lubricant_t) :: lub
       real(wp) :: t, fd, eps
-      call lubricant_from_code(LUBRICANT_MIL_L_7808, 950.0_wp, 1.0e-8_wp, 0.15_wp, lub, error)
+      call lubricant_from_code(LUBRICANT_MIL_L_7808, lub, error)
       call check(.not. allocated(error), "lubricant: MIL-L-7808 accepted")
-      call check(abs(kinematic_viscosity(lub, 313.15_wp)/11.5e-6_wp - 1.0_wp) < 1.0e-12_wp, "lubricant: 40 C point")
-      call check(abs(kinematic_viscosity(lub, 373.15_wp)/3.0e-6_wp - 1.0_wp) < 1.0e-12_wp, "lubricant: 100 C point")
+      call check(abs(dynamic_viscosity(lub, 323.0_wp, 0.0_wp)/8.61565e-3_wp - 1.0_wp) < 1.0e-14_wp, &
+                 "lubricant: echoed viscosity at 323 K")
+      call check(abs(dynamic_viscosity(lub, 323.0_wp, 1.0e8_wp)/(8.61565e-3_wp*exp(1.07562_wp)) - 1.0_wp) &
+                 < 1.0e-13_wp, "lubricant: Barus pressure law")
+      call check(kinematic_viscosity(lub, 313.15_wp) > 11.5e-6_wp, "lubricant: 40 C above the grade-3 minimum")
       t = 323.0_wp
       eps = 1.0e-3_wp
       fd = -(log(kinematic_viscosity(lub, t + eps)) - log(kinematic_viscosity(lub, t - eps)))/(2.0_wp*eps)
       call check(abs(temperature_viscosity_coefficient(lub, t)/fd - 1.0_wp) < 1.0e-7_wp, "lubricant: beta = -dln(eta)/dT")
-      call lubricant_from_code(99, 950.0_wp, 1.0e-8_wp, 0.15_wp, lub, error)
+      call lubricant_from_code(99, lub, error)
       call check(allocated(error), "lubricant: unknown code rejected")
       if (allocated(error)) call check(error%stat == ADORE_INPUT_ERROR, "lubricant: unknown code is an input error")
-      call lubricant_from_code(LUBRICANT_MIL_L_7808, 950.0_wp, 0.0_wp, 0.15_wp, lub, error)
-      call check(allocated(error), "lubricant: missing alpha rejected")
    end subroutine test_lubricant
 
    !> Pure rolling points are roots; the zone-split Gauss integral equals a fine midpoint

@@ -25,7 +25,8 @@ module adore_tribology_slip
    private
 
    public :: ball_race_contact_t, contact_traction_t
-   public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics
+   public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
+             slip_zones
 
    integer, parameter, public :: SIDE_OUTER = 1   !< contact with the outer race
    integer, parameter, public :: SIDE_INNER = -1  !< contact with the inner race
@@ -50,6 +51,8 @@ module adore_tribology_slip
       real(wp) :: max_slip = 0.0_wp     !< largest |u| on the major axis (m/s)
       real(wp) :: node_slip = 0.0_wp    !< largest |u| at the quadrature nodes (m/s): the
                                         !< report's printed "Slip Velocity" with n_gauss = 4
+      real(wp) :: node_coefficient = 0.0_wp  !< local traction coefficient at that node (-): the
+                                             !< report's printed "Trac Coeff"
       real(wp) :: centre_slip = 0.0_wp  !< u at the contact centre (m/s)
       real(wp) :: rolling_speed = 0.0_wp  !< mean entraining speed (u_ball + u_race)/2 at the centre (m/s)
       real(wp) :: spin = 0.0_wp         !< spin of the ball relative to the race about the normal (rad/s)
@@ -144,8 +147,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: x(:), w(:)
       real(wp) :: edges(4), lo, hi, s, ds, u, kap, dq
-      integer :: nz, z, j, nr
-      real(wp) :: pts(2)
+      integer :: nz, z, j
 
       if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load >= 0.0_wp &
                  .and. c%r_b > c%rho .and. abs(c%side) == 1)) then
@@ -156,14 +158,7 @@ contains
          call input_error(error, "contact traction: need at least one Gauss point per zone")
          return
       end if
-      call contact_kinematics(c, t)
-      call pure_rolling_points(c, nr, pts)
-      t%n_rolling = nr
-      t%rolling_points = pts
-      edges(1) = -c%a
-      edges(2:nr + 1) = pts(1:nr)
-      edges(nr + 2) = c%a
-      nz = nr + 1
+      call slip_zones(c, t, edges, nz)
       allocate (x(n_gauss), w(n_gauss))
       call gauss_legendre(n_gauss, x, w)
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
@@ -179,13 +174,37 @@ contains
             t%force = t%force + sign(kap, u)*dq
             t%power = t%power + kap*abs(u)*dq
             t%max_slip = max(t%max_slip, abs(u))
-            t%node_slip = max(t%node_slip, abs(u))
+            if (abs(u) >= t%node_slip) then
+               t%node_slip = abs(u)
+               t%node_coefficient = kap
+            end if
          end do
       end do
       ! a stationary point of u inside the contact (the sinusoid's extremum)
       call interior_extremum(c, t%max_slip)
       if (c%load > 0.0_wp) t%coefficient = t%force/c%load
    end subroutine contact_traction
+
+   !> Centre kinematics and pure-rolling points of contact c into t, and the slip zones
+   !> of the major axis: edges(1:nz+1) from -a to a (m), split at the pure-rolling points.
+   pure subroutine slip_zones(c, t, edges, nz)
+      type(ball_race_contact_t), intent(in) :: c
+      type(contact_traction_t), intent(inout) :: t
+      real(wp), intent(out) :: edges(4)
+      integer, intent(out) :: nz
+      integer :: nr
+      real(wp) :: pts(2)
+
+      edges = 0.0_wp
+      call contact_kinematics(c, t)
+      call pure_rolling_points(c, nr, pts)
+      t%n_rolling = nr
+      t%rolling_points = pts
+      edges(1) = -c%a
+      edges(2:nr + 1) = pts(1:nr)
+      edges(nr + 2) = c%a
+      nz = nr + 1
+   end subroutine slip_zones
 
    !> Raise umax to |u| at the extremum of u(s) when it lies inside (-a, a).
    pure subroutine interior_extremum(c, umax)

@@ -24,18 +24,23 @@ def thermal_reduction_factor(p_h: float, e_prime: float, loading, slide_roll: fl
     return phi
 
 
-def lubricant(code: int, temperature: float, *, density: float, alpha: float, conductivity: float) -> dict:
-    """Lubricant of the engine's library at temperature (K); density, alpha and conductivity
-    are explicit inputs (not sourced).  Keys: nu (m**2/s), eta (Pa s), beta (1/K), alpha,
-    conductivity, density."""
-    values, status, message = _engine().adore_tribo_lubricant(int(code), temperature, density, alpha,
-                                                              conductivity)
+LUBRICANT_KEYS = ["nu", "eta", "beta", "alpha", "conductivity", "density", "heat_capacity", "t_ref",
+                  "eta_t", "alpha_t", "beta_t"]
+
+
+def lubricant(code: int, temperature: float, pressure: float = 0.0) -> dict:
+    """Lubricant of the engine's library (code as Rec 10.0 field 2; 1 = MIL-L-7808 as the
+    report's Appendix C echo prints it) at temperature (K) and pressure (Pa).  Keys:
+    LUBRICANT_KEYS - nu (m**2/s, at p = 0), eta (Pa s, at the pressure), beta (1/K),
+    alpha (1/Pa), conductivity (W/m/K), density (kg/m**3), heat_capacity (J/kg/K), t_ref (K),
+    and the EHD traction rheology eta_t (Pa s, at the temperature, p = 0), alpha_t (1/Pa), beta_t (1/K)."""
+    values, status, message = _engine().adore_tribo_lubricant(int(code), float(temperature), float(pressure))
     check(int(status), message)
-    return dict(zip(["nu", "eta", "beta", "alpha", "conductivity", "density"], map(float, values)))
+    return dict(zip(LUBRICANT_KEYS, map(float, values)))
 
 
 CONTACT_TRACTION_KEYS = ["force", "coefficient", "power", "max_slip", "centre_slip", "rolling_speed", "spin",
-                         "spin_roll", "rx", "n_rolling", "s1", "s2", "node_slip"]
+                         "spin_roll", "rx", "n_rolling", "s1", "s2", "node_slip", "node_coefficient"]
 
 
 def _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load):
@@ -92,3 +97,29 @@ def contact_temperature_rise(a: float, b: float, p0: float, xk, wk, g, u1: float
 
 # --- roller bearings: line contact by slices, step 0 (fortran/contact/line_slices.f90,
 # fortran/driver/roller_step0.f90) ---------------------------------------------------
+
+
+def ehd_contact_traction(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float,
+                         load: float, rheology, film: float, b: float, n_gauss: int = 16,
+                         n_strip: int = 24) -> dict:
+    """Ball/race contact traction of the EHD film model (ADORE traction model 3): geometry as
+    contact_traction; rheology = (eta_w Pa s, alpha_t 1/Pa, beta_t 1/K, K_f W/m/K); film h
+    (m); b semi-minor axis (m).  Keys: CONTACT_TRACTION_KEYS."""
+    import numpy as np
+
+    values, status, message = _engine().adore_tribo_ehd_contact(
+        _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load), np.asarray(rheology, float),
+        float(film), float(b), int(n_gauss), int(n_strip))
+    check(int(status), message)
+    return dict(zip(CONTACT_TRACTION_KEYS, map(float, values)))
+
+
+def film_shear_stress(u, eta_w: float, beta: float, k_f: float, h: float):
+    """Shear stress (Pa) of a Newtonian film of thickness h (m) at slips u (m/s), walls at
+    the temperature of the wall viscosity eta_w (Pa s); beta (1/K), K_f (W/m/K)."""
+    import numpy as np
+
+    tau, status, message = _engine().adore_tribo_film_shear(np.atleast_1d(np.asarray(u, float)), eta_w, beta,
+                                                            k_f, h)
+    check(int(status), message)
+    return tau

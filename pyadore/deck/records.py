@@ -276,7 +276,8 @@ RECORDS: tuple[RecordSpec, ...] = (
           "3 -> Rec 10.1C (ball deck 3 with 10.1C; the roller deck has 10.1B)", "", "inference",
           choices=(2, 3)),
         F("lubricant_code", "int", "-", "inferred: non-zero when a lubricant is used and Rec 10.3 "
-          "follows (ball deck 1, MIL-L-7808 in the echo)", "", "inference", default=0, lo=0),
+          "follows (ball deck 1, MIL-L-7808 in the echo); the engine's library has 1 = MIL-L-7808 "
+          "(docs/tribology.md)", "", "inference", default=0, choices=(0, 1)),
         *_unknown_ints("10.0", 3, 5, "0 in the ball deck"),
     ), section="echo: LUBRICATION PARAMETERS"),
     *(RecordSpec(f"10.1{letter}", f"Traction-slip curve (traction model {code})", (
