@@ -6,6 +6,7 @@
 !> "Listing of input data records" reproduces the lines verbatim.
 module adore_deck_text
    use adore_core_error, only: error_type, input_error
+   use adore_core_os, only: read_whole_file
    implicit none
    private
 
@@ -34,8 +35,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       character(len=:), allocatable :: buffer
-      character(len=256) :: iomsg
-      integer :: unit, stat, nbytes, i, nlines, start, line_end
+      character(len=:), allocatable :: iomsg_text
+      integer :: nbytes, i, nlines, start, line_end
       logical :: exists, any_content
 
       text%path = path
@@ -48,28 +49,12 @@ contains
          call input_error(error, path//": deck file not found")
          return
       end if
-      open (newunit=unit, file=path, access="stream", form="unformatted", &
-            status="old", action="read", iostat=stat, iomsg=iomsg)
-      if (stat /= 0) then
-         call input_error(error, path//": cannot open deck file: "//trim(iomsg))
+      call read_whole_file(path, buffer, iomsg_text)
+      if (len(iomsg_text) > 0) then
+         call input_error(error, path//": deck file: "//iomsg_text)
          return
       end if
-      inquire (unit=unit, size=nbytes)
-      if (nbytes < 0) then
-         close (unit)
-         call input_error(error, path//": cannot determine the size of the deck file")
-         return
-      end if
-      allocate (character(len=nbytes) :: buffer)
-      if (nbytes > 0) then
-         read (unit, iostat=stat, iomsg=iomsg) buffer
-         if (stat /= 0) then
-            close (unit)
-            call input_error(error, path//": cannot read deck file: "//trim(iomsg))
-            return
-         end if
-      end if
-      close (unit)
+      nbytes = len(buffer)
 
       ! Text check: the first offending byte is reported by line and column.
       nlines = 1
