@@ -26,6 +26,7 @@ BALL_STEP0_COMPUTED = [
     ("re_motion", "orbital_velocity_rpm"),
     ("re_traction", "trac_coeff_inner"),
     ("re_motion", "contact_loss_inner_W"),
+    ("re_motion", "contact_loss_outer_W"),
     ("performance", "total_power_loss_W"),
     ("re_traction", "film_thickness_outer_m"),
     ("re_traction", "film_thickness_inner_m"),

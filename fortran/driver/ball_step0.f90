@@ -2,7 +2,8 @@
 !> fatigue life (ADORE's start-up: ADRA4 equilibrium, initial ball velocities, ADRF1).
 !>
 !> Everything printed at step 0 that needs no time integration: the ball speeds by
-!> minimum contact dissipation (report 4.4.7) and the race-contact tribology of those
+!> minimum contact dissipation (report 4.4.7; with the EHD traction of model 3 when the
+!> deck selects it, seeded by the deck curve's minimum) and the race-contact tribology of those
 !> speeds (slip, traction coefficient, spin/roll, contact power loss, report 2.1), and,
 !> for a lubricated deck, the isothermal central film and its thermal reduction factor
 !> (report 2.6; adore_tribology_film).  Quantities of later issues (temperature rise, cage
@@ -11,12 +12,12 @@
 module adore_driver_ball_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
-   use adore_core_error, only: error_type, input_error
+   use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_mounting_fits, only: mounting_t
    use adore_driver_mount, only: mount_bearing
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
-   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, MIN_DISSIPATION, ball_contacts
+   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, MIN_DISSIPATION, ball_contacts, ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
@@ -115,6 +116,10 @@ contains
       call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, BALL_START_METHOD, s%start, error, &
                             b%traction)
       if (allocated(error)) return
+      if (b%traction_model == TRACTION_EHD .and. b%lubricant_code /= 0 .and. BALL_START_METHOD == MIN_DISSIPATION) then
+         call ehd_start(error)
+         if (allocated(error)) return
+      end if
       call contact_tribology(error)
       if (allocated(error)) return
 
@@ -149,6 +154,80 @@ contains
       end associate
 
    contains
+
+      !> The start with the EHD traction (model 3) in the minimum-dissipation search (report
+      !> 4.4.7 with the run's own traction model): the films of the current state are held
+      !> fixed while the start is re-solved from it, then recomputed, until the films change
+      !> by less than 1e-5 relative (the film follows the entraining speed to the power 0.67;
+      !> the speeds then move by ~1e-6 relative, far below the printed 4 digits).
+      subroutine ehd_start(error)
+         type(error_type), allocatable, intent(out) :: error
+         type(ehd_films_t), allocatable :: films(:), next(:)
+         type(ball_start_t) :: previous
+         real(wp) :: change
+         integer :: iter
+
+         call current_films(films, error)
+         if (allocated(error)) return
+         do iter = 1, 10
+            previous = s%start
+            call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, BALL_START_METHOD, s%start, error, &
+                                  b%traction, films, previous)
+            if (allocated(error)) return
+            call current_films(next, error)
+            if (allocated(error)) return
+            change = maxval(abs(next%h(1) - films%h(1))/max(next%h(1), tiny(1.0_wp)))
+            change = max(change, maxval(abs(next%h(2) - films%h(2))/max(next%h(2), tiny(1.0_wp))))
+            films = next
+            if (change <= 1.0e-5_wp) return
+         end do
+         call engine_error(error, "ball start: EHD films and ball speeds did not become consistent")
+      end subroutine ehd_start
+
+      !> The EHD films of every ball's race contacts at the current start (unloaded
+      !> contacts: h = 0, skipped by the search).
+      subroutine current_films(films, error)
+         type(ehd_films_t), allocatable, intent(out) :: films(:)
+         type(error_type), allocatable, intent(out) :: error
+         type(ball_race_contact_t) :: c(2)
+         type(contact_traction_t) :: t
+         real(wp) :: h, phi, b_minor(2), k_ell(2), p_h(2)
+         integer :: k, j
+
+         allocate (films(b%n_elements))
+         associate (e => s%start%equilibrium, kin => s%start%kinematics)
+            do k = 1, b%n_elements
+               c = ball_contacts(b%d, e%r(k), e%n_o(:, k), e%n_i(:, k), b%speed_outer, b%speed_inner, &
+                                 [e%c_o(k)%semi_major, e%c_i(k)%semi_major], [e%q_o(k), e%q_i(k)], &
+                                 kin(k)%pitch, kin(k)%spin_speed, kin(k)%orbital_speed)
+               b_minor = [e%c_o(k)%semi_minor, e%c_i(k)%semi_minor]
+               k_ell = [e%c_o(k)%semi_major, e%c_i(k)%semi_major]/max(b_minor, tiny(1.0_wp))
+               p_h = [e%c_o(k)%max_pressure, e%c_i(k)%max_pressure]
+               do j = 1, 2
+                  films(k)%rheo(j) = wall_rheology(merge(BODY_OUTER, BODY_INNER, j == 1))
+                  films(k)%b(j) = b_minor(j)
+                  if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
+                  call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
+                  if (allocated(error)) return
+                  call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
+                                      h, phi, error)
+                  if (allocated(error)) return
+                  films(k)%h(j) = h*phi
+               end do
+            end do
+         end associate
+      end subroutine current_films
+
+      !> The lubricant's traction rheology at the wall temperature of a race contact (mean
+      !> of the ball and race temperatures, Rec 2.7).
+      function wall_rheology(race) result(rheo)
+         integer, intent(in) :: race
+         type(ehd_rheology_t) :: rheo
+         real(wp) :: t_w
+         t_w = 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, race == BODY_OUTER)))
+         rheo = ehd_rheology_t(eta_w=traction_viscosity(b%lubricant, t_w), alpha=b%lubricant%alpha_t, &
+                               beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity)
+      end function wall_rheology
 
       !> Slip, traction, spin/roll and power loss of every loaded race contact at the
       !> start's speeds (report 2.1, eqs 3-4; PRINT_GAUSS points per slip zone); NaN for an
@@ -247,11 +326,8 @@ contains
          type(error_type), allocatable, intent(out) :: error
          type(ehd_rheology_t) :: rheo
          type(contact_traction_t) :: t_print
-         real(wp) :: t_w
 
-         t_w = 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, race == BODY_OUTER)))
-         rheo = ehd_rheology_t(eta_w=traction_viscosity(b%lubricant, t_w), alpha=b%lubricant%alpha_t, &
-                               beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity)
+         rheo = wall_rheology(race)
          call ehd_contact_traction(cj, rheo, h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
          if (allocated(error)) return
          call ehd_contact_traction(cj, rheo, h, b_minor, PRINT_GAUSS, EHD_STRIP, t_print, error)

@@ -25,18 +25,31 @@
 module adore_quasistatic_ball_kinematics
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
                                    SIDE_OUTER, SIDE_INNER
    implicit none
    private
 
    public :: ball_kinematics_t, race_control_kinematics, CONTROL_OUTER, CONTROL_INNER
-   public :: MIN_DISSIPATION, min_dissipation_kinematics, ball_contacts, dissipation
+   public :: MIN_DISSIPATION, min_dissipation_kinematics, ball_contacts, dissipation, ehd_films_t
 
    integer, parameter :: CONTROL_OUTER = 1  !< no spin at the outer race contact
    integer, parameter :: CONTROL_INNER = 2  !< no spin at the inner race contact
    integer, parameter :: MIN_DISSIPATION = 3  !< inner centre rolling, least contact power loss
    integer, parameter :: N_GAUSS_MIN = 4    !< Gauss points per slip zone (as the report prints)
+   !> Gauss points across each strip of the EHD traction in the search (the minimum's
+   !> position changes by < 1e-4 deg against 24 points; tests/test_ball_step0_tribology.py)
+   integer, parameter :: N_STRIP_MIN = 8
+
+   !> The EHD film of a ball's two race contacts (outer first) for the minimum-dissipation
+   !> search with traction model 3: rheology at the wall temperature, film h (m, the
+   !> thermally reduced central film) and semi-minor axis b (m), held fixed in the search.
+   type :: ehd_films_t
+      type(ehd_rheology_t) :: rheo(2)
+      real(wp) :: h(2) = 0.0_wp
+      real(wp) :: b(2) = 0.0_wp
+   end type ehd_films_t
 
    !> Result of the kinematic solution for one ball.
    type :: ball_kinematics_t
@@ -163,12 +176,14 @@ contains
    end function ball_contacts
 
    !> Power (W) lost in the loaded race contacts (load > 0 and a > 0) of the ball state
-   !> (beta, w_b, w_m): eq (4) with traction curve coef, n_gauss points per slip zone.
-   subroutine dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, n_gauss, beta, w_b, w_m, p, error)
+   !> (beta, w_b, w_m): eq (4) with traction curve coef, n_gauss points per slip zone; with
+   !> the EHD film traction (model 3) instead when ehd is present.
+   subroutine dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, n_gauss, beta, w_b, w_m, p, error, ehd)
       real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), coef(4), beta, w_b, w_m
       integer, intent(in) :: n_gauss
       real(wp), intent(out) :: p
       type(error_type), allocatable, intent(out) :: error
+      type(ehd_films_t), intent(in), optional :: ehd
       type(ball_race_contact_t) :: c(2)
       type(contact_traction_t) :: t
       integer :: j
@@ -177,7 +192,11 @@ contains
       c = ball_contacts(d, r_b, n_o, n_i, w_o, w_i, a, q, beta, w_b, w_m)
       do j = 1, 2
          if (.not. (q(j) > 0.0_wp .and. a(j) > 0.0_wp)) cycle
-         call contact_traction(c(j), coef, 1.0_wp, n_gauss, t, error)
+         if (present(ehd)) then
+            call ehd_contact_traction(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, t, error)
+         else
+            call contact_traction(c(j), coef, 1.0_wp, n_gauss, t, error)
+         end if
          if (allocated(error)) return
          p = p + t%power
       end do
@@ -187,16 +206,18 @@ contains
    !> 4.4.7): inner contact centre in pure rolling, (beta, w_b) minimising the power of
    !> both race contacts.  Arguments as race_control_kinematics plus a(2), q(2): semi-major
    !> axes (m) and loads (N) of the outer and inner contact; coef: traction curve [A, B, C, D]
-   !> (Rec 10.1, u in m/s).  Pitch searched in [-30, 30] deg (grid step 1 deg), or within
+   !> (Rec 10.1, u in m/s), or the EHD film traction when ehd is given.  Pitch searched in [-30, 30] deg (grid step 1 deg), or within
    !> +-4 deg of `hint`, then refined by parabolic interpolation and golden section.
    !> Input error when neither contact is loaded or the inner contact geometry is degenerate.
-   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, k, error, hint)
+   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, k, error, hint, ehd)
       real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), coef(4)
       type(ball_kinematics_t), intent(out) :: k
       type(error_type), allocatable, intent(out) :: error
       !> pitch (rad) of a previous solution: the grid search is then limited to +-4 degrees
       !> around it (the start's later passes move the minimum by far less)
       real(wp), intent(in), optional :: hint
+      !> the EHD film of both contacts: the power is the EHD traction's (model 3)
+      type(ehd_films_t), intent(in), optional :: ehd
 
       real(wp), parameter :: pi = acos(-1.0_wp), step = pi/180.0_wp
       integer, parameter :: n_full = 61, n_near = 9
@@ -254,7 +275,7 @@ contains
             x2 = lo + gr*(hi - lo)
             call best_speed(x2, k%spin_speed, f2)
          end if
-         if (hi - lo < 1.0e-10_wp) exit
+         if (hi - lo < 1.0e-9_wp) exit
       end do
       if (allocated(error)) return
       bp = 0.5_wp*(lo + hi)
@@ -302,7 +323,7 @@ contains
                y2 = l + gr*(h - l)
                g2 = power_at(beta, y2)
             end if
-            if (abs(h - l) < 1.0e-10_wp*scale) exit
+            if (abs(h - l) < 1.0e-9_wp*scale) exit
          end do
          w_b = 0.5_wp*(l + h)
          p = power_at(beta, w_b)
@@ -315,7 +336,7 @@ contains
          p = 0.0_wp
          if (allocated(error)) return
          call dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, N_GAUSS_MIN, beta, w_b, &
-                          inner_rolling_orbit(beta, w_b), p, error)
+                          inner_rolling_orbit(beta, w_b), p, error, ehd)
       end function power_at
 
    end subroutine min_dissipation_kinematics

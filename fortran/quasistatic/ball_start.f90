@@ -14,7 +14,7 @@ module adore_quasistatic_ball_start
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t, &
                                                  solve_ball_equilibrium
    use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, race_control_kinematics, &
-                                                MIN_DISSIPATION, min_dissipation_kinematics
+                                                MIN_DISSIPATION, min_dissipation_kinematics, ehd_films_t
    implicit none
    private
 
@@ -32,7 +32,9 @@ contains
    !> Solve the coupled start for race speeds w_outer, w_inner (rad/s); control selects
    !> the kinematic hypothesis: CONTROL_OUTER, CONTROL_INNER (race control) or
    !> MIN_DISSIPATION (report 4.4.7; needs coef, the RE/race traction curve [A, B, C, D]).
-   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error, coef)
+   !> ehd(k): ball k's EHD films - minimum dissipation of the EHD traction (model 3)
+   !> instead of the curve; guess: a previous start, whose speeds and pitches seed this one.
+   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error, coef, ehd, guess)
       type(ball_qs_bearing_t), intent(in) :: b
       type(ball_qs_load_t), intent(in) :: ld
       real(wp), intent(in) :: w_outer, w_inner
@@ -40,10 +42,13 @@ contains
       real(wp), intent(in), optional :: coef(4)
       type(ball_start_t), intent(out) :: start
       type(error_type), allocatable, intent(out) :: error
+      type(ehd_films_t), intent(in), optional :: ehd(:)
+      type(ball_start_t), intent(in), optional :: guess
 
       real(wp), allocatable :: speed(:), new_speed(:)
       real(wp) :: d_i(2), d_o(2), change, previous, tol
       integer :: pass, k
+      logical :: first
 
       if (control == MIN_DISSIPATION .and. .not. present(coef)) then
          call engine_error(error, "ball start: minimum dissipation needs the traction curve")
@@ -54,6 +59,10 @@ contains
       allocate (speed(b%n_balls), new_speed(b%n_balls), start%kinematics(b%n_balls))
       ! first guess: the epicyclic speed of a ball at the pitch diameter and zero angles
       speed = 0.5_wp*(w_inner*(1.0_wp - b%d/b%dm) + w_outer*(1.0_wp + b%d/b%dm))
+      if (present(guess)) then
+         speed = guess%kinematics%orbital_speed
+         start%kinematics = guess%kinematics
+      end if
       do pass = 1, 50
          call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
          if (allocated(error)) return
@@ -62,12 +71,25 @@ contains
             d_i = start%equilibrium%n_i(:, k)
             if (control == MIN_DISSIPATION) then
                associate (e => start%equilibrium)
-                  if (pass == 1) then
+                  first = pass == 1 .and. .not. present(guess)
+                  previous = start%kinematics(k)%pitch   ! later passes: search near it
+                  if (present(ehd)) then
+                     if (first) then
+                        call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
+                                                        [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
+                                                        [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error, &
+                                                        ehd=ehd(k))
+                     else
+                        call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
+                                                        [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
+                                                        [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error, &
+                                                        previous, ehd(k))
+                     end if
+                  else if (first) then
                      call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
                                                      [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
                                                      [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error)
-                  else   ! later passes: search near the previous pass's pitch
-                     previous = start%kinematics(k)%pitch
+                  else
                      call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
                                                      [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
                                                      [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error, &

@@ -56,13 +56,20 @@ contains
          tau = eta_w*abs(u)/h
          return
       end if
-      c = 2.0_wp*asinh(0.5_wp*abs(u)*sqrt(beta*eta_w/(2.0_wp*k_f)))
-      if (c < 1.0e-8_wp) then
-         tau = eta_w*abs(u)/h
-      else
-         tau = sqrt(2.0_wp*k_f*eta_w/beta)/h*c/cosh(0.5_wp*c)
-      end if
+      c = 0.5_wp*abs(u)*sqrt(beta*eta_w/(2.0_wp*k_f))      ! sinh(c/2) with c of the header
+      tau = sqrt(2.0_wp*k_f*eta_w/beta)/h*shear_shape(c)
    end function film_shear_stress
+
+   !> 2 asinh(z) / sqrt(1 + z**2) = c / cosh(c/2) with sinh(c/2) = z; 2 z for tiny z.
+   elemental function shear_shape(z) result(g)
+      real(wp), intent(in) :: z
+      real(wp) :: g
+      if (z < 1.0e-8_wp) then
+         g = 2.0_wp*z
+      else
+         g = 2.0_wp*asinh(z)/sqrt(1.0_wp + z*z)
+      end if
+   end function shear_shape
 
    !> Traction, heat and kinematics of contact c with an EHD film of thickness h (m) and
    !> rheology rheo; b: semi-minor axis (m); n_gauss points per slip zone along the major
@@ -77,8 +84,8 @@ contains
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: x(:), w(:), y(:), wy(:)
-      real(wp) :: edges(4), lo, hi, ds, s, u, xi2, p0, half, p, f, q, tau
-      integer :: nz, z, j, i
+      real(wp) :: edges(4), lo, hi, ds, s, u, xi2, p0, half, p, f, q, tau, amp, zeta, e_half
+      integer :: nz, z, j, i, m
 
       if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load > 0.0_wp &
                  .and. c%r_b > c%rho .and. abs(c%side) == 1 .and. b > 0.0_wp)) then
@@ -98,7 +105,24 @@ contains
       allocate (x(n_gauss), w(n_gauss), y(n_strip), wy(n_strip))
       call gauss_legendre(n_gauss, x, w)
       call gauss_legendre(n_strip, y, wy)
+      ! the strip integrand is even in y: the nodes y >= 0 with doubled weights (the centre
+      ! node of an odd rule once)
+      m = 0
+      do i = 1, n_strip
+         if (y(i) < 0.0_wp) cycle
+         m = m + 1
+         y(m) = y(i)
+         wy(m) = merge(wy(i), 2.0_wp*wy(i), y(i) == 0.0_wp)
+      end do
       p0 = 1.5_wp*c%load/(pi*c%a*b)
+      ! tau h = amp E shear_shape(zeta |u| E), E = exp(alpha p / 2) (module header with
+      ! eta_w(p) = eta_w E**2)
+      amp = 0.0_wp
+      zeta = 0.0_wp
+      if (rheo%beta > 0.0_wp) then
+         amp = sqrt(2.0_wp*rheo%conductivity*rheo%eta_w/rheo%beta)/h
+         zeta = 0.5_wp*sqrt(rheo%beta*rheo%eta_w/(2.0_wp*rheo%conductivity))
+      end if
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
       do z = 1, nz
          lo = edges(z)
@@ -111,9 +135,14 @@ contains
             half = b*sqrt(1.0_wp - xi2)
             f = 0.0_wp
             q = 0.0_wp
-            do i = 1, n_strip
+            do i = 1, m
                p = p0*sqrt((1.0_wp - xi2)*(1.0_wp - y(i)**2))
-               tau = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)
+               e_half = exp(0.5_wp*rheo%alpha*p)
+               if (rheo%beta > 0.0_wp) then
+                  tau = amp*e_half*shear_shape(zeta*abs(u)*e_half)
+               else
+                  tau = rheo%eta_w*e_half*e_half*abs(u)/h
+               end if
                f = f + half*wy(i)*tau
                q = q + half*wy(i)*p
             end do
