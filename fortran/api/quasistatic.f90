@@ -179,7 +179,7 @@ end subroutine adore_mount_races
 !>   p_o, p_i (Pa), a_o, a_i, b_o, b_i, delta_o, delta_i (m), orbital speed, spin speed (rad/s),
 !>   pitch (rad), slip_o, slip_i (m/s), trac_o, trac_i (-), spin/roll o, i (-), loss_o, loss_i (W),
 !>   film_o, film_i (m), thermal factor o, i (-); NaN film columns for an unlubricated deck]
-!> summary(19) = bearing power loss (W)
+!> summary(19) = bearing power loss (W), summary(20) = modified (Tallian) life (h)
 !> summary(20): [inner fit, outer fit, clearance (m), basic life, basic life outer, inner (h),
 !>   inner race u(5), inner force(3), inner moment(3), passes]
 subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, message)
@@ -250,6 +250,7 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
       balls(1:n, 27:28) = transpose(s%film)
       balls(1:n, 29:30) = transpose(s%thermal_factor)
       summary(19) = s%power_loss
+      summary(20) = s%modified_life_hours
       summary(1:3) = [s%mounting%inner_fit, s%mounting%outer_fit, s%mounting%clearance]
       summary(4:6) = [s%basic_life_hours, s%basic_life_outer, s%basic_life_inner]
       summary(7:11) = e%u

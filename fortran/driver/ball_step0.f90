@@ -27,6 +27,7 @@ module adore_driver_ball_step0
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
                                            life_hours
+   use adore_life_tallian, only: ball_race_modified_life
    implicit none
    private
 
@@ -51,7 +52,7 @@ module adore_driver_ball_step0
       real(wp) :: basic_life_hours = 0.0_wp        !< bearing basic (Lundberg-Palmgren) life (h)
       real(wp) :: basic_life_outer = 0.0_wp        !< outer race (h)
       real(wp) :: basic_life_inner = 0.0_wp        !< inner race (h)
-      real(wp) :: modified_life_hours = 0.0_wp     !< NaN: needs film and traction
+      real(wp) :: modified_life_hours = 0.0_wp     !< bearing modified (Tallian) life (h)
       real(wp) :: inner_weight(3) = 0.0_wp, outer_weight(3) = 0.0_wp   !< race weights (N)
       !> cage state and geometric interactions; axial positions from the outer groove
       !> curvature centre plane (the print's axial frame, see adore_cage_step0)
@@ -81,8 +82,8 @@ contains
       type(ball_qs_bearing_t) :: qb
       type(ball_qs_load_t) :: ld
       type(life_params_t) :: lp
-      real(wp), allocatable :: lives(:), speed_rpm(:)
-      real(wp) :: n_o, n_i, wi_rpm, wo_rpm, race_centre(3, 2)
+      real(wp), allocatable :: lives_o(:), lives_i(:), speed_rpm(:)
+      real(wp) :: n_o, n_i, m_o, m_i, psi, wi_rpm, wo_rpm, race_centre(3, 2)
       real(wp), allocatable :: centres(:, :)
 
       if (b%n_elements < 1 .or. b%d <= 0.0_wp .or. b%dm <= b%d) then
@@ -123,21 +124,29 @@ contains
       call contact_tribology(error)
       if (allocated(error)) return
 
-      ! basic life, eqs 73-74 and 102 (inner race rotating, outer stationary)
-      allocate (lives(b%n_elements), speed_rpm(b%n_elements))
+      ! basic life, eqs 73-74 and 102 (inner race rotating, outer stationary), and the
+      ! Tallian modified life, eqs 77-109: film parameter Lambda = (iso film x thermal
+      ! reduction factor) / composite roughness, mu_EHD = the printed traction coefficient,
+      ! the races' hoop stress of the mounting (docs/life-model.md, M1-M3); an unloaded or
+      ! unlubricated contact counts as no film (M5)
+      allocate (lives_o(b%n_elements), lives_i(b%n_elements), speed_rpm(b%n_elements))
       speed_rpm = s%start%kinematics%orbital_speed*30.0_wp/pi
       wi_rpm = b%speed_inner*30.0_wp/pi
       wo_rpm = b%speed_outer*30.0_wp/pi
       associate (e => s%start%equilibrium)
          call ball_race_lp_life(lp, e%q_o, e%alpha_o, pass_cycles(speed_rpm, wo_rpm, wi_rpm, wo_rpm), &
-                                b%f_o, b%d, b%dm, .true., .false., lives, n_o)
+                                b%f_o, b%d, b%dm, .true., .false., lives_o, n_o)
          call ball_race_lp_life(lp, e%q_i, e%alpha_i, pass_cycles(speed_rpm, wi_rpm, wi_rpm, wo_rpm), &
-                                b%f_i, b%d, b%dm, .false., .true., lives, n_i)
+                                b%f_i, b%d, b%dm, .false., .true., lives_i, n_i)
+         call ball_race_modified_life(lp, lives_o, n_o, e%c_o%max_pressure, film_parameter(1), &
+                                      no_nan(s%trac_coeff(1, :)), s%mounting%outer_hoop_stress, .false., psi, m_o)
+         call ball_race_modified_life(lp, lives_i, n_i, e%c_i%max_pressure, film_parameter(2), &
+                                      no_nan(s%trac_coeff(2, :)), s%mounting%inner_hoop_stress, .true., psi, m_i)
       end associate
       s%basic_life_outer = life_hours(n_o, wi_rpm - wo_rpm)
       s%basic_life_inner = life_hours(n_i, wi_rpm - wo_rpm)
       s%basic_life_hours = life_hours(bearing_life(n_o, n_i, lp%weibull_e_point), wi_rpm - wo_rpm)
-      s%modified_life_hours = ieee_value(1.0_wp, ieee_quiet_nan)
+      s%modified_life_hours = life_hours(bearing_life(m_o, m_i, lp%weibull_e_point), wi_rpm - wo_rpm)
 
       ! cage (section 4.4.4): ball centres and race centres in the print's axial frame
       associate (e => s%start%equilibrium)
@@ -154,6 +163,20 @@ contains
       end associate
 
    contains
+
+      !> Film parameter Lambda of race j's contacts (0 where the film is not computed).
+      function film_parameter(j) result(lam)
+         integer, intent(in) :: j
+         real(wp) :: lam(b%n_elements)
+         lam = no_nan(s%film(j, :)*s%thermal_factor(j, :))/lp%sigma_rms
+      end function film_parameter
+
+      !> The not-computed entries (NaN) of v as 0.
+      pure function no_nan(v) result(w)
+         real(wp), intent(in) :: v(:)
+         real(wp) :: w(size(v))
+         w = merge(v, 0.0_wp, v == v)
+      end function no_nan
 
       !> The start with the EHD traction (model 3) in the minimum-dissipation search (report
       !> 4.4.7 with the run's own traction model): the films of the current state are held

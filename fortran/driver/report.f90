@@ -266,6 +266,8 @@ contains
          bodies(2, 5) = b%speed_outer*rpm
          bodies(3, 2) = hypot(e%u(2), e%u(3))
          bodies(3, 5) = b%speed_inner*rpm
+         bodies(2, 10) = s%mounting%outer_hoop_stress  ! largest hoop stress (adore_mounting_fits)
+         bodies(3, 10) = s%mounting%inner_hoop_stress
          ! section 3: forces of the balls on the races and the reactions holding them
          loads = nan
          loads(2, 1:3) = e%outer_force
@@ -372,6 +374,8 @@ contains
          bodies(2, 5) = b%speed_outer*rpm
          bodies(3, 2) = hypot(e%u(1), e%u(2))
          bodies(3, 5) = b%speed_inner*rpm
+         bodies(2, 10) = s%mounting%outer_hoop_stress
+         bodies(3, 10) = s%mounting%inner_hoop_stress
          loads = nan
          loads(2, 1:3) = e%outer_force
          loads(2, 4:6) = e%outer_moment

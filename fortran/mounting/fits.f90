@@ -12,6 +12,12 @@
 !> * radial displacement of the free surface of each body under p (outer surface of the
 !>   outer body grows by 2 p a**2 b/(E (b**2-a**2)); inner surface of the inner body
 !>   shrinks by 2 p a**2 c/(E (a**2-c**2))).
+!> * hoop stress at the bore r = a of a ring a <= r <= b with pressures p_a (bore), p_b
+!>   (outside), spinning at w (plane stress):
+!>     sigma(a) = (p_a (a**2 + b**2) - 2 p_b b**2) / (b**2 - a**2) + rho w**2 / 4 [(3+nu) b**2 + (1-nu) a**2]
+!>   the largest hoop stress of the ring; the report prints it as the races' section-2
+!>   "Stress" (Appendix C: IRace 1.184E+08 = fit + spin at the bore, ORace -6.402E+06 = fit
+!>   at the raceway; Appendix D IRace 1.532E+08).
 !> The rotating inner race and shaft: the effective fit is the mounted interference less
 !> the difference of their free centrifugal growths at the bore; the raceway then grows by
 !> the race's free centrifugal growth plus the growth from the effective fit.  The outer
@@ -23,7 +29,7 @@ module adore_mounting_fits
    implicit none
    private
 
-   public :: ring_t, mounting_t, mount_races, spin_growth, fit_pressure
+   public :: ring_t, mounting_t, mount_races, spin_growth, fit_pressure, bore_hoop_stress
 
    !> An elastic ring (annulus) of a material.
    type :: ring_t
@@ -41,6 +47,8 @@ module adore_mounting_fits
       real(wp) :: inner_pressure = 0.0_wp    !< shaft/inner race interface pressure (Pa)
       real(wp) :: outer_pressure = 0.0_wp    !< housing/outer race interface pressure (Pa)
       real(wp) :: inner_raceway_growth = 0.0_wp   !< radial growth of the inner raceway (m)
+      real(wp) :: inner_hoop_stress = 0.0_wp  !< inner race hoop stress at its bore (Pa)
+      real(wp) :: outer_hoop_stress = 0.0_wp  !< outer race hoop stress at its bore, the raceway (Pa)
       real(wp) :: outer_raceway_shrink = 0.0_wp   !< radial inward motion of the outer raceway (m)
       real(wp) :: clearance = 0.0_wp         !< operating internal diametral clearance (m)
    end type mounting_t
@@ -108,6 +116,22 @@ contains
       m%outer_raceway_shrink = 2.0_wp*m%outer_pressure*a**2*c/(outer_race%modulus*(a**2 - c**2)) &
                                - spin_growth(outer_race, c, w_outer)
       m%clearance = dia_play - 2.0_wp*(m%inner_raceway_growth + m%outer_raceway_shrink)
+      m%inner_hoop_stress = bore_hoop_stress(inner_race, m%inner_pressure, 0.0_wp, w_inner)
+      m%outer_hoop_stress = bore_hoop_stress(outer_race, 0.0_wp, m%outer_pressure, w_outer)
    end function mount_races
+
+   !> Hoop stress (Pa) at the bore of ring g with pressure p_in on the bore and p_out
+   !> outside (Pa), spinning at w (rad/s): Lame plus rotating disc (module header).
+   pure function bore_hoop_stress(g, p_in, p_out, w) result(sigma)
+      type(ring_t), intent(in) :: g
+      real(wp), intent(in) :: p_in, p_out, w
+      real(wp) :: sigma
+      real(wp) :: a, b
+
+      a = 0.5_wp*g%inner_diameter
+      b = 0.5_wp*g%outer_diameter
+      sigma = (p_in*(a**2 + b**2) - 2.0_wp*p_out*b**2)/(b**2 - a**2) &
+              + 0.25_wp*g%density*w**2*((3.0_wp + g%poisson)*b**2 + (1.0_wp - g%poisson)*a**2)
+   end function bore_hoop_stress
 
 end module adore_mounting_fits

@@ -86,7 +86,7 @@ BALL_STEP0_COLUMNS = ["azimuth", "x", "r", "alpha_o", "alpha_i", "q_o", "q_i", "
 BALL_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "basic_life_h", "basic_life_outer_h",
                       "basic_life_inner_h", "u_x", "u_y", "u_z", "theta_y", "theta_z", "inner_force_x",
                       "inner_force_y", "inner_force_z", "inner_moment_x", "inner_moment_y", "inner_moment_z",
-                      "passes", "power_loss"]
+                      "passes", "power_loss", "modified_life_h"]
 
 
 def ball_step0_from_deck(deck_path: str | os.PathLike, nmax: int = 200) -> tuple[dict, dict]:
