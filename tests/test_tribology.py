@@ -130,6 +130,29 @@ def test_ehd_contact_isothermal_limit_is_the_viscous_integral():
     assert err[1] < err[0] / 10
 
 
+def test_ehd_flash_isothermal_film_is_the_uniform_flux_closed_form():
+    """beta = alpha = 0: the film's heat eta u**2 / h is uniform across each strip, and a
+    uniform flux q on a strip of half width b_k raises it by 2 q sqrt(b_k (1 + y/b_k)) /
+    (2 sqrt(pi rho c k U)) (eq 35); the contact average (eq 36) is then a single integral
+    along the major axis, evaluated here on a fine uniform grid."""
+    g = CONTACTS["inner"]
+    eta, h, b, speed = 0.01, 1.0e-6, 0.4e-3, 75.0
+    avg, peak = _core.ehd_temperature_rise(g["side"], g["alpha"], g["rho"], g["r_b"], g["omega"], g["race_speed"],
+                                           g["a"], g["load"], (eta, 0.0, 0.0, 0.14), h, b, speed, speed,
+                                           STEEL, STEEL, n_gauss=64, ny=401)
+    s = np.linspace(-g["a"], g["a"], 40001)
+    mid = 0.5 * (s[1:] + s[:-1])
+    u = np.asarray(_core.contact_slip(**{k: v for k, v in g.items() if k != "load"}, s=mid))
+    bk = b * np.sqrt(1 - (mid / g["a"]) ** 2)
+    q = eta * u**2 / h
+    denom = 2 * math.sqrt(math.pi * STEEL[0] * STEEL[1] * STEEL[2] * speed)
+    # integral over the strip of 2 q sqrt(b_k + y) dy, y in [-b_k, b_k] = 2 q (2/3) (2 b_k)**1.5
+    strip = 2 * q * (2 / 3) * (2 * bk) ** 1.5 / denom
+    exact = np.sum(strip) * (s[1] - s[0]) / (math.pi * g["a"] * b)
+    assert avg == pytest.approx(exact, rel=2e-4)           # measured 4e-5 (trapezoid in y, sqrt edge)
+    assert peak == pytest.approx(np.max(2 * q * np.sqrt(2 * bk) / denom), rel=1e-4)
+
+
 CONTACTS = {  # report-like contacts (ball 2 of Appendix C, outer and inner), orbit frame
     "outer": dict(side=1, alpha=math.radians(8.334), rho=D_BALL / 2, r_b=0.070045,
                   omega=(-7801.3, 1139.7), race_speed=-943.11, a=2.367e-3, load=2457.0),

@@ -258,3 +258,28 @@ subroutine adore_tribo_film_shear(n, u, eta_w, beta, k_f, h, tau, status, messag
    end if
    tau = film_shear_stress(eta_w, beta, k_f, u, h)
 end subroutine adore_tribo_film_shear
+
+!> Flash temperature rise of a ball/race contact with its EHD heat (ehd_temperature_rise):
+!> geom, rheo, h, b as adore_tribo_ehd_contact; u1, u2 (m/s); th1, th2 = [density, heat
+!> capacity, conductivity]; result = [average, largest] rise (K).
+subroutine adore_tribo_ehd_temperature(geom, rheo, h, b, n_gauss, ny, u1, u2, th1, th2, result, status, message)
+   use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_temperature_rise
+   use adore_api_unpack, only: contact_from_geom
+   implicit none
+   real(wp), intent(in) :: geom(9), rheo(4), h, b, u1, u2, th1(3), th2(3)
+   integer, intent(in) :: n_gauss, ny
+   real(wp), intent(out) :: result(2)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+   type(error_type), allocatable :: error
+
+   result = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   call ehd_temperature_rise(contact_from_geom(geom), ehd_rheology_t(eta_w=rheo(1), alpha=rheo(2), beta=rheo(3), &
+                             conductivity=rheo(4)), h, b, n_gauss, ny, u1, u2, th1, th2, result(1), result(2), error)
+   if (allocated(error)) call set_error(error, status, message)
+end subroutine adore_tribo_ehd_temperature

@@ -22,7 +22,7 @@ module adore_driver_ball_step0
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
@@ -42,6 +42,8 @@ module adore_driver_ball_step0
    integer, parameter, public :: PRINT_GAUSS = 4
    !> Gauss points per slip zone and across each strip of the EHD traction's loss and force
    integer, parameter, public :: EHD_GAUSS = 16, EHD_STRIP = 24
+   !> Uniform points per strip of the flash temperature (eqs 39-43)
+   integer, parameter, public :: FLASH_POINTS = 201
    !> Rec 10.0 traction_model of the EHD film traction (report Table 5, model 3)
    integer, parameter, public :: TRACTION_EHD = 3
 
@@ -64,6 +66,8 @@ module adore_driver_ball_step0
       real(wp), allocatable :: loss(:, :)          !< contact power loss (W), eq (4)
       real(wp), allocatable :: film(:, :)          !< isothermal central film (m); NaN unlubricated
       real(wp), allocatable :: thermal_factor(:, :)  !< inlet thermal reduction factor (-); NaN unlubricated
+      real(wp), allocatable :: temp_rise(:, :)     !< average flash temperature rise (K), eqs 35-36; EHD only
+      real(wp), allocatable :: contact_temp(:, :)  !< surface (wall) temperature of the contact (K)
       real(wp) :: power_loss = 0.0_wp              !< bearing power loss: sum of contact losses (W)
    end type ball_step0_t
 
@@ -241,13 +245,38 @@ contains
          end associate
       end subroutine current_films
 
-      !> The lubricant's traction rheology at the wall temperature of a race contact (mean
-      !> of the ball and race temperatures, Rec 2.7).
+      !> Wall temperature (K) of a race contact: mean of the ball and race temperatures
+      !> (Rec 2.7).  At step 0 the contact temperature rise is not fed back (the report
+      !> prints Contact Temp = 323 K, its deck temperature).
+      pure function wall_temperature(race) result(t_w)
+         integer, intent(in) :: race
+         real(wp) :: t_w
+         t_w = 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, race == BODY_OUTER)))
+      end function wall_temperature
+
+      !> Average flash temperature rise (K) of a race contact with its EHD heat (report
+      !> 2.7-2.8, eqs 35-36): both surfaces moving at the entraining speed u_e (m/s), ball
+      !> and race materials of Rec 8.
+      subroutine ehd_flash(cj, b_minor, race, h, u_e, rise, error)
+         type(ball_race_contact_t), intent(in) :: cj
+         real(wp), intent(in) :: b_minor, h, u_e
+         integer, intent(in) :: race
+         real(wp), intent(out) :: rise
+         type(error_type), allocatable, intent(out) :: error
+         real(wp) :: dt_max
+         associate (m1 => b%material(BODY_ELEMENT), m2 => b%material(race))
+            call ehd_temperature_rise(cj, wall_rheology(race), h, b_minor, EHD_GAUSS, FLASH_POINTS, u_e, u_e, &
+                                      [m1%density, m1%heat_capacity, m1%conductivity], &
+                                      [m2%density, m2%heat_capacity, m2%conductivity], rise, dt_max, error)
+         end associate
+      end subroutine ehd_flash
+
+      !> The lubricant's traction rheology at the wall temperature of a race contact.
       function wall_rheology(race) result(rheo)
          integer, intent(in) :: race
          type(ehd_rheology_t) :: rheo
          real(wp) :: t_w
-         t_w = 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, race == BODY_OUTER)))
+         t_w = wall_temperature(race)
          rheo = ehd_rheology_t(eta_w=traction_viscosity(b%lubricant, t_w), alpha=b%lubricant%alpha_t, &
                                beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity)
       end function wall_rheology
@@ -265,13 +294,16 @@ contains
 
          nan = ieee_value(1.0_wp, ieee_quiet_nan)
          allocate (s%slip(2, b%n_elements), s%trac_coeff(2, b%n_elements), s%spin_roll(2, b%n_elements), &
-                   s%loss(2, b%n_elements), s%film(2, b%n_elements), s%thermal_factor(2, b%n_elements))
+                   s%loss(2, b%n_elements), s%film(2, b%n_elements), s%thermal_factor(2, b%n_elements), &
+                   s%temp_rise(2, b%n_elements), s%contact_temp(2, b%n_elements))
          s%slip = nan
          s%trac_coeff = nan
          s%spin_roll = nan
          s%loss = nan
          s%film = nan
          s%thermal_factor = nan
+         s%temp_rise = nan
+         s%contact_temp = nan
          s%power_loss = 0.0_wp
          associate (e => s%start%equilibrium, kin => s%start%kinematics)
             do k = 1, b%n_elements
@@ -298,6 +330,11 @@ contains
                                           merge(BODY_OUTER, BODY_INNER, j == 1), &
                                           s%film(j, k)*s%thermal_factor(j, k), t, error)
                         if (allocated(error)) return
+                        call ehd_flash(c(j), merge(e%c_o(k)%semi_minor, e%c_i(k)%semi_minor, j == 1), &
+                                       merge(BODY_OUTER, BODY_INNER, j == 1), s%film(j, k)*s%thermal_factor(j, k), &
+                                       abs(t%rolling_speed), s%temp_rise(j, k), error)
+                        if (allocated(error)) return
+                        s%contact_temp(j, k) = wall_temperature(merge(BODY_OUTER, BODY_INNER, j == 1))
                      end if
                   end if
                   s%slip(j, k) = t%node_slip

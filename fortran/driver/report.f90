@@ -260,6 +260,10 @@ contains
          thermal(:, 2) = e%delta_o
          thermal(:, 3) = e%delta_i
          thermal(:, 4:5) = 0.0_wp                      ! rigid races: no race flexing
+         thermal(:, 6) = s%temp_rise(1, :)
+         thermal(:, 7) = s%temp_rise(2, :)
+         thermal(:, 8) = s%contact_temp(1, :)
+         thermal(:, 9) = s%contact_temp(2, :)
          ! section 2 bodies: Cage, ORace, IRace
          bodies(2:3, :) = nan
          bodies(2, 1:2) = 0.0_wp                       ! outer race fixed

@@ -25,12 +25,13 @@ module adore_tribology_ehd_traction
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
    use adore_core_quadrature, only: gauss_legendre
+   use adore_tribology_flash, only: strip_temperature_rise
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, slip_zones, &
                                    interior_extremum
    implicit none
    private
 
-   public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction
+   public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_temperature_rise
 
    real(wp), parameter :: pi = acos(-1.0_wp)
 
@@ -158,5 +159,59 @@ contains
       call interior_extremum(c, t%max_slip)
       t%coefficient = t%force/c%load
    end subroutine ehd_contact_traction
+
+   !> Average (eq 36) and largest flash temperature rise (K) of contact c with the heat of
+   !> its EHD film: flux q = tau(p, u) |u| (W/m**2) on strips across the minor axis at the
+   !> n_gauss Gauss points per slip zone of the major axis, ny >= 2 uniform points per
+   !> strip, each strip by eq 35 (adore_tribology_flash); rheo, h, b as ehd_contact_traction;
+   !> u1, u2 surface speeds (m/s) and th1, th2 = [density, heat capacity, conductivity] of
+   !> the two bodies.
+   subroutine ehd_temperature_rise(c, rheo, h, b, n_gauss, ny, u1, u2, th1, th2, dt_avg, dt_max, error)
+      type(ball_race_contact_t), intent(in) :: c
+      type(ehd_rheology_t), intent(in) :: rheo
+      real(wp), intent(in) :: h, b, u1, u2, th1(3), th2(3)
+      integer, intent(in) :: n_gauss, ny
+      real(wp), intent(out) :: dt_avg, dt_max
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_traction_t) :: t
+      real(wp), allocatable :: x(:), w(:), eta(:), q(:), dt(:), p(:)
+      real(wp) :: edges(4), lo, hi, ds, s, u, ek, bk, p0, strip
+      integer :: nz, z, j, i
+
+      dt_avg = 0.0_wp
+      dt_max = 0.0_wp
+      call ehd_contact_traction(c, rheo, h, b, 1, 1, t, error)      ! validates the inputs
+      if (allocated(error)) return
+      if (ny < 2 .or. n_gauss < 1 .or. .not. (minval(th1) > 0.0_wp .and. minval(th2) > 0.0_wp .and. &
+                                               abs(u1) + abs(u2) > 0.0_wp)) then
+         call input_error(error, "EHD temperature: need n_gauss >= 1, ny >= 2, positive thermal properties "// &
+                          "and a moving surface")
+         return
+      end if
+      call slip_zones(c, t, edges, nz)
+      allocate (x(n_gauss), w(n_gauss), eta(ny), q(ny), dt(ny), p(ny))
+      call gauss_legendre(n_gauss, x, w)
+      eta = [(-1.0_wp + 2.0_wp*real(i - 1, wp)/real(ny - 1, wp), i=1, ny)]
+      p0 = 1.5_wp*c%load/(pi*c%a*b)
+      do z = 1, nz
+         lo = edges(z)
+         hi = edges(z + 1)
+         ds = 0.5_wp*(hi - lo)
+         do j = 1, n_gauss
+            s = 0.5_wp*(lo + hi) + ds*x(j)
+            ek = 1.0_wp - (s/c%a)**2
+            if (ek <= 0.0_wp) cycle
+            u = contact_slip(c, s)
+            bk = b*sqrt(ek)
+            p = p0*sqrt(ek)*sqrt(max(1.0_wp - eta**2, 0.0_wp))
+            q = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)*abs(u)
+            call strip_temperature_rise(bk, eta, q, u1, u2, th1, th2, dt)
+            strip = bk*(sum(dt) - 0.5_wp*(dt(1) + dt(ny)))*(eta(2) - eta(1))    ! trapezoid over y
+            dt_avg = dt_avg + ds*w(j)*strip
+            dt_max = max(dt_max, maxval(dt))
+         end do
+      end do
+      dt_avg = dt_avg/(pi*c%a*b)
+   end subroutine ehd_temperature_rise
 
 end module adore_tribology_ehd_traction

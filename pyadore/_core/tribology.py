@@ -123,3 +123,19 @@ def film_shear_stress(u, eta_w: float, beta: float, k_f: float, h: float):
                                                             k_f, h)
     check(int(status), message)
     return tau
+
+
+def ehd_temperature_rise(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float,
+                         load: float, rheology, film: float, b: float, u1: float, u2: float, th1, th2,
+                         n_gauss: int = 16, ny: int = 201) -> tuple[float, float]:
+    """(average, largest) flash temperature rise (K) of a ball/race contact heated by its EHD
+    film (report eqs 35-36); arguments as ehd_contact_traction plus the surface speeds u1, u2
+    (m/s) and th1, th2 = (density, heat capacity, conductivity) of the two bodies."""
+    import numpy as np
+
+    values, status, message = _engine().adore_tribo_ehd_temperature(
+        _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load), np.asarray(rheology, float),
+        float(film), float(b), int(n_gauss), int(ny), float(u1), float(u2), np.asarray(th1, float),
+        np.asarray(th2, float))
+    check(int(status), message)
+    return float(values[0]), float(values[1])
