@@ -26,7 +26,7 @@ module adore_tribology_ehd_traction
    use adore_core_error, only: error_type, input_error
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_flash, only: strip_temperature_rise
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, slip_zones, &
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
                                    interior_extremum
    implicit none
    private
@@ -85,8 +85,8 @@ contains
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: x(:), w(:), y(:), wy(:)
-      real(wp) :: edges(4), lo, hi, ds, s, u, xi2, p0, half, p, f, q, tau, amp, zeta, e_half
-      integer :: nz, z, j, i, m
+      real(wp) :: u, xi2, p0, half, p, f, q, tau, amp, zeta, e_half
+      integer :: j, i, m
 
       if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load > 0.0_wp &
                  .and. c%r_b > c%rho .and. abs(c%side) == 1 .and. b > 0.0_wp)) then
@@ -102,9 +102,8 @@ contains
          call input_error(error, "EHD traction: need at least one Gauss point per zone and per strip")
          return
       end if
-      call slip_zones(c, t, edges, nz)
-      allocate (x(n_gauss), w(n_gauss), y(n_strip), wy(n_strip))
-      call gauss_legendre(n_gauss, x, w)
+      call major_axis_nodes(c, n_gauss, t, x, w)
+      allocate (y(n_strip), wy(n_strip))
       call gauss_legendre(n_strip, y, wy)
       ! the strip integrand is even in y: the nodes y >= 0 with doubled weights (the centre
       ! node of an odd rule once)
@@ -125,36 +124,30 @@ contains
          zeta = 0.5_wp*sqrt(rheo%beta*rheo%eta_w/(2.0_wp*rheo%conductivity))
       end if
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
-      do z = 1, nz
-         lo = edges(z)
-         hi = edges(z + 1)
-         ds = 0.5_wp*(hi - lo)
-         do j = 1, n_gauss
-            s = 0.5_wp*(lo + hi) + ds*x(j)
-            u = contact_slip(c, s)
-            xi2 = (s/c%a)**2
-            half = b*sqrt(1.0_wp - xi2)
-            f = 0.0_wp
-            q = 0.0_wp
-            do i = 1, m
-               p = p0*sqrt((1.0_wp - xi2)*(1.0_wp - y(i)**2))
-               e_half = exp(0.5_wp*rheo%alpha*p)
-               if (rheo%beta > 0.0_wp) then
-                  tau = amp*e_half*shear_shape(zeta*abs(u)*e_half)
-               else
-                  tau = rheo%eta_w*e_half*e_half*abs(u)/h
-               end if
-               f = f + half*wy(i)*tau
-               q = q + half*wy(i)*p
-            end do
-            t%force = t%force + sign(f, u)*ds*w(j)
-            t%power = t%power + f*abs(u)*ds*w(j)
-            t%max_slip = max(t%max_slip, abs(u))
-            if (abs(u) >= t%node_slip) then
-               t%node_slip = abs(u)
-               if (q > 0.0_wp) t%node_coefficient = f/q
+      do j = 1, size(x)
+         u = contact_slip(c, x(j))
+         xi2 = (x(j)/c%a)**2
+         half = b*sqrt(1.0_wp - xi2)
+         f = 0.0_wp
+         q = 0.0_wp
+         do i = 1, m
+            p = p0*sqrt((1.0_wp - xi2)*(1.0_wp - y(i)**2))
+            e_half = exp(0.5_wp*rheo%alpha*p)
+            if (rheo%beta > 0.0_wp) then
+               tau = amp*e_half*shear_shape(zeta*abs(u)*e_half)
+            else
+               tau = rheo%eta_w*e_half*e_half*abs(u)/h
             end if
+            f = f + half*wy(i)*tau
+            q = q + half*wy(i)*p
          end do
+         t%force = t%force + sign(f, u)*w(j)
+         t%power = t%power + f*abs(u)*w(j)
+         t%max_slip = max(t%max_slip, abs(u))
+         if (abs(u) >= t%node_slip) then
+            t%node_slip = abs(u)
+            if (q > 0.0_wp) t%node_coefficient = f/q
+         end if
       end do
       call interior_extremum(c, t%max_slip)
       t%coefficient = t%force/c%load
@@ -175,8 +168,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(contact_traction_t) :: t
       real(wp), allocatable :: x(:), w(:), eta(:), q(:), dt(:), p(:)
-      real(wp) :: edges(4), lo, hi, ds, s, u, ek, bk, p0, strip
-      integer :: nz, z, j, i
+      real(wp) :: u, ek, bk, p0, strip
+      integer :: j, i
 
       dt_avg = 0.0_wp
       dt_max = 0.0_wp
@@ -188,28 +181,21 @@ contains
                           "and a moving surface")
          return
       end if
-      call slip_zones(c, t, edges, nz)
-      allocate (x(n_gauss), w(n_gauss), eta(ny), q(ny), dt(ny), p(ny))
-      call gauss_legendre(n_gauss, x, w)
+      call major_axis_nodes(c, n_gauss, t, x, w)
+      allocate (eta(ny), q(ny), dt(ny), p(ny))
       eta = [(-1.0_wp + 2.0_wp*real(i - 1, wp)/real(ny - 1, wp), i=1, ny)]
       p0 = 1.5_wp*c%load/(pi*c%a*b)
-      do z = 1, nz
-         lo = edges(z)
-         hi = edges(z + 1)
-         ds = 0.5_wp*(hi - lo)
-         do j = 1, n_gauss
-            s = 0.5_wp*(lo + hi) + ds*x(j)
-            ek = 1.0_wp - (s/c%a)**2
-            if (ek <= 0.0_wp) cycle
-            u = contact_slip(c, s)
-            bk = b*sqrt(ek)
-            p = p0*sqrt(ek)*sqrt(max(1.0_wp - eta**2, 0.0_wp))
-            q = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)*abs(u)
-            call strip_temperature_rise(bk, eta, q, u1, u2, th1, th2, dt)
-            strip = bk*(sum(dt) - 0.5_wp*(dt(1) + dt(ny)))*(eta(2) - eta(1))    ! trapezoid over y
-            dt_avg = dt_avg + ds*w(j)*strip
-            dt_max = max(dt_max, maxval(dt))
-         end do
+      do j = 1, size(x)
+         ek = 1.0_wp - (x(j)/c%a)**2
+         if (ek <= 0.0_wp) cycle
+         u = contact_slip(c, x(j))
+         bk = b*sqrt(ek)
+         p = p0*sqrt(ek)*sqrt(max(1.0_wp - eta**2, 0.0_wp))
+         q = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)*abs(u)
+         call strip_temperature_rise(bk, eta, q, u1, u2, th1, th2, dt)
+         strip = bk*(sum(dt) - 0.5_wp*(dt(1) + dt(ny)))*(eta(2) - eta(1))    ! trapezoid over y
+         dt_avg = dt_avg + w(j)*strip
+         dt_max = max(dt_max, maxval(dt))
       end do
       dt_avg = dt_avg/(pi*c%a*b)
    end subroutine ehd_temperature_rise

@@ -26,7 +26,7 @@ module adore_tribology_slip
 
    public :: ball_race_contact_t, contact_traction_t
    public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
-             slip_zones
+             major_axis_nodes
 
    integer, parameter, public :: SIDE_OUTER = 1   !< contact with the outer race
    integer, parameter, public :: SIDE_INNER = -1  !< contact with the inner race
@@ -146,8 +146,8 @@ contains
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: x(:), w(:)
-      real(wp) :: edges(4), lo, hi, s, ds, u, kap, dq
-      integer :: nz, z, j
+      real(wp) :: u, kap, dq
+      integer :: j
 
       if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load >= 0.0_wp &
                  .and. c%r_b > c%rho .and. abs(c%side) == 1)) then
@@ -158,27 +158,19 @@ contains
          call input_error(error, "contact traction: need at least one Gauss point per zone")
          return
       end if
-      call slip_zones(c, t, edges, nz)
-      allocate (x(n_gauss), w(n_gauss))
-      call gauss_legendre(n_gauss, x, w)
+      call major_axis_nodes(c, n_gauss, t, x, w)
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
-      do z = 1, nz
-         lo = edges(z)
-         hi = edges(z + 1)
-         ds = 0.5_wp*(hi - lo)
-         do j = 1, n_gauss
-            s = 0.5_wp*(lo + hi) + ds*x(j)
-            u = contact_slip(c, s)
-            kap = kappa_scale*traction_coefficient(coef(1), coef(2), coef(3), coef(4), abs(u))
-            dq = 0.75_wp*c%load/c%a*(1.0_wp - (s/c%a)**2)*ds*w(j)
-            t%force = t%force + sign(kap, u)*dq
-            t%power = t%power + kap*abs(u)*dq
-            t%max_slip = max(t%max_slip, abs(u))
-            if (abs(u) >= t%node_slip) then
-               t%node_slip = abs(u)
-               t%node_coefficient = kap
-            end if
-         end do
+      do j = 1, size(x)
+         u = contact_slip(c, x(j))
+         kap = kappa_scale*traction_coefficient(coef(1), coef(2), coef(3), coef(4), abs(u))
+         dq = 0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)
+         t%force = t%force + sign(kap, u)*dq
+         t%power = t%power + kap*abs(u)*dq
+         t%max_slip = max(t%max_slip, abs(u))
+         if (abs(u) >= t%node_slip) then
+            t%node_slip = abs(u)
+            t%node_coefficient = kap
+         end if
       end do
       ! a stationary point of u inside the contact (the sinusoid's extremum)
       call interior_extremum(c, t%max_slip)
@@ -205,6 +197,28 @@ contains
       edges(nr + 2) = c%a
       nz = nr + 1
    end subroutine slip_zones
+
+   !> Centre kinematics of contact c into t and the quadrature of the major axis: nodes
+   !> s(:) (m) and weights w(:) (m, sum 2a), n_gauss Gauss-Legendre points per slip zone
+   !> (zones split at the pure-rolling points, report 2.1).
+   pure subroutine major_axis_nodes(c, n_gauss, t, s, w)
+      type(ball_race_contact_t), intent(in) :: c
+      integer, intent(in) :: n_gauss
+      type(contact_traction_t), intent(inout) :: t
+      real(wp), allocatable, intent(out) :: s(:), w(:)
+      real(wp) :: edges(4), x(n_gauss), wx(n_gauss), lo, hi
+      integer :: nz, z
+
+      call slip_zones(c, t, edges, nz)
+      call gauss_legendre(n_gauss, x, wx)
+      allocate (s(nz*n_gauss), w(nz*n_gauss))
+      do z = 1, nz
+         lo = edges(z)
+         hi = edges(z + 1)
+         s((z - 1)*n_gauss + 1:z*n_gauss) = 0.5_wp*(lo + hi) + 0.5_wp*(hi - lo)*x
+         w((z - 1)*n_gauss + 1:z*n_gauss) = 0.5_wp*(hi - lo)*wx
+      end do
+   end subroutine major_axis_nodes
 
    !> Raise umax to |u| at the extremum of u(s) when it lies inside (-a, a).
    pure subroutine interior_extremum(c, umax)
