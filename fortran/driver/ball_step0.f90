@@ -86,7 +86,7 @@ contains
       type(ball_qs_bearing_t) :: qb
       type(ball_qs_load_t) :: ld
       type(life_params_t) :: lp
-      real(wp), allocatable :: lives_o(:), lives_i(:), speed_rpm(:)
+      real(wp), allocatable :: lives_o(:), lives_i(:), speed_rpm(:), p_max(:), mu(:)
       real(wp) :: n_o, n_i, m_o, m_i, psi, wi_rpm, wo_rpm, race_centre(3, 2)
       real(wp), allocatable :: centres(:, :)
 
@@ -133,7 +133,8 @@ contains
       ! reduction factor) / composite roughness, mu_EHD = the printed traction coefficient,
       ! the races' hoop stress of the mounting (docs/life-model.md, M1-M3); an unloaded or
       ! unlubricated contact counts as no film (M5)
-      allocate (lives_o(b%n_elements), lives_i(b%n_elements), speed_rpm(b%n_elements))
+      allocate (lives_o(b%n_elements), lives_i(b%n_elements), speed_rpm(b%n_elements), p_max(b%n_elements), &
+                mu(b%n_elements))
       speed_rpm = s%start%kinematics%orbital_speed*30.0_wp/pi
       wi_rpm = b%speed_inner*30.0_wp/pi
       wo_rpm = b%speed_outer*30.0_wp/pi
@@ -142,10 +143,14 @@ contains
                                 b%f_o, b%d, b%dm, .true., .false., lives_o, n_o)
          call ball_race_lp_life(lp, e%q_i, e%alpha_i, pass_cycles(speed_rpm, wi_rpm, wi_rpm, wo_rpm), &
                                 b%f_i, b%d, b%dm, .false., .true., lives_i, n_i)
-         call ball_race_modified_life(lp, lives_o, n_o, e%c_o%max_pressure, film_parameter(1), &
-                                      no_nan(s%trac_coeff(1, :)), s%mounting%outer_hoop_stress, .false., psi, m_o)
-         call ball_race_modified_life(lp, lives_i, n_i, e%c_i%max_pressure, film_parameter(2), &
-                                      no_nan(s%trac_coeff(2, :)), s%mounting%inner_hoop_stress, .true., psi, m_i)
+         p_max = e%c_o%max_pressure
+         mu = no_nan(s%trac_coeff(1, :))
+         call ball_race_modified_life(lp, lives_o, n_o, p_max, film_parameter(1), mu, &
+                                      s%mounting%outer_hoop_stress, .false., psi, m_o)
+         p_max = e%c_i%max_pressure
+         mu = no_nan(s%trac_coeff(2, :))
+         call ball_race_modified_life(lp, lives_i, n_i, p_max, film_parameter(2), mu, &
+                                      s%mounting%inner_hoop_stress, .true., psi, m_i)
       end associate
       s%basic_life_outer = life_hours(n_o, wi_rpm - wo_rpm)
       s%basic_life_inner = life_hours(n_i, wi_rpm - wo_rpm)
