@@ -6,9 +6,10 @@
 !> deck selects it, seeded by the deck curve's minimum) and the race-contact tribology of those
 !> speeds (slip, traction coefficient, spin/roll, contact power loss, report 2.1), and,
 !> for a lubricated deck, the isothermal central film and its thermal reduction factor
-!> (report 2.6; adore_tribology_film).  Quantities of later issues (temperature rise, cage
-!> contact forces, Tallian life) are not computed here and stay NaN, so the print shows
-!> them as not computed.
+!> (report 2.6; adore_tribology_film), the EHD traction and flash temperature rise (traction
+!> model 3), the basic and Tallian modified lives.  Quantities of later issues (cage
+!> contact forces, wear) are not computed here and stay NaN, so the print shows them as
+!> not computed.
 module adore_driver_ball_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
@@ -294,8 +295,8 @@ contains
          type(error_type), allocatable, intent(out) :: error
          type(ball_race_contact_t) :: c(2)
          type(contact_traction_t) :: t
-         real(wp) :: nan
-         integer :: k, j
+         real(wp) :: nan, h, b_minor(2), k_ell(2), p_h(2)
+         integer :: k, j, race
 
          nan = ieee_value(1.0_wp, ieee_quiet_nan)
          allocate (s%slip(2, b%n_elements), s%trac_coeff(2, b%n_elements), s%spin_roll(2, b%n_elements), &
@@ -315,31 +316,25 @@ contains
                c = ball_contacts(b%d, e%r(k), e%n_o(:, k), e%n_i(:, k), b%speed_outer, b%speed_inner, &
                                  [e%c_o(k)%semi_major, e%c_i(k)%semi_major], [e%q_o(k), e%q_i(k)], &
                                  kin(k)%pitch, kin(k)%spin_speed, kin(k)%orbital_speed)
+               b_minor = [e%c_o(k)%semi_minor, e%c_i(k)%semi_minor]
+               k_ell = [e%c_o(k)%semi_major, e%c_i(k)%semi_major]/max(b_minor, tiny(1.0_wp))
+               p_h = [e%c_o(k)%max_pressure, e%c_i(k)%max_pressure]
                do j = 1, 2
                   if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
+                  race = merge(BODY_OUTER, BODY_INNER, j == 1)
                   call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
                   if (allocated(error)) return
                   if (b%lubricant_code /= 0) then
-                     if (j == 1) then
-                        call lubricant_film(t, e%c_o(k)%semi_major/e%c_o(k)%semi_minor, e%q_o(k), &
-                                            e%c_o(k)%max_pressure, BODY_OUTER, s%film(j, k), &
-                                            s%thermal_factor(j, k), error)
-                     else
-                        call lubricant_film(t, e%c_i(k)%semi_major/e%c_i(k)%semi_minor, e%q_i(k), &
-                                            e%c_i(k)%max_pressure, BODY_INNER, s%film(j, k), &
-                                            s%thermal_factor(j, k), error)
-                     end if
+                     call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), race, s%film(j, k), &
+                                         s%thermal_factor(j, k), error)
                      if (allocated(error)) return
                      if (b%traction_model == TRACTION_EHD) then
-                        call ehd_traction(c(j), merge(e%c_o(k)%semi_minor, e%c_i(k)%semi_minor, j == 1), &
-                                          merge(BODY_OUTER, BODY_INNER, j == 1), &
-                                          s%film(j, k)*s%thermal_factor(j, k), t, error)
+                        h = s%film(j, k)*s%thermal_factor(j, k)
+                        call ehd_traction(c(j), b_minor(j), race, h, t, error)
                         if (allocated(error)) return
-                        call ehd_flash(c(j), merge(e%c_o(k)%semi_minor, e%c_i(k)%semi_minor, j == 1), &
-                                       merge(BODY_OUTER, BODY_INNER, j == 1), s%film(j, k)*s%thermal_factor(j, k), &
-                                       abs(t%rolling_speed), s%temp_rise(j, k), error)
+                        call ehd_flash(c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
                         if (allocated(error)) return
-                        s%contact_temp(j, k) = wall_temperature(merge(BODY_OUTER, BODY_INNER, j == 1))
+                        s%contact_temp(j, k) = wall_temperature(race)
                      end if
                   end if
                   s%slip(j, k) = t%node_slip

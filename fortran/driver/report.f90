@@ -2,8 +2,8 @@
 !> physics): the input echo record from the deck and the bearing model, and the step-0
 !> tables of a ball bearing from its quasi-static start.
 !>
-!> A value pyadore does not compute yet (traction, film, temperatures rise, power loss,
-!> cage contacts, modified life, deck fields whose meaning is not identified) is left as
+!> A value pyadore does not compute yet (cage contact forces, wear, the roller's modified
+!> life, deck fields whose meaning is not identified) is left as
 !> IEEE NaN / INT_NOT_COMPUTED and prints "NaN": the print never shows a made-up number.
 module adore_driver_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
