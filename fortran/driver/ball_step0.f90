@@ -228,28 +228,37 @@ contains
          integer :: k, j
 
          allocate (films(b%n_elements))
-         associate (e => s%start%equilibrium, kin => s%start%kinematics)
-            do k = 1, b%n_elements
-               c = ball_contacts(b%d, e%r(k), e%n_o(:, k), e%n_i(:, k), b%speed_outer, b%speed_inner, &
-                                 [e%c_o(k)%semi_major, e%c_i(k)%semi_major], [e%q_o(k), e%q_i(k)], &
-                                 kin(k)%pitch, kin(k)%spin_speed, kin(k)%orbital_speed)
-               b_minor = [e%c_o(k)%semi_minor, e%c_i(k)%semi_minor]
-               k_ell = [e%c_o(k)%semi_major, e%c_i(k)%semi_major]/max(b_minor, tiny(1.0_wp))
-               p_h = [e%c_o(k)%max_pressure, e%c_i(k)%max_pressure]
-               do j = 1, 2
-                  films(k)%rheo(j) = wall_rheology(merge(BODY_OUTER, BODY_INNER, j == 1))
-                  films(k)%b(j) = b_minor(j)
-                  if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
-                  call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
-                  if (allocated(error)) return
-                  call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
-                                      h, phi, error)
-                  if (allocated(error)) return
-                  films(k)%h(j) = h*phi
-               end do
+         do k = 1, b%n_elements
+            call ball_race_contacts(k, c, b_minor, k_ell, p_h)
+            do j = 1, 2
+               films(k)%rheo(j) = wall_rheology(merge(BODY_OUTER, BODY_INNER, j == 1))
+               films(k)%b(j) = b_minor(j)
+               if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
+               call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
+               if (allocated(error)) return
+               call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
+                                   h, phi, error)
+               if (allocated(error)) return
+               films(k)%h(j) = h*phi
             end do
-         end associate
+         end do
       end subroutine current_films
+
+      !> Ball k's two race contacts at the start's speeds (outer first, ball_contacts), with
+      !> their semi-minor axes (m), ellipticities a/b and largest Hertz pressures (Pa).
+      subroutine ball_race_contacts(k, c, b_minor, k_ell, p_h)
+         integer, intent(in) :: k
+         type(ball_race_contact_t), intent(out) :: c(2)
+         real(wp), intent(out) :: b_minor(2), k_ell(2), p_h(2)
+         associate (e => s%start%equilibrium, kin => s%start%kinematics)
+            c = ball_contacts(b%d, e%r(k), e%n_o(:, k), e%n_i(:, k), b%speed_outer, b%speed_inner, &
+                              [e%c_o(k)%semi_major, e%c_i(k)%semi_major], [e%q_o(k), e%q_i(k)], &
+                              kin(k)%pitch, kin(k)%spin_speed, kin(k)%orbital_speed)
+            b_minor = [e%c_o(k)%semi_minor, e%c_i(k)%semi_minor]
+            k_ell = [e%c_o(k)%semi_major, e%c_i(k)%semi_major]/max(b_minor, tiny(1.0_wp))
+            p_h = [e%c_o(k)%max_pressure, e%c_i(k)%max_pressure]
+         end associate
+      end subroutine ball_race_contacts
 
       !> Wall temperature (K) of a race contact: mean of the ball and race temperatures
       !> (Rec 2.7).  At step 0 the contact temperature rise is not fed back (the report
@@ -311,40 +320,33 @@ contains
          s%temp_rise = nan
          s%contact_temp = nan
          s%power_loss = 0.0_wp
-         associate (e => s%start%equilibrium, kin => s%start%kinematics)
-            do k = 1, b%n_elements
-               c = ball_contacts(b%d, e%r(k), e%n_o(:, k), e%n_i(:, k), b%speed_outer, b%speed_inner, &
-                                 [e%c_o(k)%semi_major, e%c_i(k)%semi_major], [e%q_o(k), e%q_i(k)], &
-                                 kin(k)%pitch, kin(k)%spin_speed, kin(k)%orbital_speed)
-               b_minor = [e%c_o(k)%semi_minor, e%c_i(k)%semi_minor]
-               k_ell = [e%c_o(k)%semi_major, e%c_i(k)%semi_major]/max(b_minor, tiny(1.0_wp))
-               p_h = [e%c_o(k)%max_pressure, e%c_i(k)%max_pressure]
-               do j = 1, 2
-                  if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
-                  race = merge(BODY_OUTER, BODY_INNER, j == 1)
-                  call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
+         do k = 1, b%n_elements
+            call ball_race_contacts(k, c, b_minor, k_ell, p_h)
+            do j = 1, 2
+               if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
+               race = merge(BODY_OUTER, BODY_INNER, j == 1)
+               call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
+               if (allocated(error)) return
+               if (b%lubricant_code /= 0) then
+                  call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), race, s%film(j, k), &
+                                      s%thermal_factor(j, k), error)
                   if (allocated(error)) return
-                  if (b%lubricant_code /= 0) then
-                     call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), race, s%film(j, k), &
-                                         s%thermal_factor(j, k), error)
+                  if (b%traction_model == TRACTION_EHD) then
+                     h = s%film(j, k)*s%thermal_factor(j, k)
+                     call ehd_traction(c(j), b_minor(j), race, h, t, error)
                      if (allocated(error)) return
-                     if (b%traction_model == TRACTION_EHD) then
-                        h = s%film(j, k)*s%thermal_factor(j, k)
-                        call ehd_traction(c(j), b_minor(j), race, h, t, error)
-                        if (allocated(error)) return
-                        call ehd_flash(c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
-                        if (allocated(error)) return
-                        s%contact_temp(j, k) = wall_temperature(race)
-                     end if
+                     call ehd_flash(c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
+                     if (allocated(error)) return
+                     s%contact_temp(j, k) = wall_temperature(race)
                   end if
-                  s%slip(j, k) = t%node_slip
-                  s%trac_coeff(j, k) = t%node_coefficient
-                  s%spin_roll(j, k) = t%spin_roll
-                  s%loss(j, k) = t%power
-                  s%power_loss = s%power_loss + t%power
-               end do
+               end if
+               s%slip(j, k) = t%node_slip
+               s%trac_coeff(j, k) = t%node_coefficient
+               s%spin_roll(j, k) = t%spin_roll
+               s%loss(j, k) = t%power
+               s%power_loss = s%power_loss + t%power
             end do
-         end associate
+         end do
       end subroutine contact_tribology
 
       !> Film of one race contact (report 2.6): Hamrock-Dowson isothermal central film
