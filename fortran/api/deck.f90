@@ -9,6 +9,7 @@
 subroutine adore_deck_table(deck_path, table_path, status, message)
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
    use adore_api_status, only: set_error
+   use adore_core_strings, only: itoa
    use adore_deck_reader, only: deck_t, read_deck, FIELD_INT, FIELD_REAL
    implicit none
    character(len=*), intent(in) :: deck_path    !< deck file to read
@@ -60,15 +61,4 @@ subroutine adore_deck_table(deck_path, table_path, status, message)
       end do
    end do
    close (unit)
-
-contains
-
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: b
-      write (b, "(i0)") i
-      s = trim(b)
-   end function itoa
-
 end subroutine adore_deck_table

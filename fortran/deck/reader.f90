@@ -37,8 +37,12 @@ module adore_deck_reader
                                 FLD_MEANING
    use adore_deck_tokenizer, only: split_label, cut_field, parse_int_field, parse_real_field, &
                                    is_blank, strip, lstrip_count, show_real, itoa
+   use adore_core_strings, only: rstrip, quoted
    implicit none
    private
+
+   !> Comparison operators of a record condition (schema REC_WHEN_OP), as Python prints them.
+   character(len=2), parameter :: COND_OPS(6) = ["==", "!=", "< ", "<=", "> ", ">="]
 
    public :: deck_field_t, deck_record_t, deck_t
    public :: read_deck, parse_deck, deck_has, deck_count
@@ -399,9 +403,8 @@ contains
    !> Concrete id of occurrence `i` of repeated record `s` ("7.2.n" -> "7.2.<i>").
    pure function occurrence_id(s, i) result(rid)
       integer, intent(in) :: s, i
-      character(len=:), allocatable :: rid
-      rid = trim(REC_ID(s))
-      rid = rid(1:len(rid) - 1)//itoa(i)
+      character(len=len_trim(REC_ID(s)) - 1 + len(itoa(i))) :: rid
+      rid = REC_ID(s)(1:len_trim(REC_ID(s)) - 1)//itoa(i)
    end function occurrence_id
 
    !> Schema index of a concrete record id (0 if unknown); case-sensitive, as Python's record_spec.
@@ -472,14 +475,14 @@ contains
    !> Text of condition of record `s`: "bearing_type == 1".
    pure function condition_text(s) result(t)
       integer, intent(in) :: s
-      character(len=:), allocatable :: t
-      character(len=2), parameter :: OPS(6) = ["==", "!=", "< ", "<=", "> ", ">="]
-      t = trim(REC_WHEN_FIELD(s))//" "//trim(OPS(REC_WHEN_OP(s)))//" "//itoa(REC_WHEN_VALUE(s))
+      character(len=len_trim(REC_WHEN_FIELD(s)) + len_trim(COND_OPS(REC_WHEN_OP(s))) + 2 &
+                    + len(itoa(REC_WHEN_VALUE(s)))) :: t
+      t = trim(REC_WHEN_FIELD(s))//" "//trim(COND_OPS(REC_WHEN_OP(s)))//" "//itoa(REC_WHEN_VALUE(s))
    end function condition_text
 
    !> The first field called `name` read so far (first occurrence wins, as in Python's
    !> value dict): `found` when it exists, was readable and is an integer.
-   subroutine lookup_int(deck, name, value, found)
+   pure subroutine lookup_int(deck, name, value, found)
       type(deck_t), intent(in) :: deck
       character(len=*), intent(in) :: name
       integer, intent(out) :: value
@@ -500,16 +503,27 @@ contains
    end subroutine lookup_int
 
    !> Value of `name` as Python would print it in a message ("2", or "None").
-   function value_text(deck, name) result(t)
+   pure function value_text(deck, name) result(t)
       type(deck_t), intent(in) :: deck
       character(len=*), intent(in) :: name
-      character(len=:), allocatable :: t
+      character(len=value_text_len(deck, name)) :: t
       integer :: v
       logical :: found
       call lookup_int(deck, name, v, found)
       t = "None"
       if (found) t = itoa(v)
    end function value_text
+
+   !> Length of value_text(deck, name).
+   pure integer function value_text_len(deck, name)
+      type(deck_t), intent(in) :: deck
+      character(len=*), intent(in) :: name
+      integer :: v
+      logical :: found
+      call lookup_int(deck, name, v, found)
+      value_text_len = 4
+      if (found) value_text_len = len(itoa(v))
+   end function value_text_len
 
    !> Consume lines until `want` is read or declared missing; false at the end of the file.
    logical function take(rd, text, deck, want)
@@ -882,10 +896,11 @@ contains
 
    !> One problem as Python's Problem.format(): location, record, field = value, message,
    !> then the offending line and a caret under the column.
-   function format_problem(path, p) result(s)
+   subroutine format_problem(path, p, s)
       character(len=*), intent(in) :: path
       type(problem_t), intent(in) :: p
-      character(len=:), allocatable :: s, shown
+      character(len=:), allocatable, intent(out) :: s
+      character(len=:), allocatable :: shown
       integer :: i
 
       if (p%line > 0) then
@@ -904,14 +919,14 @@ contains
          if (shown(i:i) == achar(9)) shown(i:i) = " "
       end do
       s = s//new_line("a")//"    "//shown//new_line("a")//"    "//repeat(" ", max(p%col - 1, 0))//"^"
-   end function format_problem
+   end subroutine format_problem
 
    !> Sort the problems by line (line 0 last) and column, stably, and build the input error.
    subroutine problems_error(rd, error)
       type(reader_t), intent(inout) :: rd
       type(error_type), allocatable, intent(out) :: error
       type(problem_t) :: p
-      character(len=:), allocatable :: msg
+      character(len=:), allocatable :: msg, line
       integer :: i, j
 
       do i = 2, rd%n_problems
@@ -926,7 +941,8 @@ contains
       end do
       msg = rd%path//": "//itoa(rd%n_problems)//" problem(s) reading the deck"
       do i = 1, rd%n_problems
-         msg = msg//new_line("a")//format_problem(rd%path, rd%problems(i))
+         call format_problem(rd%path, rd%problems(i), line)
+         msg = msg//new_line("a")//line
       end do
       call input_error(error, msg)
    end subroutine problems_error
@@ -1007,30 +1023,6 @@ contains
          end if
       end do
    end function all_blank
-
-   !> `s` without trailing white space.
-   pure function rstrip(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=:), allocatable :: t
-      integer :: j
-      j = len(s)
-      do while (j >= 1)
-         if (.not. is_blank(s(j:j))) exit
-         j = j - 1
-      end do
-      t = s(1:j)
-   end function rstrip
-
-   !> Python repr() of a string: single quotes (double quotes if it holds a single quote).
-   pure function quoted(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=:), allocatable :: t
-      if (index(s, "'") > 0 .and. index(s, '"') == 0) then
-         t = '"'//s//'"'
-      else
-         t = "'"//s//"'"
-      end if
-   end function quoted
 
    !> Upper-case ASCII copy of `s`.
    pure function upper(s) result(t)

@@ -7,6 +7,7 @@
 module adore_deck_text
    use adore_core_error, only: error_type, input_error
    use adore_core_os, only: read_whole_file
+   use adore_core_strings, only: itoa
    implicit none
    private
 
@@ -104,15 +105,5 @@ contains
          return
       end if
    end subroutine read_deck_text
-
-   !> Integer to left-aligned text.
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-
-      write (buf, "(i0)") i
-      s = trim(buf)
-   end function itoa
 
 end module adore_deck_text

@@ -12,6 +12,8 @@ module adore_deck_tokenizer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use adore_core_kinds, only: wp
    use adore_deck_schema, only: LABEL_WIDTH, INT_WIDTH, REAL_WIDTH
+   use adore_core_strings, only: is_space, is_blank, lstrip_count, strip, itoa, join_words, &
+                                 trim_zeros, strip_inner
    implicit none
    private
 
@@ -19,52 +21,6 @@ module adore_deck_tokenizer
    public :: is_blank, strip, lstrip_count, show_real, itoa
 
 contains
-
-   !> True for the characters Python's str.strip() removes here (blank, TAB, LF, VT, FF, CR).
-   elemental logical function is_space(c)
-      character, intent(in) :: c
-      is_space = c == " " .or. (iachar(c) >= 9 .and. iachar(c) <= 13)
-   end function is_space
-
-   !> True when `s` holds only white space (or nothing).
-   pure logical function is_blank(s)
-      character(len=*), intent(in) :: s
-      integer :: i
-      is_blank = .true.
-      do i = 1, len(s)
-         if (.not. is_space(s(i:i))) then
-            is_blank = .false.
-            return
-         end if
-      end do
-   end function is_blank
-
-   !> Number of leading white-space characters of `s`.
-   pure integer function lstrip_count(s)
-      character(len=*), intent(in) :: s
-      integer :: i
-      lstrip_count = len(s)
-      do i = 1, len(s)
-         if (.not. is_space(s(i:i))) then
-            lstrip_count = i - 1
-            return
-         end if
-      end do
-   end function lstrip_count
-
-   !> `s` without leading and trailing white space (Python str.strip()).
-   pure function strip(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=:), allocatable :: t
-      integer :: i, j
-      i = lstrip_count(s) + 1
-      j = len(s)
-      do while (j >= i)
-         if (.not. is_space(s(j:j))) exit
-         j = j - 1
-      end do
-      t = s(i:j)
-   end function strip
 
    !> Split off the optional label: a line whose first four characters are `Rec `
    !> (any case) is labelled; its id is the first word in columns 5-12 and its data
@@ -106,31 +62,12 @@ contains
       end if
    end subroutine split_label
 
-   !> The words of `s` joined by single blanks (Python ' '.join(s.split())).
-   pure function join_words(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=:), allocatable :: t
-      integer :: i
-      logical :: in_word
-      t = ""
-      in_word = .false.
-      do i = 1, len(s)
-         if (is_space(s(i:i))) then
-            in_word = .false.
-         else
-            if (.not. in_word .and. len(t) > 0) t = t//" "
-            t = t//s(i:i)
-            in_word = .true.
-         end if
-      end do
-   end function join_words
-
    !> The raw text of the field of `width` columns starting after 0-based `pos`
    !> (shorter or empty past the end of the line, as a Fortran READ pads short records).
    pure function cut_field(line, pos, width) result(t)
       character(len=*), intent(in) :: line
       integer, intent(in) :: pos, width
-      character(len=:), allocatable :: t
+      character(len=max(0, min(pos + width, len(line)) - min(pos + 1, len(line) + 1) + 1)) :: t
       t = line(min(pos + 1, len(line) + 1):min(pos + width, len(line)))
    end function cut_field
 
@@ -325,20 +262,28 @@ contains
       end do
    end function lower
 
-   !> Integer to left-aligned text.
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, "(i0)") i
-      s = trim(buf)
-   end function itoa
-
    !> A real as Python formats it with "{:.6G}" (6 significant digits, trailing zeros
    !> removed; exponent form below 1E-4 and from 1E6 up): 0.146292, 1E+10, -9.81.
-   function show_real(x) result(s)
+   pure function show_real(x) result(s)
       real(wp), intent(in) :: x
-      character(len=:), allocatable :: s
+      character(len=g6_len(x)) :: s
+      character(len=:), allocatable :: t
+      call g6_text(x, t)
+      s = t
+   end function show_real
+
+   !> Length of show_real(x).
+   pure integer function g6_len(x)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: t
+      call g6_text(x, t)
+      g6_len = len(t)
+   end function g6_len
+
+   !> show_real's text of `x` into `s`.
+   pure subroutine g6_text(x, s)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable, intent(out) :: s
       character(len=32) :: buf
       character(len=:), allocatable :: digits, sign
       integer :: e, stat, p
@@ -373,38 +318,12 @@ contains
          s = strip_inner(s)//itoa(p)
       end if
       s = sign//s
-   end function show_real
+   end subroutine g6_text
 
    !> Sign bit of x (for -0.0).
    pure logical function sign_bit(x)
       real(wp), intent(in) :: x
       sign_bit = sign(1.0_wp, x) < 0.0_wp
    end function sign_bit
-
-   !> Remove trailing zeros after a decimal point, and the point itself if bare.
-   pure function trim_zeros(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=:), allocatable :: t
-      integer :: j
-      t = s
-      if (index(t, ".") == 0) return
-      j = len(t)
-      do while (t(j:j) == "0")
-         j = j - 1
-      end do
-      if (t(j:j) == ".") j = j - 1
-      t = t(1:j)
-   end function trim_zeros
-
-   !> `s` with blanks removed.
-   pure function strip_inner(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=:), allocatable :: t
-      integer :: i
-      t = ""
-      do i = 1, len(s)
-         if (s(i:i) /= " ") t = t//s(i:i)
-      end do
-   end function strip_inner
 
 end module adore_deck_tokenizer
