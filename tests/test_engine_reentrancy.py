@@ -121,6 +121,8 @@ def test_the_static_check_tells_variables_from_constants_and_prototypes():
 
 @pytest.mark.skipif(shutil.which("gfortran") is None, reason="needs gfortran (make setup installs it)")
 def test_compiler_keeps_no_writable_static_storage(tmp_path):
+    # the build must put every local on the stack too; this check compiles with the same flag
+    assert "'-frecursive'" in (ROOT / "meson.build").read_text()
     writable, compiled_code = [], 0
     for src in _engine_sources():
         if src.name.endswith(".in"):

@@ -27,6 +27,11 @@ BALL_STEP0_COMPUTED = [
     ("re_traction", "trac_coeff_inner"),
     ("re_motion", "contact_loss_inner_W"),
     ("re_motion", "contact_loss_outer_W"),
+    ("re_motion", "wear_rate_m3_s"),
+    ("summary", "cage_wear_rate_m3_s"),
+    ("summary", "re_orbital_vel_ratio"),
+    ("summary", "cage_omega_ratio"),
+    ("summary", "cage_whirl_ratio"),
     ("performance", "total_power_loss_W"),
     ("re_thermal", "contact_temp_rise_outer_K"),
     ("re_thermal", "contact_temp_outer_K"),
@@ -127,6 +132,10 @@ ROLLER_STEP0_COMPUTED = [
     ("re_motion", "spin_roll_inner"),
     ("re_motion", "contact_loss_outer_W"),
     ("re_motion", "contact_loss_inner_W"),
+    ("re_motion", "wear_rate_m3_s"),
+    ("summary", "re_orbital_vel_ratio"),
+    ("summary", "cage_omega_ratio"),
+    ("summary", "cage_whirl_ratio"),
     ("re_traction", "slip_velocity_outer_m_s"),
     ("re_traction", "slip_velocity_inner_m_s"),
     ("re_traction", "trac_coeff_outer"),
@@ -184,3 +193,18 @@ def test_roller_section_1a_outer_traction_is_printed_in_n_per_m(roller_report):
     assert len(ratios) == 8
     assert all(abs(r * 4.0e-3 - 1.0) < 0.01 for r in ratios)
     assert all(c.run == 0.0 for c in known if not c.golden)
+
+
+@pytest.mark.parametrize("deck, inner_rpm", [("appendix_c_ball", 20000.0), ("appendix_d_roller", 70000.0)])
+def test_section4_ratios_are_the_runs_own_speeds_over_the_inner_race(tmp_path, deck, inner_rpm):
+    """Section 4 at step 0: mean RE orbital speed, cage angular and whirl speed over the
+    inner race speed (outer race at rest in both decks), from the run's own section 1/2."""
+    from pyadore.printout import read_print
+
+    step = read_print(_run(tmp_path, deck)).steps[0]
+    summary = step.table("summary").iloc[0]
+    cage = step.table("bodies").iloc[0]
+    assert summary["re_orbital_vel_ratio"] == pytest.approx(
+        step.table("re_motion")["orbital_velocity_rpm"].mean() / inner_rpm, rel=2e-3)   # 4 printed digits
+    assert summary["cage_omega_ratio"] == pytest.approx(cage["ang_vel_amplitude_rpm"] / inner_rpm, rel=2e-3)
+    assert summary["cage_whirl_ratio"] == pytest.approx(cage["orbital_velocity_rpm"] / inner_rpm, rel=2e-3)

@@ -174,6 +174,7 @@ def test_slip_integral_matches_fine_uniform_quadrature(name):
     dq = 0.75 * q / a * (1 - (s / a) ** 2) * (2 * a / n)
     assert t["force"] == pytest.approx(np.sum(np.sign(u) * kappa(np.abs(u)) * dq), rel=1e-6, abs=1e-9 * q)
     assert t["power"] == pytest.approx(np.sum(kappa(np.abs(u)) * np.abs(u) * dq), rel=1e-7)
+    assert t["sliding"] == pytest.approx(np.sum(np.abs(u) * dq), rel=1e-7)   # Archard's load x slip
     ends = _core.contact_slip(**geo, s=[-a, a])
     assert t["max_slip"] == pytest.approx(np.abs(np.r_[u, ends]).max(), rel=1e-9)
     for k in range(int(t["n_rolling"])):
@@ -403,6 +404,29 @@ def test_step0_tribology_column_matches_report(column):
         print(f"{column} {side}: worst {100 * worst:.2f} % ({where}), {len(sub)} contacts")
     worst, where = _worst(errors)
     assert worst <= 0.05, f"{column}: worst {100 * worst:.2f} % at {where}"
+
+
+def test_ball_wear_is_archard_over_both_race_contacts_with_the_reports_speeds():
+    """Printed 'Time Ave Wear Rate' of each ball over the load x slip (integral of |u| dQ)
+    of its two race contacts, computed from the report's own speeds, loads and half widths:
+    one constant for all complete rows (a different form would vary with spin/roll, which
+    changes 2.4x from ball 2 to ball 10), and that constant is the ball's k / H with ADORE's
+    hardness H = 10 RC kgf/mm**2 (fortran/tribology/wear.f90)."""
+    step = read_print(ROOT / "golden" / "appendix_c_ball.prt").steps[0]
+    printed = step.table("re_motion")["wear_rate_m3_s"]
+    by_ball = {}
+    for r in _usable(_report_step0()):
+        g = r["geo"]
+        ehd = _core.ehd_contact_traction(g["side"], r["alpha"], D_BALL / 2, g["r_b"], g["omega"], g["race_speed"],
+                                         r["a"], r["load"], (1e-2, 0.0, 0.0, 0.1), 1e-6, 0.1 * r["a"])
+        by_ball.setdefault(r["ball"], []).append(ehd["sliding"])
+    ratios = [printed.iloc[k - 1] / sum(s) for k, s in by_ball.items()
+              if len(s) == 2 and not math.isnan(printed.iloc[k - 1])]
+    assert len(ratios) >= 14
+    hardness, (k_over_h,) = _core.wear_rate(5e-6, 61.0, [1.0])
+    assert hardness == pytest.approx(61 * 9.80665e7)
+    assert max(ratios) / min(ratios) - 1 < 0.006          # one constant (spread 0.5 %)
+    assert np.mean(ratios) == pytest.approx(k_over_h, rel=0.01)   # 0.5 % below k / H
 
 
 def test_flat_wrappers_refuse_bad_input_with_a_message():

@@ -4,10 +4,11 @@
 !> adore_tribology_roller_traction).  growth_count as adore_roller_step0_deck; spin_method
 !> 1 = pure rolling of the land (the report), 2 = traction moment balance per roller.
 !>
-!> rollers(nmax, 14): [spin (rad/s), moment residual (N m), tangential force on the roller
+!> rollers(nmax, 17): [spin (rad/s), moment residual (N m), tangential force on the roller
 !>   (N), then outer, inner: max slip (m/s), kappa(max slip), power (W), force on the race
 !>   (N), |force|/load, moment on the roller (N m) -- indices 4..8 outer, 9..13 inner,
-!>   14 orbital speed (rad/s)];
+!>   14 orbital speed (rad/s), 15, 16 sliding outer, inner (integral of |u| dQ, N m/s),
+!>   17 wear rate of the roller (m**3/s)];
 !> slices(nmax, 12, 8): per roller [x, weight, slip, traction] outer then inner
 !>   (m, m, m/s, N/m; traction on the race along the orbit direction);
 !> summary(3): [contact power (W), total power loss (W, NaN while a cage contact touches),
@@ -24,7 +25,7 @@ subroutine adore_roller_step0_tribology(deck_path, growth_count, spin_method, nm
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: growth_count, spin_method, nmax
    integer, intent(out) :: n
-   real(wp), intent(out) :: rollers(nmax, 14), slices(nmax, 12, 8), summary(3)
+   real(wp), intent(out) :: rollers(nmax, 17), slices(nmax, 12, 8), summary(3)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
 
@@ -49,7 +50,8 @@ subroutine adore_roller_step0_tribology(deck_path, growth_count, spin_method, nm
       associate (o => s%tr_o(k), i => s%tr_i(k), e => s%equilibrium)
          rollers(k, :) = [s%roller_spin(k), s%moment_residual(k), s%tangential_force(k), &
                           o%max_slip, o%max_slip_kappa, o%power, o%force, o%moment, &
-                          i%max_slip, i%max_slip_kappa, i%power, i%force, i%moment, e%orbital_speed(k)]
+                          i%max_slip, i%max_slip_kappa, i%power, i%force, i%moment, e%orbital_speed(k), &
+                          o%sliding, i%sliding, s%wear(k)]
          ns = min(12, size(e%c_o(k)%x))
          slices(k, 1:ns, 1) = e%c_o(k)%x(1:ns)
          slices(k, 1:ns, 2) = e%c_o(k)%weight(1:ns)

@@ -96,7 +96,7 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
    implicit none
    real(wp), intent(in) :: geom(9), coef(4), kappa_scale
    integer, intent(in) :: n_gauss
-   real(wp), intent(out) :: result(14)
+   real(wp), intent(out) :: result(15)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
    type(error_type), allocatable :: error
@@ -215,7 +215,7 @@ subroutine adore_tribo_ehd_contact(geom, rheo, h, b, n_gauss, n_strip, result, s
    implicit none
    real(wp), intent(in) :: geom(9), rheo(4), h, b
    integer, intent(in) :: n_gauss, n_strip
-   real(wp), intent(out) :: result(14)
+   real(wp), intent(out) :: result(15)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
    type(error_type), allocatable :: error
@@ -283,3 +283,31 @@ subroutine adore_tribo_ehd_temperature(geom, rheo, h, b, n_gauss, ny, u1, u2, th
                              conductivity=rheo(4)), h, b, n_gauss, ny, u1, u2, th1, th2, result(1), result(2), error)
    if (allocated(error)) call set_error(error, status, message)
 end subroutine adore_tribo_ehd_temperature
+
+!> Archard wear rates rate(n) (m**3/s) of a body with wear coefficient k (-) and Rockwell C
+!> hardness rc under sliding(n) = integral of |u| dQ (N m/s); hardness(Pa) as ADORE 5.0
+!> converts rc (adore_tribology_wear).  Input error for k < 0, rc <= 0 or sliding < 0.
+subroutine adore_tribo_wear(k, rc, n, sliding, hardness, rate, status, message)
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: ADORE_OK, ADORE_INPUT_ERROR
+   use adore_tribology_wear, only: rockwell_c_hardness, archard_wear_rate
+   implicit none
+   real(wp), intent(in) :: k, rc
+   integer, intent(in) :: n
+   real(wp), intent(in) :: sliding(n)
+   real(wp), intent(out) :: hardness, rate(n)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+
+   hardness = 0.0_wp
+   rate = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   if (.not. (k >= 0.0_wp .and. rc > 0.0_wp .and. all(sliding >= 0.0_wp))) then
+      status = ADORE_INPUT_ERROR
+      message = "wear rate: need wear coefficient >= 0, Rockwell C hardness > 0 and sliding >= 0"
+      return
+   end if
+   hardness = rockwell_c_hardness(rc)
+   rate = archard_wear_rate(k, rc, sliding)
+end subroutine adore_tribo_wear

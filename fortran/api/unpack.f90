@@ -88,9 +88,10 @@ contains
    !> n rolling points, s1, s2 (m), node slip (m/s), node coefficient].
    pure function traction_result(t) result(r)
       type(contact_traction_t), intent(in) :: t
-      real(wp) :: r(14)
+      real(wp) :: r(15)
       r = [t%force, t%coefficient, t%power, t%max_slip, t%centre_slip, t%rolling_speed, t%spin, &
-           t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points, t%node_slip, t%node_coefficient]
+           t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points, t%node_slip, t%node_coefficient, &
+           t%sliding]
    end function traction_result
 
 end module adore_api_unpack

@@ -7,9 +7,9 @@
 !> speeds (slip, traction coefficient, spin/roll, contact power loss, report 2.1), and,
 !> for a lubricated deck, the isothermal central film and its thermal reduction factor
 !> (report 2.6; adore_tribology_film), the EHD traction and flash temperature rise (traction
-!> model 3), the basic and Tallian modified lives.  Quantities of later issues (cage
-!> contact forces, wear) are not computed here and stay NaN, so the print shows them as
-!> not computed.
+!> model 3), the balls' Archard wear rates (adore_tribology_wear), the basic and Tallian
+!> modified lives.  Quantities of later issues (cage contact forces) are not computed here
+!> and stay NaN, so the print shows them as not computed.
 module adore_driver_ball_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
@@ -29,6 +29,7 @@ module adore_driver_ball_step0
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
                                            life_hours
    use adore_life_tallian, only: ball_race_modified_life
+   use adore_tribology_wear, only: archard_wear_rate
    implicit none
    private
 
@@ -69,6 +70,10 @@ module adore_driver_ball_step0
       real(wp), allocatable :: thermal_factor(:, :)  !< inlet thermal reduction factor (-); NaN unlubricated
       real(wp), allocatable :: temp_rise(:, :)     !< average flash temperature rise (K), eqs 35-36; EHD only
       real(wp), allocatable :: contact_temp(:, :)  !< surface (wall) temperature of the contact (K)
+      real(wp), allocatable :: sliding(:, :)       !< integral of |u| dQ (N m/s), Archard's load x slip
+      !> wear rate of each ball (m**3/s): Archard with the ball's k and hardness over both
+      !> race contacts (adore_tribology_wear)
+      real(wp), allocatable :: wear(:)
       real(wp) :: power_loss = 0.0_wp              !< bearing power loss: sum of contact losses (W)
    end type ball_step0_t
 
@@ -310,7 +315,8 @@ contains
          nan = ieee_value(1.0_wp, ieee_quiet_nan)
          allocate (s%slip(2, b%n_elements), s%trac_coeff(2, b%n_elements), s%spin_roll(2, b%n_elements), &
                    s%loss(2, b%n_elements), s%film(2, b%n_elements), s%thermal_factor(2, b%n_elements), &
-                   s%temp_rise(2, b%n_elements), s%contact_temp(2, b%n_elements))
+                   s%temp_rise(2, b%n_elements), s%contact_temp(2, b%n_elements), &
+                   s%sliding(2, b%n_elements), s%wear(b%n_elements))
          s%slip = nan
          s%trac_coeff = nan
          s%spin_roll = nan
@@ -319,6 +325,7 @@ contains
          s%thermal_factor = nan
          s%temp_rise = nan
          s%contact_temp = nan
+         s%sliding = 0.0_wp                          ! an unloaded contact does not wear
          s%power_loss = 0.0_wp
          do k = 1, b%n_elements
             call ball_race_contacts(k, c, b_minor, k_ell, p_h)
@@ -344,9 +351,12 @@ contains
                s%trac_coeff(j, k) = t%node_coefficient
                s%spin_roll(j, k) = t%spin_roll
                s%loss(j, k) = t%power
+               s%sliding(j, k) = t%sliding
                s%power_loss = s%power_loss + t%power
             end do
          end do
+         s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
+                                    s%sliding(1, :) + s%sliding(2, :))
       end subroutine contact_tribology
 
       !> Film of one race contact (report 2.6): Hamrock-Dowson isothermal central film

@@ -2,7 +2,7 @@
 !> physics): the input echo record from the deck and the bearing model, and the step-0
 !> tables of a ball bearing from its quasi-static start.
 !>
-!> A value pyadore does not compute yet (cage contact forces, wear, the roller's modified
+!> A value pyadore does not compute yet (cage contact forces and their wear, the roller's modified
 !> life, deck fields whose meaning is not identified) is left as
 !> IEEE NaN / INT_NOT_COMPUTED and prints "NaN": the print never shows a made-up number.
 module adore_driver_report
@@ -249,6 +249,7 @@ contains
          motion(:, 8) = s%spin_roll(2, :)
          motion(:, 9) = s%loss(1, :)
          motion(:, 10) = s%loss(2, :)
+         motion(:, 11) = s%wear                        ! Archard, adore_tribology_wear
          traction(:, 1) = s%slip(1, :)
          traction(:, 2) = s%slip(2, :)
          traction(:, 3) = s%trac_coeff(1, :)
@@ -300,6 +301,9 @@ contains
       summary = nan
       summary(1, 1:3) = 0.0_wp
       summary(1, 5) = s%power_loss
+      summary(1, 4) = s%modified_life_hours            ! the report's summary shows the modified life
+      summary(1, 6:8) = speed_ratios(b, s%start%kinematics%orbital_speed, s%cage)
+      summary(1, 9) = bodies(1, 11)                    ! cage wear: 0 without a cage contact
       call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)
@@ -356,6 +360,7 @@ contains
          ! slices, coefficient = kappa of it, contact loss = eq 4 summed over the slices
          motion(:, 9) = s%tr_o%power
          motion(:, 10) = s%tr_i%power
+         motion(:, 11) = s%wear                       ! Archard, adore_tribology_wear
          traction(:, 1) = s%tr_o%max_slip
          traction(:, 2) = s%tr_i%max_slip
          traction(:, 3) = s%tr_o%max_slip_kappa
@@ -408,6 +413,9 @@ contains
       summary = nan
       summary(1, 1:3) = 0.0_wp
       summary(1, 5) = s%power_loss
+      summary(1, 4) = s%basic_life_hours   ! no modified life for line contacts: the basic one, as printed
+      summary(1, 6:8) = speed_ratios(b, s%equilibrium%orbital_speed, s%cage)
+      summary(1, 9) = bodies(1, 11)      ! cage wear: NaN while a cage contact is not modelled
       call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
                       thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)
@@ -486,5 +494,25 @@ contains
          if (.not. any_contact) cage_row(11) = 0.0_wp
       end associate
    end subroutine cage_tables
+
+   !> Section 4 speed ratios at step 0 (time averages over one instant): mean rolling-element
+   !> orbital speed, cage angular speed and cage whirl speed, each relative to the outer race
+   !> over the inner race's speed relative to the outer race (both report decks turn the
+   !> inner race only: 9139.7/20000 = 0.457 and 28490/70000 = 0.407 as printed); NaN when the
+   !> races turn together.
+   function speed_ratios(b, orbital_speed, c) result(r)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: orbital_speed(:)
+      type(cage_step0_t), intent(in) :: c
+      real(wp) :: r(3)
+      real(wp) :: rel
+      rel = b%speed_inner - b%speed_outer
+      if (rel == 0.0_wp .or. size(orbital_speed) == 0) then
+         r = ieee_value(1.0_wp, ieee_quiet_nan)
+         return
+      end if
+      r = ([sum(orbital_speed)/size(orbital_speed), c%state%angular_speed, c%state%whirl_speed] &
+           - b%speed_outer)/rel
+   end function speed_ratios
 
 end module adore_driver_report

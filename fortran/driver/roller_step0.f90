@@ -45,6 +45,7 @@ module adore_driver_roller_step0
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
+   use adore_tribology_wear, only: archard_wear_rate
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
                                               roller_equilibrium_spin, RACE_OUTER, RACE_INNER
    implicit none
@@ -73,6 +74,9 @@ module adore_driver_roller_step0
       type(line_traction_t), allocatable :: tr_o(:), tr_i(:)   !< slice tractions, outer / inner race
       real(wp), allocatable :: tangential_force(:) !< net traction force on each roller along e_t (N)
       real(wp) :: contact_power = 0.0_wp       !< sum of the roller/race contact losses (W), eq 4
+      !> wear rate of each roller (m**3/s): Archard with the roller's k and hardness over
+      !> both race contacts (adore_tribology_wear)
+      real(wp), allocatable :: wear(:)
       !> total power loss (W): contact_power + cage contact losses; NaN while a cage contact
       !> (pocket or land) touches, since the cage contact forces are not modelled
       real(wp) :: power_loss = 0.0_wp
@@ -222,6 +226,8 @@ contains
          end do
       end associate
       s%contact_power = sum(s%tr_o%power) + sum(s%tr_i%power)
+      s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
+                                 s%tr_o%sliding + s%tr_i%sliding)
       s%power_loss = s%contact_power
       if (any(s%cage%pocket%in_contact) .or. any(s%cage%land%in_contact)) &
          s%power_loss = ieee_value(1.0_wp, ieee_quiet_nan)

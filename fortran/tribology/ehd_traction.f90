@@ -143,6 +143,7 @@ contains
          end do
          t%force = t%force + sign(f, u)*w(j)
          t%power = t%power + f*abs(u)*w(j)
+         t%sliding = t%sliding + abs(u)*0.75_wp*c%load/c%a*(1.0_wp - xi2)*w(j)   ! Hertz strip load
          t%max_slip = max(t%max_slip, abs(u))
          if (abs(u) >= t%node_slip) then
             t%node_slip = abs(u)

@@ -55,6 +55,7 @@ module adore_tribology_roller_traction
       real(wp) :: force = 0.0_wp             !< sum w t: on the race along e_t (N)
       real(wp) :: moment = 0.0_wp            !< moment on the roller about +x (N m)
       real(wp) :: power = 0.0_wp             !< sum w kappa |u| q (W), eq 4
+      real(wp) :: sliding = 0.0_wp           !< sum w |u| q (N m/s): the Archard wear's load x slip
       real(wp) :: max_slip = 0.0_wp          !< largest |u| over the slices (m/s): printed Slip Velocity
       real(wp) :: max_slip_kappa = 0.0_wp    !< kappa(max_slip): printed Trac Coeff
       real(wp) :: net_coefficient = 0.0_wp   !< |force| / load (-), not printed (diagnostic)
@@ -109,6 +110,7 @@ contains
       sgn = merge(-1.0_wp, 1.0_wp, race == RACE_OUTER)
       t%moment = sgn*sum(c%weight*rho*t%traction)
       t%power = sum(c%weight*t%kappa*abs(t%slip)*max(c%q, 0.0_wp))
+      t%sliding = sum(c%weight*abs(t%slip)*max(c%q, 0.0_wp))
       if (c%in_contact .and. c%load > 0.0_wp) then
          t%max_slip = maxval(abs(t%slip))
          t%max_slip_kappa = traction_coefficient(coef(1), coef(2), coef(3), coef(4), t%max_slip)

@@ -48,6 +48,7 @@ module adore_tribology_slip
       real(wp) :: force = 0.0_wp        !< traction on the race along the slip direction (N)
       real(wp) :: coefficient = 0.0_wp  !< force / load (-)
       real(wp) :: power = 0.0_wp        !< heat generated, integral of kappa |u| dQ (W)
+      real(wp) :: sliding = 0.0_wp      !< integral of |u| dQ (N m/s): the Archard wear's load x slip
       real(wp) :: max_slip = 0.0_wp     !< largest |u| on the major axis (m/s)
       real(wp) :: node_slip = 0.0_wp    !< largest |u| at the quadrature nodes (m/s): the
                                         !< report's printed "Slip Velocity" with n_gauss = 4
@@ -166,6 +167,7 @@ contains
          dq = 0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)
          t%force = t%force + sign(kap, u)*dq
          t%power = t%power + kap*abs(u)*dq
+         t%sliding = t%sliding + abs(u)*dq
          t%max_slip = max(t%max_slip, abs(u))
          if (abs(u) >= t%node_slip) then
             t%node_slip = abs(u)

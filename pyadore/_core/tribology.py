@@ -40,7 +40,7 @@ def lubricant(code: int, temperature: float, pressure: float = 0.0) -> dict:
 
 
 CONTACT_TRACTION_KEYS = ["force", "coefficient", "power", "max_slip", "centre_slip", "rolling_speed", "spin",
-                         "spin_roll", "rx", "n_rolling", "s1", "s2", "node_slip", "node_coefficient"]
+                         "spin_roll", "rx", "n_rolling", "s1", "s2", "node_slip", "node_coefficient", "sliding"]
 
 
 def _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load):
@@ -71,6 +71,18 @@ def contact_slip(side: int, alpha: float, rho: float, r_b: float, omega, race_sp
         _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, 0.0), np.asarray(s, float))
     check(int(status), message)
     return u
+
+
+def wear_rate(k: float, rockwell_c: float, sliding):
+    """Archard wear rates (m**3/s) of a body with wear coefficient k and Rockwell C hardness
+    under sliding = integral of |u| dQ (N m/s), with ADORE 5.0's hardness conversion; returns
+    (hardness in Pa, rates)."""
+    import numpy as np
+
+    h, rate, status, message = _engine().adore_tribo_wear(float(k), float(rockwell_c),
+                                                          np.atleast_1d(np.asarray(sliding, float)))
+    check(int(status), message)
+    return float(h), rate
 
 
 def flash_rise(xi, q):
