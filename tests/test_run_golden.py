@@ -32,6 +32,15 @@ BALL_STEP0_COMPUTED = [
     ("summary", "re_orbital_vel_ratio"),
     ("summary", "cage_omega_ratio"),
     ("summary", "cage_whirl_ratio"),
+    ("re_thermal", "bulk_temp_K"),
+    ("accelerations", "bulk_temp_K"),
+    ("performance", "hsng_bulk_temp_K"),
+    ("performance", "hsng_outer_temp_K"),
+    ("performance", "hsng_inner_temp_K"),
+    ("performance", "shft_bulk_temp_K"),
+    ("performance", "shft_outer_temp_K"),
+    ("performance", "shft_inner_temp_K"),
+    ("accelerations", "*"),
     ("performance", "total_power_loss_W"),
     ("re_thermal", "contact_temp_rise_outer_K"),
     ("re_thermal", "contact_temp_outer_K"),
@@ -106,7 +115,7 @@ def test_ball_run_reports_what_it_does_not_compute(ball_report):
     """Columns of later issues print NaN and the differ counts them, never as a pass."""
     assert ball_report.exit_code == 1
     not_computed = {c.column for c in ball_report.comparisons if c.status == "not_computed"}
-    assert {"rel_axial_pos_m", "bulk_temp_K"} <= not_computed
+    assert {"rel_axial_pos_m", "convec_htc_W_m2K"} <= not_computed
     assert not {"film_thickness_inner_m", "thermal_red_fac_outer", "contact_temp_rise_inner_K"} & not_computed
 
 
@@ -136,6 +145,14 @@ ROLLER_STEP0_COMPUTED = [
     ("summary", "re_orbital_vel_ratio"),
     ("summary", "cage_omega_ratio"),
     ("summary", "cage_whirl_ratio"),
+    ("re_thermal", "bulk_temp_K"),
+    ("accelerations", "bulk_temp_K"),
+    ("performance", "hsng_bulk_temp_K"),
+    ("performance", "hsng_outer_temp_K"),
+    ("performance", "hsng_inner_temp_K"),
+    ("performance", "shft_bulk_temp_K"),
+    ("performance", "shft_outer_temp_K"),
+    ("performance", "shft_inner_temp_K"),
     ("re_traction", "slip_velocity_outer_m_s"),
     ("re_traction", "slip_velocity_inner_m_s"),
     ("re_traction", "trac_coeff_outer"),

@@ -291,7 +291,7 @@ contains
       acc(3, 1:6) = 0.0_wp
       acc(2, 7) = b%temperature(6)
       acc(3, 7) = b%temperature(7)
-      perf = nan
+      call initial_thermal_state(b, s%cage, thermal, loads, acc, perf)
       perf(1) = s%basic_life_hours
       perf(2) = s%modified_life_hours
       perf(3) = s%mounting%outer_fit
@@ -403,7 +403,7 @@ contains
       acc(2:3, 1:6) = 0.0_wp
       acc(2, 7) = b%temperature(6)
       acc(3, 7) = b%temperature(7)
-      perf = nan
+      call initial_thermal_state(b, s%cage, thermal, loads, acc, perf)
       perf(1) = s%basic_life_hours       ! eqs 73, 75, 76, 102 (adore_life_roller)
       perf(2) = s%modified_life_hours    ! NaN: no Tallian life for line contacts
       perf(3) = s%mounting%outer_fit
@@ -494,6 +494,38 @@ contains
          if (.not. any_contact) cage_row(11) = 0.0_wp
       end associate
    end subroutine cage_tables
+
+   !> Step-0 values fixed by the deck alone, before any thermal solution or cage contact:
+   !> the bodies' initial temperatures of Rec 2.7 (rolling elements' Bulk Temp, the cage's
+   !> Bulk Temp, housing and shaft temperatures of section 3: ADORE's thermal nodes start
+   !> at them; both report decks print them so at step 0), and, for a cage that touches
+   !> nothing, zero cage forces and moments and an acceleration of gravity (Rec 11; no
+   !> moment: no angular acceleration of the cage spinning about its axis of symmetry).
+   !> perf is reset to NaN first; the rest of loads and acc is left as it is.
+   subroutine initial_thermal_state(b, c, thermal, loads, acc, perf)
+      type(bearing_t), intent(in) :: b
+      type(cage_step0_t), intent(in) :: c
+      real(wp), intent(inout) :: thermal(:, :), loads(:, :), acc(:, :)
+      real(wp), intent(out) :: perf(:)
+      perf = ieee_value(1.0_wp, ieee_quiet_nan)
+      thermal(:, 10) = b%temperature(4)
+      acc(1, 7) = b%temperature(5)
+      perf(9:11) = b%temperature(2)                    ! Hsng/Bulk, Hsng/Outer, Hsng/Inner
+      perf(12:14) = b%temperature(3)                   ! Shft/Bulk, Shft/Outer, Shft/Inner
+      if (cage_free(c)) then
+         loads(1, :) = 0.0_wp
+         acc(1, 1:3) = b%gravity
+         acc(1, 4:6) = 0.0_wp
+      end if
+   end subroutine initial_thermal_state
+
+   !> True when the cage's geometry is modelled and it touches no rolling element and no land.
+   pure logical function cage_free(c)
+      type(cage_step0_t), intent(in) :: c
+      cage_free = c%geometry_known
+      if (allocated(c%pocket)) cage_free = cage_free .and. .not. any(c%pocket%in_contact)
+      if (allocated(c%land)) cage_free = cage_free .and. .not. any(c%land%in_contact)
+   end function cage_free
 
    !> Section 4 speed ratios at step 0 (time averages over one instant): mean rolling-element
    !> orbital speed, cage angular speed and cage whirl speed, each relative to the outer race
