@@ -175,11 +175,12 @@ end subroutine adore_mount_races
 !> races, solve the consistent start (race control) and the basic life.
 !>
 !> nmax: rows of balls (>= number of balls); n: number of balls.
-!> balls(nmax, 35): [orbital position (rad), x, r (m), alpha_o, alpha_i (rad), Q_o, Q_i (N),
+!> balls(nmax, 37): [orbital position (rad), x, r (m), alpha_o, alpha_i (rad), Q_o, Q_i (N),
 !>   p_o, p_i (Pa), a_o, a_i, b_o, b_i, delta_o, delta_i (m), orbital speed, spin speed (rad/s),
 !>   pitch (rad), slip_o, slip_i (m/s), trac_o, trac_i (-), spin/roll o, i (-), loss_o, loss_i (W),
 !>   film_o, film_i (m), thermal factor o, i (-), temperature rise o, i (K), sliding o, i
-!>   (integral of |u| dQ, N m/s), wear rate (m**3/s); NaN film and temperature columns for
+!>   (integral of |u| dQ, N m/s), wear rate (m**3/s), traction on the race o, i along the
+!>   orbit direction e_x x e_r (N); NaN film and temperature columns for
 !>   an unlubricated deck]
 !> summary(19) = bearing power loss (W), summary(20) = modified (Tallian) life (h)
 !> summary(20): [inner fit, outer fit, clearance (m), basic life, basic life outer, inner (h),
@@ -194,7 +195,7 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: nmax
    integer, intent(out) :: n
-   real(wp), intent(out) :: balls(nmax, 35), summary(20)
+   real(wp), intent(out) :: balls(nmax, 37), summary(20)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
 
@@ -254,6 +255,7 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
       balls(1:n, 31:32) = transpose(s%temp_rise)
       balls(1:n, 33:34) = transpose(s%sliding)
       balls(1:n, 35) = s%wear
+      balls(1:n, 36:37) = transpose(s%traction)
       summary(19) = s%power_loss
       summary(20) = s%modified_life_hours
       summary(1:3) = [s%mounting%inner_fit, s%mounting%outer_fit, s%mounting%clearance]

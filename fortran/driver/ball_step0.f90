@@ -71,6 +71,8 @@ module adore_driver_ball_step0
       real(wp), allocatable :: temp_rise(:, :)     !< average flash temperature rise (K), eqs 35-36; EHD only
       real(wp), allocatable :: contact_temp(:, :)  !< surface (wall) temperature of the contact (K)
       real(wp), allocatable :: sliding(:, :)       !< integral of |u| dQ (N m/s), Archard's load x slip
+      !> net traction of the ball on the race along e_t = e_x x e_r, the orbit direction (N)
+      real(wp), allocatable :: traction(:, :)
       !> wear rate of each ball (m**3/s): Archard with the ball's k and hardness over both
       !> race contacts (adore_tribology_wear)
       real(wp), allocatable :: wear(:)
@@ -316,7 +318,7 @@ contains
          allocate (s%slip(2, b%n_elements), s%trac_coeff(2, b%n_elements), s%spin_roll(2, b%n_elements), &
                    s%loss(2, b%n_elements), s%film(2, b%n_elements), s%thermal_factor(2, b%n_elements), &
                    s%temp_rise(2, b%n_elements), s%contact_temp(2, b%n_elements), &
-                   s%sliding(2, b%n_elements), s%wear(b%n_elements))
+                   s%sliding(2, b%n_elements), s%wear(b%n_elements), s%traction(2, b%n_elements))
          s%slip = nan
          s%trac_coeff = nan
          s%spin_roll = nan
@@ -326,6 +328,7 @@ contains
          s%temp_rise = nan
          s%contact_temp = nan
          s%sliding = 0.0_wp                          ! an unloaded contact does not wear
+         s%traction = 0.0_wp
          s%power_loss = 0.0_wp
          do k = 1, b%n_elements
             call ball_race_contacts(k, c, b_minor, k_ell, p_h)
@@ -352,6 +355,7 @@ contains
                s%spin_roll(j, k) = t%spin_roll
                s%loss(j, k) = t%power
                s%sliding(j, k) = t%sliding
+               s%traction(j, k) = t%force
                s%power_loss = s%power_loss + t%power
             end do
          end do

@@ -81,7 +81,7 @@ BALL_STEP0_COLUMNS = ["azimuth", "x", "r", "alpha_o", "alpha_i", "q_o", "q_i", "
                       "b_o", "b_i", "delta_o", "delta_i", "orbital_speed", "spin_speed", "pitch",
                       "slip_o", "slip_i", "trac_o", "trac_i", "spin_roll_o", "spin_roll_i", "loss_o", "loss_i",
                       "film_o", "film_i", "thermal_factor_o", "thermal_factor_i", "temp_rise_o", "temp_rise_i",
-                      "sliding_o", "sliding_i", "wear"]
+                      "sliding_o", "sliding_i", "wear", "traction_o", "traction_i"]
 
 
 BALL_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "basic_life_h", "basic_life_outer_h",
