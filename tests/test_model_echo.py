@@ -272,3 +272,24 @@ def test_traction_fit_rejects_impossible_input(k):
 def test_scale_factors_reject_zero_load():
     with pytest.raises(AdoreInputError, match="load"):
         _core.scale_factors(0.01, 0.1, [0.0, 0.0, 0.0])
+
+
+def test_hypothetical_models_column_echoes_its_deck_fields(root, tmp_path):
+    """LUBRICATION PARAMETERS, first column: RE/RACE rows echo Rec 10.3 field 1 (0 when the
+    record is absent, as the roller print shows), RE/CAGE and RACE/CAGE field 5 of
+    Rec 10.5.1B / 10.5.2B.  Changed values in a copy of the ball deck reach the print."""
+    import pyadore
+
+    text = (root / "decks" / "appendix_c_ball.inp").read_text().splitlines()
+    edits = {"Rec 10.3 ": ("1.2500E-07", "3.7500E-07"), "Rec 10.5.1B": ("1.2500E-07", "4.5000E-07"),
+             "Rec 10.5.2B": ("1.2500E-07", "5.5000E-07")}
+    for i, line in enumerate(text):
+        for label, (old, new) in edits.items():
+            if line.startswith(label):
+                assert line.count(old) == 1
+                text[i] = line.replace(old, new)
+    deck = tmp_path / "hyp.inp"
+    deck.write_text("\n".join(text) + "\n")
+    echo = read_print(pyadore.run(deck, steps=0, out=tmp_path / "hyp.prt").print_path).echo
+    got = [echo[f"lubrication_parameters.{row}[1]"] for row in ("re_race1", "re_race2", "re_cage", "race_cage")]
+    assert got == [3.75e-7, 3.75e-7, 4.5e-7, 5.5e-7]

@@ -126,6 +126,15 @@ contains
       call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_a", e%lubrication(6, 4), error, if_present=.true.)
       call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_b", e%lubrication(7, 4), error, if_present=.true.)
       call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_c", e%lubrication(8, 4), error, if_present=.true.)
+      ! "HYPOTHETICAL MODELS" column: the deck value echoed, its meaning not identified.  RE/RACE
+      ! rows: Rec 10.3 field 1 (ball deck 1.25E-07; the roller deck has no Rec 10.3 and prints
+      ! 0.0, the field's default); RE/CAGE and RACE/CAGE: field 5 of Rec 10.5.1B / 10.5.2B
+      ! (1.25E-07 in both decks; the roller's 0.0 rows rule out these for RE/RACE)
+      e%lubrication(1, 1:2) = 0.0_wp
+      call deck_collect_real(deck, "10.3", "rec10_3_value_1", e%lubrication(1, 1), error, if_present=.true.)
+      call deck_collect_real(deck, "10.3", "rec10_3_value_1", e%lubrication(1, 2), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.1B", "rec10_5_1b_value_5", e%lubrication(1, 3), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.2B", "rec10_5_2b_value_5", e%lubrication(1, 4), error, if_present=.true.)
 
       ! fatigue parameters: the constants the life model uses (the decks carry no fatigue
       ! records; these are the model's defaults, docs/life-model.md), same for both races
