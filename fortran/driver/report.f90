@@ -311,7 +311,7 @@ contains
       summary(1, 1:3) = 0.0_wp
       summary(1, 5) = s%power_loss
       summary(1, 4) = s%modified_life_hours            ! the report's summary shows the modified life
-      summary(1, 6:8) = speed_ratios(b, s%start%kinematics%orbital_speed, s%cage)
+      summary(1, 6:8) = speed_ratios(b, sum(s%start%kinematics%orbital_speed)/n, s%cage)
       summary(1, 9) = bodies(1, 11)                    ! cage wear: 0 without a cage contact
       call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
@@ -423,7 +423,7 @@ contains
       summary(1, 1:3) = 0.0_wp
       summary(1, 5) = s%power_loss
       summary(1, 4) = s%basic_life_hours   ! no modified life for line contacts: the basic one, as printed
-      summary(1, 6:8) = speed_ratios(b, s%equilibrium%orbital_speed, s%cage)
+      summary(1, 6:8) = speed_ratios(b, sum(s%equilibrium%orbital_speed)/n, s%cage)
       summary(1, 9) = bodies(1, 11)      ! cage wear: NaN while a cage contact is not modelled
       call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
                       thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
@@ -541,19 +541,18 @@ contains
    !> over the inner race's speed relative to the outer race (both report decks turn the
    !> inner race only: 9139.7/20000 = 0.457 and 28490/70000 = 0.407 as printed); NaN when the
    !> races turn together.
-   function speed_ratios(b, orbital_speed, c) result(r)
+   function speed_ratios(b, mean_orbital_speed, c) result(r)
       type(bearing_t), intent(in) :: b
-      real(wp), intent(in) :: orbital_speed(:)
+      real(wp), intent(in) :: mean_orbital_speed   !< mean rolling-element orbital speed (rad/s)
       type(cage_step0_t), intent(in) :: c
       real(wp) :: r(3)
       real(wp) :: rel
       rel = b%speed_inner - b%speed_outer
-      if (rel == 0.0_wp .or. size(orbital_speed) == 0) then
+      if (rel == 0.0_wp) then
          r = ieee_value(1.0_wp, ieee_quiet_nan)
          return
       end if
-      r = ([sum(orbital_speed)/size(orbital_speed), c%state%angular_speed, c%state%whirl_speed] &
-           - b%speed_outer)/rel
+      r = ([mean_orbital_speed, c%state%angular_speed, c%state%whirl_speed] - b%speed_outer)/rel
    end function speed_ratios
 
 end module adore_driver_report
