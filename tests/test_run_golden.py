@@ -18,17 +18,9 @@ from pyadore.diff import diff_prints
 
 ROOT = Path(__file__).resolve().parents[1]
 
-#: (table, column) of step 0 that the engine computes for a ball bearing.
-BALL_STEP0_COMPUTED = [
-    ("re_contact", "*"),
-    ("re_thermal", "contact_deflection_outer_m"),
-    ("re_thermal", "contact_deflection_inner_m"),
-    ("re_motion", "orbital_velocity_rpm"),
-    ("re_traction", "trac_coeff_inner"),
-    ("re_motion", "contact_loss_inner_W"),
-    ("re_motion", "contact_loss_outer_W"),
-    ("re_motion", "wear_rate_m3_s"),
-    ("summary", "cage_wear_rate_m3_s"),
+#: Step-0 cells both bearing types compute: the section 4 speed ratios and the initial
+#: temperatures of Rec 2.7 (docs/print-layout.md).
+STEP0_SECTION4_AND_TEMPERATURES = [
     ("summary", "re_orbital_vel_ratio"),
     ("summary", "cage_omega_ratio"),
     ("summary", "cage_whirl_ratio"),
@@ -40,6 +32,20 @@ BALL_STEP0_COMPUTED = [
     ("performance", "shft_bulk_temp_K"),
     ("performance", "shft_outer_temp_K"),
     ("performance", "shft_inner_temp_K"),
+]
+
+#: (table, column) of step 0 that the engine computes for a ball bearing.
+BALL_STEP0_COMPUTED = [
+    ("re_contact", "*"),
+    ("re_thermal", "contact_deflection_outer_m"),
+    ("re_thermal", "contact_deflection_inner_m"),
+    ("re_motion", "orbital_velocity_rpm"),
+    ("re_traction", "trac_coeff_inner"),
+    ("re_motion", "contact_loss_inner_W"),
+    ("re_motion", "contact_loss_outer_W"),
+    ("re_motion", "wear_rate_m3_s"),
+    ("summary", "cage_wear_rate_m3_s"),
+    *STEP0_SECTION4_AND_TEMPERATURES,
     ("accelerations", "*"),
     ("performance", "total_power_loss_W"),
     ("re_thermal", "contact_temp_rise_outer_K"),
@@ -142,17 +148,7 @@ ROLLER_STEP0_COMPUTED = [
     ("re_motion", "contact_loss_outer_W"),
     ("re_motion", "contact_loss_inner_W"),
     ("re_motion", "wear_rate_m3_s"),
-    ("summary", "re_orbital_vel_ratio"),
-    ("summary", "cage_omega_ratio"),
-    ("summary", "cage_whirl_ratio"),
-    ("re_thermal", "bulk_temp_K"),
-    ("accelerations", "bulk_temp_K"),
-    ("performance", "hsng_bulk_temp_K"),
-    ("performance", "hsng_outer_temp_K"),
-    ("performance", "hsng_inner_temp_K"),
-    ("performance", "shft_bulk_temp_K"),
-    ("performance", "shft_outer_temp_K"),
-    ("performance", "shft_inner_temp_K"),
+    *STEP0_SECTION4_AND_TEMPERATURES,
     ("re_traction", "slip_velocity_outer_m_s"),
     ("re_traction", "slip_velocity_inner_m_s"),
     ("re_traction", "trac_coeff_outer"),
