@@ -13,7 +13,7 @@
 !>   * roller deck, rolling elements (ceramic Rec 8.1: RC 80, k 2E-6) with the engine's slices:
 !>     1.389E-15 and 1.299E-16 against 1.390E-15 and 1.300E-16;
 !>   * ball deck (steel RC 61, k 5E-6): the printed wear over the load x slip of both race
-!>     contacts (the report's own speeds) is 8.30-8.34E-16 m**2/N for all 16 complete rows,
+!>     contacts (the report's own speeds) is 8.30-8.34E-16 m**2/N for the 15 complete rows,
 !>     k/H = 8.36E-16.
 !> A Vickers conversion (HRC 61 -> HV 720) misses the ball rows by 15 % and the ceramic by
 !> a factor 2; tests/test_wear.py keeps these checks.
