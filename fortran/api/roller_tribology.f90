@@ -4,11 +4,12 @@
 !> adore_tribology_roller_traction).  growth_count as adore_roller_step0_deck; spin_method
 !> 1 = pure rolling of the land (the report), 2 = traction moment balance per roller.
 !>
-!> rollers(nmax, 17): [spin (rad/s), moment residual (N m), tangential force on the roller
+!> rollers(nmax, 19): [spin (rad/s), moment residual (N m), tangential force on the roller
 !>   (N), then outer, inner: max slip (m/s), kappa(max slip), power (W), force on the race
 !>   (N), |force|/load, moment on the roller (N m) -- indices 4..8 outer, 9..13 inner,
 !>   14 orbital speed (rad/s), 15, 16 sliding outer, inner (integral of |u| dQ, N m/s),
-!>   17 wear rate of the roller (m**3/s)];
+!>   17 wear rate of the roller (m**3/s), 18, 19 average flash temperature rise outer,
+!>   inner (K, eqs 35-36)];
 !> slices(nmax, 12, 8): per roller [x, weight, slip, traction] outer then inner
 !>   (m, m, m/s, N/m; traction on the race along the orbit direction);
 !> summary(3): [contact power (W), total power loss (W, NaN while a cage contact touches),
@@ -25,7 +26,7 @@ subroutine adore_roller_step0_tribology(deck_path, growth_count, spin_method, nm
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: growth_count, spin_method, nmax
    integer, intent(out) :: n
-   real(wp), intent(out) :: rollers(nmax, 17), slices(nmax, 12, 8), summary(3)
+   real(wp), intent(out) :: rollers(nmax, 19), slices(nmax, 12, 8), summary(3)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
 
@@ -51,7 +52,7 @@ subroutine adore_roller_step0_tribology(deck_path, growth_count, spin_method, nm
          rollers(k, :) = [s%roller_spin(k), s%moment_residual(k), s%tangential_force(k), &
                           o%max_slip, o%max_slip_kappa, o%power, o%force, o%moment, &
                           i%max_slip, i%max_slip_kappa, i%power, i%force, i%moment, e%orbital_speed(k), &
-                          o%sliding, i%sliding, s%wear(k)]
+                          o%sliding, i%sliding, s%wear(k), s%temp_rise(:, k)]
          ns = min(12, size(e%c_o(k)%x))
          slices(k, 1:ns, 1) = e%c_o(k)%x(1:ns)
          slices(k, 1:ns, 2) = e%c_o(k)%weight(1:ns)

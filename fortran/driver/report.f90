@@ -358,6 +358,10 @@ contains
             thermal(k, 2) = e%c_o(k)%max_deflection
             thermal(k, 3) = e%c_i(k)%max_deflection
             thermal(k, 4:5) = 0.0_wp                  ! rigid races: no race flexing
+            thermal(k, 6) = s%temp_rise(1, k)
+            thermal(k, 7) = s%temp_rise(2, k)
+            thermal(k, 8) = s%contact_temp(1, k)
+            thermal(k, 9) = s%contact_temp(2, k)
          end do
          motion(:, 1) = e%orbital_speed*rpm
          motion(:, 2) = abs(s%spin_speed)*rpm

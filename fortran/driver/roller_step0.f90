@@ -39,13 +39,14 @@ module adore_driver_roller_step0
    use adore_model_scales, only: length_scale
    use adore_mounting_fits, only: mounting_t
    use adore_driver_mount, only: mount_bearing
-   use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness
+   use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness, line_contact_t
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    use adore_tribology_wear, only: archard_wear_rate
+   use adore_tribology_flash, only: contact_temperature_rise
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
                                               roller_equilibrium_spin, RACE_OUTER, RACE_INNER
    implicit none
@@ -55,6 +56,8 @@ module adore_driver_roller_step0
 
    integer, parameter, public :: SPIN_ROLLING = 1      !< land rolls on both races (ADORE's start, default)
    integer, parameter, public :: SPIN_EQUILIBRIUM = 2  !< spin from the roller's traction moment balance
+   !> uniform points per strip of the flash temperature (eqs 39-43), as for the ball
+   integer, parameter :: FLASH_POINTS = 201
 
    !> The step-0 state of a roller bearing.
    type :: roller_step0_t
@@ -77,6 +80,12 @@ module adore_driver_roller_step0
       !> wear rate of each roller (m**3/s): Archard with the roller's k and hardness over
       !> both race contacts (adore_tribology_wear)
       real(wp), allocatable :: wear(:)
+      !> average flash temperature rise (K) of each roller's outer (1) and inner (2) race
+      !> contact, eqs 35-36 over the contact ellipse the print reports (flash_rise)
+      real(wp), allocatable :: temp_rise(:, :)
+      !> surface (wall) temperature of each contact (K): mean of the roller and race
+      !> temperatures of Rec 2.7; the rise is not fed back at step 0
+      real(wp), allocatable :: contact_temp(:, :)
       !> total power loss (W): contact_power + cage contact losses; NaN while a cage contact
       !> (pocket or land) touches, since the cage contact forces are not modelled
       real(wp) :: power_loss = 0.0_wp
@@ -228,9 +237,57 @@ contains
       s%contact_power = sum(s%tr_o%power) + sum(s%tr_i%power)
       s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
                                  s%tr_o%sliding + s%tr_i%sliding)
+      allocate (s%temp_rise(2, n), s%contact_temp(2, n))
+      associate (e => s%equilibrium)
+         do j = 1, n
+            call flash_rise(e%c_o(j), s%tr_o(j), RACE_OUTER, s%model%r_o, e%orbital_speed(j), s%roller_spin(j), &
+                            s%temp_rise(1, j), error)
+            if (allocated(error)) return
+            call flash_rise(e%c_i(j), s%tr_i(j), RACE_INNER, s%model%r_i, e%orbital_speed(j), s%roller_spin(j), &
+                            s%temp_rise(2, j), error)
+            if (allocated(error)) return
+         end do
+      end associate
+      s%contact_temp(1, :) = 0.5_wp*(b%temperature(4) + b%temperature(6))
+      s%contact_temp(2, :) = 0.5_wp*(b%temperature(4) + b%temperature(7))
       s%power_loss = s%contact_power
       if (any(s%cage%pocket%in_contact) .or. any(s%cage%land%in_contact)) &
          s%power_loss = ieee_value(1.0_wp, ieee_quiet_nan)
+
+   contains
+
+      !> Average flash temperature rise (K) of one roller/race line contact c with its slice
+      !> tractions t (report 2.7-2.8, eqs 35-36): the contact as the ellipse the print reports
+      !> (major half width a = half contact length, minor half width = mean slice half width,
+      !> pressure p0 = printed contact stress, eq 36's 1/(pi a b)), one strip per slice at its
+      !> position from the contact centre with the slice's heat factor kappa |u| (eq 29);
+      !> both surfaces at the entraining speed (m/s) of roller spin w_r and race speed
+      !> Omega - w_m at raceway radius r_race (m).  0 without contact or heat.
+      subroutine flash_rise(c, t, race, r_race, w_m, w_r, rise, error)
+         type(line_contact_t), intent(in) :: c
+         type(line_traction_t), intent(in) :: t
+         integer, intent(in) :: race
+         real(wp), intent(in) :: r_race, w_m, w_r
+         real(wp), intent(out) :: rise
+         type(error_type), allocatable, intent(out) :: error
+         real(wp) :: u_e, dt_max, centre
+         integer :: race_body
+
+         rise = 0.0_wp
+         if (.not. c%in_contact .or. t%power <= 0.0_wp) return
+         race_body = merge(BODY_OUTER, BODY_INNER, race == RACE_OUTER)
+         u_e = 0.5_wp*(abs(w_r)*0.5_wp*b%d &
+                       + abs(merge(b%speed_outer, b%speed_inner, race == RACE_OUTER) - w_m)*r_race)
+         centre = 0.5_wp*(c%limits(1) + c%limits(2))
+         associate (m1 => b%material(BODY_ELEMENT), m2 => b%material(race_body))
+            call contact_temperature_rise(c%half_length, c%mean_half_width, c%stress, c%x - centre, c%weight, &
+                                          merge(t%kappa*abs(t%slip), 0.0_wp, c%q > 0.0_wp), u_e, u_e, &
+                                          [m1%density, m1%heat_capacity, m1%conductivity], &
+                                          [m2%density, m2%heat_capacity, m2%conductivity], FLASH_POINTS, &
+                                          rise, dt_max, error)
+         end associate
+      end subroutine flash_rise
+
    end subroutine roller_tribology
 
 end module adore_driver_roller_step0

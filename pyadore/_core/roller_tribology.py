@@ -9,7 +9,7 @@ from .base import _engine, check
 ROLLER_TRIBOLOGY_COLUMNS = ["spin", "moment_residual", "tangential_force",
                             "slip_o", "kappa_o", "power_o", "force_o", "moment_o",
                             "slip_i", "kappa_i", "power_i", "force_i", "moment_i", "orbital_speed",
-                            "sliding_o", "sliding_i", "wear"]
+                            "sliding_o", "sliding_i", "wear", "temp_rise_o", "temp_rise_i"]
 
 ROLLER_TRIBOLOGY_SLICES = ["x_o", "w_o", "u_o", "t_o", "x_i", "w_i", "u_i", "t_i"]
 
