@@ -73,6 +73,10 @@ module adore_driver_ball_step0
       real(wp), allocatable :: sliding(:, :)       !< integral of |u| dQ (N m/s), Archard's load x slip
       !> net traction of the ball on the race along e_t = e_x x e_r, the orbit direction (N)
       real(wp), allocatable :: traction(:, :)
+      !> loads of the balls on the outer (:, 1) and inner (:, 2) race: [force x, y, z (N),
+      !> moment x, y, z about the origin (N m)], the normal contact loads of the equilibrium
+      !> plus the net traction of each contact along e_t at its contact point (section 3)
+      real(wp) :: race_loads(6, 2) = 0.0_wp
       !> wear rate of each ball (m**3/s): Archard with the ball's k and hardness over both
       !> race contacts (adore_tribology_wear)
       real(wp), allocatable :: wear(:)
@@ -135,6 +139,7 @@ contains
       end if
       call contact_tribology(error)
       if (allocated(error)) return
+      call traction_race_loads()
 
       ! basic life, eqs 73-74 and 102 (inner race rotating, outer stationary), and the
       ! Tallian modified life, eqs 77-109: film parameter Lambda = (iso film x thermal
@@ -362,6 +367,38 @@ contains
          s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
                                     s%sliding(1, :) + s%sliding(2, :))
       end subroutine contact_tribology
+
+      !> Race loads of section 3: the equilibrium's normal loads plus the net traction F_t
+      !> of each contact on its race along e_t = (0, -cos phi, -sin phi), applied at the
+      !> contact point P = ball centre + D/2 n (axial x_c, radius r_c): force F_t e_t, moment
+      !> P x F_t e_t = F_t (r_c e_x - x_c e_r), e_r = (0, -sin phi, cos phi).  The roller
+      !> run's tractions reproduce the report's race Fy and Mx this way (docs/tribology.md).
+      subroutine traction_race_loads()
+         real(wp) :: e_t(3), e_r(3), e_x(3), x_c, r_c, f
+         integer :: k, j
+
+         associate (e => s%start%equilibrium)
+            s%race_loads(:, 1) = [e%outer_force, e%outer_moment]
+            s%race_loads(:, 2) = [e%inner_force, e%inner_moment]
+            e_x = [1.0_wp, 0.0_wp, 0.0_wp]
+            do k = 1, b%n_elements
+               e_t = [0.0_wp, -cos(e%azimuth(k)), -sin(e%azimuth(k))]
+               e_r = [0.0_wp, -sin(e%azimuth(k)), cos(e%azimuth(k))]
+               do j = 1, 2
+                  f = s%traction(j, k)
+                  if (j == 1) then
+                     x_c = e%x(k) + 0.5_wp*b%d*e%n_o(1, k)
+                     r_c = e%r(k) + 0.5_wp*b%d*e%n_o(2, k)
+                  else
+                     x_c = e%x(k) + 0.5_wp*b%d*e%n_i(1, k)
+                     r_c = e%r(k) + 0.5_wp*b%d*e%n_i(2, k)
+                  end if
+                  s%race_loads(1:3, j) = s%race_loads(1:3, j) + f*e_t
+                  s%race_loads(4:6, j) = s%race_loads(4:6, j) + f*(r_c*e_x - x_c*e_r)
+               end do
+            end do
+         end associate
+      end subroutine traction_race_loads
 
       !> Film of one race contact (report 2.6): Hamrock-Dowson isothermal central film
       !> h (m) at the contact's entraining speed, R_x and ellipticity k = a/b, with the

@@ -284,14 +284,13 @@ contains
          bodies(3, 10) = s%mounting%inner_hoop_stress
          ! section 3: forces of the balls on the races and the reactions holding them
          loads = nan
-         loads(2, 1:3) = e%outer_force
-         loads(2, 4:6) = e%outer_moment
-         loads(3, 1:3) = e%inner_force
-         loads(3, 4:6) = e%inner_moment
-         loads(4, 1:3) = -(e%outer_force + s%outer_weight)
-         loads(4, 4:6) = -e%outer_moment
-         loads(5, 1:3) = -(e%inner_force + s%inner_weight)
-         loads(5, 4:6) = -e%inner_moment
+         ! normal contact loads plus contact tractions (solve_ball_step0)
+         loads(2, :) = s%race_loads(:, 1)
+         loads(3, :) = s%race_loads(:, 2)
+         loads(4, 1:3) = -(s%race_loads(1:3, 1) + s%outer_weight)
+         loads(4, 4:6) = -s%race_loads(4:6, 1)
+         loads(5, 1:3) = -(s%race_loads(1:3, 2) + s%inner_weight)
+         loads(5, 4:6) = -s%race_loads(4:6, 2)
       end associate
       land_no = [(k, k=1, size(land_no))]
       call cage_tables(s%cage, cage_code, re_cage, land_code, race_cage, bodies(1, :))
@@ -399,14 +398,12 @@ contains
          bodies(2, 10) = s%mounting%outer_hoop_stress
          bodies(3, 10) = s%mounting%inner_hoop_stress
          loads = nan
-         loads(2, 1:3) = e%outer_force
-         loads(2, 4:6) = e%outer_moment
-         loads(3, 1:3) = e%inner_force
-         loads(3, 4:6) = e%inner_moment
-         loads(4, 1:3) = -e%outer_force               ! the start leaves race weights out
-         loads(4, 4:6) = -e%outer_moment
-         loads(5, 1:3) = -e%inner_force
-         loads(5, 4:6) = -e%inner_moment
+         ! normal slice loads plus slice tractions (roller_tribology); the start leaves
+         ! race weights out, so the external loads balance the internal ones
+         loads(2, :) = s%race_loads(:, 1)
+         loads(3, :) = s%race_loads(:, 2)
+         loads(4, :) = -s%race_loads(:, 1)
+         loads(5, :) = -s%race_loads(:, 2)
       end associate
       cage_el = [(1 + (k - 1)/2, k=1, 2*n)]
       cage_end = [(1 + mod(k - 1, 2), k=1, 2*n)]

@@ -86,6 +86,10 @@ module adore_driver_roller_step0
       !> surface (wall) temperature of each contact (K): mean of the roller and race
       !> temperatures of Rec 2.7; the rise is not fed back at step 0
       real(wp), allocatable :: contact_temp(:, :)
+      !> loads of the rollers on the outer (:, 1) and inner (:, 2) race: [force x, y, z (N),
+      !> moment x, y, z about the race centre (N m)], the normal slice loads of the
+      !> equilibrium plus the slice tractions along the orbit direction (section 3 of the print)
+      real(wp) :: race_loads(6, 2) = 0.0_wp
       !> total power loss (W): contact_power + cage contact losses; NaN while a cage contact
       !> (pocket or land) touches, since the cage contact forces are not modelled
       real(wp) :: power_loss = 0.0_wp
@@ -247,6 +251,19 @@ contains
                             s%temp_rise(2, j), error)
             if (allocated(error)) return
          end do
+      end associate
+      ! race loads: normal loads of the equilibrium plus the net slice tractions, each acting
+      ! along the orbit direction e_t = (0, -cos phi, -sin phi) at the raceway radius
+      ! (azimuth phi from +z towards -y); its moment about the race axis is R F_t
+      associate (e => s%equilibrium)
+         s%race_loads(:, 1) = [e%outer_force, e%outer_moment]
+         s%race_loads(:, 2) = [e%inner_force, e%inner_moment]
+         s%race_loads(2, 1) = s%race_loads(2, 1) - sum(s%tr_o%force*cos(e%azimuth))
+         s%race_loads(3, 1) = s%race_loads(3, 1) - sum(s%tr_o%force*sin(e%azimuth))
+         s%race_loads(4, 1) = s%race_loads(4, 1) + s%model%r_o*sum(s%tr_o%force)
+         s%race_loads(2, 2) = s%race_loads(2, 2) - sum(s%tr_i%force*cos(e%azimuth))
+         s%race_loads(3, 2) = s%race_loads(3, 2) - sum(s%tr_i%force*sin(e%azimuth))
+         s%race_loads(4, 2) = s%race_loads(4, 2) + s%model%r_i*sum(s%tr_i%force)
       end associate
       s%contact_temp(1, :) = 0.5_wp*(b%temperature(4) + b%temperature(6))
       s%contact_temp(2, :) = 0.5_wp*(b%temperature(4) + b%temperature(7))
