@@ -27,6 +27,8 @@
 !> * Tribology (roller_tribology): slice slips, tractions and contact losses of both races
 !>   (adore_tribology_roller_traction, docs/tribology.md); spin SPIN_ROLLING (the report)
 !>   or SPIN_EQUILIBRIUM (moment balance); total power NaN while a cage contact touches.
+!>   Also the flash temperature rise of each contact (eqs 35-36 over the printed contact
+!>   ellipse) and the race loads of section 3 (normal slice loads plus slice tractions).
 !> * Roller mass: the crowned roller (roller_mass), which is the echo's RE mass.
 !> * Basic fatigue life (ADRF1): adore_life_roller from the slice contacts, eqs 73, 75, 76,
 !>   102, with the default life_params_t (the deck has no fatigue records).  The modified
