@@ -12,6 +12,9 @@ Hamrock-Dowson formula evaluated here.
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
+import tempfile
 from functools import lru_cache
 from pathlib import Path
 
@@ -222,10 +225,6 @@ def test_run_film_is_hamrock_dowson_with_the_echoed_lubricant():
 
 @lru_cache(maxsize=1)
 def _printed_loads():
-    import subprocess
-    import sys
-    import tempfile
-
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "c.prt"
         subprocess.run([sys.executable, "-m", "pyadore", "run", str(ROOT / "decks" / "appendix_c_ball.inp"),

@@ -24,6 +24,7 @@ module adore_driver_ball_step0
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise
+   use adore_tribology_flash, only: FLASH_POINTS
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
@@ -44,8 +45,6 @@ module adore_driver_ball_step0
    integer, parameter, public :: PRINT_GAUSS = 4
    !> Gauss points per slip zone and across each strip of the EHD traction's loss and force
    integer, parameter, public :: EHD_GAUSS = 16, EHD_STRIP = 24
-   !> Uniform points per strip of the flash temperature (eqs 39-43)
-   integer, parameter, public :: FLASH_POINTS = 201
    !> Rec 10.0 traction_model of the EHD film traction (report Table 5, model 3)
    integer, parameter, public :: TRACTION_EHD = 3
 

@@ -48,7 +48,7 @@ module adore_driver_roller_step0
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    use adore_tribology_wear, only: archard_wear_rate
-   use adore_tribology_flash, only: contact_temperature_rise
+   use adore_tribology_flash, only: contact_temperature_rise, FLASH_POINTS
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
                                               roller_equilibrium_spin, RACE_OUTER, RACE_INNER
    implicit none
@@ -58,8 +58,6 @@ module adore_driver_roller_step0
 
    integer, parameter, public :: SPIN_ROLLING = 1      !< land rolls on both races (ADORE's start, default)
    integer, parameter, public :: SPIN_EQUILIBRIUM = 2  !< spin from the roller's traction moment balance
-   !> uniform points per strip of the flash temperature (eqs 39-43), as for the ball
-   integer, parameter :: FLASH_POINTS = 201
 
    !> The step-0 state of a roller bearing.
    type :: roller_step0_t
@@ -253,11 +251,9 @@ contains
                             s%temp_rise(2, j), error)
             if (allocated(error)) return
          end do
-      end associate
-      ! race loads: normal loads of the equilibrium plus the net slice tractions, each acting
-      ! along the orbit direction e_t = (0, -cos phi, -sin phi) at the raceway radius
-      ! (azimuth phi from +z towards -y); its moment about the race axis is R F_t
-      associate (e => s%equilibrium)
+         ! race loads: normal loads of the equilibrium plus the net slice tractions, each acting
+         ! along the orbit direction e_t = (0, -cos phi, -sin phi) at the raceway radius
+         ! (azimuth phi from +z towards -y); its moment about the race axis is R F_t
          s%race_loads(:, 1) = [e%outer_force, e%outer_moment]
          s%race_loads(:, 2) = [e%inner_force, e%inner_moment]
          s%race_loads(2, 1) = s%race_loads(2, 1) - sum(s%tr_o%force*cos(e%azimuth))
