@@ -35,12 +35,15 @@ class Result:
         return read_print(self.print_path)
 
 
-def run(deck_path, steps: int | None = None, out=None) -> Result:
+def run(deck_path, steps: int | None = None, out=None, traction_table=None) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
 
     steps: ``None`` runs as many time steps as the deck asks for, ``0`` only the
     quasi-static start, ``n`` stops after ``n`` time steps.
     out: the print file to write; by default a file in a fresh temporary directory.
+    traction_table: a traction-slip table file (ADORE's ADRX7, report 4.4.9; format in
+    docs/tribology.md) replacing the deck's RE/race traction model; the print lists it
+    under "Input from optional user subroutines".
     Raises :class:`~pyadore.errors.AdoreInputError` for bad input and
     :class:`~pyadore.errors.AdoreEngineError` when the engine fails.
     """
@@ -57,7 +60,12 @@ def run(deck_path, steps: int | None = None, out=None) -> Result:
         out_path = Path(os.fspath(out))
         if out_path.parent and not out_path.parent.exists():
             raise AdoreInputError(f"{out_path}: the output directory {out_path.parent} does not exist")
-    _core.run_file(deck, out_path, engine_steps)
+    table = None
+    if traction_table is not None:
+        table = Path(os.fspath(traction_table))
+        if not str(traction_table).strip():
+            raise AdoreInputError("traction table: the file name is blank")
+    _core.run_file(deck, out_path, engine_steps, table)
     notes = []
     if engine_steps != 0 and _core.time_steps_implemented() == 0:
         notes.append("time integration is not implemented yet; the print file ends after step 0 "

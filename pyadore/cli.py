@@ -40,7 +40,10 @@ def cli() -> None:
               help="print file to write [default: out/<deck name>.prt]")
 @click.option("--steps", type=click.IntRange(min=0),
               help="time steps to run; 0 = the quasi-static start only [default: as the deck says]")
-def run(deck: Path, out: Path | None, steps: int | None) -> None:
+@click.option("--traction-table", type=click.Path(dir_okay=False, path_type=Path),
+              help="traction-slip table (slip m/s, coefficient per line; ADORE's ADRX7) replacing "
+                   "the deck's RE/race traction model")
+def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | None) -> None:
     """Run DECK through the engine and write its print file."""
     from .api import run as run_deck
 
@@ -52,7 +55,7 @@ def run(deck: Path, out: Path | None, steps: int | None) -> None:
         click.echo(f"pyadore: error: cannot create the output directory {out.parent}: {exc.strerror}", err=True)
         sys.exit(1)
     try:
-        result = run_deck(deck, steps=steps, out=out)
+        result = run_deck(deck, steps=steps, out=out, traction_table=traction_table)
     except AdoreError as exc:
         _fail(exc)
     click.echo(f"print file written: {result.print_path}")

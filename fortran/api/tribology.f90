@@ -93,6 +93,7 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
    use adore_core_error, only: error_type, ADORE_OK
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
    use adore_api_unpack, only: contact_from_geom, traction_result
+   use adore_tribology_traction_law, only: curve_law
    implicit none
    real(wp), intent(in) :: geom(9), coef(4), kappa_scale
    integer, intent(in) :: n_gauss
@@ -107,7 +108,7 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
    status = ADORE_OK
    message = ""
    c = contact_from_geom(geom)
-   call contact_traction(c, coef, kappa_scale, n_gauss, t, error)
+   call contact_traction(c, curve_law(coef), kappa_scale, n_gauss, t, error)
    if (allocated(error)) then
       call set_error(error, status, message)
       return

@@ -1,4 +1,4 @@
-!> The standalone `adore` program: `adore DECK [OUT.prt] [--steps N]`.
+!> The standalone `adore` program: `adore DECK [OUT.prt] [--steps N] [--traction-table FILE]`.
 !>
 !> The only place that ends the process: exit code 0 ok, 1 bad input, 2 engine failure.
 program adore
@@ -9,11 +9,12 @@ program adore
    implicit none
 
    type(error_type), allocatable :: error
-   character(len=:), allocatable :: deck_path, out_path, arg
+   character(len=:), allocatable :: deck_path, out_path, arg, table_path
    integer :: i, nargs, steps, stat, dot
 
    steps = STEPS_FROM_DECK
    deck_path = ""
+   table_path = ""
    out_path = ""
    nargs = command_argument_count()
    i = 1
@@ -36,6 +37,17 @@ program adore
          read (arg, *, iostat=stat) steps
          if (stat /= 0) then
             call input_error(error, "--steps: expected an integer, got '"//arg//"'")
+            exit
+         end if
+      case ("--traction-table")
+         if (i == nargs) then
+            call input_error(error, "--traction-table needs a file")
+            exit
+         end if
+         i = i + 1
+         call get_arg(i, table_path)
+         if (len_trim(table_path) == 0) then
+            call input_error(error, "--traction-table: the file name is blank")
             exit
          end if
       case default
@@ -67,7 +79,7 @@ program adore
             out_path = deck_path//".prt"
          end if
       end if
-      call run_deck(deck_path, out_path, steps, error)
+      call run_deck(deck_path, out_path, steps, error, table_path)
    end if
 
    if (allocated(error)) then
@@ -94,9 +106,11 @@ contains
 
    subroutine usage(unit)
       integer, intent(in) :: unit
-      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N]"
+      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--traction-table FILE]"
       write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt)"
-      write (unit, "(a)") "  --steps N   -1 = as the deck says (default), 0 = quasi-static start only"
+      write (unit, "(a)") "  --steps N                -1 = as the deck says (default), 0 = quasi-static start only"
+      write (unit, "(a)") "  --traction-table FILE    traction-slip table (slip m/s, coefficient per line; ADRX7)"
+      write (unit, "(a)") "                           replacing the deck's RE/race traction model"
    end subroutine usage
 
    !> End the process with exit status `code` and nothing printed by the runtime.

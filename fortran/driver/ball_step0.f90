@@ -20,6 +20,7 @@ module adore_driver_ball_step0
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, MIN_DISSIPATION, ball_contacts, ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
+   use adore_tribology_traction_law, only: LAW_CURVE
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
@@ -130,9 +131,11 @@ contains
       s%outer_weight = b%mass(3)*b%gravity
 
       call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, BALL_START_METHOD, s%start, error, &
-                            b%traction)
+                            b%race_traction)
       if (allocated(error)) return
-      if (b%traction_model == TRACTION_EHD .and. b%lubricant_code /= 0 .and. BALL_START_METHOD == MIN_DISSIPATION) then
+      ! a traction-slip table (ADRX7) replaces the deck's traction model, EHD included
+      if (b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE .and. b%lubricant_code /= 0 &
+          .and. BALL_START_METHOD == MIN_DISSIPATION) then
          call ehd_start(error)
          if (allocated(error)) return
       end if
@@ -216,7 +219,7 @@ contains
          do iter = 1, 10
             previous = s%start
             call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, BALL_START_METHOD, s%start, error, &
-                                  b%traction, films, previous)
+                                  b%race_traction, films, previous)
             if (allocated(error)) return
             call current_films(next, error)
             if (allocated(error)) return
@@ -245,7 +248,7 @@ contains
                films(k)%rheo(j) = wall_rheology(merge(BODY_OUTER, BODY_INNER, j == 1))
                films(k)%b(j) = b_minor(j)
                if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
-               call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
+               call contact_traction(c(j), b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
                if (allocated(error)) return
                call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
                                    h, phi, error)
@@ -339,13 +342,13 @@ contains
             do j = 1, 2
                if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
                race = merge(BODY_OUTER, BODY_INNER, j == 1)
-               call contact_traction(c(j), b%traction, 1.0_wp, PRINT_GAUSS, t, error)
+               call contact_traction(c(j), b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
                if (allocated(error)) return
                if (b%lubricant_code /= 0) then
                   call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), race, s%film(j, k), &
                                       s%thermal_factor(j, k), error)
                   if (allocated(error)) return
-                  if (b%traction_model == TRACTION_EHD) then
+                  if (b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE) then
                      h = s%film(j, k)*s%thermal_factor(j, k)
                      call ehd_traction(c(j), b_minor(j), race, h, t, error)
                      if (allocated(error)) return

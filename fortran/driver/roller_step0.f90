@@ -48,6 +48,7 @@ module adore_driver_roller_step0
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    use adore_tribology_wear, only: archard_wear_rate
+   use adore_tribology_traction_law, only: law_slip_scale
    use adore_tribology_flash, only: contact_temperature_rise, FLASH_POINTS
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
                                               roller_equilibrium_spin, RACE_OUTER, RACE_INNER
@@ -217,23 +218,20 @@ contains
 
       n = b%n_elements
       allocate (s%roller_spin(n), s%moment_residual(n), s%tr_o(n), s%tr_i(n), s%tangential_force(n))
-      ! slip step of the spin search: the slip of maximum traction of the curve (>= 1 mm/s)
-      ! (kappa' = 0 at u = 1/C - A/B); 0.1 m/s for a curve without maximum
-      u_step = 0.1_wp
-      if (b%traction(2) /= 0.0_wp .and. b%traction(3) > 0.0_wp) &
-         u_step = max(1.0e-3_wp, 1.0_wp/b%traction(3) - b%traction(1)/b%traction(2))
+      ! slip step of the spin search: the slip of maximum traction (>= 1 mm/s)
+      u_step = law_slip_scale(b%race_traction)
       associate (e => s%equilibrium)
          do j = 1, n
             k = roller_spin_t(b%d, s%spin_speed, s%spin_speed, &
                               [b%speed_outer - e%orbital_speed(j), b%speed_inner - e%orbital_speed(j)])
             if (s%spin_method == SPIN_EQUILIBRIUM) then
-               call roller_equilibrium_spin(s%model%profile, k, e%c_o(j), e%c_i(j), b%traction, 0.0_wp, &
+               call roller_equilibrium_spin(s%model%profile, k, e%c_o(j), e%c_i(j), b%race_traction, 0.0_wp, &
                                             u_step, k%spin, s%moment_residual(j), error)
                if (allocated(error)) return
             end if
             s%roller_spin(j) = k%spin
-            call line_traction(s%model%profile, k, RACE_OUTER, e%c_o(j), b%traction, s%tr_o(j))
-            call line_traction(s%model%profile, k, RACE_INNER, e%c_i(j), b%traction, s%tr_i(j))
+            call line_traction(s%model%profile, k, RACE_OUTER, e%c_o(j), b%race_traction, s%tr_o(j))
+            call line_traction(s%model%profile, k, RACE_INNER, e%c_i(j), b%race_traction, s%tr_i(j))
             s%moment_residual(j) = s%tr_o(j)%moment + s%tr_i(j)%moment
             s%tangential_force(j) = -(s%tr_o(j)%force + s%tr_i(j)%force)
          end do

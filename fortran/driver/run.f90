@@ -9,6 +9,7 @@ module adore_driver_run
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
    use adore_deck_reader, only: deck_t, parse_deck
+   use adore_deck_traction_table, only: read_traction_table
    use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING, ROLLER_BEARING
    use adore_output_banner, only: write_listing, write_banner
    use adore_output_echo_data, only: echo_data_t
@@ -34,10 +35,13 @@ contains
    !>
    !> steps: STEPS_FROM_DECK (-1) for the deck's own count, 0 for the quasi-static
    !> start only, n > 0 to stop after n time steps.
-   subroutine run_deck(deck_path, out_path, steps, error)
+   subroutine run_deck(deck_path, out_path, steps, error, traction_table)
       character(len=*), intent(in) :: deck_path, out_path
       integer, intent(in) :: steps
       type(error_type), allocatable, intent(out) :: error
+      !> traction-slip table file (ADRX7, report 4.4.9) replacing the deck's RE/race traction
+      !> model; absent or blank: the deck's model
+      character(len=*), intent(in), optional :: traction_table
 
       type(deck_text_t) :: text
       type(deck_t) :: deck
@@ -48,7 +52,7 @@ contains
       character(len=:), allocatable :: part_path
       character(len=256) :: iomsg
       integer :: unit, stat
-      logical :: ok
+      logical :: ok, table
 
       if (steps < STEPS_FROM_DECK) then
          call input_error(error, "steps must be -1 (from the deck), 0 (quasi-static start "// &
@@ -70,6 +74,12 @@ contains
       ! a deck the physics cannot use fails without leaving any output behind.
       call build_bearing(deck, bearing, error)
       if (allocated(error)) return
+      table = .false.
+      if (present(traction_table)) table = len_trim(traction_table) > 0
+      if (table) then
+         call read_traction_table(trim(traction_table), bearing%race_traction, error)
+         if (allocated(error)) return
+      end if
       call fill_echo(deck, bearing, echo, error)
       if (allocated(error)) return
       select case (bearing%bearing_type)
@@ -88,7 +98,11 @@ contains
          return
       end if
 
-      call write_listing(unit, text)
+      if (table) then
+         call write_listing(unit, text, bearing%race_traction, trim(traction_table))
+      else
+         call write_listing(unit, text)
+      end if
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start.  The time integration of later steps comes with

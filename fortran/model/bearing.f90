@@ -12,6 +12,7 @@ module adore_model_bearing
                                   roller_cage_inertia, roller_moments
    use adore_contact_line_slices, only: roller_profile_t, roller_mass
    use adore_model_traction_fit, only: fit_traction_curve
+   use adore_tribology_traction_law, only: traction_law_t, curve_law
    use adore_tribology_film, only: lubricant_t, lubricant_from_code
    use adore_cage_step0, only: guide_land_t, cage_input_t
    implicit none
@@ -85,6 +86,9 @@ module adore_model_bearing
       real(wp) :: traction_input(4) = 0.0_wp
       !> RE/race traction model (Rec 10.0 traction_model): 3 = EHD (report Table 5), else the curve
       integer :: traction_model = 0
+      !> the RE/race traction law the run uses: the curve above, or a traction-slip table
+      !> (ADRX7, report 4.4.9) given besides the deck, which then replaces curve and model
+      type(traction_law_t) :: race_traction
       !> lubricant of the library (Rec 10.0 lubricant_code; 0: none, lubricant unset)
       integer :: lubricant_code = 0
       type(lubricant_t) :: lubricant
@@ -229,6 +233,7 @@ contains
       b%traction_input = k
       call fit_traction_curve(k(1), k(2), k(3), k(4), b%traction, error)
       if (allocated(error)) return
+      b%race_traction = curve_law(b%traction)
       call deck_collect_int(deck, "10.0", "traction_model", b%traction_model, error, if_present=.true.)
       call deck_collect_int(deck, "10.0", "lubricant_code", b%lubricant_code, error, if_present=.true.)
       if (allocated(error)) return

@@ -4,6 +4,7 @@
 !> Layout: docs/print-layout.md (transcribed from the report's Appendix C/D output).
 module adore_output_banner
    use adore_deck_text, only: deck_text_t
+   use adore_tribology_traction_law, only: traction_law_t, LAW_TABLE
    implicit none
    private
 
@@ -11,15 +12,31 @@ module adore_output_banner
 
 contains
 
-   !> "Listing of input data records": every deck line, verbatim (ADORE prints the
-   !> deck before its banner, report Appendix C/D).
-   subroutine write_listing(unit, text)
+   !> "Input from optional user subroutines" (a traction-slip table of ADRX7, report 4.4.9,
+   !> when the run has one: its file and points, slip in m/s) and the "Listing of input
+   !> data records": every deck line, verbatim (ADORE prints the deck before its banner,
+   !> report Appendix C/D).
+   subroutine write_listing(unit, text, traction, traction_path)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
+      type(traction_law_t), intent(in), optional :: traction
+      character(len=*), intent(in), optional :: traction_path
       integer :: i
 
       write (unit, "(a)") "Input from optional user subroutines"
       write (unit, "(a)") ""
+      if (present(traction) .and. present(traction_path)) then
+         if (traction%kind == LAW_TABLE) then
+            write (unit, "(a,i0,a)") "ADRX7 TRACTION-SLIP TABLE (", size(traction%slip), &
+               " POINTS), RE/RACE CONTACTS, REPLACES THE TRACTION MODEL OF REC 10.0"
+            write (unit, "(a)") "FILE: "//traction_path
+            write (unit, "(a)") "   SLIP (m/s)   TRAC COEFF"
+            do i = 1, size(traction%slip)
+               write (unit, "(2(1x,es12.5))") traction%slip(i), traction%kappa(i)
+            end do
+            write (unit, "(a)") ""
+         end if
+      end if
       write (unit, "(a)") "Listing of input data records"
       write (unit, "(a)") ""
       do i = 1, size(text%lines)

@@ -26,6 +26,7 @@ module adore_quasistatic_ball_kinematics
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
+   use adore_tribology_traction_law, only: traction_law_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
                                    SIDE_OUTER, SIDE_INNER
    implicit none
@@ -176,10 +177,11 @@ contains
    end function ball_contacts
 
    !> Power (W) lost in the loaded race contacts (load > 0 and a > 0) of the ball state
-   !> (beta, w_b, w_m): eq (4) with traction curve coef, n_gauss points per slip zone; with
+   !> (beta, w_b, w_m): eq (4) with the traction law `law`, n_gauss points per slip zone; with
    !> the EHD film traction (model 3) instead when ehd is present.
-   subroutine dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, n_gauss, beta, w_b, w_m, p, error, ehd)
-      real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), coef(4), beta, w_b, w_m
+   subroutine dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, law, n_gauss, beta, w_b, w_m, p, error, ehd)
+      real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), beta, w_b, w_m
+      type(traction_law_t), intent(in) :: law
       integer, intent(in) :: n_gauss
       real(wp), intent(out) :: p
       type(error_type), allocatable, intent(out) :: error
@@ -195,7 +197,7 @@ contains
          if (present(ehd)) then
             call ehd_contact_traction(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, t, error)
          else
-            call contact_traction(c(j), coef, 1.0_wp, n_gauss, t, error)
+            call contact_traction(c(j), law, 1.0_wp, n_gauss, t, error)
          end if
          if (allocated(error)) return
          p = p + t%power
@@ -205,12 +207,13 @@ contains
    !> Ball orbital speed, spin speed and pitch by minimum contact dissipation (report
    !> 4.4.7): inner contact centre in pure rolling, (beta, w_b) minimising the power of
    !> both race contacts.  Arguments as race_control_kinematics plus a(2), q(2): semi-major
-   !> axes (m) and loads (N) of the outer and inner contact; coef: traction curve [A, B, C, D]
-   !> (Rec 10.1, u in m/s), or the EHD film traction when ehd is given.  Pitch searched in [-30, 30] deg (grid step 1 deg), or within
+   !> axes (m) and loads (N) of the outer and inner contact; law: the traction law (the
+   !> deck's curve, Rec 10.1, or a traction-slip table), or the EHD film traction when ehd is given.  Pitch searched in [-30, 30] deg (grid step 1 deg), or within
    !> +-4 deg of `hint`, then refined by parabolic interpolation and golden section.
    !> Input error when neither contact is loaded or the inner contact geometry is degenerate.
-   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, k, error, hint, ehd)
-      real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), coef(4)
+   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, law, k, error, hint, ehd)
+      real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2)
+      type(traction_law_t), intent(in) :: law
       type(ball_kinematics_t), intent(out) :: k
       type(error_type), allocatable, intent(out) :: error
       !> pitch (rad) of a previous solution: the grid search is then limited to +-4 degrees
@@ -335,7 +338,7 @@ contains
          real(wp) :: p
          p = 0.0_wp
          if (allocated(error)) return
-         call dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, coef, N_GAUSS_MIN, beta, w_b, &
+         call dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, law, N_GAUSS_MIN, beta, w_b, &
                           inner_rolling_orbit(beta, w_b), p, error, ehd)
       end function power_at
 

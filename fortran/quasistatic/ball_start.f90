@@ -15,6 +15,7 @@ module adore_quasistatic_ball_start
                                                  solve_ball_equilibrium
    use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, race_control_kinematics, &
                                                 MIN_DISSIPATION, min_dissipation_kinematics, ehd_films_t
+   use adore_tribology_traction_law, only: traction_law_t
    implicit none
    private
 
@@ -31,15 +32,16 @@ contains
 
    !> Solve the coupled start for race speeds w_outer, w_inner (rad/s); control selects
    !> the kinematic hypothesis: CONTROL_OUTER, CONTROL_INNER (race control) or
-   !> MIN_DISSIPATION (report 4.4.7; needs coef, the RE/race traction curve [A, B, C, D]).
+   !> MIN_DISSIPATION (report 4.4.7; needs law, the RE/race traction law: the deck's curve or
+   !> a traction-slip table).
    !> ehd(k): ball k's EHD films - minimum dissipation of the EHD traction (model 3)
    !> instead of the curve; guess: a previous start, whose speeds and pitches seed this one.
-   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error, coef, ehd, guess)
+   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error, law, ehd, guess)
       type(ball_qs_bearing_t), intent(in) :: b
       type(ball_qs_load_t), intent(in) :: ld
       real(wp), intent(in) :: w_outer, w_inner
       integer, intent(in) :: control
-      real(wp), intent(in), optional :: coef(4)
+      type(traction_law_t), intent(in), optional :: law
       type(ball_start_t), intent(out) :: start
       type(error_type), allocatable, intent(out) :: error
       type(ehd_films_t), intent(in), optional :: ehd(:)
@@ -50,8 +52,8 @@ contains
       integer :: pass, k
       logical :: first
 
-      if (control == MIN_DISSIPATION .and. .not. present(coef)) then
-         call engine_error(error, "ball start: minimum dissipation needs the traction curve")
+      if (control == MIN_DISSIPATION .and. .not. present(law)) then
+         call engine_error(error, "ball start: minimum dissipation needs the traction law")
          return
       end if
       ! a minimum is located to ~sqrt(epsilon) of its argument: looser consistency test
@@ -77,22 +79,22 @@ contains
                      if (first) then
                         call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
                                                         [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
-                                                        [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error, &
+                                                        [e%q_o(k), e%q_i(k)], law, start%kinematics(k), error, &
                                                         ehd=ehd(k))
                      else
                         call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
                                                         [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
-                                                        [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error, &
+                                                        [e%q_o(k), e%q_i(k)], law, start%kinematics(k), error, &
                                                         previous, ehd(k))
                      end if
                   else if (first) then
                      call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
                                                      [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
-                                                     [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error)
+                                                     [e%q_o(k), e%q_i(k)], law, start%kinematics(k), error)
                   else
                      call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
                                                      [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
-                                                     [e%q_o(k), e%q_i(k)], coef, start%kinematics(k), error, &
+                                                     [e%q_o(k), e%q_i(k)], law, start%kinematics(k), error, &
                                                      previous)
                   end if
                end associate

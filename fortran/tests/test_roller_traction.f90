@@ -9,6 +9,7 @@ program test_roller_traction
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_slip, line_traction, &
                                               roller_traction_moment, roller_equilibrium_spin, &
                                               RACE_OUTER, RACE_INNER
+   use adore_tribology_traction_law, only: curve_law
    implicit none
 
    ! the Appendix D roller and traction curve (k0 0, kmax 0.1, kinf 0.08, umax 0.2 m/s)
@@ -57,9 +58,9 @@ contains
    !> fine rule against 1600 zones (converged).
    subroutine test_power_converges_to_fine_quadrature()
       type(line_traction_t) :: t12, tf, tff
-      call line_traction(prof, kin, RACE_OUTER, contact(5.7e-6_wp, 3), coef, t12)
-      call line_traction(prof, kin, RACE_OUTER, contact(5.7e-6_wp, 800), coef, tf)
-      call line_traction(prof, kin, RACE_OUTER, contact(5.7e-6_wp, 1600), coef, tff)
+      call line_traction(prof, kin, RACE_OUTER, contact(5.7e-6_wp, 3), curve_law(coef), t12)
+      call line_traction(prof, kin, RACE_OUTER, contact(5.7e-6_wp, 800), curve_law(coef), tf)
+      call line_traction(prof, kin, RACE_OUTER, contact(5.7e-6_wp, 1600), curve_law(coef), tff)
       call check(tf%power > 0.0_wp, "power > 0")
       call check(abs(tff%power/tf%power - 1.0_wp) < 1.0e-5_wp, "fine quadrature converged")
       call check(abs(t12%power/tf%power - 1.0_wp) < 0.03_wp, "12 slices within 3 % of the fine quadrature")
@@ -75,18 +76,18 @@ contains
       type(line_traction_t) :: to
       co = contact(5.7e-6_wp, 3)
       ci = contact(4.3e-6_wp, 3)
-      m0 = roller_traction_moment(prof, kin, kin%spin, co, ci, coef, 0.0_wp)
-      call line_traction(prof, kin, RACE_OUTER, co, coef, to)
+      m0 = roller_traction_moment(prof, kin, kin%spin, co, ci, curve_law(coef), 0.0_wp)
+      call line_traction(prof, kin, RACE_OUTER, co, curve_law(coef), to)
       scale = abs(to%moment)
-      call roller_equilibrium_spin(prof, kin, co, ci, coef, 0.0_wp, 0.2_wp, w, res, error)
+      call roller_equilibrium_spin(prof, kin, co, ci, curve_law(coef), 0.0_wp, 0.2_wp, w, res, error)
       call check(.not. allocated(error), "spin found")
       print "(a,4es14.6)", "  M0, scale, residual, dW:", m0, scale, res, w - kin%spin
       call check(abs(res) <= 1.0e-9_wp*scale, "moment residual")
-      call check(abs(roller_traction_moment(prof, kin, w, co, ci, coef, 0.0_wp)) <= 1.0e-9_wp*scale, &
+      call check(abs(roller_traction_moment(prof, kin, w, co, ci, curve_law(coef), 0.0_wp)) <= 1.0e-9_wp*scale, &
                  "moment at the returned spin")
       call check(m0 < 0.0_wp .and. w < kin%spin, "rolling start: both races speed the roller up (along -x)")
-      call check(roller_traction_moment(prof, kin, w - 1.0_wp, co, ci, coef, 0.0_wp) > 0.0_wp .and. &
-                 roller_traction_moment(prof, kin, w + 1.0_wp, co, ci, coef, 0.0_wp) < 0.0_wp, "moment sign change")
+      call check(roller_traction_moment(prof, kin, w - 1.0_wp, co, ci, curve_law(coef), 0.0_wp) > 0.0_wp .and. &
+                 roller_traction_moment(prof, kin, w + 1.0_wp, co, ci, curve_law(coef), 0.0_wp) < 0.0_wp, "moment sign change")
    end subroutine test_equilibrium_spin_balances_the_moment
 
 end program test_roller_traction

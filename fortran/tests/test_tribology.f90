@@ -12,6 +12,7 @@ program test_tribology
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
                                    contact_slip, pure_rolling_points, SIDE_OUTER, SIDE_INNER
    use adore_tribology_flash, only: flash_rise_dimensionless, contact_temperature_rise
+   use adore_tribology_traction_law, only: curve_law
    implicit none
 
    real(wp), parameter :: pi = acos(-1.0_wp)
@@ -99,7 +100,7 @@ contains
       do j = 1, n
          call check(abs(contact_slip(c, pts(j))) < 1.0e-9_wp, "slip: rolling point is a root")
       end do
-      call contact_traction(c, coef, 1.0_wp, 24, t, error)
+      call contact_traction(c, curve_law(coef), 1.0_wp, 24, t, error)
       call check(.not. allocated(error), "slip: accepted")
       m = 200000
       ds = 2.0_wp*c%a/m
@@ -117,7 +118,7 @@ contains
       call check(abs(t%power/p - 1.0_wp) < 1.0e-7_wp, "slip: power = fine midpoint sum")
       call check(n >= 1, "slip: the test contact has a pure-rolling point")
       c%a = 2.0_wp*c%rho
-      call contact_traction(c, coef, 1.0_wp, 24, t, error)
+      call contact_traction(c, curve_law(coef), 1.0_wp, 24, t, error)
       call check(allocated(error), "slip: a > rho rejected")
    end subroutine test_slip
 

@@ -19,7 +19,8 @@
 !> p(x1) |W - w_i| at the outermost slice x1 (within 0.1 %; |W| alone misses by 16 % / 7 %).
 !>
 !> Traction (eq 1, one-dimensional): the roller pulls the race along e_t with
-!> t(x) = kappa(|u|) sign(u) q(x) (N/m), kappa the deck's curve (traction_fit);
+!> t(x) = kappa(|u|) sign(u) q(x) (N/m), kappa the traction law (the deck's
+!> curve or a traction-slip table, `adore_tribology_traction_law`);
 !> the race pulls the roller with -t.  Power (eq 4): integral of kappa |u| q dx.  Integrals
 !> are sums over the contact's slices (its quadrature grid, Gauss points per zone).
 !> Moment on the roller about its axis (e_r x e_t = e_x):
@@ -29,7 +30,7 @@ module adore_tribology_roller_traction
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_contact_line_slices, only: roller_profile_t, line_contact_t, profile_drop
-   use adore_model_traction_fit, only: traction_coefficient
+   use adore_tribology_traction_law, only: traction_law_t, law_kappa
    implicit none
    private
 
@@ -81,13 +82,13 @@ contains
    end function line_slip
 
    !> Traction, power and moment of the line contact c (slices x, weights, q) with race
-   !> `race` for kinematics k and traction curve coef = [A, B, C, D] (eqs 1, 4).
-   pure subroutine line_traction(prof, k, race, c, coef, t)
+   !> `race` for kinematics k and traction law `law` (curve or table; eqs 1, 4).
+   pure subroutine line_traction(prof, k, race, c, law, t)
       type(roller_profile_t), intent(in) :: prof
       type(roller_spin_t), intent(in) :: k
       integer, intent(in) :: race
       type(line_contact_t), intent(in) :: c
-      real(wp), intent(in) :: coef(4)
+      type(traction_law_t), intent(in) :: law
       type(line_traction_t), intent(out) :: t
       real(wp), allocatable :: rho(:)
       real(wp) :: sgn
@@ -98,7 +99,7 @@ contains
       allocate (t%slip(n), t%kappa(n), t%traction(n), rho(n))
       if (n == 0) return
       t%slip = line_slip(prof, k, race, c%x)
-      t%kappa = traction_coefficient(coef(1), coef(2), coef(3), coef(4), abs(t%slip))
+      t%kappa = law_kappa(law, t%slip)
       where (c%q > 0.0_wp)
          t%traction = t%kappa*sign(1.0_wp, t%slip)*c%q
       elsewhere
@@ -113,17 +114,18 @@ contains
       t%sliding = sum(c%weight*abs(t%slip)*max(c%q, 0.0_wp))
       if (c%in_contact .and. c%load > 0.0_wp) then
          t%max_slip = maxval(abs(t%slip))
-         t%max_slip_kappa = traction_coefficient(coef(1), coef(2), coef(3), coef(4), t%max_slip)
+         t%max_slip_kappa = law_kappa(law, t%max_slip)
          t%net_coefficient = abs(t%force)/c%load
       end if
    end subroutine line_traction
 
    !> Moment (N m) about the roller axis of both race contacts at spin w (rad/s), other
    !> kinematics from k, plus an external moment m_ext (N m, e.g. cage friction).
-   pure function roller_traction_moment(prof, k, w, c_o, c_i, coef, m_ext) result(m)
+   pure function roller_traction_moment(prof, k, w, c_o, c_i, law, m_ext) result(m)
       type(roller_profile_t), intent(in) :: prof
       type(roller_spin_t), intent(in) :: k
-      real(wp), intent(in) :: w, coef(4), m_ext
+      type(traction_law_t), intent(in) :: law
+      real(wp), intent(in) :: w, m_ext
       type(line_contact_t), intent(in) :: c_o, c_i
       real(wp) :: m
       type(roller_spin_t) :: kk
@@ -131,8 +133,8 @@ contains
 
       kk = k
       kk%spin = w
-      call line_traction(prof, kk, RACE_OUTER, c_o, coef, to)
-      call line_traction(prof, kk, RACE_INNER, c_i, coef, ti)
+      call line_traction(prof, kk, RACE_OUTER, c_o, law, to)
+      call line_traction(prof, kk, RACE_INNER, c_i, law, ti)
       m = to%moment + ti%moment + m_ext
    end function roller_traction_moment
 
@@ -143,11 +145,12 @@ contains
    !> then bisection to the round-off of W.  The root nearest to W0 is taken (kappa is
    !> not monotonic: a second root beyond the traction maximum may exist).  Engine error
    !> when no sign change is found within 60 steps; unloaded roller (no contact): W0.
-   subroutine roller_equilibrium_spin(prof, k, c_o, c_i, coef, m_ext, u_step, w, residual, error)
+   subroutine roller_equilibrium_spin(prof, k, c_o, c_i, law, m_ext, u_step, w, residual, error)
       type(roller_profile_t), intent(in) :: prof
       type(roller_spin_t), intent(in) :: k
       type(line_contact_t), intent(in) :: c_o, c_i
-      real(wp), intent(in) :: coef(4), m_ext, u_step
+      type(traction_law_t), intent(in) :: law
+      real(wp), intent(in) :: m_ext, u_step
       real(wp), intent(out) :: w, residual
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: w0, dw, lo, hi, m_lo, m_hi, m0, mid, m_mid
@@ -161,7 +164,7 @@ contains
          return
       end if
       if (.not. (c_o%in_contact .or. c_i%in_contact)) return
-      m0 = roller_traction_moment(prof, k, w0, c_o, c_i, coef, m_ext)
+      m0 = roller_traction_moment(prof, k, w0, c_o, c_i, law, m_ext)
       residual = m0
       if (m0 == 0.0_wp) return
       ! dM/dW < 0 on the rising part of the curve: M > 0 -> spin up (W larger)
@@ -172,7 +175,7 @@ contains
       m_hi = m0
       do it = 1, 60
          hi = lo + dw
-         m_hi = roller_traction_moment(prof, k, hi, c_o, c_i, coef, m_ext)
+         m_hi = roller_traction_moment(prof, k, hi, c_o, c_i, law, m_ext)
          if (sign(1.0_wp, m_hi) /= sign(1.0_wp, m_lo)) exit
          lo = hi
          m_lo = m_hi
@@ -184,7 +187,7 @@ contains
       end if
       do it = 1, 200
          mid = 0.5_wp*(lo + hi)
-         m_mid = roller_traction_moment(prof, k, mid, c_o, c_i, coef, m_ext)
+         m_mid = roller_traction_moment(prof, k, mid, c_o, c_i, law, m_ext)
          if (sign(1.0_wp, m_mid) == sign(1.0_wp, m_lo)) then
             lo = mid
             m_lo = m_mid

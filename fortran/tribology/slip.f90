@@ -20,7 +20,7 @@ module adore_tribology_slip
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
    use adore_core_quadrature, only: gauss_legendre
-   use adore_model_traction_fit, only: traction_coefficient
+   use adore_tribology_traction_law, only: traction_law_t, law_kappa
    implicit none
    private
 
@@ -137,12 +137,13 @@ contains
    end subroutine contact_kinematics
 
    !> Traction, power loss and kinematics of the contact (report eqs 1, 3, 4): traction
-   !> curve coef = [A, B, C, D] (s/m units for B, C), each zone between pure-rolling points
+   !> law (the deck's curve or a traction-slip table, `adore_tribology_traction_law`), each zone between pure-rolling points
    !> integrated with an n_gauss-point Gauss-Legendre rule; kappa is multiplied by
    !> kappa_scale (1 for the bare curve).  Input error for a bad contact or n_gauss < 1.
-   subroutine contact_traction(c, coef, kappa_scale, n_gauss, t, error)
+   subroutine contact_traction(c, law, kappa_scale, n_gauss, t, error)
       type(ball_race_contact_t), intent(in) :: c
-      real(wp), intent(in) :: coef(4), kappa_scale
+      type(traction_law_t), intent(in) :: law
+      real(wp), intent(in) :: kappa_scale
       integer, intent(in) :: n_gauss
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
@@ -163,7 +164,7 @@ contains
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
       do j = 1, size(x)
          u = contact_slip(c, x(j))
-         kap = kappa_scale*traction_coefficient(coef(1), coef(2), coef(3), coef(4), abs(u))
+         kap = kappa_scale*law_kappa(law, u)
          dq = 0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)
          t%force = t%force + sign(kap, u)*dq
          t%power = t%power + kap*abs(u)*dq

@@ -43,9 +43,15 @@ def check(status: int, message) -> None:
     raise AdoreError(f"{text} (unknown engine status {status})")
 
 
-def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: int) -> None:
-    """Run the engine on a deck file and write the print file (status checked)."""
-    status, message = _engine().adore_run_file(os.fspath(deck_path), os.fspath(out_path), int(steps))
+def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: int,
+             traction_table: str | os.PathLike | None = None) -> None:
+    """Run the engine on a deck file and write the print file (status checked).
+
+    traction_table: a traction-slip table file (ADRX7) replacing the deck's RE/race
+    traction model; ``None`` for the deck's model.
+    """
+    table = "" if traction_table is None else os.fspath(traction_table)
+    status, message = _engine().adore_run_file(os.fspath(deck_path), os.fspath(out_path), int(steps), table)
     check(int(status), message)
 
 
