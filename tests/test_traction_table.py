@@ -169,3 +169,24 @@ def test_standalone_engine_runs_with_a_table(tmp_path, roller_deck, run_exe):
     assert proc.returncode == 0, proc.stderr
     text = out.read_text()
     assert "ADRX7 TRACTION-SLIP TABLE (3 POINTS)" in text and f"FILE: {table}" in text
+
+
+def test_ball_contact_temperature_rise_is_linear_in_a_constant_coefficient(tmp_path, ball_deck):
+    """With kappa = mu everywhere the start (least mu * int |u| dQ) does not depend on mu, and
+    the flash temperature (eqs 35-36, linear in the heat kappa |u| p) doubles with mu:
+    speeds equal, every contact loss and temperature rise twice, to print resolution."""
+    steps = []
+    for mu in (0.05, 0.10):
+        table = _write_table(tmp_path / f"mu{mu}.txt", [0.0, 1.0], [mu, mu])
+        steps.append(_step0(api.run(ball_deck, steps=0, out=tmp_path / f"b{mu}.prt",
+                                    traction_table=table).print_path))
+    one, two = steps
+    assert (one.tables["re_motion"].orbital_velocity_rpm == two.tables["re_motion"].orbital_velocity_rpm).all()
+    checked = 0
+    for name, column in [("re_thermal", "contact_temp_rise_outer_K"), ("re_thermal", "contact_temp_rise_inner_K"),
+                         ("re_motion", "contact_loss_outer_W"), ("re_motion", "contact_loss_inner_W")]:
+        for a, b in zip(one.tables[name][column], two.tables[name][column]):
+            assert a > 0.0
+            assert abs(b - 2.0 * a) <= 2.0 * _half_unit(a) + _half_unit(b) + 1e-12 * b, (column, a, b)
+            checked += 1
+    assert checked == 4 * 18

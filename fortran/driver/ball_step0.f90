@@ -19,13 +19,14 @@ module adore_driver_ball_step0
    use adore_driver_mount, only: mount_bearing
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, MIN_DISSIPATION, ball_contacts, ehd_films_t
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
-   use adore_tribology_traction_law, only: LAW_CURVE
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, major_axis_nodes, &
+                                   contact_slip
+   use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise
-   use adore_tribology_flash, only: FLASH_POINTS
+   use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
@@ -300,6 +301,32 @@ contains
          end associate
       end subroutine ehd_flash
 
+      !> Average flash temperature rise (K) of a race contact whose traction is the run's
+      !> law (the deck's curve or a traction-slip table; report 2.7-2.8, eqs 35-36): strips
+      !> along the major axis (EHD_GAUSS Gauss points per slip zone) carry the heat factor
+      !> g = kappa(|u|) |u| (eq 29) over the Hertz ellipse (semi-minor axis b_minor, m; peak
+      !> pressure p0, Pa), both surfaces at the entraining speed u_e (m/s): the roller run's
+      !> model, with the ball's own slip along its major axis.
+      subroutine law_flash(cj, b_minor, p0, race, u_e, rise, error)
+         type(ball_race_contact_t), intent(in) :: cj
+         real(wp), intent(in) :: b_minor, p0, u_e
+         integer, intent(in) :: race
+         real(wp), intent(out) :: rise
+         type(error_type), allocatable, intent(out) :: error
+         type(contact_traction_t) :: t
+         real(wp), allocatable :: x(:), w(:), u(:)
+         real(wp) :: dt_max
+
+         call major_axis_nodes(cj, EHD_GAUSS, t, x, w)
+         u = contact_slip(cj, x)
+         associate (m1 => b%material(BODY_ELEMENT), m2 => b%material(race))
+            call contact_temperature_rise(cj%a, b_minor, p0, x, w, law_kappa(b%race_traction, u)*abs(u), u_e, u_e, &
+                                          [m1%density, m1%heat_capacity, m1%conductivity], &
+                                          [m2%density, m2%heat_capacity, m2%conductivity], FLASH_POINTS, &
+                                          rise, dt_max, error)
+         end associate
+      end subroutine law_flash
+
       !> The lubricant's traction rheology at the wall temperature of a race contact.
       function wall_rheology(race) result(rheo)
          integer, intent(in) :: race
@@ -320,6 +347,7 @@ contains
          type(contact_traction_t) :: t
          real(wp) :: nan, h, b_minor(2), k_ell(2), p_h(2)
          integer :: k, j, race
+         logical :: ehd
 
          nan = ieee_value(1.0_wp, ieee_quiet_nan)
          allocate (s%slip(2, b%n_elements), s%trac_coeff(2, b%n_elements), s%spin_roll(2, b%n_elements), &
@@ -344,19 +372,23 @@ contains
                race = merge(BODY_OUTER, BODY_INNER, j == 1)
                call contact_traction(c(j), b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
                if (allocated(error)) return
+               ehd = b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE .and. &
+                     b%lubricant_code /= 0
                if (b%lubricant_code /= 0) then
                   call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), race, s%film(j, k), &
                                       s%thermal_factor(j, k), error)
                   if (allocated(error)) return
-                  if (b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE) then
-                     h = s%film(j, k)*s%thermal_factor(j, k)
-                     call ehd_traction(c(j), b_minor(j), race, h, t, error)
-                     if (allocated(error)) return
-                     call ehd_flash(c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
-                     if (allocated(error)) return
-                     s%contact_temp(j, k) = wall_temperature(race)
-                  end if
                end if
+               if (ehd) then
+                  h = s%film(j, k)*s%thermal_factor(j, k)
+                  call ehd_traction(c(j), b_minor(j), race, h, t, error)
+                  if (allocated(error)) return
+                  call ehd_flash(c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
+               else
+                  call law_flash(c(j), b_minor(j), p_h(j), race, abs(t%rolling_speed), s%temp_rise(j, k), error)
+               end if
+               if (allocated(error)) return
+               s%contact_temp(j, k) = wall_temperature(race)
                s%slip(j, k) = t%node_slip
                s%trac_coeff(j, k) = t%node_coefficient
                s%spin_roll(j, k) = t%spin_roll
