@@ -10,7 +10,7 @@ from pathlib import Path
 from . import _core
 from .errors import AdoreInputError
 
-__all__ = ["Result", "run", "STEPS_FROM_DECK"]
+__all__ = ["Result", "run", "read_traction_table", "STEPS_FROM_DECK"]
 
 #: ``steps`` value the engine reads as "as many time steps as the deck asks for".
 STEPS_FROM_DECK = -1
@@ -33,6 +33,17 @@ class Result:
         from .printout import read_print
 
         return read_print(self.print_path)
+
+
+def read_traction_table(path):
+    """The traction-slip table file at ``path`` (ADORE's ADRX7, report 4.4.9), read and
+    checked by the engine exactly as a run reads it: a :class:`pandas.DataFrame` with
+    columns ``slip_m_s`` and ``kappa``.  Raises :class:`~pyadore.errors.AdoreInputError`
+    (file:line:col and a caret for an unreadable line) for a bad table."""
+    import pandas as pd
+
+    slip, kappa = _core.traction_table(Path(os.fspath(path)))
+    return pd.DataFrame({"slip_m_s": slip, "kappa": kappa})
 
 
 def run(deck_path, steps: int | None = None, out=None, traction_table=None) -> Result:

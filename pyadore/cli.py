@@ -65,17 +65,35 @@ def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | 
 
 @cli.command()
 @click.argument("deck", type=click.Path(dir_okay=False, path_type=Path))
-def validate(deck: Path) -> None:
+@click.option("--traction-table", type=click.Path(dir_okay=False, path_type=Path),
+              help="also check a traction-slip table file (ADRX7) as `run` would read it")
+def validate(deck: Path, traction_table: Path | None) -> None:
     """Check DECK against the record schema; list every problem at once."""
     from .deck import check_deck
 
     parsed, problems = check_deck(deck)
+    table_error = None
+    table = None
+    if traction_table is not None:
+        from .api import read_traction_table
+
+        try:
+            table = read_traction_table(traction_table)
+        except AdoreError as exc:
+            table_error = exc
     if problems:
         for problem in problems:
             click.echo(problem.format(), err=True)
         click.echo(f"{deck}: {len(problems)} problem(s)", err=True)
+    if table_error is not None:
+        click.echo(f"pyadore: error: {table_error}", err=True)
+    if problems or table_error is not None:
         sys.exit(1)
     click.echo(parsed.summary())
+    if table is not None:
+        click.echo(f"{traction_table}: traction-slip table, {len(table)} points, slip 0 to "
+                   f"{table.slip_m_s.iloc[-1]:.5g} m/s, coefficient {table.kappa.min():.5g} to "
+                   f"{table.kappa.max():.5g}")
 
 
 @cli.command()

@@ -180,9 +180,20 @@ ROLLER_STEP0_COMPUTED = [
 ]
 
 
+# The two pockets at zero gap (roller 3 end 2, roller 7 end 1) are contacts of unknown force:
+# the report's cage row puts 15.16 N on roller 3 end 2 yet prints 0 for roller 7 end 1
+# (docs/tribology.md), so the run prints NaN for both; the legible golden 0 of roller 7 end 1
+# is then "not computed", never a pass.
+ROLLER_TOUCHING_POCKETS = ("re_cage 3/2 ", "re_cage 7/1 ")
+
+
 def test_roller_step0_mechanics_within_tolerance(roller_report):
     comps = _selected(roller_report, "step 0 ", ROLLER_STEP0_COMPUTED)
-    compared = [c for c in comps if c.status != "unknown"]
+    touching = [c for c in comps if any(p in c.name for p in ROLLER_TOUCHING_POCKETS)
+                and c.column in ("contact_force_N", "contact_loss_W", "wear_rate_m3_s")]
+    assert {c.status for c in touching} <= {"unknown", "not_computed"}
+    assert any(c.status == "not_computed" for c in touching)
+    compared = [c for c in comps if c.status != "unknown" and c not in touching]
     assert len(compared) >= 200
     bad = [f"{c.name}: golden {c.golden} run {c.run} ({c.rel_error:.2%}, {c.tolerance})"
            for c in compared if c.status != "within"]

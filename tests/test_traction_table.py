@@ -16,6 +16,7 @@ import sys
 import numpy as np
 import pytest
 
+import pyadore
 from pyadore import _core, api
 from pyadore.errors import AdoreInputError
 from pyadore.printout import read_print
@@ -190,3 +191,35 @@ def test_ball_contact_temperature_rise_is_linear_in_a_constant_coefficient(tmp_p
             assert abs(b - 2.0 * a) <= 2.0 * _half_unit(a) + _half_unit(b) + 1e-12 * b, (column, a, b)
             checked += 1
     assert checked == 4 * 18
+
+
+def test_read_traction_table_returns_what_the_run_uses(tmp_path):
+    table = _write_table(tmp_path / "t.txt", [0.0, 0.2, 2.0], [0.0, 0.1, 0.08])
+    frame = pyadore.read_traction_table(table)
+    assert list(frame.columns) == ["slip_m_s", "kappa"]
+    assert frame.slip_m_s.tolist() == [0.0, 0.2, 2.0] and frame.kappa.tolist() == [0.0, 0.1, 0.08]
+    (tmp_path / "bad.txt").write_text("0 0\n0.2 x\n")
+    with pytest.raises(AdoreInputError, match=r"bad.txt:2:5: traction table: expected a number"):
+        pyadore.read_traction_table(tmp_path / "bad.txt")
+
+
+def test_validate_checks_the_traction_table_too(tmp_path, roller_deck):
+    good = _write_table(tmp_path / "t.txt", [0.0, 0.2, 2.0], [0.0, 0.1, 0.08])
+    proc = subprocess.run([sys.executable, "-m", "pyadore", "validate", str(roller_deck), "--traction-table",
+                           str(good)], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert "traction-slip table, 3 points, slip 0 to 2 m/s, coefficient 0 to 0.1" in proc.stdout
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0 0\n0.2 0.1\n0.1 0.1\n")
+    proc = subprocess.run([sys.executable, "-m", "pyadore", "validate", str(roller_deck), "--traction-table",
+                           str(bad)], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 1
+    assert "Traceback" not in proc.stderr
+    assert f"{bad}: traction table point 3: expected a slip greater" in proc.stderr
+
+
+def test_standalone_engine_needs_the_table_file_name(tmp_path, roller_deck, run_exe):
+    proc = run_exe(roller_deck, tmp_path / "r.prt", "--traction-table")
+    assert proc.returncode == 1
+    assert "adore: error: --traction-table needs a file" in proc.stderr
+    assert not (tmp_path / "r.prt").exists()

@@ -312,3 +312,39 @@ subroutine adore_tribo_wear(k, rc, n, sliding, hardness, rate, status, message)
    hardness = rockwell_c_hardness(rc)
    rate = archard_wear_rate(k, rc, sliding)
 end subroutine adore_tribo_wear
+
+!> Traction-slip table file (ADRX7, adore_deck_traction_table): its n points, slip (m/s)
+!> and kappa (-), checked as a run checks them.  Call with nmax = 0 for n alone, then with
+!> nmax = n for the points.  Input error (message with file:line:col) for a bad file.
+subroutine adore_tribo_traction_table(path, nmax, n, slip, kappa, status, message)
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, ADORE_OK
+   use adore_api_status, only: set_error
+   use adore_tribology_traction_law, only: traction_law_t
+   use adore_deck_traction_table, only: read_traction_table
+   implicit none
+   character(len=*), intent(in) :: path
+   integer, intent(in) :: nmax
+   integer, intent(out) :: n
+   real(wp), intent(out) :: slip(nmax), kappa(nmax)
+   integer, intent(out) :: status
+   character(len=8192), intent(out) :: message
+   type(error_type), allocatable :: error
+   type(traction_law_t) :: law
+
+   n = 0
+   slip = 0.0_wp
+   kappa = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   call read_traction_table(path, law, error)
+   if (allocated(error)) then
+      call set_error(error, status, message)
+      return
+   end if
+   n = size(law%slip)
+   if (nmax >= n) then
+      slip(:n) = law%slip
+      kappa(:n) = law%kappa
+   end if
+end subroutine adore_tribo_traction_table

@@ -28,28 +28,16 @@ program adore
          write (output_unit, "(a)") "adore (pyadore) "//adore_version_string
          call exit_with(ADORE_OK)
       case ("--steps")
-         if (i == nargs) then
-            call input_error(error, "--steps needs a value")
-            exit
-         end if
-         i = i + 1
-         call get_arg(i, arg)
+         call option_value(i, "--steps", "a value", arg, error)
+         if (allocated(error)) exit
          read (arg, *, iostat=stat) steps
          if (stat /= 0) then
             call input_error(error, "--steps: expected an integer, got '"//arg//"'")
             exit
          end if
       case ("--traction-table")
-         if (i == nargs) then
-            call input_error(error, "--traction-table needs a file")
-            exit
-         end if
-         i = i + 1
-         call get_arg(i, table_path)
-         if (len_trim(table_path) == 0) then
-            call input_error(error, "--traction-table: the file name is blank")
-            exit
-         end if
+         call option_value(i, "--traction-table", "a file", table_path, error)
+         if (allocated(error)) exit
       case default
          if (len(deck_path) == 0) then
             deck_path = arg
@@ -93,6 +81,23 @@ program adore
    call exit_with(ADORE_OK)
 
 contains
+
+   !> The value after option `name` at argument i (i moves to it); input error when it is
+   !> missing or blank, saying that the option needs `what`.
+   subroutine option_value(i, name, what, value, error)
+      integer, intent(inout) :: i
+      character(len=*), intent(in) :: name, what
+      character(len=:), allocatable, intent(out) :: value
+      type(error_type), allocatable, intent(out) :: error
+
+      if (i == command_argument_count()) then
+         call input_error(error, name//" needs "//what)
+         return
+      end if
+      i = i + 1
+      call get_arg(i, value)
+      if (len_trim(value) == 0) call input_error(error, name//": expected "//what//", got a blank argument")
+   end subroutine option_value
 
    subroutine get_arg(n, value)
       integer, intent(in) :: n

@@ -436,7 +436,7 @@ contains
    !> the lands stay NaN) and the Cage row of the bodies table.
    !>
    !> Contact force, loss and wear rate are 0 and the code 0 where there is no contact
-   !> (pocket: gap >= 0; land: gap > 0, see adore_cage_step0); a contact needs the cage
+   !> (pocket and land: gap > 0, see adore_cage_step0); a contact needs the cage
    !> contact model (Rec 10.5.x, not done): NaN / not computed.  Land contact and attitude angles print 0 without contact
    !> (as the report's ball step 0), NaN with contact.  The cage's angular velocity is about
    !> +x (theta = phi = 0); its angular position theta, phi is 0 for an untilted cage (the

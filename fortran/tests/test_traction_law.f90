@@ -11,6 +11,7 @@ program test_traction_law
                                            law_slip_scale, LAW_TABLE
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_INNER
    use adore_deck_traction_table, only: read_traction_table
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none
 
    ! the Appendix D curve (k0 0, kmax 0.1, kinf 0.08, umax 0.2 m/s), fitted
@@ -103,8 +104,7 @@ contains
       type(error_type), allocatable :: error
       real(wp) :: nan
 
-      nan = 0.0_wp
-      nan = nan/nan
+      nan = ieee_value(nan, ieee_quiet_nan)
       call table_law([0.0_wp], [0.1_wp], "t", law, error)
       call expect(error, "at least 2 points", "one point rejected")
       call table_law([0.1_wp, 0.2_wp], [0.1_wp, 0.1_wp], "t", law, error)

@@ -85,6 +85,18 @@ def wear_rate(k: float, rockwell_c: float, sliding):
     return float(h), rate
 
 
+def traction_table(path):
+    """Read a traction-slip table file (ADRX7) as the engine reads it: (slip m/s, kappa)."""
+    import os
+
+    path = os.fspath(path)
+    n, _, _, status, message = _engine().adore_tribo_traction_table(path, 0)
+    check(int(status), message)
+    n, slip, kappa, status, message = _engine().adore_tribo_traction_table(path, int(n))
+    check(int(status), message)
+    return slip, kappa
+
+
 def flash_rise(xi, q):
     """Dimensionless flash temperature rise (report eq 53) on the grid xi for flux q."""
     import numpy as np
