@@ -140,7 +140,8 @@ def test_report_cage_row_is_one_pocket_and_two_land_contacts(golden, run):
       its centre at radius e;
     * pocket loss = mu F_n x sliding (|omega_roller| + omega_c) D/2 = 88.0 m/s (the printed
       roller angular velocity is inertial, about -x; relative to the cage it adds omega_c),
-      and with the contact losses it closes the printed total."""
+      and with the contact losses it closes the printed total;
+    * the cage wear rate of section 4 is Archard's law over the same two kinds of contact."""
     rpm = np.pi / 30
     mu, e, od, id_, d = 0.05, 5.0e-5, 0.045, 0.040, D
     loads, land = golden.table("loads").loc["Cage"], golden.table("race_cage")
@@ -168,6 +169,11 @@ def test_report_cage_row_is_one_pocket_and_two_land_contacts(golden, run):
     total = contact + 2 * land_loss + pocket_loss
     # print rounding: F_z +-0.005 N (x mu x 88 m/s = 0.022 W), the total +-0.005 W
     assert abs(total - golden.table("performance")["total_power_loss_W"].iloc[0]) <= 0.03
+    # the cage wear (section 4): Archard over the same contacts, cage steel k 5E-4, RC 20
+    # (echo; H = RC x 9.80665E+07 Pa, docs/tribology.md "Wear rates")
+    sliding = f_n * (omega_r + omega_c) * d / 2 + 2 * f_land * omega_c * (od / 2 + e)
+    wear = 5e-4 / (20 * 9.80665e7) * sliding
+    assert wear == pytest.approx(golden.table("summary")["cage_wear_rate_m3_s"].iloc[0], rel=2e-3)
 
 
 # --- contact temperature rise (report 2.7-2.8, eqs 35-36) ----------------------------------

@@ -75,3 +75,40 @@ def test_uniform_sliding_is_archards_closed_form():
 def test_wear_wrapper_refuses_bad_input(k, rc, sliding):
     with pytest.raises(AdoreInputError, match="wear rate"):
         _core.wear_rate(k, rc, [sliding])
+
+
+@pytest.fixture(scope="module")
+def roller_print(tmp_path_factory):
+    from pyadore import run
+
+    return read_print(run(ROLLER_DECK, steps=0, out=tmp_path_factory.mktemp("wear") / "d.prt")
+                      .print_path).steps[0]
+
+
+def test_inner_race_wear_matches_the_printed_row(roller_print):
+    """The race rows of section 2 ("Time Ave Wear Rate"): Archard with the race's own k and
+    hardness (steel, RC 61, k 5E-6 in the echo) over all the race's contacts.  The report
+    prints the inner race of the roller run, 6.540E-15 m**3/s (the outer race's is lost)."""
+    printed = _roller_golden().table("bodies").loc["IRace", "wear_rate_m3_s"]
+    run = roller_print.table("bodies").loc["IRace", "wear_rate_m3_s"]
+    assert printed == 6.540e-15
+    assert run == pytest.approx(printed, rel=2e-3)
+
+
+def test_race_wear_is_archard_of_its_contacts_sliding(roller_print, tmp_path):
+    """Independent of the report: each race's wear is k/H times the sum over its contacts of
+    integral |u| dQ (the elements' sliding integrals), in both runs; and the balls' and races'
+    wear share one k/H in the ball run (all steel RC 61, k 5E-6), so the two races together
+    wear as much as all balls together."""
+    from pyadore import run
+
+    rollers, _, _ = _core.roller_step0_tribology(ROLLER_DECK)
+    _, (outer, inner) = _core.wear_rate(5e-6, 61.0, [rollers["sliding_o"].sum(), rollers["sliding_i"].sum()])
+    bodies = roller_print.table("bodies")
+    for body, expected in (("ORace", outer), ("IRace", inner)):
+        assert bodies.loc[body, "wear_rate_m3_s"] == pytest.approx(expected, rel=6e-4), body  # 4 digits
+    ball = read_print(run(ROOT / "decks" / "appendix_c_ball.inp", steps=0, out=tmp_path / "c.prt")
+                      .print_path).steps[0]
+    races = ball.table("bodies").loc[["ORace", "IRace"], "wear_rate_m3_s"].sum()
+    balls = ball.table("re_motion")["wear_rate_m3_s"].sum()
+    assert races == pytest.approx(balls, rel=1.1e-3)   # every printed value within 5e-4

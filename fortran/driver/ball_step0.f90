@@ -81,6 +81,9 @@ module adore_driver_ball_step0
       !> wear rate of each ball (m**3/s): Archard with the ball's k and hardness over both
       !> race contacts (adore_tribology_wear)
       real(wp), allocatable :: wear(:)
+      !> wear rate of the outer (1) and inner (2) race (m**3/s): Archard with the race's k and
+      !> hardness over all its contacts (adore_tribology_wear; section 2's ORace/IRace rows)
+      real(wp) :: race_wear(2) = 0.0_wp
       real(wp) :: power_loss = 0.0_wp              !< bearing power loss: sum of contact losses (W)
    end type ball_step0_t
 
@@ -400,6 +403,10 @@ contains
          end do
          s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
                                     s%sliding(1, :) + s%sliding(2, :))
+         s%race_wear(1) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
+                                            sum(s%sliding(1, :)))
+         s%race_wear(2) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
+                                            sum(s%sliding(2, :)))
       end subroutine contact_tribology
 
       !> Race loads of section 3: the equilibrium's normal loads plus the net traction F_t

@@ -282,6 +282,7 @@ contains
          bodies(3, 5) = b%speed_inner*rpm
          bodies(2, 10) = s%mounting%outer_hoop_stress  ! largest hoop stress (adore_mounting_fits)
          bodies(3, 10) = s%mounting%inner_hoop_stress
+         bodies(2:3, 11) = s%race_wear                 ! Archard over each race's contacts
          ! section 3: forces of the balls on the races and the reactions holding them
          loads = nan
          ! normal contact loads plus contact tractions (solve_ball_step0)
@@ -397,6 +398,7 @@ contains
          bodies(3, 5) = b%speed_inner*rpm
          bodies(2, 10) = s%mounting%outer_hoop_stress
          bodies(3, 10) = s%mounting%inner_hoop_stress
+         bodies(2:3, 11) = s%race_wear
          loads = nan
          ! normal slice loads plus slice tractions (roller_tribology); the start leaves
          ! race weights out, so the external loads balance the internal ones

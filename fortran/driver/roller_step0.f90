@@ -81,6 +81,9 @@ module adore_driver_roller_step0
       !> wear rate of each roller (m**3/s): Archard with the roller's k and hardness over
       !> both race contacts (adore_tribology_wear)
       real(wp), allocatable :: wear(:)
+      !> wear rate of the outer (1) and inner (2) race (m**3/s): Archard with the race's k and
+      !> hardness over all its contacts (section 2's ORace/IRace rows)
+      real(wp) :: race_wear(2) = 0.0_wp
       !> average flash temperature rise (K) of each roller's outer (1) and inner (2) race
       !> contact, eqs 35-36 over the contact ellipse the print reports (flash_rise)
       real(wp), allocatable :: temp_rise(:, :)
@@ -239,6 +242,10 @@ contains
       s%contact_power = sum(s%tr_o%power) + sum(s%tr_i%power)
       s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
                                  s%tr_o%sliding + s%tr_i%sliding)
+      s%race_wear(1) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
+                                         sum(s%tr_o%sliding))
+      s%race_wear(2) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
+                                         sum(s%tr_i%sliding))
       allocate (s%temp_rise(2, n), s%contact_temp(2, n))
       associate (e => s%equilibrium)
          do j = 1, n
