@@ -34,6 +34,13 @@ STEP0_SECTION4_AND_TEMPERATURES = [
     ("performance", "shft_inner_temp_K"),
 ]
 
+#: Section 2's bodies columns but the hoop stress (the cage's is not computed; the ball
+#: report prints 0 for it): cage state (tests/test_cage_step0.py) and the race rows
+#: (report.f90 race_rows; Archard race wear).
+BODY_COLUMNS_BUT_HOOP = ["mc_pos_axial_m", "mc_pos_radial_m", "mc_pos_orbital_deg", "orbital_velocity_rpm",
+                         "ang_vel_amplitude_rpm", "ang_vel_theta_deg", "ang_vel_phi_deg", "ang_pos_theta_deg",
+                         "ang_pos_phi_deg", "wear_rate_m3_s"]
+
 #: (table, column) of step 0 that the engine computes for a ball bearing.
 BALL_STEP0_COMPUTED = [
     ("re_contact", "*"),
@@ -69,6 +76,7 @@ BALL_STEP0_COMPUTED = [
     ("re_cage", "contact_loss_W"),
     ("re_cage", "wear_rate_m3_s"),
     ("race_cage", "*"),
+    *[("bodies", column) for column in BODY_COLUMNS_BUT_HOOP],
 ]
 
 
@@ -177,6 +185,7 @@ ROLLER_STEP0_COMPUTED = [
     ("re_thermal", "contact_temp_rise_inner_K"),
     ("re_thermal", "contact_temp_outer_K"),
     ("re_thermal", "contact_temp_inner_K"),
+    ("bodies", "*"),
 ]
 
 

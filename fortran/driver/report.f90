@@ -275,11 +275,7 @@ contains
          thermal(:, 8) = s%contact_temp(1, :)
          thermal(:, 9) = s%contact_temp(2, :)
          ! section 2 bodies: Cage, ORace, IRace
-         bodies(2:3, :) = nan
-         bodies(2, 1:2) = 0.0_wp                       ! outer race fixed
-         bodies(2, 5) = b%speed_outer*rpm
-         bodies(3, 2) = hypot(e%u(2), e%u(3))
-         bodies(3, 5) = b%speed_inner*rpm
+         call race_rows(bodies, e%u(2:3), b%speed_outer, b%speed_inner)
          bodies(2, 10) = s%mounting%outer_hoop_stress  ! largest hoop stress (adore_mounting_fits)
          bodies(3, 10) = s%mounting%inner_hoop_stress
          bodies(2:3, 11) = s%race_wear                 ! Archard over each race's contacts
@@ -391,11 +387,8 @@ contains
          ! scaled by D/2 as its normal load column)
          slices(:, 5, 1) = s%tr_o(1)%traction
          slices(:, 10, 1) = s%tr_i(1)%traction
-         bodies(2:3, :) = nan
-         bodies(2, 1:2) = 0.0_wp
-         bodies(2, 5) = b%speed_outer*rpm
-         bodies(3, 2) = hypot(e%u(1), e%u(2))
-         bodies(3, 5) = b%speed_inner*rpm
+         call race_rows(bodies, e%u, b%speed_outer, b%speed_inner)
+         bodies(3, 1) = 0.0_wp          ! the roller model has no axial race motion (no thrust)
          bodies(2, 10) = s%mounting%outer_hoop_stress
          bodies(3, 10) = s%mounting%inner_hoop_stress
          bodies(2:3, 11) = s%race_wear
@@ -506,6 +499,37 @@ contains
          if (.not. any_contact) cage_row(11) = 0.0_wp
       end associate
    end subroutine cage_tables
+
+   !> Section 2's ORace and IRace rows (bodies rows 2, 3) at step 0, from the inner race's
+   !> displacement u_yz = (Y, Z) (m) and the race speeds (rad/s): the outer race fixed at
+   !> the origin, the inner race centre at radius |u_yz| and azimuth (from +z towards -y, as
+   !> the elements and the cage) of u_yz; no orbital motion of either centre in the
+   !> quasi-static start; both races untilted (the runs prescribe zero misalignment), so
+   !> they spin about +x (theta 0; 180 deg for a negative speed), phi 0, at angular position
+   !> 0.  The report prints exactly these for the roller run's inner race (0, 7.758E-06, 0,
+   !> 0, 7.000E+04, 0, 0, 0, 0) and phi 0 for the ball run's outer race.  The inner race's
+   !> axial position (its origin is not identified for the ball), hoop stress and wear are
+   !> left NaN for the caller.
+   subroutine race_rows(bodies, u_yz, w_outer, w_inner)
+      real(wp), intent(inout) :: bodies(:, :)
+      real(wp), intent(in) :: u_yz(2), w_outer, w_inner
+      real(wp), parameter :: deg = 180.0_wp/pi, rpm = 30.0_wp/pi
+      real(wp) :: w(2)
+      integer :: j
+
+      bodies(2:3, :) = ieee_value(1.0_wp, ieee_quiet_nan)
+      bodies(2, 1:3) = 0.0_wp
+      bodies(3, 2) = hypot(u_yz(1), u_yz(2))
+      bodies(3, 3) = 0.0_wp
+      if (bodies(3, 2) > 0.0_wp) bodies(3, 3) = modulo(atan2(-u_yz(1), u_yz(2)), 2.0_wp*pi)*deg
+      w = [w_outer, w_inner]
+      do j = 1, 2
+         bodies(j + 1, 4) = 0.0_wp
+         bodies(j + 1, 5) = abs(w(j))*rpm
+         bodies(j + 1, 6) = merge(180.0_wp, 0.0_wp, w(j) < 0.0_wp)
+         bodies(j + 1, 7:9) = 0.0_wp
+      end do
+   end subroutine race_rows
 
    !> Step-0 values fixed by the deck alone, before any thermal solution or cage contact:
    !> the bodies' initial temperatures of Rec 2.7 (rolling elements' Bulk Temp, the cage's
