@@ -176,6 +176,32 @@ def test_report_cage_row_is_one_pocket_and_two_land_contacts(golden, run):
     assert wear == pytest.approx(golden.table("summary")["cage_wear_rate_m3_s"].iloc[0], rel=2e-3)
 
 
+def test_report_cage_accelerations_follow_its_cage_row(golden):
+    """Section 3's cage accelerations from the same row (report-internal): the mass centre
+    acceleration is F/m plus gravity (Rec 11: -9.81 m/s**2 along z), and the printed
+    angular acceleration, labelled rpm/s, is M/I in rad/s**2 times the length scale
+    L = 4e-3 m of the echo (Euler's equations without gyroscopic terms: the cage spins about
+    its symmetry axis x, I_y = I_z).  The same factor L appears in the outer 'Nor Load'
+    column of section 1a (test_run_golden.py): ADORE prints these two with the length
+    scale where the unit needs none.  Inertias from the echo."""
+    from pyadore.printout import read_print
+
+    echo = read_print(ROOT / "golden" / "appendix_d_roller.prt").echo
+    mass = echo["inertial_parameters.cage[1]"]
+    inertia = [echo[f"inertial_parameters.cage[{i}]"] for i in (2, 3, 4)]
+    length = echo["scale_factors_and_output_controls.length_m"]
+    assert (mass, length) == (0.0158251, 0.004)
+    loads, acc = golden.table("loads").loc["Cage"], golden.table("accelerations").loc["Cage"]
+    force = [loads.force_x_N, loads.force_y_N, loads.force_z_N]
+    for f, g, a in zip(force, (0.0, 0.0, -9.81), (acc.acc_x_m_s2, acc.acc_y_m_s2, acc.acc_z_m_s2)):
+        assert f / mass + g == pytest.approx(a, rel=1e-3, abs=1e-9)
+    moment = [loads.moment_x_Nm, loads.moment_y_Nm, loads.moment_z_Nm]
+    printed = [acc.ang_acc_x_rpm_s, acc.ang_acc_y_rpm_s, acc.ang_acc_z_rpm_s]
+    for m, i, a in zip(moment, inertia, printed):
+        assert m / i * length == pytest.approx(a, rel=1e-3)
+        assert abs(m / i * 30 / np.pi / a) > 1e3          # not rpm/s: that is 2.4e3 x larger
+
+
 # --- contact temperature rise (report 2.7-2.8, eqs 35-36) ----------------------------------
 # The engine applies the ball's flash model to each line contact as the ellipse the print
 # reports for it (major half width = half contact length, minor = mean slice half width,
