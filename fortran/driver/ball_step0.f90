@@ -297,12 +297,16 @@ contains
          real(wp), intent(out) :: rise
          type(error_type), allocatable, intent(out) :: error
          real(wp) :: dt_max
-         associate (m1 => b%material(BODY_ELEMENT), m2 => b%material(race))
-            call ehd_temperature_rise(cj, wall_rheology(race), h, b_minor, EHD_GAUSS, FLASH_POINTS, u_e, u_e, &
-                                      [m1%density, m1%heat_capacity, m1%conductivity], &
-                                      [m2%density, m2%heat_capacity, m2%conductivity], rise, dt_max, error)
-         end associate
+         call ehd_temperature_rise(cj, wall_rheology(race), h, b_minor, EHD_GAUSS, FLASH_POINTS, u_e, u_e, &
+                                   thermal_properties(BODY_ELEMENT), thermal_properties(race), rise, dt_max, error)
       end subroutine ehd_flash
+
+      !> [density (kg/m**3), heat capacity (J/kg/K), conductivity (W/m/K)] of a body (Rec 8).
+      pure function thermal_properties(body) result(th)
+         integer, intent(in) :: body
+         real(wp) :: th(3)
+         th = [b%material(body)%density, b%material(body)%heat_capacity, b%material(body)%conductivity]
+      end function thermal_properties
 
       !> Average flash temperature rise (K) of a race contact whose traction is the run's
       !> law (the deck's curve or a traction-slip table; report 2.7-2.8, eqs 35-36): strips
@@ -322,12 +326,9 @@ contains
 
          call major_axis_nodes(cj, EHD_GAUSS, t, x, w)
          u = contact_slip(cj, x)
-         associate (m1 => b%material(BODY_ELEMENT), m2 => b%material(race))
-            call contact_temperature_rise(cj%a, b_minor, p0, x, w, law_kappa(b%race_traction, u)*abs(u), u_e, u_e, &
-                                          [m1%density, m1%heat_capacity, m1%conductivity], &
-                                          [m2%density, m2%heat_capacity, m2%conductivity], FLASH_POINTS, &
-                                          rise, dt_max, error)
-         end associate
+         call contact_temperature_rise(cj%a, b_minor, p0, x, w, law_kappa(b%race_traction, u)*abs(u), u_e, u_e, &
+                                       thermal_properties(BODY_ELEMENT), thermal_properties(race), FLASH_POINTS, &
+                                       rise, dt_max, error)
       end subroutine law_flash
 
       !> The lubricant's traction rheology at the wall temperature of a race contact.
