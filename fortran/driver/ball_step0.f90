@@ -137,9 +137,7 @@ contains
       call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, BALL_START_METHOD, s%start, error, &
                             b%race_traction)
       if (allocated(error)) return
-      ! a traction-slip table (ADRX7) replaces the deck's traction model, EHD included
-      if (b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE .and. b%lubricant_code /= 0 &
-          .and. BALL_START_METHOD == MIN_DISSIPATION) then
+      if (ehd_traction_model() .and. BALL_START_METHOD == MIN_DISSIPATION) then
          call ehd_start(error)
          if (allocated(error)) return
       end if
@@ -301,6 +299,13 @@ contains
                                    thermal_properties(BODY_ELEMENT), thermal_properties(race), rise, dt_max, error)
       end subroutine ehd_flash
 
+      !> True when the race contacts use ADORE's EHD film traction (Rec 10.0 model 3 with a
+      !> lubricant); a traction-slip table (ADRX7) replaces the deck's model, EHD included.
+      pure logical function ehd_traction_model()
+         ehd_traction_model = b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE .and. &
+                              b%lubricant_code /= 0
+      end function ehd_traction_model
+
       !> [density (kg/m**3), heat capacity (J/kg/K), conductivity (W/m/K)] of a body (Rec 8).
       pure function thermal_properties(body) result(th)
          integer, intent(in) :: body
@@ -369,6 +374,7 @@ contains
          s%sliding = 0.0_wp                          ! an unloaded contact does not wear
          s%traction = 0.0_wp
          s%power_loss = 0.0_wp
+         ehd = ehd_traction_model()
          do k = 1, b%n_elements
             call ball_race_contacts(k, c, b_minor, k_ell, p_h)
             do j = 1, 2
@@ -376,8 +382,6 @@ contains
                race = merge(BODY_OUTER, BODY_INNER, j == 1)
                call contact_traction(c(j), b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
                if (allocated(error)) return
-               ehd = b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE .and. &
-                     b%lubricant_code /= 0
                if (b%lubricant_code /= 0) then
                   call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), race, s%film(j, k), &
                                       s%thermal_factor(j, k), error)
