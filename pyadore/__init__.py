@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from importlib.metadata import PackageNotFoundError, version as _dist_version
 
-from .api import Result, read_traction_table, run
+from .api import BALL_STARTS, Result, read_traction_table, run
 from .errors import AdoreEngineError, AdoreError, AdoreInputError
 
 try:
@@ -17,4 +17,4 @@ try:
 except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
 
-__all__ = ["run", "read_traction_table", "Result", "AdoreError", "AdoreInputError", "AdoreEngineError", "__version__"]
+__all__ = ["run", "read_traction_table", "Result", "BALL_STARTS", "AdoreError", "AdoreInputError", "AdoreEngineError", "__version__"]

@@ -10,10 +10,14 @@ from pathlib import Path
 from . import _core
 from .errors import AdoreInputError
 
-__all__ = ["Result", "run", "read_traction_table", "STEPS_FROM_DECK"]
+__all__ = ["Result", "run", "read_traction_table", "STEPS_FROM_DECK", "BALL_STARTS"]
 
 #: ``steps`` value the engine reads as "as many time steps as the deck asks for".
 STEPS_FROM_DECK = -1
+
+#: ``ball_start`` names of :func:`run` (report 4.4.7), the engine's default first: the
+#: ball angular velocity of least contact dissipation, or race control at one race.
+BALL_STARTS = ("dissipation", "outer-race-control", "inner-race-control")
 
 
 @dataclass
@@ -46,7 +50,7 @@ def read_traction_table(path):
     return pd.DataFrame({"slip_m_s": slip, "kappa": kappa})
 
 
-def run(deck_path, steps: int | None = None, out=None, traction_table=None) -> Result:
+def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball_start=None) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
 
     steps: ``None`` runs as many time steps as the deck asks for, ``0`` only the
@@ -55,6 +59,9 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None) -> R
     traction_table: a traction-slip table file (ADORE's ADRX7, report 4.4.9; format in
     docs/tribology.md) replacing the deck's RE/race traction model; the print lists it
     under "Input from optional user subroutines".
+    ball_start: the initial ball angular velocity (report 4.4.7), one of
+    :data:`BALL_STARTS`; ``None`` for the default (minimum dissipation).  Race control
+    is listed in the print's first section.  Ball decks only.
     Raises :class:`~pyadore.errors.AdoreInputError` for bad input and
     :class:`~pyadore.errors.AdoreEngineError` when the engine fails.
     """
@@ -76,7 +83,9 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None) -> R
         table = Path(os.fspath(traction_table))
         if not str(traction_table).strip():
             raise AdoreInputError("traction table: the file name is blank")
-    _core.run_file(deck, out_path, engine_steps, table)
+    if ball_start is not None and ball_start not in BALL_STARTS:
+        raise AdoreInputError(f"ball start: expected one of {', '.join(BALL_STARTS)}, got {ball_start!r}")
+    _core.run_file(deck, out_path, engine_steps, table, ball_start)
     notes = []
     if engine_steps != 0 and _core.time_steps_implemented() == 0:
         notes.append("time integration is not implemented yet; the print file ends after step 0 "

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import click
 
+from .api import BALL_STARTS
 from .errors import AdoreError
 
 CONTEXT = {"help_option_names": ["-h", "--help"]}
@@ -43,7 +44,11 @@ def cli() -> None:
 @click.option("--traction-table", type=click.Path(dir_okay=False, path_type=Path),
               help="traction-slip table (slip m/s, coefficient per line; ADORE's ADRX7) replacing "
                    "the deck's RE/race traction model")
-def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | None) -> None:
+@click.option("--ball-start", type=click.Choice(BALL_STARTS),
+              help="initial ball angular velocity (report 4.4.7): minimum contact dissipation "
+                   "[default] or race control at one race (ball decks only)")
+def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | None,
+        ball_start: str | None) -> None:
     """Run DECK through the engine and write its print file."""
     from .api import run as run_deck
 
@@ -55,7 +60,7 @@ def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | 
         click.echo(f"pyadore: error: cannot create the output directory {out.parent}: {exc.strerror}", err=True)
         sys.exit(1)
     try:
-        result = run_deck(deck, steps=steps, out=out, traction_table=traction_table)
+        result = run_deck(deck, steps=steps, out=out, traction_table=traction_table, ball_start=ball_start)
     except AdoreError as exc:
         _fail(exc)
     click.echo(f"print file written: {result.print_path}")

@@ -1,4 +1,5 @@
-!> The standalone `adore` program: `adore DECK [OUT.prt] [--steps N] [--traction-table FILE]`.
+!> The standalone `adore` program:
+!> `adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME]`.
 !>
 !> The only place that ends the process: exit code 0 ok, 1 bad input, 2 engine failure.
 program adore
@@ -9,12 +10,13 @@ program adore
    implicit none
 
    type(error_type), allocatable :: error
-   character(len=:), allocatable :: deck_path, out_path, arg, table_path
+   character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start
    integer :: i, nargs, steps, stat, dot
 
    steps = STEPS_FROM_DECK
    deck_path = ""
    table_path = ""
+   ball_start = ""
    out_path = ""
    nargs = command_argument_count()
    i = 1
@@ -37,6 +39,9 @@ program adore
          end if
       case ("--traction-table")
          call option_value(i, "--traction-table", "a file", table_path, error)
+         if (allocated(error)) exit
+      case ("--ball-start")
+         call option_value(i, "--ball-start", "a start hypothesis name", ball_start, error)
          if (allocated(error)) exit
       case default
          if (len(deck_path) == 0) then
@@ -67,7 +72,7 @@ program adore
             out_path = deck_path//".prt"
          end if
       end if
-      call run_deck(deck_path, out_path, steps, error, table_path)
+      call run_deck(deck_path, out_path, steps, error, table_path, ball_start)
    end if
 
    if (allocated(error)) then
@@ -111,11 +116,14 @@ contains
 
    subroutine usage(unit)
       integer, intent(in) :: unit
-      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--traction-table FILE]"
+      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME]"
       write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt)"
       write (unit, "(a)") "  --steps N                -1 = as the deck says (default), 0 = quasi-static start only"
       write (unit, "(a)") "  --traction-table FILE    traction-slip table (slip m/s, coefficient per line; ADRX7)"
       write (unit, "(a)") "                           replacing the deck's RE/race traction model"
+      write (unit, "(a)") "  --ball-start NAME        initial ball angular velocity (report 4.4.7): dissipation"
+      write (unit, "(a)") "                           (default, minimum contact dissipation), outer-race-control"
+      write (unit, "(a)") "                           or inner-race-control (ball decks only)"
    end subroutine usage
 
    !> End the process with exit status `code` and nothing printed by the runtime.

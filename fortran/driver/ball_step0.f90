@@ -18,7 +18,7 @@ module adore_driver_ball_step0
    use adore_mounting_fits, only: mounting_t
    use adore_driver_mount, only: mount_bearing
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
-   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, MIN_DISSIPATION, ball_contacts, ehd_films_t
+   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, CONTROL_INNER, MIN_DISSIPATION, ball_contacts, ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, major_axis_nodes, &
                                    contact_slip
    use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
@@ -39,8 +39,9 @@ module adore_driver_ball_step0
    public :: ball_step0_t, solve_ball_step0
 
    real(wp), parameter :: pi = acos(-1.0_wp)
-   !> Ball start hypothesis of step 0 (report 4.4.7: minimum dissipation; CONTROL_OUTER is
-   !> the race-control alternative, see docs/tribology.md for the comparison).
+   !> Default ball start hypothesis of step 0 (report 4.4.7: minimum dissipation); race
+   !> control (CONTROL_OUTER, CONTROL_INNER) is the report's alternative, chosen per run
+   !> (solve_ball_step0's start_method; docs/tribology.md for the comparison).
    integer, parameter, public :: BALL_START_METHOD = MIN_DISSIPATION
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
@@ -54,6 +55,8 @@ module adore_driver_ball_step0
    type :: ball_step0_t
       type(mounting_t) :: mounting
       type(ball_start_t) :: start
+      !> start hypothesis used: MIN_DISSIPATION, CONTROL_OUTER or CONTROL_INNER
+      integer :: start_method = BALL_START_METHOD
       real(wp) :: basic_life_hours = 0.0_wp        !< bearing basic (Lundberg-Palmgren) life (h)
       real(wp) :: basic_life_outer = 0.0_wp        !< outer race (h)
       real(wp) :: basic_life_inner = 0.0_wp        !< inner race (h)
@@ -94,10 +97,13 @@ contains
    !> Race misalignments are prescribed (the deck's quasi-static constraint flags are not
    !> identified; both appendix echoes show prescribed misalignment), ball speeds from
    !> outer race control.
-   subroutine solve_ball_step0(b, s, error)
+   subroutine solve_ball_step0(b, s, error, start_method)
       type(bearing_t), intent(in) :: b
       type(ball_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
+      !> start hypothesis (report 4.4.7): MIN_DISSIPATION (default), CONTROL_OUTER or
+      !> CONTROL_INNER (race control, the report's kAngVel alternative)
+      integer, intent(in), optional :: start_method
 
       type(ball_qs_bearing_t) :: qb
       type(ball_qs_load_t) :: ld
@@ -108,6 +114,11 @@ contains
 
       if (b%n_elements < 1 .or. b%d <= 0.0_wp .or. b%dm <= b%d) then
          call input_error(error, "ball bearing: need at least one ball and 0 < ball diameter < pitch diameter")
+         return
+      end if
+      if (present(start_method)) s%start_method = start_method
+      if (all(s%start_method /= [MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER])) then
+         call input_error(error, "ball start: unknown start hypothesis code")
          return
       end if
       s%mounting = mount_bearing(b)
@@ -134,10 +145,10 @@ contains
       s%inner_weight = b%mass(4)*b%gravity
       s%outer_weight = b%mass(3)*b%gravity
 
-      call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, BALL_START_METHOD, s%start, error, &
+      call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, s%start_method, s%start, error, &
                             b%race_traction)
       if (allocated(error)) return
-      if (ehd_traction_model() .and. BALL_START_METHOD == MIN_DISSIPATION) then
+      if (ehd_traction_model() .and. s%start_method == MIN_DISSIPATION) then
          call ehd_start(error)
          if (allocated(error)) return
       end if
@@ -220,7 +231,7 @@ contains
          if (allocated(error)) return
          do iter = 1, 10
             previous = s%start
-            call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, BALL_START_METHOD, s%start, error, &
+            call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, s%start_method, s%start, error, &
                                   b%race_traction, films, previous)
             if (allocated(error)) return
             call current_films(next, error)

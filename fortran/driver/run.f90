@@ -14,7 +14,8 @@ module adore_driver_run
    use adore_output_banner, only: write_listing, write_banner
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
+   use adore_quasistatic_ball_start, only: start_method_from_name, start_method_title
    use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_driver_report, only: fill_echo, write_ball_step0, write_roller_step0
    implicit none
@@ -35,13 +36,17 @@ contains
    !>
    !> steps: STEPS_FROM_DECK (-1) for the deck's own count, 0 for the quasi-static
    !> start only, n > 0 to stop after n time steps.
-   subroutine run_deck(deck_path, out_path, steps, error, traction_table)
+   subroutine run_deck(deck_path, out_path, steps, error, traction_table, ball_start)
       character(len=*), intent(in) :: deck_path, out_path
       integer, intent(in) :: steps
       type(error_type), allocatable, intent(out) :: error
       !> traction-slip table file (ADRX7, report 4.4.9) replacing the deck's RE/race traction
       !> model; absent or blank: the deck's model
       character(len=*), intent(in), optional :: traction_table
+      !> ball start hypothesis by name (report 4.4.7; adore_quasistatic_ball_start's
+      !> START_NAMES: dissipation, outer-race-control, inner-race-control); absent or
+      !> blank: the default, minimum dissipation.  Ball decks only.
+      character(len=*), intent(in), optional :: ball_start
 
       type(deck_text_t) :: text
       type(deck_t) :: deck
@@ -49,10 +54,10 @@ contains
       type(echo_data_t) :: echo
       type(ball_step0_t) :: ball0
       type(roller_step0_t) :: roller0
-      character(len=:), allocatable :: part_path
+      character(len=:), allocatable :: part_path, table_path, start_title
       character(len=256) :: iomsg
-      integer :: unit, stat
-      logical :: ok, table
+      integer :: unit, stat, start_method
+      logical :: ok, table, start_given
 
       if (steps < STEPS_FROM_DECK) then
          call input_error(error, "steps must be -1 (from the deck), 0 (quasi-static start "// &
@@ -74,6 +79,18 @@ contains
       ! a deck the physics cannot use fails without leaving any output behind.
       call build_bearing(deck, bearing, error)
       if (allocated(error)) return
+      start_method = BALL_START_METHOD
+      start_given = .false.
+      if (present(ball_start)) start_given = len_trim(ball_start) > 0
+      if (start_given) then
+         if (bearing%bearing_type /= BALL_BEARING) then
+            call input_error(error, trim(deck_path)//": the ball start option applies to ball "// &
+                             "bearings; this deck is a cylindrical roller bearing (Rec 3.2)")
+            return
+         end if
+         call start_method_from_name(ball_start, start_method, error)
+         if (allocated(error)) return
+      end if
       table = .false.
       if (present(traction_table)) table = len_trim(traction_table) > 0
       if (table) then
@@ -84,7 +101,7 @@ contains
       if (allocated(error)) return
       select case (bearing%bearing_type)
       case (BALL_BEARING)
-         call solve_ball_step0(bearing, ball0, error)
+         call solve_ball_step0(bearing, ball0, error, start_method)
       case (ROLLER_BEARING)
          call solve_roller_step0(bearing, roller0, error)
       end select
@@ -98,11 +115,12 @@ contains
          return
       end if
 
-      if (table) then
-         call write_listing(unit, text, bearing%race_traction, trim(traction_table))
-      else
-         call write_listing(unit, text)
-      end if
+      ! the run options that replace deck models: a traction table, a non-default start
+      table_path = ""
+      if (table) table_path = trim(traction_table)
+      start_title = ""
+      if (start_method /= BALL_START_METHOD) start_title = trim(start_method_title(start_method))
+      call write_listing(unit, text, bearing%race_traction, table_path, start_title)
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start.  The time integration of later steps comes with

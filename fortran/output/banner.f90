@@ -13,18 +13,27 @@ module adore_output_banner
 contains
 
    !> "Input from optional user subroutines" (a traction-slip table of ADRX7, report 4.4.9,
-   !> when the run has one: its file and points, slip in m/s) and the "Listing of input
-   !> data records": every deck line, verbatim (ADORE prints the deck before its banner,
-   !> report Appendix C/D).
-   subroutine write_listing(unit, text, traction, traction_path)
+   !> when the run has one: its file and points, slip in m/s; the ball start hypothesis
+   !> when a run option replaced the default, start_title non-blank) and the "Listing of
+   !> input data records": every deck line, verbatim (ADORE prints the deck before its
+   !> banner, report Appendix C/D).
+   subroutine write_listing(unit, text, traction, traction_path, start_title)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
       character(len=*), intent(in), optional :: traction_path
+      character(len=*), intent(in), optional :: start_title
       integer :: i
 
       write (unit, "(a)") "Input from optional user subroutines"
       write (unit, "(a)") ""
+      if (present(start_title)) then
+         if (len_trim(start_title) > 0) then
+            write (unit, "(a)") "INITIAL BALL ANGULAR VELOCITY: "//trim(start_title)//","
+            write (unit, "(a)") "  REPLACES THE MINIMUM-DISSIPATION START (REPORT 4.4.7)"
+            write (unit, "(a)") ""
+         end if
+      end if
       if (present(traction) .and. present(traction_path)) then
          if (traction%kind == LAW_TABLE) then
             write (unit, "(a,i0,a)") "ADRX7 TRACTION-SLIP TABLE (", size(traction%slip), &

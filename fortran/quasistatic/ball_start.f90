@@ -10,16 +10,25 @@
 !> CONTROL_INNER) is ADORE's kAngVel alternative.
 module adore_quasistatic_ball_start
    use adore_core_kinds, only: wp
-   use adore_core_error, only: error_type, engine_error
+   use adore_core_error, only: error_type, engine_error, input_error
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t, &
                                                  solve_ball_equilibrium
    use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, race_control_kinematics, &
-                                                MIN_DISSIPATION, min_dissipation_kinematics, ehd_films_t
+                                                MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER, &
+                                                min_dissipation_kinematics, ehd_films_t
    use adore_tribology_traction_law, only: traction_law_t
    implicit none
    private
 
    public :: ball_start_t, solve_ball_start
+   public :: MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER, START_NAMES, start_method_from_name, &
+             start_method_title
+
+   !> Run-option names of the start hypotheses (report 4.4.7), the default first, and their
+   !> codes.
+   character(len=*), parameter :: START_NAMES(3) = [character(len=18) :: &
+                                  "dissipation", "outer-race-control", "inner-race-control"]
+   integer, parameter :: START_CODES(3) = [MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER]
 
    !> The consistent start: equilibrium plus the kinematics of every ball.
    type :: ball_start_t
@@ -29,6 +38,41 @@ module adore_quasistatic_ball_start
    end type ball_start_t
 
 contains
+
+   !> The start hypothesis named `name` (one of START_NAMES, case as given): method =
+   !> CONTROL_OUTER, CONTROL_INNER or MIN_DISSIPATION; input error naming the choices.
+   subroutine start_method_from_name(name, method, error)
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: method
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k
+
+      method = MIN_DISSIPATION
+      do k = 1, size(START_NAMES)
+         if (trim(adjustl(name)) == trim(START_NAMES(k))) then
+            method = START_CODES(k)
+            return
+         end if
+      end do
+      call input_error(error, "ball start: expected one of "//trim(START_NAMES(1))//", "// &
+                       trim(START_NAMES(2))//", "//trim(START_NAMES(3))//", got '"//trim(name)//"'")
+   end subroutine start_method_from_name
+
+   !> The print's one-line description of start hypothesis `method` (upper case, as the
+   !> echo's labels).
+   pure function start_method_title(method) result(title)
+      integer, intent(in) :: method
+      character(len=64) :: title
+
+      select case (method)
+      case (CONTROL_OUTER)
+         title = "OUTER RACE CONTROL (NO SPIN AT THE OUTER RACE CONTACT)"
+      case (CONTROL_INNER)
+         title = "INNER RACE CONTROL (NO SPIN AT THE INNER RACE CONTACT)"
+      case default
+         title = "MINIMUM CONTACT DISSIPATION (REPORT 4.4.7)"
+      end select
+   end function start_method_title
 
    !> Solve the coupled start for race speeds w_outer, w_inner (rad/s); control selects
    !> the kinematic hypothesis: CONTROL_OUTER, CONTROL_INNER (race control) or
