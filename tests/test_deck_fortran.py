@@ -6,6 +6,9 @@
   problem list, word for word, as the Python reader plus the range checks of validate();
   decks whose only problem is a cross-field value check of pyadore/deck/validate.py
   (CROSS_CHECKS) are accepted by the Fortran reader, which does not port those checks;
+* the engine's run refuses every deck with a cross-field value problem (CROSS_CHECKS), with
+  validate()'s words, location and caret, before any physics (a degenerate ring once
+  divided by zero in the mounting);
 * a malformed deck makes `adore` exit 1 and pyadore.run raise AdoreInputError, with no
   print file, and the interpreter keeps working.
 """
@@ -108,6 +111,41 @@ def test_bad_deck_rejected_by_fortran_reader(name):
     head, body = message.split("\n", 1)
     assert head == f"{path}: {len(problems)} problem(s) reading the deck"
     assert body == "\n".join(p.format() for p in problems)
+
+
+CROSS_VALUE_DECKS = sorted(n for n, e in EXPECTED.items() if e["kind"] == "cross_field" and e["field"] is not None)
+
+
+@pytest.mark.parametrize("name", CROSS_VALUE_DECKS)
+def test_engine_run_refuses_cross_field_values_with_validates_words(name, tmp_path):
+    """The reader accepts these decks (above); building the bearing model then refuses them
+    with every CROSS_CHECKS problem of pyadore validate, word for word, and writes nothing."""
+    path = BAD / name
+    deck = read_deck(path)
+    problems = [p for p in validate_deck(deck) if p.kind == "cross_field" and p.field is not None]
+    assert problems and any(p.field == EXPECTED[name]["field"] for p in problems)
+    with pytest.raises(pyadore.AdoreInputError) as info:
+        pyadore.run(path, steps=0, out=tmp_path / "x.prt")
+    head, body = str(info.value).split("\n", 1)
+    assert head == f"{path}: {len(problems)} problem(s) in the deck's values"
+    assert body == "\n".join(p.format() for p in problems)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_engine_refuses_a_ring_without_wall(tmp_path, run_exe):
+    """A solid shaft whose bore equals its OD passed the reader, and the mounting's Lame
+    formula divided by zero (SIGFPE in the checked build, a fit pressure of 0 without
+    traps): now an input error at the field, exit 1, no print file."""
+    src = (ROOT / "decks" / "appendix_d_roller.inp").read_text().splitlines()
+    row = next(i for i, line in enumerate(src) if line.startswith("Rec 4 "))
+    src[row] = src[row][:34] + " 3.0000E-02" + src[row][45:]            # shaft ID = shaft OD
+    path = tmp_path / "wall.inp"
+    path.write_text("\n".join(src) + "\n")
+    proc = run_exe(path, tmp_path / "wall.prt", "--steps", "0")
+    assert proc.returncode == 1
+    assert (f"{path}:{row + 1}:36  Rec 4  field shaft_inner_diameter = 0.03: expected < shaft_outer_diameter = "
+            "0.03 (a hollow shaft's bore is inside its OD)") in proc.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["wall.inp"]
 
 
 def test_fortran_reader_reports_all_problems_at_once(tmp_path):

@@ -17,7 +17,9 @@ TEMPLATES = [read_deck(ROOT / "decks" / "appendix_c_ball.inp"), read_deck(ROOT /
 TIED = {"shaft_inner_diameter", "shaft_outer_diameter", "bearing_outer_diameter", "housing_outer_diameter",
         "pitch_diameter", "ball_diameter", "roller_diameter", "cage_inner_diameter", "cage_outer_diameter",
         "n_rolling_elements", "step_min", "step_initial", "step_max", "max_traction",
-        "traction_at_zero_slip", "traction_at_infinite_slip", "bearing_type"}
+        "traction_at_zero_slip", "traction_at_infinite_slip", "bearing_type",
+        # the raceway diameters (race walls): ball curvature factors and free angle, roller play
+        "outer_curvature_factor", "inner_curvature_factor", "free_contact_angle", "diametral_play"}
 
 
 def _template_value(tpl: Deck, name: str):

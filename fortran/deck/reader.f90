@@ -11,7 +11,8 @@
 !> bad integers and reals, blank required fields, and every value's range or choices.
 !> Not checked here: the cross-field consistency checks of pyadore/deck/validate.py
 !> (CROSS_CHECKS: pitch between bore and OD, elements fit, cage ID < OD, step order,
-!> traction peak...).  All problems are collected, then returned as one input error
+!> traction peak...): adore_model_bearing's check_values applies them, in the same words, when
+!> it builds the bearing model.  All problems are collected, then returned as one input error
 !> whose message lists each as Python's Problem.format() does:
 !>
 !>     deck.inp:11:24  Rec 5A  field pitch_diameter = '1.4OOOE-01': expected a real number (E11.4)
@@ -48,6 +49,7 @@ module adore_deck_reader
    public :: read_deck, parse_deck, deck_has, deck_count
    public :: deck_get_real, deck_get_int, deck_get_text
    public :: deck_collect_real, deck_collect_int, deck_collect_text
+   public :: deck_field_problem
    public :: FIELD_INT, FIELD_REAL, FIELD_TEXT
 
    !> Field kinds of deck_field_t%kind.
@@ -74,6 +76,7 @@ module adore_deck_reader
       integer :: spec = 0                          !< index into the REC_* schema table
       integer :: occurrence = 1                    !< 1-based among records of the same type
       integer :: line = 0                          !< 1-based line of the deck file
+      character(len=:), allocatable :: source      !< that line as in the file (for messages)
       logical :: labelled = .false.                !< the line carried a `Rec <id>` label
       integer :: n_fields = 0
       type(deck_field_t), allocatable :: fields(:)
@@ -741,6 +744,8 @@ contains
       rec%spec = s
       rec%occurrence = rd%counts(s)
       rec%line = lineno
+      rec%source = ""
+      if (lineno <= size(text%lines)) rec%source = text%lines(lineno)%s
       rec%labelled = labelled
       rec%n_fields = nf
       rec%fields = fields(1:nf)
@@ -861,6 +866,56 @@ contains
    ! ======================================================================================
    ! Problems
    ! ======================================================================================
+
+   !> A problem with field `field` of record `rid` (its `occurrence`) found after reading,
+   !> such as a cross-field value the physics cannot use, formatted as the reader's own
+   !> problems (Python's Problem.format()): `path:line:col  Rec id  field name = value:
+   !> message`, the line and a caret under the field.
+   subroutine deck_field_problem(deck, rid, field, message, text, occurrence)
+      type(deck_t), intent(in) :: deck
+      character(len=*), intent(in) :: rid, field, message
+      character(len=:), allocatable, intent(out) :: text
+      integer, intent(in), optional :: occurrence
+      type(problem_t) :: p
+      integer :: r, f, occ, seen
+
+      occ = 1
+      if (present(occurrence)) occ = occurrence
+      seen = 0
+      do r = 1, deck%n_records
+         if (.not. record_matches(deck%records(r), rid)) cycle
+         seen = seen + 1
+         if (seen < occ) cycle
+         do f = 1, deck%records(r)%n_fields
+            if (deck%records(r)%fields(f)%name /= field) cycle
+            associate (rec => deck%records(r), fv => deck%records(r)%fields(f))
+               p%line = fv%line
+               p%col = fv%col
+               if (.not. is_blank(fv%raw)) p%col = fv%col + lstrip_count(fv%raw)
+               p%has_record = .true.
+               p%record = rec%rid
+               p%has_field = .true.
+               p%field = fv%name
+               select case (fv%kind)
+               case (KIND_INT)
+                  p%shown = itoa(fv%int_value)
+               case (KIND_REAL)
+                  p%shown = show_real(fv%real_value)
+               case default
+                  p%shown = quoted(fv%text_value)
+               end select
+               p%message = message
+               p%kind = "cross_field"
+               p%has_source = allocated(rec%source) .and. fv%line > 0
+               if (p%has_source) p%source = rec%source
+            end associate
+            call format_problem(deck%path, p, text)
+            return
+         end do
+         exit
+      end do
+      text = deck%path//"  Rec "//rid//"  field "//field//": "//message    ! not in the deck: no location
+   end subroutine deck_field_problem
 
    !> Append a problem; the source line is that of `line` unless `no_source`.
    subroutine add_problem(rd, text, line, col, message, kind, record, field, shown, no_source)

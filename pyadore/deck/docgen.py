@@ -140,10 +140,14 @@ def _validation() -> list[str]:
     out += ["", "Ranges are the *valid range* column above (types are checked while reading).  "
             "Cross-field checks:", ""]
     for check in CROSS_CHECKS:
-        out.append(f"* {check.__doc__.strip()}")
+        out.append(f"* {' '.join(check.__doc__.split())}")
     out += ["* guide-land records: exactly `n_guide_lands` records 7.2.n (`cross_field`);",
             "* conditional records present exactly when their condition holds (`cross_field`);",
             "* unconditional records present once, in order (`missing_record`, `surplus_record`).", "",
+            "The engine's deck reader does not repeat the cross-field value checks; the engine "
+            "applies them when it builds the bearing model (`check_values` in "
+            "`fortran/model/bearing.f90`), so `adore` and `pyadore run` refuse such a deck "
+            "with the same lines, exit status 1 and no print file.", "",
             "The malformed decks in `tests/data/bad_decks/` and their expectations "
             "(`expected.json`: file -> record id, field, problem class, line) are shared by the "
             "Python reader's tests and the Fortran reader's.", ""]

@@ -122,6 +122,43 @@ def _cage_around_pitch(deck: Deck) -> list[Problem]:
                      f"cage_outer_diameter = {_fmt(co)}", "cross_field")]
 
 
+def _race_walls(deck: Deck) -> list[Problem]:
+    """inner raceway diameter > shaft_outer_diameter and outer raceway diameter <
+    bearing_outer_diameter: both races have a wall (once bore < pitch < OD and the element
+    fits radially)."""
+    # the engine's raceway diameters (fortran/model/clearance.f90): ball dm -/+ (D + 2 (f - 1/2)
+    # D (1 - cos alpha0)), roller dm -/+ (D + Pd/2); the mounting's thick-ring formulas divide
+    # by each wall's thickness
+    name = _element_diameter(deck)
+    d, dp = _num(deck, name), _num(deck, "pitch_diameter")
+    bore, od = _num(deck, "shaft_outer_diameter"), _num(deck, "bearing_outer_diameter")
+    if None in (d, dp, bore, od) or not (bore < dp < od and d < (od - bore) / 2):
+        return []
+    if name == "ball_diameter":
+        fo, fi, a0 = (_num(deck, n) for n in ("outer_curvature_factor", "inner_curvature_factor",
+                                              "free_contact_angle"))
+        if None in (fo, fi, a0):
+            return []
+        c = 1.0 - math.cos(math.radians(a0))
+        d_outer = dp + d + 2.0 * (fo - 0.5) * d * c
+        d_inner = dp - d - 2.0 * (fi - 0.5) * d * c
+    else:
+        pd = _num(deck, "diametral_play")
+        if pd is None:
+            return []
+        d_outer = dp + d + 0.5 * pd
+        d_inner = dp - d - 0.5 * pd
+    rec, fv = _find(deck, "pitch_diameter")
+    out = []
+    if not d_inner > bore:
+        out.append(_problem(deck, rec, fv, f"the inner race has no wall: its raceway diameter {_fmt(d_inner)} m "
+                            f"is not above the bore (shaft_outer_diameter = {_fmt(bore)})", "cross_field"))
+    if not d_outer < od:
+        out.append(_problem(deck, rec, fv, f"the outer race has no wall: its raceway diameter {_fmt(d_outer)} m "
+                            f"is not below bearing_outer_diameter = {_fmt(od)}", "cross_field"))
+    return out
+
+
 def _step_order(deck: Deck) -> list[Problem]:
     """step_min <= step_initial <= step_max."""
     lo, ini, hi = _num(deck, "step_min"), _num(deck, "step_initial"), _num(deck, "step_max")
@@ -154,6 +191,7 @@ CROSS_CHECKS = (
     _elements_fit_around,
     _less("cage_inner_diameter", "cage_outer_diameter", "cage ID inside cage OD"),
     _cage_around_pitch,
+    _race_walls,
     _step_order,
     _traction_peak,
 )
