@@ -15,6 +15,8 @@ from pathlib import Path
 
 import pytest
 
+import pyadore
+
 ROOT = Path(__file__).resolve().parents[1]
 REAL = re.compile(r"-?\d+\.\d+E[+-]\d+")
 FACTORS = (0.0, 0.01, 0.1, 0.3, 3.0, 10.0, 100.0, -1.0)
@@ -61,3 +63,23 @@ def test_odd_values_never_crash_the_engine(tmp_path, run_exe, deck_name, n, seed
         outcomes[proc.returncode] += 1
     print(deck_name, outcomes)
     assert outcomes[0] > 0          # the sample is not all refused at reading
+
+
+def test_no_ehd_film_is_a_clear_input_error(tmp_path):
+    """A ball 320 K colder than its races: at the 163 K inlet the oil is so viscous that
+    Gupta's thermal reduction factor reaches 0, and traction model 3 has no film to shear.
+    The run stops with the contact, the film, the factor and the temperatures that set it
+    (it used to stop on an internal "need film h > 0" check)."""
+    src = (ROOT / "decks" / "appendix_c_ball.inp").read_text().splitlines()
+    row = next(i for i, line in enumerate(src) if line.startswith("Rec 2.7"))
+    src[row] = src[row][:34] + " 3.2300E+00" + src[row][45:]           # rolling_element_temperature
+    deck = tmp_path / "cold.inp"
+    deck.write_text("\n".join(src) + "\n")
+    with pytest.raises(pyadore.AdoreInputError) as info:
+        pyadore.run(deck, steps=0, out=tmp_path / "cold.prt")
+    message = str(info.value)
+    assert message.startswith("ball 1 outer race contact: no film for the EHD traction (Rec 10.0 traction_model 3)")
+    assert "thermal reduction factor  0.000E+00" in message
+    assert ("MIL-L-7808 at 163.12 K, the mean of Rec 2.7 rolling_element_temperature 3.23 K and "
+            "outer_race_temperature 323.00 K") in message
+    assert not (tmp_path / "cold.prt").exists()

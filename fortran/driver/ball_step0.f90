@@ -18,7 +18,8 @@ module adore_driver_ball_step0
    use adore_mounting_fits, only: mounting_t
    use adore_driver_mount, only: mount_bearing
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
-   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, CONTROL_INNER, MIN_DISSIPATION, ball_contacts, ehd_films_t
+   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, CONTROL_INNER, MIN_DISSIPATION, ball_contacts, &
+                                                ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, major_axis_nodes, &
                                    contact_slip
    use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
@@ -266,6 +267,8 @@ contains
                call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
                                    h, phi, error)
                if (allocated(error)) return
+               call check_ehd_film(k, j, h, phi, error)
+               if (allocated(error)) return
                films(k)%h(j) = h*phi
             end do
          end do
@@ -399,6 +402,8 @@ contains
                   if (allocated(error)) return
                end if
                if (ehd) then
+                  call check_ehd_film(k, j, s%film(j, k), s%thermal_factor(j, k), error)
+                  if (allocated(error)) return
                   h = s%film(j, k)*s%thermal_factor(j, k)
                   call ehd_traction(c(j), b_minor(j), race, h, t, error)
                   if (allocated(error)) return
@@ -482,6 +487,31 @@ contains
                                         temperature_viscosity_coefficient(b%lubricant, t_in), u, &
                                         b%lubricant%conductivity), t%centre_slip/t%rolling_speed)
       end subroutine lubricant_film
+
+      !> Input error unless race contact j (1 outer, 2 inner) of ball k has an EHD film, the
+      !> isothermal film h (m) times the thermal reduction factor phi: Gupta's fit of phi
+      !> reaches 0 beyond its range of thermal loading (a lubricant far too viscous at the
+      !> deck's temperatures for the speed), where traction model 3 has no film to shear.
+      subroutine check_ehd_film(k, j, h, phi, error)
+         integer, intent(in) :: k, j
+         real(wp), intent(in) :: h, phi
+         type(error_type), allocatable, intent(out) :: error
+         character(len=2000) :: buf     ! f0.2 of any finite temperature fits (<= 312 characters)
+         character(len=5) :: side
+         integer :: stat
+
+         if (h*phi > 0.0_wp .and. h*phi < huge(1.0_wp)) return
+         side = merge("outer", "inner", j == 1)
+         write (buf, "(a,i0,3a,es10.3,a,es10.3,3a,f0.2,a,f0.2,3a,f0.2,a)", iostat=stat) "ball ", k, " ", trim(side), &
+            " race contact: no film for the EHD traction (Rec 10.0 traction_model 3): isothermal film ", h, &
+            " m times thermal reduction factor ", phi, " (Gupta's fit is 0 beyond its range of thermal loading); ", &
+            trim(b%lubricant%name), " at ", 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, j == 1))), &
+            " K, the mean of Rec 2.7 rolling_element_temperature ", b%temperature(4), " K and ", trim(side), &
+            "_race_temperature ", b%temperature(merge(6, 7, j == 1)), " K"
+         if (stat /= 0) buf = "a race contact has no film for the EHD traction (Rec 10.0 traction_model 3) "// &
+                              "at the temperatures of Rec 2.7"
+         call input_error(error, trim(buf))
+      end subroutine check_ehd_film
 
       !> EHD traction of one race contact (traction model 3, adore_tribology_ehd_traction):
       !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
