@@ -96,8 +96,8 @@ contains
    !> Solve step 0 for the ball bearing b (report sections 3.1, 3.2, 4.4.7).
    !>
    !> Race misalignments are prescribed (the deck's quasi-static constraint flags are not
-   !> identified; both appendix echoes show prescribed misalignment), ball speeds from
-   !> outer race control.
+   !> identified; both appendix echoes show prescribed misalignment), ball speeds from the
+   !> start hypothesis (default: minimum contact dissipation).
    subroutine solve_ball_step0(b, s, error, start_method)
       type(bearing_t), intent(in) :: b
       type(ball_step0_t), intent(out) :: s
