@@ -22,6 +22,17 @@ REAL = re.compile(r"-?\d+\.\d+E[+-]\d+")
 FACTORS = (0.0, 0.01, 0.1, 0.3, 3.0, 10.0, 100.0, -1.0)
 
 
+def _deck_with(tmp_path: Path, deck_name: str, record: str, col: int, value: str, name: str):
+    """Appendix deck `deck_name` with the field at 0-based column `col` of record `record`
+    (label as written, e.g. "Rec 2.7") replaced by `value`; returns (path, 1-based line)."""
+    src = (ROOT / "decks" / deck_name).read_text().splitlines()
+    row = next(i for i, line in enumerate(src) if line.split()[:2] == record.split())
+    src[row] = src[row][:col] + value + src[row][col + len(value):]
+    path = tmp_path / name
+    path.write_text("\n".join(src) + "\n")
+    return path, row + 1
+
+
 def _mutations(deck: Path, n: int, seed: int):
     rng = random.Random(seed)
     lines = deck.read_text().splitlines()
@@ -70,11 +81,8 @@ def test_no_ehd_film_is_a_clear_input_error(tmp_path):
     Gupta's thermal reduction factor reaches 0, and traction model 3 has no film to shear.
     The run stops with the contact, the film, the factor and the temperatures that set it
     (it used to stop on an internal "need film h > 0" check)."""
-    src = (ROOT / "decks" / "appendix_c_ball.inp").read_text().splitlines()
-    row = next(i for i, line in enumerate(src) if line.startswith("Rec 2.7"))
-    src[row] = src[row][:34] + " 3.2300E+00" + src[row][45:]           # rolling_element_temperature
-    deck = tmp_path / "cold.inp"
-    deck.write_text("\n".join(src) + "\n")
+    deck, _ = _deck_with(tmp_path, "appendix_c_ball.inp", "Rec 2.7", 34, " 3.2300E+00",  # rolling_element_temperature
+                         "cold.inp")
     with pytest.raises(pyadore.AdoreInputError) as info:
         pyadore.run(deck, steps=0, out=tmp_path / "cold.prt")
     message = str(info.value)
@@ -83,3 +91,25 @@ def test_no_ehd_film_is_a_clear_input_error(tmp_path):
     assert ("MIL-L-7808 at 163.12 K, the mean of Rec 2.7 rolling_element_temperature 3.23 K and "
             "outer_race_temperature 323.00 K") in message
     assert not (tmp_path / "cold.prt").exists()
+
+
+@pytest.mark.parametrize("record, col, value, name, where", [
+    # a solid shaft whose bore equals its OD passed the reader, and the mounting's Lame formula
+    # divided by zero (SIGFPE in the checked build, a fit pressure of 0 without traps)
+    ("Rec 4", 34, " 3.0000E-02", "wall.inp",
+     "36  Rec 4  field shaft_inner_diameter = 0.03: expected < shaft_outer_diameter = 0.03 "
+     "(a hollow shaft's bore is inside its OD)"),
+    # no applied force: the echo's load scale (the largest applied load) is undefined, and
+    # ADORE's rule for an unloaded bearing is not known
+    ("Rec 9.1.1", 34, " 0.0000E+00", "unloaded.inp",
+     "14  Rec 9.1.1  field applied_force_x = 0: expected a non-zero applied force "
+     "(applied_force_x, applied_force_y and applied_force_z are all 0)"),
+])
+def test_values_the_physics_cannot_use_are_refused_at_the_field(tmp_path, run_exe, record, col, value, name, where):
+    """The roller deck with one field changed: an input error at that field (file:line:col,
+    record, field, value, what was expected), exit 1, no print file."""
+    deck, line = _deck_with(tmp_path, "appendix_d_roller.inp", record, col, value, name)
+    proc = run_exe(deck, tmp_path / "x.prt", "--steps", "0")
+    assert proc.returncode == 1
+    assert f"{deck}:{line}:{where}" in proc.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == [name]

@@ -13,6 +13,7 @@ module adore_model_bearing
                                   roller_cage_inertia, roller_moments
    use adore_contact_line_slices, only: roller_profile_t, roller_mass
    use adore_model_traction_fit, only: fit_traction_curve
+   use adore_model_scales, only: load_scale
    use adore_tribology_traction_law, only: traction_law_t, curve_law
    use adore_tribology_film, only: lubricant_t, lubricant_from_code
    use adore_cage_step0, only: guide_land_t, cage_input_t
@@ -162,6 +163,29 @@ contains
       end if
       if (allocated(error)) return
 
+      ! operating conditions (Rec 2.7, 9.0, 9.1, 11)
+      call deck_collect_real(deck, "9.0", "room_temperature", b%temperature(1), error)
+      call deck_collect_real(deck, "2.7", "housing_temperature", b%temperature(2), error)
+      call deck_collect_real(deck, "2.7", "shaft_temperature", b%temperature(3), error)
+      call deck_collect_real(deck, "2.7", "rolling_element_temperature", b%temperature(4), error)
+      call deck_collect_real(deck, "2.7", "cage_temperature", b%temperature(5), error)
+      call deck_collect_real(deck, "2.7", "outer_race_temperature", b%temperature(6), error)
+      call deck_collect_real(deck, "2.7", "inner_race_temperature", b%temperature(7), error)
+      call deck_collect_real(deck, "9.0", "outer_race_fit", b%fit_outer, error)
+      call deck_collect_real(deck, "9.0", "inner_race_fit", b%fit_inner, error)
+      call deck_collect_real(deck, "9.1.2", "inner_race_speed", b%speed_inner, error)
+      call deck_collect_real(deck, "9.1.1", "applied_force_x", b%force(1), error)
+      call deck_collect_real(deck, "9.1.1", "applied_force_y", b%force(2), error)
+      call deck_collect_real(deck, "9.1.1", "applied_force_z", b%force(3), error)
+      call deck_collect_real(deck, "9.1.1", "applied_moment_x", b%moment(1), error)
+      call deck_collect_real(deck, "9.1.1", "applied_moment_y", b%moment(2), error)
+      call deck_collect_real(deck, "9.1.1", "applied_moment_z", b%moment(3), error)
+      call deck_collect_real(deck, "11", "gravity_x", b%gravity(1), error)
+      call deck_collect_real(deck, "11", "gravity_y", b%gravity(2), error)
+      call deck_collect_real(deck, "11", "gravity_z", b%gravity(3), error)
+      if (allocated(error)) return
+      b%speed_inner = b%speed_inner*rpm
+
       ! materials: default steel (cage: its own expansion, hardness and wear), Rec 8.n when present
       b%material(BODY_CAGE)%expansion = 1.8e-5_wp
       b%material(BODY_CAGE)%hardness = 20.0_wp
@@ -248,28 +272,6 @@ contains
          end if
       end if
 
-      call deck_collect_real(deck, "9.0", "room_temperature", b%temperature(1), error)
-      call deck_collect_real(deck, "2.7", "housing_temperature", b%temperature(2), error)
-      call deck_collect_real(deck, "2.7", "shaft_temperature", b%temperature(3), error)
-      call deck_collect_real(deck, "2.7", "rolling_element_temperature", b%temperature(4), error)
-      call deck_collect_real(deck, "2.7", "cage_temperature", b%temperature(5), error)
-      call deck_collect_real(deck, "2.7", "outer_race_temperature", b%temperature(6), error)
-      call deck_collect_real(deck, "2.7", "inner_race_temperature", b%temperature(7), error)
-      call deck_collect_real(deck, "9.0", "outer_race_fit", b%fit_outer, error)
-      call deck_collect_real(deck, "9.0", "inner_race_fit", b%fit_inner, error)
-      call deck_collect_real(deck, "9.1.2", "inner_race_speed", b%speed_inner, error)
-      call deck_collect_real(deck, "9.1.1", "applied_force_x", b%force(1), error)
-      call deck_collect_real(deck, "9.1.1", "applied_force_y", b%force(2), error)
-      call deck_collect_real(deck, "9.1.1", "applied_force_z", b%force(3), error)
-      call deck_collect_real(deck, "9.1.1", "applied_moment_x", b%moment(1), error)
-      call deck_collect_real(deck, "9.1.1", "applied_moment_y", b%moment(2), error)
-      call deck_collect_real(deck, "9.1.1", "applied_moment_z", b%moment(3), error)
-      call deck_collect_real(deck, "11", "gravity_x", b%gravity(1), error)
-      call deck_collect_real(deck, "11", "gravity_y", b%gravity(2), error)
-      call deck_collect_real(deck, "11", "gravity_z", b%gravity(3), error)
-      if (allocated(error)) return
-      b%speed_inner = b%speed_inner*rpm
-
    end subroutine build_bearing
 
    !> The relations between deck values the physics needs (envelope and ring geometry for
@@ -278,7 +280,8 @@ contains
    !> These are pyadore/deck/validate.py's CROSS_CHECKS, in the same words (the deck
    !> reader does not port them; pyadore validate reports them with the record checks),
    !> plus a positive wall for both races, which the mounting's thick-ring formulas divide
-   !> by (inner raceway diameter > bore, outer raceway diameter < bearing OD).
+   !> by (inner raceway diameter > bore, outer raceway diameter < bearing OD), and a
+   !> non-zero applied force (the echo's load scale; ADORE's rule without one is unknown).
    subroutine check_values(deck, b, error)
       type(deck_t), intent(in) :: deck
       type(bearing_t), intent(in) :: b
@@ -344,6 +347,10 @@ contains
             call add(rec10, "max_traction", "expected >= "//show_real(max(k(1), k(3)))// &
                      " (the maximum of the traction-slip curve)")
       end associate
+      if (.not. load_scale(b%force) > 0.0_wp) &
+         call add("9.1.1", "applied_force_x", "expected a non-zero applied force (applied_force_x, "// &
+                  "applied_force_y and applied_force_z are all 0): the echo's LOAD scale factor, the largest "// &
+                  "applied load, is undefined for an unloaded bearing (ADORE's rule for one is not known)")
       if (n > 0) call input_error(error, deck%path//": "//itoa(n)// &
                                   " problem(s) in the deck's values"//msg)
 
