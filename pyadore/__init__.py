@@ -17,4 +17,5 @@ try:
 except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
 
-__all__ = ["run", "read_traction_table", "Result", "BALL_STARTS", "AdoreError", "AdoreInputError", "AdoreEngineError", "__version__"]
+__all__ = ["run", "read_traction_table", "Result", "BALL_STARTS", "AdoreError", "AdoreInputError", "AdoreEngineError",
+           "__version__"]
