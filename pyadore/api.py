@@ -83,8 +83,6 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
         table = Path(os.fspath(traction_table))
         if not str(traction_table).strip():
             raise AdoreInputError("traction table: the file name is blank")
-    if ball_start is not None and ball_start not in BALL_STARTS:
-        raise AdoreInputError(f"ball start: expected one of {', '.join(BALL_STARTS)}, got {ball_start!r}")
     _core.run_file(deck, out_path, engine_steps, table, ball_start)
     notes = []
     if engine_steps != 0 and _core.time_steps_implemented() == 0:

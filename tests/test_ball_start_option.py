@@ -81,9 +81,11 @@ def test_print_lists_a_race_control_start_before_the_deck(starts, name, words):
 def test_unknown_start_is_an_input_error(tmp_path, ball_deck):
     with pytest.raises(AdoreInputError, match="ball start: expected one of dissipation"):
         pyadore.run(ball_deck, steps=0, out=tmp_path / "x.prt", ball_start="race-control")
-    # the engine checks the name itself (the facade's check is only the first line)
+    # the engine is the one place that checks the name
     with pytest.raises(AdoreInputError, match="got 'race-control'"):
         _core.run_file(ball_deck, tmp_path / "y.prt", 0, None, "race-control")
+    with pytest.raises(AdoreInputError, match="got '3'"):
+        pyadore.run(ball_deck, steps=0, out=tmp_path / "z.prt", ball_start=3)
     assert list(tmp_path.iterdir()) == []
 
 
