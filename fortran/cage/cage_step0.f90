@@ -49,6 +49,7 @@
 module adore_cage_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
    implicit none
    private
@@ -62,7 +63,6 @@ module adore_cage_step0
    integer, parameter :: POCKET_BALL = 1          !< cylindrical pocket along the cage radius (ball)
    integer, parameter :: POCKET_RECTANGULAR = 2   !< flat-walled pocket (roller, kPocType 0)
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
    !> One cage guide land (Rec 7.0 guide type, Rec 7.2.n), SI.
    type :: guide_land_t

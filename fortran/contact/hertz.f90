@@ -14,6 +14,7 @@
 !> ellipse is accurate to round-off.  Units SI throughout.
 module adore_contact_hertz
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_elliptic, only: elliptic_ke
    implicit none
    private
@@ -42,7 +43,6 @@ module adore_contact_hertz
       real(wp) :: max_pressure = 0.0_wp  !< maximum Hertz pressure (Pa)
    end type hertz_contact_t
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
 contains
 

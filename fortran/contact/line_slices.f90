@@ -39,6 +39,7 @@
 !> Units SI: m, N, N/m, Pa.
 module adore_contact_line_slices
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    implicit none
    private
 
@@ -46,7 +47,6 @@ module adore_contact_line_slices
    public :: profile_drop, contact_modulus, line_stiffness, line_half_width, palmgren_load
    public :: line_contact, roller_mass, GAUSS_POINTS
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
    real(wp), parameter :: palmgren_c = 3.84e-5_wp*1.0e-3_wp*(1.0e3_wp)**(-0.8_wp)  !< SI: m N**-0.9 m**0.8
    real(wp), parameter :: palmgren_e_star = 2.06e11_wp/(2.0_wp*(1.0_wp - 0.3_wp**2))
    real(wp), parameter :: exponent = 10.0_wp/9.0_wp

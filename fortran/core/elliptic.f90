@@ -1,6 +1,7 @@
 !> Complete elliptic integrals of the first and second kind.
 module adore_core_elliptic
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    implicit none
    private
 
@@ -17,7 +18,6 @@ contains
       real(wp), intent(out) :: k   !< K(m), first kind
       real(wp), intent(out) :: e   !< E(m), second kind
 
-      real(wp), parameter :: pi = acos(-1.0_wp)
       real(wp) :: a, b, c, a_next, s, pow
       integer :: n
 

@@ -2,6 +2,7 @@
 !> section 2.1: Gaussian quadrature in each zone between pure-rolling points).
 module adore_core_quadrature
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    implicit none
    private
 
@@ -14,7 +15,6 @@ contains
    pure subroutine gauss_legendre(n, x, w)
       integer, intent(in) :: n
       real(wp), intent(out) :: x(n), w(n)
-      real(wp), parameter :: pi = acos(-1.0_wp)
       real(wp) :: z, z1, p1, p2, p3, pp
       integer :: i, j, it
 

@@ -13,6 +13,7 @@
 module adore_driver_ball_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_mounting_fits, only: mounting_t
@@ -39,7 +40,6 @@ module adore_driver_ball_step0
 
    public :: ball_step0_t, solve_ball_step0
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
    !> Default ball start hypothesis of step 0 (report 4.4.7: minimum dissipation); race
    !> control (CONTROL_OUTER, CONTROL_INNER) is the report's alternative, chosen per run
    !> (solve_ball_step0's start_method; docs/tribology.md for the comparison).

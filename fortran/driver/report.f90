@@ -8,6 +8,7 @@
 module adore_driver_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi, rad_to_deg, rad_s_to_rpm
    use adore_core_error, only: error_type
    use adore_deck_reader, only: deck_t, deck_collect_real, deck_collect_int, deck_count, deck_has
    use adore_model_bearing, only: bearing_t, BALL_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, &
@@ -26,7 +27,6 @@ module adore_driver_report
 
    public :: fill_echo, write_ball_step0, write_roller_step0, cage_tables
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
 contains
 
@@ -217,7 +217,7 @@ contains
       type(bearing_t), intent(in) :: b
       type(ball_step0_t), intent(in) :: s
 
-      real(wp), parameter :: deg = 180.0_wp/pi, rpm = 30.0_wp/pi
+      real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
       real(wp) :: slices(1, 10, 0), race_cage(max(b%n_lands, 1), 7), bodies(3, 11)
       real(wp) :: loads(5, 6), acc(3, 7), perf(N_PERFORMANCE), summary(1, 10), nan
@@ -325,7 +325,7 @@ contains
       type(bearing_t), intent(in) :: b
       type(roller_step0_t), intent(in) :: s
 
-      real(wp), parameter :: deg = 180.0_wp/pi, rpm = 30.0_wp/pi
+      real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
       real(wp), allocatable :: slices(:, :, :)
       real(wp) :: race_cage(max(b%n_lands, 1), 7), bodies(3, 11), loads(5, 6), acc(3, 7)
@@ -442,7 +442,7 @@ contains
       integer, intent(out) :: code(:), land_code(:)
       real(wp), intent(out) :: re_cage(:, :), race_cage(:, :), cage_row(:)
 
-      real(wp), parameter :: deg = 180.0_wp/pi, rpm = 30.0_wp/pi
+      real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp) :: nan
       integer :: k, j, row
       logical :: any_contact, contact
@@ -513,7 +513,7 @@ contains
    subroutine race_rows(bodies, u_yz, w_outer, w_inner)
       real(wp), intent(inout) :: bodies(:, :)
       real(wp), intent(in) :: u_yz(2), w_outer, w_inner
-      real(wp), parameter :: deg = 180.0_wp/pi, rpm = 30.0_wp/pi
+      real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp) :: w(2)
       integer :: j
 

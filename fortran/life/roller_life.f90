@@ -13,6 +13,7 @@
 !> literature alternatives are in adore_life_lundberg_palmgren and docs/life-model.md.
 module adore_life_roller
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_contact_line_slices, only: line_contact_t
    use adore_life_lundberg_palmgren, only: life_params_t, line_contact_lp_life, race_life, pass_cycles, &
                                            bearing_life, life_hours
@@ -21,7 +22,6 @@ module adore_life_roller
 
    public :: roller_lives_t, roller_race_lp_life, roller_bearing_lp_life
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
    !> Basic lives of a roller bearing.  huge(1.0_wp) means "never fails".
    type :: roller_lives_t

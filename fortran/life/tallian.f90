@@ -24,6 +24,7 @@
 !>  * sigma in eq 86 is in mm (as the text says), converted from sigma_rms in m.
 module adore_life_tallian
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_life_lundberg_palmgren, only: life_params_t
    implicit none
    private
@@ -31,7 +32,6 @@ module adore_life_tallian
    public :: gauss_upper_tail, asperity_count, stress_state
    public :: contact_hazard_products, race_psi, tallian_life, ball_race_modified_life
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
 contains
 

@@ -3,6 +3,7 @@
 !> derived value of the input echo.  Built once per run by build_bearing; read-only after.
 module adore_model_bearing
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
    use adore_deck_reader, only: deck_t, read_deck, deck_has, deck_count, deck_collect_real, deck_collect_int, &
                                 deck_collect_text, deck_field_problem
@@ -30,7 +31,6 @@ module adore_model_bearing
    integer, parameter :: BODY_ELEMENT = 1, BODY_OUTER = 2, BODY_INNER = 3, BODY_CAGE = 4, &
                          BODY_SHAFT = 5, BODY_HOUSING = 6
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
    real(wp), parameter :: rpm = pi/30.0_wp
 
    !> Material properties of one body (echo MATERIAL PROPERTIES).

@@ -17,6 +17,7 @@
 !>     not identified (see roller_moments).
 module adore_model_inertia
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
    implicit none
    private
@@ -26,7 +27,6 @@ module adore_model_inertia
    public :: ball_cage_inertia, roller_cage_inertia
    public :: check_positive
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
 contains
 

@@ -31,6 +31,7 @@
 !> Units SI: m, N, rad, rad/s, kg.
 module adore_quasistatic_ball_equilibrium
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error
    use adore_core_linalg, only: solve_dense
    use adore_contact_hertz, only: hertz_geometry_t, hertz_contact_t, hertz_geometry, hertz_contact
@@ -88,7 +89,6 @@ module adore_quasistatic_ball_equilibrium
       integer :: iterations = 0                    !< race Newton iterations, all stiffness passes
    end type ball_qs_solution_t
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
 contains
 

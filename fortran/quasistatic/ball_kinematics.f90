@@ -24,6 +24,7 @@
 !> centre slides at -0.14 to -0.23 m/s; see docs/tribology.md.
 module adore_quasistatic_ball_kinematics
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
    use adore_tribology_traction_law, only: traction_law_t
@@ -222,7 +223,7 @@ contains
       !> the EHD film of both contacts: the power is the EHD traction's (model 3)
       type(ehd_films_t), intent(in), optional :: ehd
 
-      real(wp), parameter :: pi = acos(-1.0_wp), step = pi/180.0_wp
+      real(wp), parameter :: step = pi/180.0_wp
       integer, parameter :: n_full = 61, n_near = 9
       real(wp), parameter :: gr = 0.5_wp*(sqrt(5.0_wp) - 1.0_wp)
       real(wp) :: betas(n_full), powers(n_full), speeds(n_full), scale, lo, hi, x1, x2, f1, f2, bp, den, centre

@@ -32,6 +32,7 @@
 !> residuals are exact).  Units SI.
 module adore_quasistatic_roller_equilibrium
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error, input_error
    use adore_core_linalg, only: solve_dense
    use adore_contact_line_slices, only: roller_profile_t, line_contact_t, line_contact
@@ -80,7 +81,6 @@ module adore_quasistatic_roller_equilibrium
       integer :: iterations = 0
    end type roller_qs_solution_t
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
 contains
 

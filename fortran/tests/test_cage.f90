@@ -4,13 +4,13 @@
 program test_cage
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type
    use adore_cage_step0, only: guide_land_t, cage_input_t, cage_step0_t, solve_cage_step0, &
                                cage_initial_state, cage_state_t, POCKET_BALL, POCKET_RECTANGULAR, &
                                GUIDE_INNER, GUIDE_OUTER
    implicit none
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
    integer, parameter :: n = 12
    real(wp), parameter :: d = 0.02_wp, pitch_r = 0.07_wp, c = 1.0e-3_wp
    real(wp), parameter :: cage_od = 0.15_wp, cage_id = 0.13_wp     ! R_c = 0.07

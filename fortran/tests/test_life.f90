@@ -6,6 +6,7 @@
 program test_life
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_life_lundberg_palmgren, only: life_params_t, pass_cycles, point_contact_capacity, &
       contact_life, race_life, bearing_life, life_hours, line_equivalent_load, ball_race_lp_life, &
       life_params_to_array, life_params_from_array, line_contact_lp_life
@@ -16,7 +17,6 @@ program test_life
    implicit none
 
    integer, parameter :: nb = 18
-   real(wp), parameter :: pi = acos(-1.0_wp)
    real(wp), parameter :: deg = pi/180.0_wp
    ! Appendix C bearing (BEARING GEOMETRY echo, line ~3080; Table 5)
    real(wp), parameter :: d_ball = 1.905e-2_wp, d_pitch = 0.140_wp, f_outer = 0.52_wp, f_inner = 0.54_wp

@@ -4,6 +4,7 @@
 program test_model
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
    use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
                                     roller_race_diameters
@@ -13,7 +14,6 @@ program test_model
    use adore_model_scales, only: scale_factors
    implicit none
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
    call test_clearance()
    call test_inertia()

@@ -5,6 +5,7 @@
 program test_roller
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type
    use adore_contact_line_slices, only: roller_profile_t, line_contact_t, profile_drop, roller_mass, &
                                         contact_modulus, line_stiffness, line_contact
@@ -13,7 +14,6 @@ program test_roller
                                                    solve_roller, roller_contacts
    implicit none
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
    call test_profile_and_mass()
    call test_roller_response_matches_finite_differences()

@@ -4,6 +4,7 @@
 program test_tribology
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_film, only: lubricant_t, central_film_thickness, thermal_reduction_factor, &
@@ -15,7 +16,6 @@ program test_tribology
    use adore_tribology_traction_law, only: curve_law
    implicit none
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
    call test_gauss()
    call test_film()

@@ -23,6 +23,7 @@
 !> within 1.2 % and contact losses within 1.7 % (28 contacts, docs/tribology.md).
 module adore_tribology_ehd_traction
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_flash, only: strip_temperature_rise
@@ -33,7 +34,6 @@ module adore_tribology_ehd_traction
 
    public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_temperature_rise
 
-   real(wp), parameter :: pi = acos(-1.0_wp)
 
    !> Rheology of the film at the wall temperature.
    type :: ehd_rheology_t

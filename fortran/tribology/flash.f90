@@ -15,6 +15,7 @@
 !> The contact average is eq (36): (1 / (pi a b)) times the integral of dT over the ellipse.
 module adore_tribology_flash
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
    implicit none
    private
@@ -68,7 +69,6 @@ contains
    pure subroutine strip_temperature_rise(b, xi, q, u1, u2, th1, th2, dt)
       real(wp), intent(in) :: b, xi(:), q(:), u1, u2, th1(3), th2(3)
       real(wp), intent(out) :: dt(size(xi))
-      real(wp), parameter :: pi = acos(-1.0_wp)
       real(wp) :: denom
 
       call flash_rise_dimensionless(xi, q, dt)
@@ -87,7 +87,6 @@ contains
       integer, intent(in) :: ny
       real(wp), intent(out) :: dt_avg, dt_max
       type(error_type), allocatable, intent(out) :: error
-      real(wp), parameter :: pi = acos(-1.0_wp)
       real(wp), allocatable :: xi(:), q(:), dt(:)
       real(wp) :: ek, bk, strip
       integer :: k, i

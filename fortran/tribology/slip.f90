@@ -18,6 +18,7 @@
 !> integral of kappa(|u|) |u| dQ (eq 4).
 module adore_tribology_slip
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_traction_law, only: traction_law_t, law_kappa
@@ -83,7 +84,6 @@ contains
       type(ball_race_contact_t), intent(in) :: c
       integer, intent(out) :: n
       real(wp), intent(out) :: s(2)
-      real(wp), parameter :: pi = acos(-1.0_wp)
       real(wp) :: aa, bb, cc, r, delta, gam, cand, psi
       integer :: k, m
 
@@ -227,7 +227,6 @@ contains
    pure subroutine interior_extremum(c, umax)
       type(ball_race_contact_t), intent(in) :: c
       real(wp), intent(inout) :: umax
-      real(wp), parameter :: pi = acos(-1.0_wp)
       real(wp) :: aa, bb, delta, psi
       integer :: m
 
