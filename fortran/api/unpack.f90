@@ -1,7 +1,8 @@
 !> Flat-array unpacking shared by the quasi-static f2py wrappers (fortran/api/quasistatic.f90).
 module adore_api_unpack
    use adore_core_kinds, only: wp
-   use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
+   use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t
+   use adore_geometry_mounted, only: ball_groove_centres
    use adore_core_error, only: error_type, input_error
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t
    use adore_model_bearing, only: bearing_t, read_bearing, ROLLER_BEARING
@@ -20,6 +21,7 @@ contains
       integer, intent(in) :: solve_moment(2)
       type(ball_qs_bearing_t), intent(out) :: b
       type(ball_qs_load_t), intent(out) :: ld
+      real(wp) :: centres(2, 2)
 
       b%n_balls = n
       b%d = geom(1)
@@ -34,7 +36,11 @@ contains
       b%e_inner = geom(9)
       b%nu_inner = geom(10)
       b%inner_race_mass = geom(13)
-      call set_groove_centres(b, geom(5), geom(11), geom(12))
+      centres = ball_groove_centres(b%d, b%dm, b%f_o, b%f_i, geom(5), geom(11), geom(12))
+      b%x_o = centres(1, 1)
+      b%r_o = centres(2, 1)
+      b%x_i = centres(1, 2)
+      b%r_i = centres(2, 2)
       ld%force = load(1:3)
       ld%moment = load(4:6)
       ld%gravity = load(7:9)

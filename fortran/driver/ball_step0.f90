@@ -17,8 +17,8 @@ module adore_driver_ball_step0
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_mounting_fits, only: mounting_t
-   use adore_driver_mount, only: mount_bearing
-   use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t, set_groove_centres
+   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, CONTROL_INNER, MIN_DISSIPATION, ball_contacts, &
                                                 ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, major_axis_nodes, &
@@ -107,6 +107,7 @@ contains
       integer, intent(in), optional :: start_method
 
       type(ball_qs_bearing_t) :: qb
+      type(mounted_geometry_t) :: geometry
       type(ball_qs_load_t) :: ld
       type(life_params_t) :: lp
       real(wp), allocatable :: lives_o(:), lives_i(:), speed_rpm(:), p_max(:), mu(:)
@@ -122,7 +123,8 @@ contains
          call input_error(error, "ball start: unknown start hypothesis code")
          return
       end if
-      s%mounting = mount_bearing(b)
+      geometry = mount_geometry(b, b%temperature)
+      s%mounting = geometry%mounting
 
       qb%n_balls = b%n_elements
       qb%d = b%d
@@ -137,7 +139,10 @@ contains
       qb%e_inner = b%material(BODY_INNER)%modulus
       qb%nu_inner = b%material(BODY_INNER)%poisson
       qb%inner_race_mass = b%mass(4)
-      call set_groove_centres(qb, b%alpha0, s%mounting%inner_raceway_growth, s%mounting%outer_raceway_shrink)
+      qb%x_o = geometry%groove_centre(1, 1)
+      qb%r_o = geometry%groove_centre(2, 1)
+      qb%x_i = geometry%groove_centre(1, 2)
+      qb%r_i = geometry%groove_centre(2, 2)
       ld%force = b%force
       ld%moment = b%moment
       ld%gravity = b%gravity

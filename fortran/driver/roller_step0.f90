@@ -40,7 +40,7 @@ module adore_driver_roller_step0
    use adore_model_bearing, only: bearing_t, ROLLER_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_model_scales, only: length_scale
    use adore_mounting_fits, only: mounting_t
-   use adore_driver_mount, only: mount_bearing
+   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness, line_contact_t
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
@@ -101,12 +101,12 @@ module adore_driver_roller_step0
 
 contains
 
-   !> The quasi-static contact model of bearing b mounted as m; growth_count as in the
-   !> module header (1 consistent, 2 ADORE 5.0), n_sub slice zones.
-   function roller_qs_model(b, m, growth_count, n_sub) result(q)
+   !> The quasi-static contact model of bearing b in its mounted geometry g (raceway radii
+   !> moved by growth_count times the mounting, adore_geometry_mounted), n_sub slice zones.
+   function roller_qs_model(b, g, n_sub) result(q)
       type(bearing_t), intent(in) :: b
-      type(mounting_t), intent(in) :: m
-      integer, intent(in) :: growth_count, n_sub
+      type(mounted_geometry_t), intent(in) :: g
+      integer, intent(in) :: n_sub
       type(roller_qs_bearing_t) :: q
       real(wp) :: half, l_ref
 
@@ -115,8 +115,8 @@ contains
       q%profile = roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, b%corner_radius)
       q%mass = b%mass(1)   ! the crowned roller of the bearing model
       q%race_crown = b%race_crown
-      q%r_o = 0.5_wp*b%outer_raceway_dia - real(growth_count, wp)*m%outer_raceway_shrink
-      q%r_i = 0.5_wp*b%inner_raceway_dia + real(growth_count, wp)*m%inner_raceway_growth
+      q%r_o = g%raceway_radius(1)
+      q%r_i = g%raceway_radius(2)
       half = 0.5_wp*b%roller_length
       q%lim_o = [-half, half]
       q%lim_i = [-half, half]
@@ -147,6 +147,7 @@ contains
       type(life_params_t) :: lp
       real(wp), allocatable :: w(:), centres(:, :)
       real(wp) :: race_centre(3, 2)
+      type(mounted_geometry_t) :: geometry
       integer :: ng
       if (present(spin_method)) s%spin_method = spin_method
       if (s%spin_method /= SPIN_ROLLING .and. s%spin_method /= SPIN_EQUILIBRIUM) then
@@ -162,8 +163,9 @@ contains
       end if
       ng = 2
       if (present(growth_count)) ng = growth_count
-      s%mounting = mount_bearing(b)
-      s%model = roller_qs_model(b, s%mounting, ng, 3)
+      geometry = mount_geometry(b, b%temperature, ng)
+      s%mounting = geometry%mounting
+      s%model = roller_qs_model(b, geometry, 3)
       s%contact_clearance = 2.0_wp*(s%model%r_o - s%model%r_i - b%d)
 
       s%orbital_speed = 0.5_wp*(b%speed_inner*(1.0_wp - b%d/b%dm) + b%speed_outer*(1.0_wp + b%d/b%dm))

@@ -24,12 +24,16 @@ module adore_model_bearing
    public :: material_t, bearing_t, build_bearing, read_bearing
    public :: BALL_BEARING, ROLLER_BEARING
    public :: BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, BODY_SHAFT, BODY_HOUSING
+   public :: TEMP_ROOM, TEMP_HOUSING, TEMP_SHAFT, TEMP_ELEMENT, TEMP_CAGE, TEMP_OUTER, TEMP_INNER
 
    integer, parameter :: BALL_BEARING = 1     !< Rec 3.2 bearing type
    integer, parameter :: ROLLER_BEARING = 2
    !> Body indices of the material table (echo column order).
    integer, parameter :: BODY_ELEMENT = 1, BODY_OUTER = 2, BODY_INNER = 3, BODY_CAGE = 4, &
                          BODY_SHAFT = 5, BODY_HOUSING = 6
+   !> Indices of bearing_t%temperature (Rec 9.0 room, Rec 2.7 bodies; echo order).
+   integer, parameter :: TEMP_ROOM = 1, TEMP_HOUSING = 2, TEMP_SHAFT = 3, TEMP_ELEMENT = 4, TEMP_CAGE = 5, &
+                         TEMP_OUTER = 6, TEMP_INNER = 7
 
    real(wp), parameter :: rpm = pi/30.0_wp
 

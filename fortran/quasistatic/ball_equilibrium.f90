@@ -40,7 +40,7 @@ module adore_quasistatic_ball_equilibrium
 
    public :: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t
    public :: solve_ball_equilibrium, race_residual, ball_residual, contact_stiffness
-   public :: inner_groove_centre, set_groove_centres
+   public :: inner_groove_centre
 
    !> Bearing data needed by the quasi-static solution.
    type :: ball_qs_bearing_t
@@ -91,24 +91,6 @@ module adore_quasistatic_ball_equilibrium
 
 
 contains
-
-   !> Groove curvature centres from the unmounted geometry and the mounting.
-   !>
-   !> The reference position of the inner race is the one where both races touch the
-   !> ball (centre at radius d_m/2) along the free contact angle alpha0 (rad): the
-   !> centres lie on that line, (f - 1/2) D from the ball centre (outer: towards -x and
-   !> the axis; inner: opposite), so the unmounted diametral play is
-   !> 2 (f_o + f_i - 1) D (1 - cos alpha0).  The mounted inner raceway grows by
-   !> inner_growth and the outer raceway moves in by outer_shrink (m, radial).
-   pure subroutine set_groove_centres(b, alpha0, inner_growth, outer_shrink)
-      type(ball_qs_bearing_t), intent(inout) :: b
-      real(wp), intent(in) :: alpha0, inner_growth, outer_shrink
-
-      b%x_o = -(b%f_o - 0.5_wp)*b%d*sin(alpha0)
-      b%r_o = 0.5_wp*b%dm - (b%f_o - 0.5_wp)*b%d*cos(alpha0) - outer_shrink
-      b%x_i = (b%f_i - 0.5_wp)*b%d*sin(alpha0)
-      b%r_i = 0.5_wp*b%dm + (b%f_i - 0.5_wp)*b%d*cos(alpha0) + inner_growth
-   end subroutine set_groove_centres
 
    !> Hertz stiffness K (N/m**1.5) of a ball/race contact at contact angle alpha (rad).
    !>
