@@ -21,14 +21,9 @@ module adore_driver_ball_step0
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, CONTROL_INNER, MIN_DISSIPATION, ball_contacts, &
                                                 ehd_films_t
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, major_axis_nodes, &
-                                   contact_slip
-   use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
-   use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
-                                   dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
-                                   THERMAL_LOADING_SCALE
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise
-   use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
+   use adore_tribology_race_contact, only: PRINT_GAUSS, ehd_traction_model, wall_temperature, wall_rheology, &
+                                           lubricant_film, check_ehd_film, ehd_traction, ehd_flash, law_flash
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
@@ -44,13 +39,6 @@ module adore_driver_ball_step0
    !> control (CONTROL_OUTER, CONTROL_INNER) is the report's alternative, chosen per run
    !> (solve_ball_step0's start_method; docs/tribology.md for the comparison).
    integer, parameter, public :: BALL_START_METHOD = MIN_DISSIPATION
-   !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
-   !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
-   integer, parameter, public :: PRINT_GAUSS = 4
-   !> Gauss points per slip zone and across each strip of the EHD traction's loss and force
-   integer, parameter, public :: EHD_GAUSS = 16, EHD_STRIP = 24
-   !> Rec 10.0 traction_model of the EHD film traction (report Table 5, model 3)
-   integer, parameter, public :: TRACTION_EHD = 3
 
    !> The step-0 state of a ball bearing.
    type :: ball_step0_t
@@ -154,7 +142,7 @@ contains
       call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, s%start_method, s%start, error, &
                             b%race_traction)
       if (allocated(error)) return
-      if (ehd_traction_model() .and. s%start_method == MIN_DISSIPATION) then
+      if (ehd_traction_model(b) .and. s%start_method == MIN_DISSIPATION) then
          call ehd_start(error)
          if (allocated(error)) return
       end if
@@ -264,15 +252,15 @@ contains
          do k = 1, b%n_elements
             call ball_race_contacts(k, c, b_minor, k_ell, p_h)
             do j = 1, 2
-               films(k)%rheo(j) = wall_rheology(merge(BODY_OUTER, BODY_INNER, j == 1))
+               films(k)%rheo(j) = wall_rheology(b, b%temperature, merge(BODY_OUTER, BODY_INNER, j == 1))
                films(k)%b(j) = b_minor(j)
                if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
                call contact_traction(c(j), b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
                if (allocated(error)) return
-               call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
+               call lubricant_film(b, b%temperature, t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
                                    h, phi, error)
                if (allocated(error)) return
-               call check_ehd_film(k, j, h, phi, error)
+               call check_ehd_film(b, b%temperature, k, j, h, phi, error)
                if (allocated(error)) return
                films(k)%h(j) = h*phi
             end do
@@ -295,75 +283,11 @@ contains
          end associate
       end subroutine ball_race_contacts
 
-      !> Wall temperature (K) of a race contact: mean of the ball and race temperatures
-      !> (Rec 2.7).  At step 0 the contact temperature rise is not fed back (the report
-      !> prints Contact Temp = 323 K, its deck temperature).
-      pure function wall_temperature(race) result(t_w)
-         integer, intent(in) :: race
-         real(wp) :: t_w
-         t_w = 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, race == BODY_OUTER)))
-      end function wall_temperature
 
-      !> Average flash temperature rise (K) of a race contact with its EHD heat (report
-      !> 2.7-2.8, eqs 35-36): both surfaces moving at the entraining speed u_e (m/s), ball
-      !> and race materials of Rec 8.
-      subroutine ehd_flash(cj, b_minor, race, h, u_e, rise, error)
-         type(ball_race_contact_t), intent(in) :: cj
-         real(wp), intent(in) :: b_minor, h, u_e
-         integer, intent(in) :: race
-         real(wp), intent(out) :: rise
-         type(error_type), allocatable, intent(out) :: error
-         real(wp) :: dt_max
-         call ehd_temperature_rise(cj, wall_rheology(race), h, b_minor, EHD_GAUSS, FLASH_POINTS, u_e, u_e, &
-                                   thermal_properties(BODY_ELEMENT), thermal_properties(race), rise, dt_max, error)
-      end subroutine ehd_flash
 
-      !> True when the race contacts use ADORE's EHD film traction (Rec 10.0 model 3 with a
-      !> lubricant); a traction-slip table (ADRX7) replaces the deck's model, EHD included.
-      pure logical function ehd_traction_model()
-         ehd_traction_model = b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE .and. &
-                              b%lubricant_code /= 0
-      end function ehd_traction_model
 
-      !> [density (kg/m**3), heat capacity (J/kg/K), conductivity (W/m/K)] of a body (Rec 8).
-      pure function thermal_properties(body) result(th)
-         integer, intent(in) :: body
-         real(wp) :: th(3)
-         th = [b%material(body)%density, b%material(body)%heat_capacity, b%material(body)%conductivity]
-      end function thermal_properties
 
-      !> Average flash temperature rise (K) of a race contact whose traction is the run's
-      !> law (the deck's curve or a traction-slip table; report 2.7-2.8, eqs 35-36): strips
-      !> along the major axis (EHD_GAUSS Gauss points per slip zone) carry the heat factor
-      !> g = kappa(|u|) |u| (eq 29) over the Hertz ellipse (semi-minor axis b_minor, m; peak
-      !> pressure p0, Pa), both surfaces at the entraining speed u_e (m/s): the roller run's
-      !> model, with the ball's own slip along its major axis.
-      subroutine law_flash(cj, b_minor, p0, race, u_e, rise, error)
-         type(ball_race_contact_t), intent(in) :: cj
-         real(wp), intent(in) :: b_minor, p0, u_e
-         integer, intent(in) :: race
-         real(wp), intent(out) :: rise
-         type(error_type), allocatable, intent(out) :: error
-         type(contact_traction_t) :: t
-         real(wp), allocatable :: x(:), w(:), u(:)
-         real(wp) :: dt_max
 
-         call major_axis_nodes(cj, EHD_GAUSS, t, x, w)
-         u = contact_slip(cj, x)
-         call contact_temperature_rise(cj%a, b_minor, p0, x, w, law_kappa(b%race_traction, u)*abs(u), u_e, u_e, &
-                                       thermal_properties(BODY_ELEMENT), thermal_properties(race), FLASH_POINTS, &
-                                       rise, dt_max, error)
-      end subroutine law_flash
-
-      !> The lubricant's traction rheology at the wall temperature of a race contact.
-      function wall_rheology(race) result(rheo)
-         integer, intent(in) :: race
-         type(ehd_rheology_t) :: rheo
-         real(wp) :: t_w
-         t_w = wall_temperature(race)
-         rheo = ehd_rheology_t(eta_w=traction_viscosity(b%lubricant, t_w), alpha=b%lubricant%alpha_t, &
-                               beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity)
-      end function wall_rheology
 
       !> Slip, traction, spin/roll and power loss of every loaded race contact at the
       !> start's speeds (report 2.1, eqs 3-4; PRINT_GAUSS points per slip zone); NaN for an
@@ -393,7 +317,7 @@ contains
          s%sliding = 0.0_wp                          ! an unloaded contact does not wear
          s%traction = 0.0_wp
          s%power_loss = 0.0_wp
-         ehd = ehd_traction_model()
+         ehd = ehd_traction_model(b)
          do k = 1, b%n_elements
             call ball_race_contacts(k, c, b_minor, k_ell, p_h)
             do j = 1, 2
@@ -402,22 +326,22 @@ contains
                call contact_traction(c(j), b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
                if (allocated(error)) return
                if (b%lubricant_code /= 0) then
-                  call lubricant_film(t, k_ell(j), c(j)%load, p_h(j), race, s%film(j, k), &
+                  call lubricant_film(b, b%temperature, t, k_ell(j), c(j)%load, p_h(j), race, s%film(j, k), &
                                       s%thermal_factor(j, k), error)
                   if (allocated(error)) return
                end if
                if (ehd) then
-                  call check_ehd_film(k, j, s%film(j, k), s%thermal_factor(j, k), error)
+                  call check_ehd_film(b, b%temperature, k, j, s%film(j, k), s%thermal_factor(j, k), error)
                   if (allocated(error)) return
                   h = s%film(j, k)*s%thermal_factor(j, k)
-                  call ehd_traction(c(j), b_minor(j), race, h, t, error)
+                  call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error, print=.true.)
                   if (allocated(error)) return
-                  call ehd_flash(c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
+                  call ehd_flash(b, b%temperature, c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
                else
-                  call law_flash(c(j), b_minor(j), p_h(j), race, abs(t%rolling_speed), s%temp_rise(j, k), error)
+                  call law_flash(b, c(j), b_minor(j), p_h(j), race, abs(t%rolling_speed), s%temp_rise(j, k), error)
                end if
                if (allocated(error)) return
-               s%contact_temp(j, k) = wall_temperature(race)
+               s%contact_temp(j, k) = wall_temperature(b%temperature, race)
                s%slip(j, k) = t%node_slip
                s%trac_coeff(j, k) = t%node_coefficient
                s%spin_roll(j, k) = t%spin_roll
@@ -467,79 +391,8 @@ contains
          end associate
       end subroutine traction_race_loads
 
-      !> Film of one race contact (report 2.6): Hamrock-Dowson isothermal central film
-      !> h (m) at the contact's entraining speed, R_x and ellipticity k = a/b, with the
-      !> lubricant's viscosity at the inlet temperature (mean of the ball and race
-      !> temperatures, Rec 2.7) and ambient pressure; the thermal reduction factor phi of
-      !> Gupta et al. with beta = B/T**2 at that temperature and the slide-to-roll ratio
-      !> centre slip / entraining speed.
-      subroutine lubricant_film(t, k_ell, q, p_h, race, h, phi, error)
-         type(contact_traction_t), intent(in) :: t
-         real(wp), intent(in) :: k_ell, q, p_h
-         integer, intent(in) :: race
-         real(wp), intent(out) :: h, phi
-         type(error_type), allocatable, intent(out) :: error
-         real(wp) :: e_prime, t_in, eta, u
 
-         e_prime = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
-                           (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
-         t_in = 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, race == BODY_OUTER)))
-         eta = dynamic_viscosity(b%lubricant, t_in, 0.0_wp)
-         u = abs(t%rolling_speed)
-         call central_film_thickness(t%rx, k_ell, u, q, e_prime, eta, b%lubricant%alpha, h, error)
-         if (allocated(error)) return
-         phi = thermal_reduction_factor(p_h, e_prime, THERMAL_LOADING_SCALE*thermal_loading(eta, &
-                                        temperature_viscosity_coefficient(b%lubricant, t_in), u, &
-                                        b%lubricant%conductivity), t%centre_slip/t%rolling_speed)
-      end subroutine lubricant_film
 
-      !> Input error unless race contact j (1 outer, 2 inner) of ball k has an EHD film, the
-      !> isothermal film h (m) times the thermal reduction factor phi: Gupta's fit of phi
-      !> reaches 0 beyond its range of thermal loading (a lubricant far too viscous at the
-      !> deck's temperatures for the speed), where traction model 3 has no film to shear.
-      subroutine check_ehd_film(k, j, h, phi, error)
-         integer, intent(in) :: k, j
-         real(wp), intent(in) :: h, phi
-         type(error_type), allocatable, intent(out) :: error
-         character(len=2000) :: buf     ! f0.2 of any finite temperature fits (<= 312 characters)
-         character(len=5) :: side
-         integer :: stat
-
-         if (h*phi > 0.0_wp .and. h*phi < huge(1.0_wp)) return
-         side = merge("outer", "inner", j == 1)
-         write (buf, "(a,i0,3a,es10.3,a,es10.3,3a,f0.2,a,f0.2,3a,f0.2,a)", iostat=stat) "ball ", k, " ", trim(side), &
-            " race contact: no film for the EHD traction (Rec 10.0 traction_model 3): isothermal film ", h, &
-            " m times thermal reduction factor ", phi, " (Gupta's fit is 0 beyond its range of thermal loading); ", &
-            trim(b%lubricant%name), " at ", 0.5_wp*(b%temperature(4) + b%temperature(merge(6, 7, j == 1))), &
-            " K, the mean of Rec 2.7 rolling_element_temperature ", b%temperature(4), " K and ", trim(side), &
-            "_race_temperature ", b%temperature(merge(6, 7, j == 1)), " K"
-         if (stat /= 0) buf = "a race contact has no film for the EHD traction (Rec 10.0 traction_model 3) "// &
-                              "at the temperatures of Rec 2.7"
-         call input_error(error, trim(buf))
-      end subroutine check_ehd_film
-
-      !> EHD traction of one race contact (traction model 3, adore_tribology_ehd_traction):
-      !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
-      !> lubricant's traction rheology at the wall temperature (mean of the ball and race
-      !> temperatures), PRINT_GAUSS points for the printed slip and coefficient and
-      !> EHD_GAUSS x EHD_STRIP points for the force and heat.
-      subroutine ehd_traction(cj, b_minor, race, h, t, error)
-         type(ball_race_contact_t), intent(in) :: cj
-         real(wp), intent(in) :: b_minor, h
-         integer, intent(in) :: race
-         type(contact_traction_t), intent(out) :: t
-         type(error_type), allocatable, intent(out) :: error
-         type(ehd_rheology_t) :: rheo
-         type(contact_traction_t) :: t_print
-
-         rheo = wall_rheology(race)
-         call ehd_contact_traction(cj, rheo, h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
-         if (allocated(error)) return
-         call ehd_contact_traction(cj, rheo, h, b_minor, PRINT_GAUSS, EHD_STRIP, t_print, error)
-         if (allocated(error)) return
-         t%node_slip = t_print%node_slip
-         t%node_coefficient = t_print%node_coefficient
-      end subroutine ehd_traction
 
    end subroutine solve_ball_step0
 

@@ -35,6 +35,7 @@ module adore_quasistatic_ball_equilibrium
    use adore_core_error, only: error_type, engine_error
    use adore_core_linalg, only: solve_dense
    use adore_contact_hertz, only: hertz_geometry_t, hertz_contact_t, hertz_geometry, hertz_contact
+   use adore_contact_ball_race, only: ball_race_curvatures
    implicit none
    private
 
@@ -94,9 +95,8 @@ contains
 
    !> Hertz stiffness K (N/m**1.5) of a ball/race contact at contact angle alpha (rad).
    !>
-   !> Curvatures (Harris): ball 2/D in both planes; race in the rolling plane
-   !> +-2 gamma/(D (1 -+ gamma)), gamma = D cos(alpha)/d_m (inner convex, outer concave);
-   !> across the groove -1/(f D).  outer = .true. for the outer race.
+   !> Curvatures of adore_contact_ball_race's ball_race_curvatures (Harris).  outer =
+   !> .true. for the outer race.
    function contact_stiffness(b, alpha, outer, geo) result(k)
       type(ball_qs_bearing_t), intent(in) :: b
       real(wp), intent(in) :: alpha
@@ -104,17 +104,15 @@ contains
       type(hertz_geometry_t), intent(out), optional :: geo
       real(wp) :: k
 
-      real(wp) :: rho(4), gamma
       type(hertz_geometry_t) :: g
       logical :: ok
 
-      gamma = b%d*cos(alpha)/b%dm
       if (outer) then
-         rho = [2.0_wp/b%d, 2.0_wp/b%d, -2.0_wp*gamma/(b%d*(1.0_wp + gamma)), -1.0_wp/(b%f_o*b%d)]
-         call hertz_geometry(rho, b%e_ball, b%nu_ball, b%e_outer, b%nu_outer, g, ok)
+         call hertz_geometry(ball_race_curvatures(b%d, b%dm, b%f_o, alpha, .true.), b%e_ball, b%nu_ball, &
+                             b%e_outer, b%nu_outer, g, ok)
       else
-         rho = [2.0_wp/b%d, 2.0_wp/b%d, 2.0_wp*gamma/(b%d*(1.0_wp - gamma)), -1.0_wp/(b%f_i*b%d)]
-         call hertz_geometry(rho, b%e_ball, b%nu_ball, b%e_inner, b%nu_inner, g, ok)
+         call hertz_geometry(ball_race_curvatures(b%d, b%dm, b%f_i, alpha, .false.), b%e_ball, b%nu_ball, &
+                             b%e_inner, b%nu_inner, g, ok)
       end if
       k = 0.0_wp
       if (ok) k = g%stiffness

@@ -142,6 +142,8 @@ contains
             q = q + half*wy(i)*p
          end do
          t%force = t%force + sign(f, u)*w(j)
+         t%force_cos = t%force_cos + sign(f, u)*w(j)*cos(x(j)/c%rho)
+         t%force_sin = t%force_sin + sign(f, u)*w(j)*sin(x(j)/c%rho)
          t%power = t%power + f*abs(u)*w(j)
          t%sliding = t%sliding + abs(u)*0.75_wp*c%load/c%a*(1.0_wp - xi2)*w(j)   ! Hertz strip load
          t%max_slip = max(t%max_slip, abs(u))

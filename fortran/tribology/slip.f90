@@ -47,6 +47,10 @@ module adore_tribology_slip
    !> Integrated contact quantities.
    type :: contact_traction_t
       real(wp) :: force = 0.0_wp        !< traction on the race along the slip direction (N)
+      !> the traction's distribution over the major axis, sum of dF cos(psi) and dF sin(psi)
+      !> with psi = s / rho (N): the moment of the traction about the ball centre
+      !> (adore_forces_ball_bearing)
+      real(wp) :: force_cos = 0.0_wp, force_sin = 0.0_wp
       real(wp) :: coefficient = 0.0_wp  !< force / load (-)
       real(wp) :: power = 0.0_wp        !< heat generated, integral of kappa |u| dQ (W)
       real(wp) :: sliding = 0.0_wp      !< integral of |u| dQ (N m/s): the Archard wear's load x slip
@@ -167,6 +171,8 @@ contains
          kap = kappa_scale*law_kappa(law, u)
          dq = 0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)
          t%force = t%force + sign(kap, u)*dq
+         t%force_cos = t%force_cos + sign(kap, u)*dq*cos(x(j)/c%rho)
+         t%force_sin = t%force_sin + sign(kap, u)*dq*sin(x(j)/c%rho)
          t%power = t%power + kap*abs(u)*dq
          t%sliding = t%sliding + abs(u)*dq
          t%max_slip = max(t%max_slip, abs(u))

@@ -1,0 +1,155 @@
+!> Body loads of a ball bearing at any state: every ball/race contact's normal and traction
+!> forces and moments on both bodies, the heat of each contact, gravity and the applied
+!> load of the inner race, from (bearing model, mounted geometry, state).
+!>
+!> The one force assembly for the quasi-static start's checks and the equations of motion
+!> ([Dynamics]).  Per ball and race (adore_contact_ball_race): the Hertz load Q acts on the
+!> ball along -n through the contact point P (no moment about the ball centre) and on the
+!> race along +n at P.  The traction of the run's model (adore_tribology_race_contact:
+!> the deck's traction curve, an ADRX7 table or the EHD film traction of model 3; report
+!> 2.1) acts along the rolling direction e_t, distributed over the major axis: on the race
+!> dF e_t at Q(psi) = B + D/2 (cos psi n + sin psi e_m), on the ball the opposite, so the
+!> ball feels the moment -D/2 (F_cos n + F_sin e_m) x e_t about its centre (F_cos, F_sin:
+!> the sums of dF cos psi and dF sin psi; the second is the spin moment about the normal).
+!> Gravity (Rec 11) acts on every body; the applied force and moment of Rec 9.1.1 on the
+!> inner race.  Inertial forces are not loads here: the equations of motion carry them.
+!> Moments are about each body's mass centre, inertial components.  Units SI.
+module adore_forces_ball_bearing
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type
+   use adore_core_rotation, only: cross
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
+   use adore_geometry_mounted, only: mounted_geometry_t
+   use adore_state_bearing_state, only: bearing_state_t, RACE_OUTER, RACE_INNER
+   use adore_contact_ball_race, only: ball_race_pair_t, ball_race_geometry_t, ball_race_contact, planar_contact
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_OUTER, SIDE_INNER
+   use adore_tribology_race_contact, only: PRINT_GAUSS, ehd_traction_model, lubricant_film, check_ehd_film, &
+                                           ehd_traction
+   implicit none
+   private
+
+   public :: body_load_t, ball_bearing_loads_t, ball_race_pairs, ball_bearing_loads
+
+   !> Force (N) and moment about the mass centre (N m) on one body, inertial components.
+   type :: body_load_t
+      real(wp) :: force(3) = 0.0_wp
+      real(wp) :: moment(3) = 0.0_wp
+   end type body_load_t
+
+   !> Loads on every body and what each race contact does; (1, k) outer, (2, k) inner
+   !> contact of ball k.
+   type :: ball_bearing_loads_t
+      type(body_load_t), allocatable :: elements(:)
+      type(body_load_t) :: cage
+      type(body_load_t) :: races(2)                         !< RACE_OUTER, RACE_INNER
+      type(ball_race_geometry_t), allocatable :: contacts(:, :)
+      type(contact_traction_t), allocatable :: traction(:, :)  !< zero where unloaded or traction off
+      real(wp), allocatable :: heat(:, :)                   !< contact power loss (W)
+   end type ball_bearing_loads_t
+
+contains
+
+   !> The ball/race pairs (outer, inner) of ball bearing b in its mounted geometry g.
+   pure function ball_race_pairs(b, g) result(p)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(ball_race_pair_t) :: p(2)
+      p(RACE_OUTER) = ball_race_pair_t(SIDE_OUTER, g%element_diameter, b%dm, b%f_o, g%groove_radius(1), &
+                                       g%groove_centre(:, 1), b%material(BODY_ELEMENT)%modulus, &
+                                       b%material(BODY_ELEMENT)%poisson, b%material(BODY_OUTER)%modulus, &
+                                       b%material(BODY_OUTER)%poisson)
+      p(RACE_INNER) = ball_race_pair_t(SIDE_INNER, g%element_diameter, b%dm, b%f_i, g%groove_radius(2), &
+                                       g%groove_centre(:, 2), b%material(BODY_ELEMENT)%modulus, &
+                                       b%material(BODY_ELEMENT)%poisson, b%material(BODY_INNER)%modulus, &
+                                       b%material(BODY_INNER)%poisson)
+   end function ball_race_pairs
+
+   !> Loads on every body of ball bearing b (mounted geometry g) at state s (module
+   !> header).  traction (default .true.): include the race contacts' traction and heat.
+   !> Input errors of the traction model (e.g. no EHD film) come back in error.
+   subroutine ball_bearing_loads(b, g, s, loads, error, traction)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: s
+      type(ball_bearing_loads_t), intent(out) :: loads
+      type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: traction
+      type(ball_race_pair_t) :: pairs(2)
+      type(ball_race_contact_t) :: cj
+      type(contact_traction_t) :: t
+      real(wp) :: rho, f_n(3), f_t(3), m_t(3)
+      integer :: n, k, j
+      logical :: with_traction
+
+      with_traction = .true.
+      if (present(traction)) with_traction = traction
+      n = size(s%elements)
+      pairs = ball_race_pairs(b, g)
+      rho = 0.5_wp*g%element_diameter
+      allocate (loads%elements(n), loads%contacts(2, n), loads%traction(2, n))
+      allocate (loads%heat(2, n), source=0.0_wp)
+      do k = 1, n
+         loads%elements(k)%force = b%mass(1)*b%gravity
+      end do
+      loads%cage%force = b%mass(2)*b%gravity
+      loads%races(RACE_OUTER)%force = b%mass(3)*b%gravity
+      loads%races(RACE_INNER)%force = b%mass(4)*b%gravity + b%force
+      loads%races(RACE_INNER)%moment = b%moment
+
+      do k = 1, n
+         do j = 1, 2
+            call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k))
+            associate (c => loads%contacts(j, k), ball => s%elements(k)%position, race => s%races(j)%position)
+               if (.not. (c%load > 0.0_wp)) cycle
+               f_n = c%load*c%normal
+               loads%elements(k)%force = loads%elements(k)%force - f_n
+               loads%races(j)%force = loads%races(j)%force + f_n
+               loads%races(j)%moment = loads%races(j)%moment + cross(c%point - race, f_n)
+               if (.not. with_traction) cycle
+               cj = planar_contact(pairs(j), c)
+               call race_traction(k, j, cj, c%ellipse%semi_minor, c%ellipse%max_pressure, t, error)
+               if (allocated(error)) return
+               loads%traction(j, k) = t
+               loads%heat(j, k) = t%power
+               f_t = t%force*c%rolling
+               m_t = rho*cross(t%force_cos*c%normal + t%force_sin*c%transverse, c%rolling)
+               loads%races(j)%force = loads%races(j)%force + f_t
+               loads%races(j)%moment = loads%races(j)%moment + cross(ball - race, f_t) + m_t
+               loads%elements(k)%force = loads%elements(k)%force - f_t
+               loads%elements(k)%moment = loads%elements(k)%moment - m_t
+            end associate
+         end do
+      end do
+
+   contains
+
+      !> Traction of race contact j of ball k (planar form cj; semi-minor axis b_minor, m;
+      !> Hertz pressure p_h, Pa) by the run's model: the law, or the EHD film traction with
+      !> the film of the current state (report 2.6) at the bulk temperatures of s.
+      subroutine race_traction(k, j, cj, b_minor, p_h, t, error)
+         integer, intent(in) :: k, j
+         type(ball_race_contact_t), intent(in) :: cj
+         real(wp), intent(in) :: b_minor, p_h
+         type(contact_traction_t), intent(out) :: t
+         type(error_type), allocatable, intent(out) :: error
+         type(contact_traction_t) :: t_law
+         real(wp) :: h, phi
+         integer :: race
+
+         call contact_traction(cj, b%race_traction, 1.0_wp, PRINT_GAUSS, t_law, error)
+         if (allocated(error)) return
+         if (.not. ehd_traction_model(b)) then
+            t = t_law
+            return
+         end if
+         race = merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER)
+         call lubricant_film(b, s%temperature, t_law, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
+         if (allocated(error)) return
+         call check_ehd_film(b, s%temperature, k, j, h, phi, error)
+         if (allocated(error)) return
+         call ehd_traction(b, s%temperature, cj, b_minor, race, h*phi, t, error)
+      end subroutine race_traction
+
+   end subroutine ball_bearing_loads
+
+end module adore_forces_ball_bearing

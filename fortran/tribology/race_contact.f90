@@ -1,0 +1,200 @@
+!> The tribology of one rolling-element/race contact at any state: lubricant film and its
+!> thermal reduction, the choice between the deck's traction law and the EHD film
+!> traction (model 3), the EHD traction itself, the flash temperature rise and the wall
+!> temperature, all from the bearing model and the current bulk temperatures.
+!>
+!> ADORE's ADRD with ADRH2 for one contact (report 2.1, 2.6-2.8): the procedures the
+!> step-0 start calls for every ball (adore_driver_ball_step0) and the force assembly
+!> calls at any state (adore_forces_ball_bearing).  temperature(7): the bulk temperatures
+!> in the bearing model's TEMP_* order (K); race: BODY_OUTER or BODY_INNER.  Units SI.
+module adore_tribology_race_contact
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, major_axis_nodes, contact_slip
+   use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
+   use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
+                                   dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
+                                   THERMAL_LOADING_SCALE
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise
+   use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
+   implicit none
+   private
+
+   public :: ehd_traction_model, wall_temperature, wall_rheology, thermal_properties, lubricant_film, &
+             check_ehd_film, ehd_traction, ehd_flash, law_flash
+
+   !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
+   !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
+   integer, parameter, public :: PRINT_GAUSS = 4
+   !> Gauss points per slip zone and across each strip of the EHD traction's loss and force
+   integer, parameter, public :: EHD_GAUSS = 16, EHD_STRIP = 24
+   !> Rec 10.0 traction_model of the EHD film traction (report Table 5, model 3)
+   integer, parameter, public :: TRACTION_EHD = 3
+
+contains
+
+   !> True when the race contacts of b use ADORE's EHD film traction (Rec 10.0 model 3 with
+   !> a lubricant); a traction-slip table (ADRX7) replaces the deck's model, EHD included.
+   pure logical function ehd_traction_model(b)
+      type(bearing_t), intent(in) :: b
+      ehd_traction_model = b%traction_model == TRACTION_EHD .and. b%race_traction%kind == LAW_CURVE .and. &
+                           b%lubricant_code /= 0
+   end function ehd_traction_model
+
+   !> Wall temperature (K) of a race contact: mean of the element and race bulk
+   !> temperatures.  At step 0 the contact temperature rise is not fed back (the report
+   !> prints Contact Temp = 323 K, its deck temperature).
+   pure function wall_temperature(temperature, race) result(t_w)
+      real(wp), intent(in) :: temperature(:)
+      integer, intent(in) :: race
+      real(wp) :: t_w
+      t_w = 0.5_wp*(temperature(TEMP_ELEMENT) + temperature(merge(TEMP_OUTER, TEMP_INNER, race == BODY_OUTER)))
+   end function wall_temperature
+
+   !> [density (kg/m**3), heat capacity (J/kg/K), conductivity (W/m/K)] of a body (Rec 8).
+   pure function thermal_properties(b, body) result(th)
+      type(bearing_t), intent(in) :: b
+      integer, intent(in) :: body
+      real(wp) :: th(3)
+      th = [b%material(body)%density, b%material(body)%heat_capacity, b%material(body)%conductivity]
+   end function thermal_properties
+
+   !> The lubricant's traction rheology at the wall temperature of a race contact.
+   function wall_rheology(b, temperature, race) result(rheo)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      integer, intent(in) :: race
+      type(ehd_rheology_t) :: rheo
+      real(wp) :: t_w
+      t_w = wall_temperature(temperature, race)
+      rheo = ehd_rheology_t(eta_w=traction_viscosity(b%lubricant, t_w), alpha=b%lubricant%alpha_t, &
+                            beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity)
+   end function wall_rheology
+
+   !> Film of one race contact (report 2.6): Hamrock-Dowson isothermal central film
+   !> h (m) at the contact's entraining speed, R_x and ellipticity k_ell = a/b, load q (N),
+   !> with the lubricant's viscosity at the inlet temperature (the wall temperature) and
+   !> ambient pressure; the thermal reduction factor phi of Gupta et al. with beta = B/T**2
+   !> at that temperature, Hertz pressure p_h (Pa) and the slide-to-roll ratio centre slip
+   !> / entraining speed.
+   subroutine lubricant_film(b, temperature, t, k_ell, q, p_h, race, h, phi, error)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      type(contact_traction_t), intent(in) :: t
+      real(wp), intent(in) :: k_ell, q, p_h
+      integer, intent(in) :: race
+      real(wp), intent(out) :: h, phi
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: e_prime, t_in, eta, u
+
+      e_prime = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
+                        (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
+      t_in = wall_temperature(temperature, race)
+      eta = dynamic_viscosity(b%lubricant, t_in, 0.0_wp)
+      u = abs(t%rolling_speed)
+      call central_film_thickness(t%rx, k_ell, u, q, e_prime, eta, b%lubricant%alpha, h, error)
+      if (allocated(error)) return
+      phi = thermal_reduction_factor(p_h, e_prime, THERMAL_LOADING_SCALE*thermal_loading(eta, &
+                                     temperature_viscosity_coefficient(b%lubricant, t_in), u, &
+                                     b%lubricant%conductivity), t%centre_slip/t%rolling_speed)
+   end subroutine lubricant_film
+
+   !> Input error unless race contact j (1 outer, 2 inner) of ball k has an EHD film, the
+   !> isothermal film h (m) times the thermal reduction factor phi: Gupta's fit of phi
+   !> reaches 0 beyond its range of thermal loading (a lubricant far too viscous at the
+   !> current temperatures for the speed), where traction model 3 has no film to shear.
+   subroutine check_ehd_film(b, temperature, k, j, h, phi, error)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      integer, intent(in) :: k, j
+      real(wp), intent(in) :: h, phi
+      type(error_type), allocatable, intent(out) :: error
+      character(len=2000) :: buf     ! f0.2 of any finite temperature fits (<= 312 characters)
+      character(len=5) :: side
+      integer :: stat, race_t
+
+      if (h*phi > 0.0_wp .and. h*phi < huge(1.0_wp)) return
+      side = merge("outer", "inner", j == 1)
+      race_t = merge(TEMP_OUTER, TEMP_INNER, j == 1)
+      write (buf, "(a,i0,3a,es10.3,a,es10.3,3a,f0.2,a,f0.2,3a,f0.2,a)", iostat=stat) "ball ", k, " ", trim(side), &
+         " race contact: no film for the EHD traction (Rec 10.0 traction_model 3): isothermal film ", h, &
+         " m times thermal reduction factor ", phi, " (Gupta's fit is 0 beyond its range of thermal loading); ", &
+         trim(b%lubricant%name), " at ", 0.5_wp*(temperature(TEMP_ELEMENT) + temperature(race_t)), &
+         " K, the mean of Rec 2.7 rolling_element_temperature ", temperature(TEMP_ELEMENT), " K and ", trim(side), &
+         "_race_temperature ", temperature(race_t), " K"
+      if (stat /= 0) buf = "a race contact has no film for the EHD traction (Rec 10.0 traction_model 3) "// &
+                           "at the temperatures of Rec 2.7"
+      call input_error(error, trim(buf))
+   end subroutine check_ehd_film
+
+   !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):
+   !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
+   !> lubricant's traction rheology at the wall temperature, EHD_GAUSS x EHD_STRIP points
+   !> for the force and heat; with print present also the PRINT_GAUSS nodes' slip and
+   !> coefficient (the report's printed Slip Velocity and Trac Coeff).
+   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, print)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      type(ball_race_contact_t), intent(in) :: cj
+      real(wp), intent(in) :: b_minor, h
+      integer, intent(in) :: race
+      type(contact_traction_t), intent(out) :: t
+      type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: print
+      type(ehd_rheology_t) :: rheo
+      type(contact_traction_t) :: t_print
+
+      rheo = wall_rheology(b, temperature, race)
+      call ehd_contact_traction(cj, rheo, h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
+      if (allocated(error)) return
+      if (.not. present(print)) return
+      if (.not. print) return
+      call ehd_contact_traction(cj, rheo, h, b_minor, PRINT_GAUSS, EHD_STRIP, t_print, error)
+      if (allocated(error)) return
+      t%node_slip = t_print%node_slip
+      t%node_coefficient = t_print%node_coefficient
+   end subroutine ehd_traction
+
+   !> Average flash temperature rise (K) of a race contact with its EHD heat (report
+   !> 2.7-2.8, eqs 35-36): both surfaces moving at the entraining speed u_e (m/s), element
+   !> and race materials of Rec 8.
+   subroutine ehd_flash(b, temperature, cj, b_minor, race, h, u_e, rise, error)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      type(ball_race_contact_t), intent(in) :: cj
+      real(wp), intent(in) :: b_minor, h, u_e
+      integer, intent(in) :: race
+      real(wp), intent(out) :: rise
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: dt_max
+      call ehd_temperature_rise(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, FLASH_POINTS, &
+                                u_e, u_e, thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), &
+                                rise, dt_max, error)
+   end subroutine ehd_flash
+
+   !> Average flash temperature rise (K) of a race contact whose traction is the run's law
+   !> (the deck's curve or a traction-slip table; report 2.7-2.8, eqs 35-36): strips along
+   !> the major axis (EHD_GAUSS Gauss points per slip zone) carry the heat factor
+   !> g = kappa(|u|) |u| (eq 29) over the Hertz ellipse (semi-minor axis b_minor, m; peak
+   !> pressure p0, Pa), both surfaces at the entraining speed u_e (m/s): the roller run's
+   !> model, with the ball's own slip along its major axis.
+   subroutine law_flash(b, cj, b_minor, p0, race, u_e, rise, error)
+      type(bearing_t), intent(in) :: b
+      type(ball_race_contact_t), intent(in) :: cj
+      real(wp), intent(in) :: b_minor, p0, u_e
+      integer, intent(in) :: race
+      real(wp), intent(out) :: rise
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_traction_t) :: t
+      real(wp), allocatable :: x(:), w(:), u(:)
+      real(wp) :: dt_max
+
+      call major_axis_nodes(cj, EHD_GAUSS, t, x, w)
+      u = contact_slip(cj, x)
+      call contact_temperature_rise(cj%a, b_minor, p0, x, w, law_kappa(b%race_traction, u)*abs(u), u_e, u_e, &
+                                    thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), FLASH_POINTS, &
+                                    rise, dt_max, error)
+   end subroutine law_flash
+
+end module adore_tribology_race_contact
