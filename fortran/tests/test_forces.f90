@@ -1,0 +1,348 @@
+!> Unit tests of the 3-D ball/race contact and the ball bearing force assembly
+!> (adore_contact_ball_race, adore_forces_ball_bearing) on the Appendix C deck:
+!> * the planar special case: at the step-0 start (race control, the fast start), the 3-D
+!>   contacts reproduce the equilibrium's loads and angles, the planar contacts of the
+!>   start's kinematics, the ball and inner-race force balances and the race loads of the
+!>   step-0 tribology (normal loads plus traction, section 3 of the print);
+!> * a perturbed, non-equilibrium state (a ball displaced and spinning about a skewed
+!>   axis, the inner race shifted and misaligned): the normal forces and moments equal
+!>   minus the gradient of the contact energy (central finite differences, frozen K), and
+!>   the contact loads (normal and traction) obey action = reaction in force and moment.
+!> Run by `meson test` with the decks/ directory as argument.
+program test_forces
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type
+   use adore_core_rotation, only: cross, quat_from_rotation_vector, quat_multiply
+   use adore_model_bearing, only: bearing_t, read_bearing
+   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, RACE_OUTER, RACE_INNER, &
+                                        state_size, pack_state, unpack_state
+   use adore_contact_ball_race, only: ball_race_pair_t, ball_race_geometry_t, ball_race_contact, planar_contact, &
+                                      contact_energy
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_race_pairs
+   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, ball_contacts
+   use adore_tribology_slip, only: ball_race_contact_t
+   use adore_test_support, only: check, finish
+   implicit none
+
+   character(len=:), allocatable :: decks
+   type(bearing_t) :: b
+   type(mounted_geometry_t) :: g
+   type(error_type), allocatable :: error
+   type(ball_step0_t) :: s0
+   type(bearing_state_t) :: st
+
+   call get_decks_dir(decks)
+   call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+   call check(.not. allocated(error), "read the Appendix C deck")
+   if (allocated(error)) call finish("force assembly")
+   g = mount_geometry(b, b%temperature)
+   call solve_ball_step0(b, s0, error, CONTROL_OUTER)
+   call check(.not. allocated(error), "step 0 of Appendix C with race control")
+   if (allocated(error)) call finish("force assembly")
+   st = step0_state(b, s0)
+   call test_pack_round_trip(st)
+   call test_planar_special_case(b, g, s0, st)
+   call test_perturbed_state(b, g, st)
+   call finish("force assembly")
+
+contains
+
+   !> The bearing state of the step-0 solution: balls at their equilibrium positions,
+   !> orbiting at w_m with the start's spin (w_b, pitch), races at their speeds, the inner
+   !> race at its equilibrium offset (no misalignment in the deck).
+   function step0_state(b, s0) result(st)
+      type(bearing_t), intent(in) :: b
+      type(ball_step0_t), intent(in) :: s0
+      type(bearing_state_t) :: st
+      real(wp) :: phi, e_r(3), e_t(3), e_x(3), r
+      integer :: k
+
+      st = new_bearing_state(b%n_elements)
+      st%temperature = b%temperature
+      e_x = [1.0_wp, 0.0_wp, 0.0_wp]
+      associate (e => s0%start%equilibrium, kin => s0%start%kinematics)
+         do k = 1, b%n_elements
+            phi = e%azimuth(k)
+            r = e%r(k)
+            e_r = [0.0_wp, -sin(phi), cos(phi)]
+            e_t = [0.0_wp, -cos(phi), -sin(phi)]
+            st%elements(k)%position = e%x(k)*e_x + r*e_r
+            st%elements(k)%velocity = kin(k)%orbital_speed*r*e_t
+            st%elements(k)%omega = (kin(k)%orbital_speed + kin(k)%spin_speed*cos(kin(k)%pitch))*e_x + &
+                                   kin(k)%spin_speed*sin(kin(k)%pitch)*e_r
+         end do
+         st%races(RACE_OUTER)%omega = [b%speed_outer, 0.0_wp, 0.0_wp]
+         st%races(RACE_INNER)%omega = [b%speed_inner, 0.0_wp, 0.0_wp]
+         st%races(RACE_INNER)%position = e%u(1:3)
+      end associate
+   end function step0_state
+
+   subroutine test_pack_round_trip(st)
+      type(bearing_state_t), intent(in) :: st
+      type(bearing_state_t) :: back
+      real(wp), allocatable :: y(:), y2(:)
+      allocate (y(state_size(size(st%elements))), y2(state_size(size(st%elements))))
+      call pack_state(st, y)
+      back = new_bearing_state(size(st%elements))
+      call unpack_state(y, 0.0_wp, back)
+      call pack_state(back, y2)
+      call check(all(y == y2), "state pack/unpack round trip")
+   end subroutine test_pack_round_trip
+
+   !> The planar special case.  (a) Exact: with the inner race centred, every 3-D contact
+   !> equals the meridian-plane contact of eqs 59-64 at the same ball position (angle,
+   !> interaction, Hertz load with K at that angle) and its planar form equals the start's
+   !> contact (ball_contacts) at the same speeds.  (b) At the step-0 state itself, whose
+   !> inner race is offset by u: the equilibrium linearises the offset (S(phi) u), so the
+   !> 3-D loads, the balls' and the inner race's balance and the section-3 race forces
+   !> agree to the linearisation's order, (u_r**2 / r) / delta for loads and u_r / r for
+   !> the race's rolling speed (u_r: radial offset, r: inner groove radius).
+   subroutine test_planar_special_case(b, g, s0, st)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(ball_step0_t), intent(in) :: s0
+      type(bearing_state_t), intent(in) :: st
+      type(bearing_state_t) :: centred
+      type(ball_bearing_loads_t) :: ld
+      type(ball_race_pair_t) :: pairs(2)
+      type(ball_race_contact_t) :: ref(2), q
+      real(wp) :: worst_q, worst_a, worst_w, worst_ball, worst_race, qmax, e_r(3), phi, f_ref(3), m_ref(3)
+      real(wp) :: a(2), delta, alpha, load, u_r, tol_load, tol_speed, n_o(2), n_i(2), qq(2), aa(2)
+      integer :: k, j
+
+      pairs = ball_race_pairs(b, g)
+      ! (a) exact reduction with the inner race centred
+      centred = st
+      centred%races(RACE_INNER)%position = 0.0_wp
+      call ball_bearing_loads(b, g, centred, ld, error)
+      call check(.not. allocated(error), "force assembly at the centred step-0 state")
+      if (allocated(error)) return
+      worst_q = 0.0_wp
+      worst_a = 0.0_wp
+      worst_w = 0.0_wp
+      associate (e => s0%start%equilibrium, kin => s0%start%kinematics)
+         do k = 1, b%n_elements
+            do j = 1, 2
+               a = [e%x(k), e%r(k)] - g%groove_centre(:, j)
+               delta = norm2(a) - (g%groove_radius(j) - 0.5_wp*b%d)
+               alpha = atan(abs(a(1))/abs(a(2)))
+               load = ld%contacts(j, k)%stiffness*max(delta, 0.0_wp)**1.5_wp
+               worst_q = max(worst_q, abs(ld%contacts(j, k)%load - load)/max(load, 1.0_wp), &
+                             abs(ld%contacts(j, k)%delta - delta)/b%d)
+               worst_a = max(worst_a, abs(abs(ld%contacts(j, k)%alpha) - alpha))
+               aa(j) = ld%contacts(j, k)%ellipse%semi_major
+               qq(j) = ld%contacts(j, k)%load
+               if (j == 1) n_o = a/norm2(a)
+               if (j == 2) n_i = a/norm2(a)
+            end do
+            ref = ball_contacts(b%d, e%r(k), n_o, n_i, b%speed_outer, b%speed_inner, aa, qq, &
+                                kin(k)%pitch, kin(k)%spin_speed, kin(k)%orbital_speed)
+            do j = 1, 2
+               q = planar_contact(pairs(j), ld%contacts(j, k))
+               worst_w = max(worst_w, maxval(abs([q%omega - ref(j)%omega, q%race_speed - ref(j)%race_speed])) &
+                             /abs(b%speed_inner), abs(q%alpha - ref(j)%alpha), abs(q%r_b - ref(j)%r_b)/b%dm)
+            end do
+         end do
+      end associate
+      write (*, "(a,3es10.2)") "planar case, centred race: load/interaction, angle, planar contact ", &
+         worst_q, worst_a, worst_w
+      call check(worst_q < 1.0e-10_wp, "planar case: 3-D interaction and load = eqs 59-61 in the meridian plane")
+      call check(worst_a < 1.0e-10_wp, "planar case: 3-D contact angle = eqs 62-63")
+      call check(worst_w < 1.0e-10_wp, "planar case: planar form of the 3-D contact = the start's contact")
+
+      ! (b) the step-0 state with its offset inner race
+      call ball_bearing_loads(b, g, st, ld, error)
+      call check(.not. allocated(error), "force assembly at the step-0 state")
+      if (allocated(error)) return
+      worst_q = 0.0_wp
+      worst_ball = 0.0_wp
+      qmax = maxval([s0%start%equilibrium%q_o, s0%start%equilibrium%q_i])
+      associate (e => s0%start%equilibrium, kin => s0%start%kinematics)
+         u_r = hypot(e%u(2), e%u(3))
+         tol_load = 2.0_wp*1.5_wp*(u_r**2/g%groove_centre(2, 2))/minval([e%delta_o, e%delta_i])
+         tol_speed = 2.0_wp*u_r/g%groove_centre(2, 2)
+         do k = 1, b%n_elements
+            worst_q = max(worst_q, abs(ld%contacts(1, k)%load - e%q_o(k))/qmax, &
+                          abs(ld%contacts(2, k)%load - e%q_i(k))/qmax)
+            ! ball balance: normal loads + centrifugal m r w_m**2 e_r = 0 (eqs 65-66)
+            phi = e%azimuth(k)
+            e_r = [0.0_wp, -sin(phi), cos(phi)]
+            worst_ball = max(worst_ball, norm2(normal_force(ld, k) + b%mass(1)*e%r(k)*kin(k)%orbital_speed**2*e_r) &
+                                         /qmax)
+         end do
+         ! inner race: the balls' normal loads balance the applied load and the race weight
+         f_ref = 0.0_wp
+         do k = 1, b%n_elements
+            f_ref = f_ref + ld%contacts(2, k)%load*ld%contacts(2, k)%normal
+         end do
+         worst_race = norm2(f_ref + b%force + b%mass(4)*b%gravity)/norm2(b%force)
+      end associate
+      write (*, "(a,3es10.2,a,2es10.2)") "planar case, step-0 state: load, ball balance, race balance ", &
+         worst_q, worst_ball, worst_race, "; linearisation bounds ", tol_load, tol_speed
+      call check(worst_q < tol_load, "step-0 state: 3-D loads = the equilibrium's to its linearisation order")
+      call check(worst_ball < tol_load, "step-0 state: normal loads balance each ball's centrifugal force")
+      call check(worst_race < tol_load, "step-0 state: the balls' loads balance the inner race's applied load")
+      ! race forces = section 3's race loads of the step-0 tribology (normal + traction)
+      worst_race = 0.0_wp
+      do j = 1, 2
+         worst_race = max(worst_race, norm2(ld%races(j)%force - race_weight(b, j) - &
+                                            merge(b%force, [0.0_wp, 0.0_wp, 0.0_wp], j == RACE_INNER) - &
+                                            s0%race_loads(1:3, j))/norm2(b%force))
+      end do
+      write (*, "(a,es10.2)") "step-0 state: race forces vs section 3 ", worst_race
+      call check(worst_race < tol_load + tol_speed, "step-0 state: race forces = the step-0 race loads (normal + traction)")
+      ! outer race moment about the origin (its mass centre): the step-0 print puts each
+      ! traction at the contact centre; the assembly spreads it over the major axis, a
+      ! difference of the order a/rho of the traction moment
+      m_ref = s0%race_loads(4:6, 1)
+      call check(norm2(ld%races(RACE_OUTER)%moment - m_ref) <= 0.05_wp*norm2(m_ref), &
+                 "step-0 state: outer race moment = the step-0 race moment within the traction spread")
+   end subroutine test_planar_special_case
+
+   !> Sum of the normal contact forces on ball k.
+   function normal_force(ld, k) result(f)
+      type(ball_bearing_loads_t), intent(in) :: ld
+      integer, intent(in) :: k
+      real(wp) :: f(3)
+      f = -ld%contacts(1, k)%load*ld%contacts(1, k)%normal - ld%contacts(2, k)%load*ld%contacts(2, k)%normal
+   end function normal_force
+
+   pure function race_weight(b, j) result(w)
+      type(bearing_t), intent(in) :: b
+      integer, intent(in) :: j
+      real(wp) :: w(3)
+      w = b%mass(merge(3, 4, j == RACE_OUTER))*b%gravity
+   end function race_weight
+
+   !> Total contact energy (J) at state st with the stiffness of each contact frozen at k_frozen.
+   function total_energy(b, g, st, k_frozen) result(e)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: st
+      real(wp), intent(in) :: k_frozen(:, :)
+      real(wp) :: e
+      type(ball_race_pair_t) :: pairs(2)
+      type(ball_race_geometry_t) :: c
+      integer :: k, j
+      pairs = ball_race_pairs(b, g)
+      e = 0.0_wp
+      do k = 1, size(st%elements)
+         do j = 1, 2
+            call ball_race_contact(pairs(j), st%elements(k), st%races(j), c, k_frozen(j, k))
+            e = e + contact_energy(c)
+         end do
+      end do
+   end function total_energy
+
+   subroutine test_perturbed_state(b, g, base)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: base
+      type(bearing_state_t) :: st, sp, sm
+      type(ball_bearing_loads_t) :: ld
+      real(wp), allocatable :: kf(:, :)
+      real(wp) :: h, hr, grad(3), f(3), m(3), worst_f, worst_m, fscale, total_f(3), total_m(3), e_x(3)
+      integer :: i, k, j
+
+      st = base
+      ! ball 1 displaced off its equilibrium and spinning about a skewed axis
+      st%elements(1)%position = st%elements(1)%position + [4.0e-6_wp, -3.0e-6_wp, 5.0e-6_wp]
+      st%elements(1)%omega = st%elements(1)%omega + [300.0_wp, -800.0_wp, 1200.0_wp]
+      st%elements(1)%velocity = st%elements(1)%velocity + [0.01_wp, -0.02_wp, 0.015_wp]
+      ! inner race shifted and misaligned about a skewed axis (exact rotation)
+      st%races(RACE_INNER)%position = st%races(RACE_INNER)%position + [2.0e-6_wp, 1.0e-6_wp, -1.5e-6_wp]
+      st%races(RACE_INNER)%attitude = quat_from_rotation_vector([1.0e-4_wp, 4.0e-4_wp, -3.0e-4_wp])
+      st%races(RACE_INNER)%velocity = [0.0_wp, 0.003_wp, -0.001_wp]
+      call ball_bearing_loads(b, g, st, ld, error)
+      call check(.not. allocated(error), "force assembly at a perturbed state")
+      if (allocated(error)) return
+      call check(ld%contacts(1, 1)%load > 0.0_wp .and. ld%contacts(2, 1)%load > 0.0_wp, &
+                 "perturbed ball 1 touches both races")
+      allocate (kf(2, size(st%elements)))
+      do k = 1, size(st%elements)
+         do j = 1, 2
+            kf(j, k) = ld%contacts(j, k)%stiffness
+         end do
+      end do
+      fscale = maxval(ld%contacts%load)
+      h = 1.0e-10_wp
+      hr = 1.0e-9_wp
+      ! normal force on ball 1 = -dE/dx
+      grad = 0.0_wp
+      do i = 1, 3
+         sp = st
+         sm = st
+         sp%elements(1)%position(i) = sp%elements(1)%position(i) + h
+         sm%elements(1)%position(i) = sm%elements(1)%position(i) - h
+         grad(i) = (total_energy(b, g, sp, kf) - total_energy(b, g, sm, kf))/(2.0_wp*h)
+      end do
+      f = normal_force(ld, 1)
+      worst_f = norm2(f + grad)/fscale
+      ! normal force on the inner race = -dE/dc, moment = -dE/dtheta (small rotation in front)
+      do i = 1, 3
+         sp = st
+         sm = st
+         sp%races(RACE_INNER)%position(i) = sp%races(RACE_INNER)%position(i) + h
+         sm%races(RACE_INNER)%position(i) = sm%races(RACE_INNER)%position(i) - h
+         grad(i) = (total_energy(b, g, sp, kf) - total_energy(b, g, sm, kf))/(2.0_wp*h)
+      end do
+      f = 0.0_wp
+      m = 0.0_wp
+      do k = 1, size(st%elements)
+         associate (c => ld%contacts(2, k))
+            f = f + c%load*c%normal
+            m = m + cross(c%point - st%races(RACE_INNER)%position, c%load*c%normal)
+         end associate
+      end do
+      worst_f = max(worst_f, norm2(f + grad)/fscale)
+      do i = 1, 3
+         e_x = 0.0_wp
+         e_x(i) = hr
+         sp = st
+         sm = st
+         sp%races(RACE_INNER)%attitude = quat_multiply(quat_from_rotation_vector(e_x), st%races(RACE_INNER)%attitude)
+         sm%races(RACE_INNER)%attitude = quat_multiply(quat_from_rotation_vector(-e_x), st%races(RACE_INNER)%attitude)
+         grad(i) = (total_energy(b, g, sp, kf) - total_energy(b, g, sm, kf))/(2.0_wp*hr)
+      end do
+      worst_m = norm2(m + grad)/(fscale*0.5_wp*b%dm)
+      write (*, "(a,2es10.2)") "perturbed state, worst force and moment vs -grad E: ", worst_f, worst_m
+      call check(worst_f < 1.0e-5_wp, "perturbed: normal forces = -grad of the contact energy (ball and race)")
+      call check(worst_m < 1.0e-5_wp, "perturbed: inner race moment = -d(energy)/d(rotation)")
+      ! action = reaction over all contacts (normal and traction): the contact loads alone
+      ! sum to zero force and zero moment about the origin
+      total_f = 0.0_wp
+      total_m = 0.0_wp
+      do k = 1, size(st%elements)
+         total_f = total_f + ld%elements(k)%force - b%mass(1)*b%gravity
+         total_m = total_m + ld%elements(k)%moment + cross(st%elements(k)%position, ld%elements(k)%force - &
+                                                           b%mass(1)*b%gravity)
+      end do
+      do j = 1, 2
+         f = ld%races(j)%force - race_weight(b, j)
+         m = ld%races(j)%moment
+         if (j == RACE_INNER) then
+            f = f - b%force
+            m = m - b%moment
+         end if
+         total_f = total_f + f
+         total_m = total_m + m + cross(st%races(j)%position, f)
+      end do
+      call check(norm2(total_f) < 1.0e-9_wp*fscale, "perturbed: contact forces sum to zero (action = reaction)")
+      call check(norm2(total_m) < 1.0e-9_wp*fscale*b%dm, "perturbed: contact moments sum to zero")
+      call check(abs(ld%traction(1, 1)%force) > 0.0_wp .and. norm2(ld%elements(1)%moment) > 0.0_wp, &
+                 "perturbed: ball 1 carries traction and a traction moment")
+      call check(norm2(ld%contacts(1, 1)%tangent_slip) > 0.0_wp, "perturbed: ball 1 slips at the outer race")
+   end subroutine test_perturbed_state
+
+   subroutine get_decks_dir(path)
+      character(len=:), allocatable, intent(out) :: path
+      integer :: n
+      call get_command_argument(1, length=n)
+      allocate (character(len=n) :: path)
+      if (n > 0) call get_command_argument(1, path)
+      if (n == 0) path = "decks"
+   end subroutine get_decks_dir
+
+end program test_forces
