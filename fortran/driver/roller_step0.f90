@@ -41,7 +41,7 @@ module adore_driver_roller_step0
    use adore_model_scales, only: length_scale
    use adore_mounting_fits, only: mounting_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
-   use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness, line_contact_t
+   use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
    use adore_life_lundberg_palmgren, only: life_params_t
@@ -49,7 +49,7 @@ module adore_driver_roller_step0
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    use adore_tribology_wear, only: archard_wear_rate
    use adore_tribology_traction_law, only: law_slip_scale
-   use adore_tribology_flash, only: contact_temperature_rise, FLASH_POINTS
+   use adore_tribology_race_contact, only: line_flash, wall_temperature
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
                                               roller_equilibrium_spin, RACE_OUTER, RACE_INNER
    implicit none
@@ -251,11 +251,11 @@ contains
       allocate (s%temp_rise(2, n), s%contact_temp(2, n))
       associate (e => s%equilibrium)
          do j = 1, n
-            call flash_rise(e%c_o(j), s%tr_o(j), RACE_OUTER, s%model%r_o, e%orbital_speed(j), s%roller_spin(j), &
-                            s%temp_rise(1, j), error)
+            call line_flash(b, e%c_o(j), s%tr_o(j), BODY_OUTER, s%model%r_o, b%speed_outer - e%orbital_speed(j), &
+                            s%roller_spin(j), s%temp_rise(1, j), error)
             if (allocated(error)) return
-            call flash_rise(e%c_i(j), s%tr_i(j), RACE_INNER, s%model%r_i, e%orbital_speed(j), s%roller_spin(j), &
-                            s%temp_rise(2, j), error)
+            call line_flash(b, e%c_i(j), s%tr_i(j), BODY_INNER, s%model%r_i, b%speed_inner - e%orbital_speed(j), &
+                            s%roller_spin(j), s%temp_rise(2, j), error)
             if (allocated(error)) return
          end do
          ! race loads: normal loads of the equilibrium plus the net slice tractions, each acting
@@ -270,45 +270,11 @@ contains
          s%race_loads(3, 2) = s%race_loads(3, 2) - sum(s%tr_i%force*sin(e%azimuth))
          s%race_loads(4, 2) = s%race_loads(4, 2) + s%model%r_i*sum(s%tr_i%force)
       end associate
-      s%contact_temp(1, :) = 0.5_wp*(b%temperature(4) + b%temperature(6))
-      s%contact_temp(2, :) = 0.5_wp*(b%temperature(4) + b%temperature(7))
+      s%contact_temp(1, :) = wall_temperature(b%temperature, BODY_OUTER)
+      s%contact_temp(2, :) = wall_temperature(b%temperature, BODY_INNER)
       s%power_loss = s%contact_power
       if (any(s%cage%pocket%in_contact) .or. any(s%cage%land%in_contact)) &
          s%power_loss = ieee_value(1.0_wp, ieee_quiet_nan)
-
-   contains
-
-      !> Average flash temperature rise (K) of one roller/race line contact c with its slice
-      !> tractions t (report 2.7-2.8, eqs 35-36): the contact as the ellipse the print reports
-      !> (major half width a = half contact length, minor half width = mean slice half width,
-      !> pressure p0 = printed contact stress, eq 36's 1/(pi a b)), one strip per slice at its
-      !> position from the contact centre with the slice's heat factor kappa |u| (eq 29);
-      !> both surfaces at the entraining speed (m/s) of roller spin w_r and race speed
-      !> Omega - w_m at raceway radius r_race (m).  0 without contact or heat.
-      subroutine flash_rise(c, t, race, r_race, w_m, w_r, rise, error)
-         type(line_contact_t), intent(in) :: c
-         type(line_traction_t), intent(in) :: t
-         integer, intent(in) :: race
-         real(wp), intent(in) :: r_race, w_m, w_r
-         real(wp), intent(out) :: rise
-         type(error_type), allocatable, intent(out) :: error
-         real(wp) :: u_e, dt_max, centre
-         integer :: race_body
-
-         rise = 0.0_wp
-         if (.not. c%in_contact .or. t%power <= 0.0_wp) return
-         race_body = merge(BODY_OUTER, BODY_INNER, race == RACE_OUTER)
-         u_e = 0.5_wp*(abs(w_r)*0.5_wp*b%d &
-                       + abs(merge(b%speed_outer, b%speed_inner, race == RACE_OUTER) - w_m)*r_race)
-         centre = 0.5_wp*(c%limits(1) + c%limits(2))
-         associate (m1 => b%material(BODY_ELEMENT), m2 => b%material(race_body))
-            call contact_temperature_rise(c%half_length, c%mean_half_width, c%stress, c%x - centre, c%weight, &
-                                          merge(t%kappa*abs(t%slip), 0.0_wp, c%q > 0.0_wp), u_e, u_e, &
-                                          [m1%density, m1%heat_capacity, m1%conductivity], &
-                                          [m2%density, m2%heat_capacity, m2%conductivity], FLASH_POINTS, &
-                                          rise, dt_max, error)
-         end associate
-      end subroutine flash_rise
 
    end subroutine roller_tribology
 

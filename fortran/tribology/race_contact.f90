@@ -18,11 +18,13 @@ module adore_tribology_race_contact
                                    THERMAL_LOADING_SCALE
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise
    use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
+   use adore_contact_line_slices, only: line_contact_t
+   use adore_tribology_roller_traction, only: line_traction_t
    implicit none
    private
 
    public :: ehd_traction_model, wall_temperature, wall_rheology, thermal_properties, lubricant_film, &
-             check_ehd_film, ehd_traction, ehd_flash, law_flash
+             check_ehd_film, ehd_traction, ehd_flash, law_flash, line_flash
 
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
@@ -196,5 +198,33 @@ contains
                                     thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), FLASH_POINTS, &
                                     rise, dt_max, error)
    end subroutine law_flash
+
+   !> Average flash temperature rise (K) of one roller/race line contact c with its slice
+   !> tractions t (report 2.7-2.8, eqs 35-36): the contact as the ellipse the print reports
+   !> (major half width a = half contact length, minor half width = mean slice half width,
+   !> pressure p0 = printed contact stress, eq 36's 1/(pi a b)), one strip per slice at its
+   !> position from the contact centre with the slice's heat factor kappa |u| (eq 29);
+   !> both surfaces at the entraining speed (m/s) of roller spin w_r (rad/s) and race speed
+   !> w_race = Omega - w_m (rad/s) at raceway radius r_race (m); race: BODY_OUTER or
+   !> BODY_INNER.  0 without contact or heat.
+   subroutine line_flash(b, c, t, race, r_race, w_race, w_r, rise, error)
+      type(bearing_t), intent(in) :: b
+      type(line_contact_t), intent(in) :: c
+      type(line_traction_t), intent(in) :: t
+      integer, intent(in) :: race
+      real(wp), intent(in) :: r_race, w_race, w_r
+      real(wp), intent(out) :: rise
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: u_e, dt_max, centre
+
+      rise = 0.0_wp
+      if (.not. c%in_contact .or. t%power <= 0.0_wp) return
+      u_e = 0.5_wp*(abs(w_r)*0.5_wp*b%d + abs(w_race)*r_race)
+      centre = 0.5_wp*(c%limits(1) + c%limits(2))
+      call contact_temperature_rise(c%half_length, c%mean_half_width, c%stress, c%x - centre, c%weight, &
+                                    merge(t%kappa*abs(t%slip), 0.0_wp, c%q > 0.0_wp), u_e, u_e, &
+                                    thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), FLASH_POINTS, &
+                                    rise, dt_max, error)
+   end subroutine line_flash
 
 end module adore_tribology_race_contact
