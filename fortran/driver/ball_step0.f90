@@ -19,6 +19,7 @@ module adore_driver_ball_step0
    use adore_mounting_fits, only: mounting_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t
+   use adore_quasistatic_models, only: ball_qs_model
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, CONTROL_INNER, MIN_DISSIPATION, ball_contacts, &
                                                 ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
@@ -114,23 +115,7 @@ contains
       geometry = mount_geometry(b, b%temperature)
       s%mounting = geometry%mounting
 
-      qb%n_balls = b%n_elements
-      qb%d = b%d
-      qb%dm = b%dm
-      qb%f_o = b%f_o
-      qb%f_i = b%f_i
-      qb%ball_mass = b%mass(1)
-      qb%e_ball = b%material(BODY_ELEMENT)%modulus
-      qb%nu_ball = b%material(BODY_ELEMENT)%poisson
-      qb%e_outer = b%material(BODY_OUTER)%modulus
-      qb%nu_outer = b%material(BODY_OUTER)%poisson
-      qb%e_inner = b%material(BODY_INNER)%modulus
-      qb%nu_inner = b%material(BODY_INNER)%poisson
-      qb%inner_race_mass = b%mass(4)
-      qb%x_o = geometry%groove_centre(1, 1)
-      qb%r_o = geometry%groove_centre(2, 1)
-      qb%x_i = geometry%groove_centre(1, 2)
-      qb%r_i = geometry%groove_centre(2, 2)
+      qb = ball_qs_model(b, geometry)
       ld%force = b%force
       ld%moment = b%moment
       ld%gravity = b%gravity

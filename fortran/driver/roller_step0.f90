@@ -38,10 +38,9 @@ module adore_driver_roller_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_error, only: error_type, input_error
    use adore_model_bearing, only: bearing_t, ROLLER_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER
-   use adore_model_scales, only: length_scale
    use adore_mounting_fits, only: mounting_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
-   use adore_contact_line_slices, only: roller_profile_t, contact_modulus, line_stiffness
+   use adore_quasistatic_models, only: roller_qs_model
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
    use adore_life_lundberg_palmgren, only: life_params_t
@@ -55,7 +54,7 @@ module adore_driver_roller_step0
    implicit none
    private
 
-   public :: roller_step0_t, solve_roller_step0, roller_qs_model
+   public :: roller_step0_t, solve_roller_step0
 
    integer, parameter, public :: SPIN_ROLLING = 1      !< land rolls on both races (ADORE's start, default)
    integer, parameter, public :: SPIN_EQUILIBRIUM = 2  !< spin from the roller's traction moment balance
@@ -100,38 +99,6 @@ module adore_driver_roller_step0
    end type roller_step0_t
 
 contains
-
-   !> The quasi-static contact model of bearing b in its mounted geometry g (raceway radii
-   !> moved by growth_count times the mounting, adore_geometry_mounted), n_sub slice zones.
-   function roller_qs_model(b, g, n_sub) result(q)
-      type(bearing_t), intent(in) :: b
-      type(mounted_geometry_t), intent(in) :: g
-      integer, intent(in) :: n_sub
-      type(roller_qs_bearing_t) :: q
-      real(wp) :: half, l_ref
-
-      q%n_rollers = b%n_elements
-      q%d = b%d
-      q%profile = roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, b%corner_radius)
-      q%mass = b%mass(1)   ! the crowned roller of the bearing model
-      q%race_crown = b%race_crown
-      q%r_o = g%raceway_radius(1)
-      q%r_i = g%raceway_radius(2)
-      half = 0.5_wp*b%roller_length
-      q%lim_o = [-half, half]
-      q%lim_i = [-half, half]
-      if (b%race_length(1) > 0.0_wp) q%lim_o = max(-0.5_wp*b%race_length(1), min(0.5_wp*b%race_length(1), q%lim_o))
-      if (b%race_length(2) > 0.0_wp) q%lim_i = max(-0.5_wp*b%race_length(2), min(0.5_wp*b%race_length(2), q%lim_i))
-      q%e_o = contact_modulus(b%material(BODY_ELEMENT)%modulus, b%material(BODY_ELEMENT)%poisson, &
-                              b%material(BODY_OUTER)%modulus, b%material(BODY_OUTER)%poisson)
-      q%e_i = contact_modulus(b%material(BODY_ELEMENT)%modulus, b%material(BODY_ELEMENT)%poisson, &
-                              b%material(BODY_INNER)%modulus, b%material(BODY_INNER)%poisson)
-      l_ref = length_scale(b%d)
-      q%k_o = line_stiffness(q%e_o, l_ref)
-      q%k_i = line_stiffness(q%e_i, l_ref)
-      q%n_sub = n_sub
-      q%inner_race_mass = b%mass(4)
-   end function roller_qs_model
 
    !> Solve step 0 for the roller bearing b (sections 3.1, 4.4.1, Appendix B).
    !> growth_count: 2 reproduces the report (default), 1 the consistent clearance.
