@@ -91,13 +91,14 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, print_slip_node
    use adore_api_unpack, only: contact_from_geom, traction_result
-   use adore_tribology_traction_law, only: curve_law
+   use adore_tribology_traction_law, only: curve_law, law_kappa
    implicit none
    real(wp), intent(in) :: geom(9), coef(4), kappa_scale
    integer, intent(in) :: n_gauss
    real(wp), intent(out) :: result(15)
+   real(wp) :: s, u
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
    type(error_type), allocatable :: error
@@ -113,7 +114,8 @@ subroutine adore_tribo_contact(geom, coef, kappa_scale, n_gauss, result, status,
       call set_error(error, status, message)
       return
    end if
-   result = traction_result(t)
+   call print_slip_node(c, n_gauss, s, u)
+   result = traction_result(t, abs(u), kappa_scale*law_kappa(curve_law(coef), u))
 
 end subroutine adore_tribo_contact
 
@@ -210,13 +212,14 @@ subroutine adore_tribo_ehd_contact(geom, rheo, h, b, n_gauss, n_strip, result, s
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, print_slip_node
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_strip_traction
    use adore_api_unpack, only: contact_from_geom, traction_result
    implicit none
    real(wp), intent(in) :: geom(9), rheo(4), h, b
    integer, intent(in) :: n_gauss, n_strip
    real(wp), intent(out) :: result(15)
+   real(wp) :: s, u, f, q
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
    type(error_type), allocatable :: error
@@ -233,7 +236,10 @@ subroutine adore_tribo_ehd_contact(geom, rheo, h, b, n_gauss, n_strip, result, s
       call set_error(error, status, message)
       return
    end if
-   result = traction_result(t)
+   call print_slip_node(c, n_gauss, s, u)
+   call ehd_strip_traction(c, ehd_rheology_t(eta_w=rheo(1), alpha=rheo(2), beta=rheo(3), conductivity=rheo(4)), h, b, &
+                  n_strip, s, u, f, q)
+   result = traction_result(t, abs(u), f/q)
 end subroutine adore_tribo_ehd_contact
 
 !> Shear stress tau(n) (Pa) of a Newtonian film (thickness h, m) sheared at slips u(n)

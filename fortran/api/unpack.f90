@@ -91,12 +91,14 @@ contains
 
    !> The flat result vector of the contact traction wrappers: [force (N), coefficient,
    !> power (W), max slip, centre slip, rolling speed (m/s), spin (rad/s), spin/roll, R_x (m),
-   !> n rolling points, s1, s2 (m), node slip (m/s), node coefficient].
-   pure function traction_result(t) result(r)
+   !> n rolling points, s1, s2 (m), node slip (m/s), node coefficient] with the print node's
+   !> slip and local coefficient (adore_tribology_slip's print_slip_node) given apart.
+   pure function traction_result(t, node_slip, node_coefficient) result(r)
       type(contact_traction_t), intent(in) :: t
+      real(wp), intent(in) :: node_slip, node_coefficient
       real(wp) :: r(15)
       r = [t%force, t%coefficient, t%power, t%max_slip, t%centre_slip, t%rolling_speed, t%spin, &
-           t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points, t%node_slip, t%node_coefficient, &
+           t%spin_roll, t%rx, real(t%n_rolling, wp), t%rolling_points, node_slip, node_coefficient, &
            t%sliding]
    end function traction_result
 

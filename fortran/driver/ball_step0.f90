@@ -24,7 +24,8 @@ module adore_driver_ball_step0
                                                 ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
    use adore_tribology_race_contact, only: PRINT_GAUSS, ehd_traction_model, wall_temperature, wall_rheology, &
-                                           lubricant_film, check_ehd_film, ehd_traction, ehd_flash, law_flash
+                                           lubricant_film, check_ehd_film, ehd_traction, ehd_flash, law_flash, &
+                                           printed_slip
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
@@ -308,6 +309,7 @@ contains
             do j = 1, 2
                if (.not. (c(j)%load > 0.0_wp .and. c(j)%a > 0.0_wp)) cycle
                race = merge(BODY_OUTER, BODY_INNER, j == 1)
+               h = 0.0_wp
                call contact_traction(c(j), b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
                if (allocated(error)) return
                if (b%lubricant_code /= 0) then
@@ -319,7 +321,7 @@ contains
                   call check_ehd_film(b, b%temperature, k, j, s%film(j, k), s%thermal_factor(j, k), error)
                   if (allocated(error)) return
                   h = s%film(j, k)*s%thermal_factor(j, k)
-                  call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error, print=.true.)
+                  call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error)
                   if (allocated(error)) return
                   call ehd_flash(b, b%temperature, c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
                else
@@ -327,8 +329,7 @@ contains
                end if
                if (allocated(error)) return
                s%contact_temp(j, k) = wall_temperature(b%temperature, race)
-               s%slip(j, k) = t%node_slip
-               s%trac_coeff(j, k) = t%node_coefficient
+               call printed_slip(b, b%temperature, c(j), b_minor(j), race, h, ehd, s%slip(j, k), s%trac_coeff(j, k))
                s%spin_roll(j, k) = t%spin_roll
                s%loss(j, k) = t%power
                s%sliding(j, k) = t%sliding

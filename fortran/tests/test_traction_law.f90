@@ -9,7 +9,8 @@ program test_traction_law
    use adore_model_traction_fit, only: traction_coefficient
    use adore_tribology_traction_law, only: traction_law_t, curve_law, table_law, law_kappa, &
                                            law_slip_scale, LAW_TABLE
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_INNER
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_INNER, &
+                                   print_slip_node
    use adore_deck_traction_table, only: read_traction_table
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none
@@ -82,6 +83,7 @@ contains
       type(ball_race_contact_t) :: c
       type(contact_traction_t) :: t
       real(wp), parameter :: mu = 0.07_wp
+      real(wp) :: s_node, u_node
 
       call table_law([0.0_wp, 1.0_wp], [mu, mu], "constant", law, error)
       c%side = SIDE_INNER
@@ -96,7 +98,8 @@ contains
       call check(.not. allocated(error), "constant table: contact accepted")
       call check(t%sliding > 0.0_wp, "constant table: the contact slides")
       call check(abs(t%power - mu*t%sliding) <= 1.0e-12_wp*t%power, "constant table: power = mu * sliding")
-      call check(t%node_coefficient == mu, "constant table: printed coefficient = mu")
+      call print_slip_node(c, 24, s_node, u_node)
+      call check(law_kappa(law, u_node) == mu, "constant table: printed coefficient = mu")
    end subroutine test_constant_table_power
 
    subroutine test_rejected_tables()

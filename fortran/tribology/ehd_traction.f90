@@ -32,7 +32,7 @@ module adore_tribology_ehd_traction
    implicit none
    private
 
-   public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_temperature_rise
+   public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_temperature_rise, ehd_strip_traction
 
 
    !> Rheology of the film at the wall temperature.
@@ -74,9 +74,8 @@ contains
 
    !> Traction, heat and kinematics of contact c with an EHD film of thickness h (m) and
    !> rheology rheo; b: semi-minor axis (m); n_gauss points per slip zone along the major
-   !> axis, n_strip across each strip.  t%coefficient = net traction / load,
-   !> t%node_coefficient = strip traction / strip load at the node of largest |u|,
-   !> t%power (W) = integral of f |u| ds (eq 4).  Input error for bad data.
+   !> axis, n_strip across each strip.  t%coefficient = net traction / load, t%power (W) =
+   !> integral of f |u| ds (eq 4).  Input error for bad data.
    subroutine ehd_contact_traction(c, rheo, h, b, n_gauss, n_strip, t, error)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
@@ -84,9 +83,9 @@ contains
       integer, intent(in) :: n_gauss, n_strip
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: x(:), w(:), y(:), wy(:)
-      real(wp) :: u, xi2, p0, half, p, f, q, tau, amp, zeta, e_half
-      integer :: j, i, m
+      real(wp), allocatable :: x(:), w(:)
+      real(wp) :: u, f, q, y(n_strip), wy(n_strip)
+      integer :: j, m
 
       if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load > 0.0_wp &
                  .and. c%r_b > c%rho .and. abs(c%side) == 1 .and. b > 0.0_wp)) then
@@ -103,58 +102,90 @@ contains
          return
       end if
       call major_axis_nodes(c, n_gauss, t, x, w)
-      allocate (y(n_strip), wy(n_strip))
-      call gauss_legendre(n_strip, y, wy)
-      ! the strip integrand is even in y: the nodes y >= 0 with doubled weights (the centre
-      ! node of an odd rule once)
+      call strip_rule(n_strip, y, wy, m)
+      t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
+      do j = 1, size(x)
+         u = contact_slip(c, x(j))
+         call strip_traction(c, rheo, h, b, y(1:m), wy(1:m), x(j), u, f, q)
+         t%force = t%force + sign(f, u)*w(j)
+         t%force_cos = t%force_cos + sign(f, u)*w(j)*cos(x(j)/c%rho)
+         t%force_sin = t%force_sin + sign(f, u)*w(j)*sin(x(j)/c%rho)
+         t%power = t%power + f*abs(u)*w(j)
+         t%sliding = t%sliding + abs(u)*0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)   ! Hertz strip load
+         t%max_slip = max(t%max_slip, abs(u))
+      end do
+      call interior_extremum(c, t%max_slip)
+      t%coefficient = t%force/c%load
+   end subroutine ehd_contact_traction
+
+   !> The EHD traction of contact c (as ehd_contact_traction) at the node s (m) of the major
+   !> axis with slip u (m/s): the strip's traction f (N/m) and load q (N/m), with n_strip
+   !> points across the strip.  The print's local traction coefficient is f / q at the
+   !> print node (adore_tribology_slip's print_slip_node).
+   subroutine ehd_strip_traction(c, rheo, h, b, n_strip, s, u, f, q)
+      type(ball_race_contact_t), intent(in) :: c
+      type(ehd_rheology_t), intent(in) :: rheo
+      real(wp), intent(in) :: h, b, s, u
+      integer, intent(in) :: n_strip
+      real(wp), intent(out) :: f, q
+      real(wp) :: y(n_strip), wy(n_strip)
+      integer :: m
+      call strip_rule(n_strip, y, wy, m)
+      call strip_traction(c, rheo, h, b, y(1:m), wy(1:m), s, u, f, q)
+   end subroutine ehd_strip_traction
+
+   !> The n-point Gauss-Legendre rule across a strip folded onto y >= 0 (the integrand is
+   !> even in y): nodes y(1:m) with doubled weights, the centre node of an odd rule once.
+   pure subroutine strip_rule(n, y, wy, m)
+      integer, intent(in) :: n
+      real(wp), intent(out) :: y(n), wy(n)
+      integer, intent(out) :: m
+      integer :: i
+      call gauss_legendre(n, y, wy)
       m = 0
-      do i = 1, n_strip
+      do i = 1, n
          if (y(i) < 0.0_wp) cycle
          m = m + 1
          y(m) = y(i)
          wy(m) = merge(wy(i), 2.0_wp*wy(i), y(i) == 0.0_wp)
       end do
+   end subroutine strip_rule
+
+   !> Traction f (N/m) and load q (N/m) of the strip across the Hertz ellipse at node s (m)
+   !> of the major axis, slip u (m/s), folded strip rule (y, wy): tau h = amp E
+   !> shear_shape(zeta |u| E), E = exp(alpha p / 2) (module header with eta_w(p) =
+   !> eta_w E**2); Newtonian tau = eta_w E**2 |u| / h when beta = 0.
+   pure subroutine strip_traction(c, rheo, h, b, y, wy, s, u, f, q)
+      type(ball_race_contact_t), intent(in) :: c
+      type(ehd_rheology_t), intent(in) :: rheo
+      real(wp), intent(in) :: h, b, y(:), wy(:), s, u
+      real(wp), intent(out) :: f, q
+      real(wp) :: xi2, half, p0, p, e_half, tau, amp, zeta
+      integer :: i
+
       p0 = 1.5_wp*c%load/(pi*c%a*b)
-      ! tau h = amp E shear_shape(zeta |u| E), E = exp(alpha p / 2) (module header with
-      ! eta_w(p) = eta_w E**2)
       amp = 0.0_wp
       zeta = 0.0_wp
       if (rheo%beta > 0.0_wp) then
          amp = sqrt(2.0_wp*rheo%conductivity*rheo%eta_w/rheo%beta)/h
          zeta = 0.5_wp*sqrt(rheo%beta*rheo%eta_w/(2.0_wp*rheo%conductivity))
       end if
-      t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
-      do j = 1, size(x)
-         u = contact_slip(c, x(j))
-         xi2 = (x(j)/c%a)**2
-         half = b*sqrt(1.0_wp - xi2)
-         f = 0.0_wp
-         q = 0.0_wp
-         do i = 1, m
-            p = p0*sqrt((1.0_wp - xi2)*(1.0_wp - y(i)**2))
-            e_half = exp(0.5_wp*rheo%alpha*p)
-            if (rheo%beta > 0.0_wp) then
-               tau = amp*e_half*shear_shape(zeta*abs(u)*e_half)
-            else
-               tau = rheo%eta_w*e_half*e_half*abs(u)/h
-            end if
-            f = f + half*wy(i)*tau
-            q = q + half*wy(i)*p
-         end do
-         t%force = t%force + sign(f, u)*w(j)
-         t%force_cos = t%force_cos + sign(f, u)*w(j)*cos(x(j)/c%rho)
-         t%force_sin = t%force_sin + sign(f, u)*w(j)*sin(x(j)/c%rho)
-         t%power = t%power + f*abs(u)*w(j)
-         t%sliding = t%sliding + abs(u)*0.75_wp*c%load/c%a*(1.0_wp - xi2)*w(j)   ! Hertz strip load
-         t%max_slip = max(t%max_slip, abs(u))
-         if (abs(u) >= t%node_slip) then
-            t%node_slip = abs(u)
-            if (q > 0.0_wp) t%node_coefficient = f/q
+      xi2 = (s/c%a)**2
+      half = b*sqrt(1.0_wp - xi2)
+      f = 0.0_wp
+      q = 0.0_wp
+      do i = 1, size(y)
+         p = p0*sqrt((1.0_wp - xi2)*(1.0_wp - y(i)**2))
+         e_half = exp(0.5_wp*rheo%alpha*p)
+         if (rheo%beta > 0.0_wp) then
+            tau = amp*e_half*shear_shape(zeta*abs(u)*e_half)
+         else
+            tau = rheo%eta_w*e_half*e_half*abs(u)/h
          end if
+         f = f + half*wy(i)*tau
+         q = q + half*wy(i)*p
       end do
-      call interior_extremum(c, t%max_slip)
-      t%coefficient = t%force/c%load
-   end subroutine ehd_contact_traction
+   end subroutine strip_traction
 
    !> Average (eq 36) and largest flash temperature rise (K) of contact c with the heat of
    !> its EHD film: flux q = tau(p, u) |u| (W/m**2) on strips across the minor axis at the

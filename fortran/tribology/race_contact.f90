@@ -11,12 +11,14 @@ module adore_tribology_race_contact
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, major_axis_nodes, contact_slip
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, major_axis_nodes, contact_slip, &
+                                   print_slip_node
    use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise, &
+                                           ehd_strip_traction
    use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
    use adore_contact_line_slices, only: line_contact_t
    use adore_tribology_roller_traction, only: line_traction_t
@@ -24,7 +26,7 @@ module adore_tribology_race_contact
    private
 
    public :: ehd_traction_model, wall_temperature, wall_rheology, thermal_properties, lubricant_film, &
-             check_ehd_film, ehd_traction, ehd_flash, law_flash, line_flash
+             check_ehd_film, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip
 
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
@@ -133,9 +135,8 @@ contains
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):
    !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
    !> lubricant's traction rheology at the wall temperature, EHD_GAUSS x EHD_STRIP points
-   !> for the force and heat; with print present also the PRINT_GAUSS nodes' slip and
-   !> coefficient (the report's printed Slip Velocity and Trac Coeff).
-   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, print)
+   !> for the force and heat.
+   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error)
       type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: temperature(:)
       type(ball_race_contact_t), intent(in) :: cj
@@ -143,20 +144,33 @@ contains
       integer, intent(in) :: race
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
-      logical, intent(in), optional :: print
-      type(ehd_rheology_t) :: rheo
-      type(contact_traction_t) :: t_print
-
-      rheo = wall_rheology(b, temperature, race)
-      call ehd_contact_traction(cj, rheo, h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
-      if (allocated(error)) return
-      if (.not. present(print)) return
-      if (.not. print) return
-      call ehd_contact_traction(cj, rheo, h, b_minor, PRINT_GAUSS, EHD_STRIP, t_print, error)
-      if (allocated(error)) return
-      t%node_slip = t_print%node_slip
-      t%node_coefficient = t_print%node_coefficient
+      call ehd_contact_traction(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
    end subroutine ehd_traction
+
+   !> The printed "Slip Velocity" (m/s) and "Trac Coeff" of race contact cj: |u| at the
+   !> print node (PRINT_GAUSS points per slip zone, adore_tribology_slip's print_slip_node)
+   !> and the local traction coefficient there, of the run's law or, when ehd, of the EHD
+   !> film (strip traction / strip load with film h, m, semi-minor axis b_minor, m; the
+   !> rheology at the wall temperature of race).
+   subroutine printed_slip(b, temperature, cj, b_minor, race, h, ehd, slip, coefficient)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      type(ball_race_contact_t), intent(in) :: cj
+      real(wp), intent(in) :: b_minor, h
+      integer, intent(in) :: race
+      logical, intent(in) :: ehd
+      real(wp), intent(out) :: slip, coefficient
+      real(wp) :: s, u, f, q
+
+      call print_slip_node(cj, PRINT_GAUSS, s, u)
+      slip = abs(u)
+      if (ehd) then
+         call ehd_strip_traction(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_STRIP, s, u, f, q)
+         coefficient = f/q
+      else
+         coefficient = law_kappa(b%race_traction, u)
+      end if
+   end subroutine printed_slip
 
    !> Average flash temperature rise (K) of a race contact with its EHD heat (report
    !> 2.7-2.8, eqs 35-36): both surfaces moving at the entraining speed u_e (m/s), element

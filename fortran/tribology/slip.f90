@@ -27,7 +27,7 @@ module adore_tribology_slip
 
    public :: ball_race_contact_t, contact_traction_t
    public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
-             major_axis_nodes
+             major_axis_nodes, print_slip_node
 
    integer, parameter, public :: SIDE_OUTER = 1   !< contact with the outer race
    integer, parameter, public :: SIDE_INNER = -1  !< contact with the inner race
@@ -55,10 +55,6 @@ module adore_tribology_slip
       real(wp) :: power = 0.0_wp        !< heat generated, integral of kappa |u| dQ (W)
       real(wp) :: sliding = 0.0_wp      !< integral of |u| dQ (N m/s): the Archard wear's load x slip
       real(wp) :: max_slip = 0.0_wp     !< largest |u| on the major axis (m/s)
-      real(wp) :: node_slip = 0.0_wp    !< largest |u| at the quadrature nodes (m/s): the
-                                        !< report's printed "Slip Velocity" with n_gauss = 4
-      real(wp) :: node_coefficient = 0.0_wp  !< local traction coefficient at that node (-): the
-                                             !< report's printed "Trac Coeff"
       real(wp) :: centre_slip = 0.0_wp  !< u at the contact centre (m/s)
       real(wp) :: rolling_speed = 0.0_wp  !< mean entraining speed (u_ball + u_race)/2 at the centre (m/s)
       real(wp) :: spin = 0.0_wp         !< spin of the ball relative to the race about the normal (rad/s)
@@ -176,10 +172,6 @@ contains
          t%power = t%power + kap*abs(u)*dq
          t%sliding = t%sliding + abs(u)*dq
          t%max_slip = max(t%max_slip, abs(u))
-         if (abs(u) >= t%node_slip) then
-            t%node_slip = abs(u)
-            t%node_coefficient = kap
-         end if
       end do
       ! a stationary point of u inside the contact (the sinusoid's extremum)
       call interior_extremum(c, t%max_slip)
@@ -228,6 +220,32 @@ contains
          w((z - 1)*n_gauss + 1:z*n_gauss) = 0.5_wp*(hi - lo)*wx
       end do
    end subroutine major_axis_nodes
+
+   !> The print node of contact c: among the nodes of the n_gauss-point rule per slip zone
+   !> (major_axis_nodes), the one of largest |u| (the last of equal ones), its position s
+   !> (m) and slip u (m/s).  The report prints that |u| as the contact's "Slip Velocity"
+   !> and the local traction coefficient there as "Trac Coeff" with n_gauss = 4
+   !> (docs/tribology.md).
+   pure subroutine print_slip_node(c, n_gauss, s, u)
+      type(ball_race_contact_t), intent(in) :: c
+      integer, intent(in) :: n_gauss
+      real(wp), intent(out) :: s, u
+      type(contact_traction_t) :: t
+      real(wp), allocatable :: x(:), w(:)
+      real(wp) :: uj
+      integer :: j
+
+      call major_axis_nodes(c, n_gauss, t, x, w)
+      s = 0.0_wp
+      u = 0.0_wp
+      do j = 1, size(x)
+         uj = contact_slip(c, x(j))
+         if (abs(uj) >= abs(u)) then
+            s = x(j)
+            u = uj
+         end if
+      end do
+   end subroutine print_slip_node
 
    !> Raise umax to |u| at the extremum of u(s) when it lies inside (-a, a).
    pure subroutine interior_extremum(c, umax)
