@@ -289,7 +289,7 @@ def test_orbit_is_to_scale_with_its_clearance_circle(tmp_path):
     np.testing.assert_allclose(y, h["cage_y_m"].to_numpy() * 1e3, rtol=1e-15)
     np.testing.assert_allclose(z, h["cage_z_m"].to_numpy() * 1e3, rtol=1e-15)
     np.testing.assert_allclose(np.hypot(cy, cz), 0.75, rtol=1e-12)  # radius = diametral clearance / 2, mm
-    assert "radius 0.75 mm" in circle_label
+    assert "r = 0.75 mm" in circle_label
     assert ax.get_aspect() == 1.0
     image = render(fig, tmp_path / "orbit.png")
     # equal aspect: the drawn axes box is square on the page

@@ -15,7 +15,7 @@ import numpy as np
 from ..errors import MissingSeriesWarning
 from . import style
 from .history import finite
-from .timeplot import Panel, check_series, history_figure, run_legend, runs_and_histories
+from .timeplot import Panel, check_series, history_figure, runs_and_histories
 
 _LAND = re.compile(r"^land(\d+)_force_N$")
 #: Orbit axes are in mm (an SI unit; the mass centre moves by tenths of a millimetre).
@@ -85,18 +85,18 @@ def cage_orbit(source, *, compare=None, label: str | None = None, compare_label:
     figure = "figure type 8 (cage whirl orbit)"
     have = check_series(figure, "cage mass-centre position", pairs, ["cage_y_m", "cage_z_m"],
                         {"cage_y_m": "cage y position", "cage_z_m": "cage z position"})
-    fig, axes, own = style.figure_axes(ax, height=style.FIGSIZE[0] * 0.78)
+    fig, axes, own = style.figure_axes(ax, height=6.0, width=10.0)
     a = axes[0]
     extent = 0.0
-    radii, drawn = [], set()
+    radii = []
     for i, ((run, hist), got) in enumerate(zip(pairs, have)):
         if not {"cage_y_m", "cage_z_m"} <= got:
             continue
-        drawn.add(i)
         both = hist[["cage_y_m", "cage_z_m"]].astype(float).dropna()
         y, z = both["cage_y_m"].to_numpy() * MM, both["cage_z_m"].to_numpy() * MM
-        a.plot(y, z, style.line_style(i), color=style.COLORS[0], marker="o" if len(y) <= 40 else None,
-               label="mass-center path" if i == 0 else None)
+        a.plot(y, z, style.line_style(i), color=style.COLORS[0 if i == 0 else 4],
+               marker="o" if len(y) <= 40 else None,
+               label="mass-center path" + (f" ({run.label})" if len(pairs) > 1 else ""))
         a.plot(y[:1], z[:1], "^", color=style.COLORS[2], markersize=7, label="start" if i == 0 else None)
         extent = max(extent, float(np.max(np.hypot(y, z))))
         c = guide_clearance(run, hist)
@@ -104,8 +104,9 @@ def cage_orbit(source, *, compare=None, label: str | None = None, compare_label:
             r = 0.5 * c * MM
             if not any(abs(r - q) <= 1e-9 * r for q in radii):
                 theta = np.linspace(0.0, 2.0 * math.pi, 361)
-                a.plot(r * np.cos(theta), r * np.sin(theta), ":", color=style.COLORS[1], linewidth=1.8,
-                       label=f"guide clearance circle, radius {r:.4g} mm"
+                a.plot(r * np.cos(theta), r * np.sin(theta), ":", color=style.COLORS[1 if i == 0 else 3],
+                       linewidth=1.8,
+                       label=f"guide clearance circle, r = {r:.4g} mm"
                              + (f" ({run.label})" if len(pairs) > 1 else ""))
                 radii.append(r)
                 extent = max(extent, r)
@@ -115,10 +116,11 @@ def cage_orbit(source, *, compare=None, label: str | None = None, compare_label:
     a.plot([0.0], [0.0], "+", color="0.3", markersize=9)
     lim = 1.12 * extent if extent > 0.0 else 1.0
     a.set_aspect("equal", adjustable="box")
+    a.set_anchor("W")  # the square box at the left of its space: the legend beside it stays on the page
     a.set_xlim(-lim, lim)
     a.set_ylim(-lim, lim)
     a.set_xlabel(style.label("Cage mass center y", "mm"))
     a.set_ylabel(style.label("Cage mass center z", "mm"))
-    run_legend(a, pairs, drawn)
+    style.legend(a)
     style.title(fig, axes, own, "Cage mass center whirl orbit")
     return fig

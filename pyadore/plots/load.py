@@ -73,7 +73,7 @@ def load_distribution(source, *, step: int | None = None, race: str = "both", co
                                  f"load at step {steps[0]}")
     fig, axes, own = style.figure_axes(ax, nrows=len(races), sharex=True)
     word = runs[0].element_word().capitalize()
-    for a, r in zip(axes, races):
+    for k, (a, r) in enumerate(zip(axes, races)):
         for i, run in enumerate(runs):
             x, y = data[(i, r)]
             if len(x):
@@ -84,7 +84,8 @@ def load_distribution(source, *, step: int | None = None, race: str = "both", co
         a.set_xticks(np.arange(0.0, 361.0, 45.0))
         if len(races) > 1:
             a.set_title(f"{r.capitalize()} race contact")
-        style.legend(a)
+        if k == 0:  # the panels show the same runs: one legend
+            style.legend(a)
     axes[-1].set_xlabel(style.label(f"{word} orbital position", "deg"))
     where = "the outer and inner race contacts" if len(races) > 1 else f"the {races[0]} race contact"
     style.title(fig, axes, own, f"{word}/race load distribution at {where}")

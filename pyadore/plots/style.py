@@ -10,6 +10,7 @@ with the same colours and a dashed line, so a legend entry says which run is whi
 from __future__ import annotations
 
 import functools
+import textwrap
 
 import matplotlib
 from matplotlib.figure import Figure
@@ -22,6 +23,8 @@ PNG_DPI = 120
 
 #: Colour cycle (matplotlib's colour-blind-safe "tab10" order, first six).
 COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#17becf", "#7f7f7f")
+#: Legend entries longer than this many characters are wrapped (long file paths).
+LEGEND_WIDTH = 36
 #: Line style of the first (the plotted) run and of the compared run.
 RUN_LINE = "-"
 COMPARE_LINE = "--"
@@ -55,7 +58,8 @@ def styled(func):
     return wrapper
 
 
-def figure_axes(ax=None, nrows: int = 1, sharex: bool = True, height: float | None = None):
+def figure_axes(ax=None, nrows: int = 1, sharex: bool = True, height: float | None = None,
+                width: float | None = None):
     """(figure, list of axes, own): the given ``ax`` (one axes, or a sequence of ``nrows``
     axes) and its figure with own = False, or a new figure with ``nrows`` stacked panels
     and own = True."""
@@ -66,7 +70,7 @@ def figure_axes(ax=None, nrows: int = 1, sharex: bool = True, height: float | No
         return axes[0].figure, axes, False
     if height is None:
         height = FIGSIZE[1] if nrows == 1 else 1.0 + PANEL_HEIGHT * nrows
-    fig = Figure(figsize=(FIGSIZE[0], height), layout="constrained")
+    fig = Figure(figsize=(width or FIGSIZE[0], height), layout="constrained")
     axes = fig.subplots(nrows, 1, sharex=sharex, squeeze=False)[:, 0]
     return fig, list(axes), True
 
@@ -81,11 +85,14 @@ def line_style(run_index: int) -> str:
     return RUN_LINE if run_index == 0 else COMPARE_LINE
 
 
-def legend(ax, **kwargs) -> None:
-    """A legend in the best free spot, only when the axes has labelled lines."""
-    handles, labels = ax.get_legend_handles_labels()
+def legend(ax, handles=None, labels=None) -> None:
+    """The legend, outside the axes on the right (it never hides data), only when there
+    are labelled lines; ``handles``/``labels`` default to the axes' own."""
+    if handles is None:
+        handles, labels = ax.get_legend_handles_labels()
+    labels = [textwrap.fill(text, LEGEND_WIDTH, break_on_hyphens=False) for text in labels]
     if handles:
-        ax.legend(loc=kwargs.pop("loc", "best"), **kwargs)
+        ax.legend(handles, labels, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
 
 
 def title(fig, axes, own: bool, text: str) -> None:

@@ -79,8 +79,7 @@ def run_legend(ax, pairs, drawn=None) -> None:
                 continue
             handles.append(Line2D([], [], color="0.25", linestyle=style.line_style(i)))
             labels.append(run.label)
-    if handles:
-        ax.legend(handles, labels, loc="best")
+    style.legend(ax, handles, labels)
 
 
 def history_figure(figure: str, what: str, title: str, panels: list[Panel], pairs, ax=None):
@@ -95,7 +94,9 @@ def history_figure(figure: str, what: str, title: str, panels: list[Panel], pair
         empty = [p.quantity for p in panels if p not in drawn]
         raise MissingSeriesError(f"{figure}: {pairs[0][0].label} has no {', '.join(empty).lower()}")
     fig, axes, own = style.figure_axes(ax, nrows=len(drawn), sharex=True)
-    for a, panel in zip(axes, drawn):
+    # panels showing the same series share the top panel's legend
+    same = len({tuple(n for _c, n in p.series) for p in drawn}) == 1
+    for k, (a, panel) in enumerate(zip(axes, drawn)):
         values, runs_drawn = [], set()
         for i, ((_run, hist), got) in enumerate(zip(pairs, have)):
             for j, (column, name) in enumerate(panel.series):
@@ -113,7 +114,8 @@ def history_figure(figure: str, what: str, title: str, panels: list[Panel], pair
         a.set_ylabel(style.label(panel.quantity, panel.unit))
         if len(drawn) > 1:
             a.set_title(panel.quantity)
-        run_legend(a, pairs, runs_drawn)
+        if k == 0 or not same:
+            run_legend(a, pairs, runs_drawn)
     axes[-1].set_xlabel(style.label("Time", "s"))
     style.title(fig, axes, own, title)
     return fig

@@ -172,6 +172,6 @@ def traction_slip(source, *, table=None, compare=None, label: str | None = None,
     a.set_ylim(bottom=0.0)
     a.set_xlabel(style.label("Slip velocity", "m/s"))
     a.set_ylabel(style.label("Traction coefficient", "-"))
-    style.legend(a, loc="lower right")
+    style.legend(a)
     style.title(fig, axes, own, "Traction-slip relation of the RE/race contacts")
     return fig
