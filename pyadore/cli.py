@@ -184,11 +184,17 @@ def plot(run_file: Path, set_name: str, out: Path | None, compare: Path | None, 
         click.echo(f"pyadore: error: {run_file}: no figure of set {set_name!r} can be made from its data", err=True)
         sys.exit(1)
     types = ", ".join(str(t.number) for t, _fig in made.figures)
+    try:
+        if to_pdf:
+            write_pdf(made.figures, out)
+        else:
+            paths = write_pngs(made.figures, out)
+    except OSError as exc:
+        click.echo(f"pyadore: error: cannot write {exc.filename or out}: {exc.strerror or exc}", err=True)
+        sys.exit(1)
     if to_pdf:
-        write_pdf(made.figures, out)
         click.echo(f"figures written: {out} ({len(made.figures)} pages: figure types {types})")
     else:
-        paths = write_pngs(made.figures, out)
         click.echo(f"figures written: {len(paths)} PNG files in {out} (figure types {types})")
 
 
