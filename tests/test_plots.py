@@ -186,6 +186,14 @@ def test_traction_table_of_the_run_and_of_a_file(roller_deck, table_file, tmp_pa
     assert tl == "ADRX7 table" and cl == "RE/RACE curve, replaced by the table"
     # beyond the last point the engine holds the last coefficient
     assert hu[0] == 3.0 and hu[-1] == pytest.approx(1.25 * 3.0) and np.all(hk == 0.08)
+    # a bad ADRX7 listing is a located one-line error
+    text = out.read_text().splitlines()
+    bad = next(k for k, s in enumerate(text) if s.strip().startswith("2.00000E-01"))
+    text[bad] = "  2.00000E-01  garbage"
+    broken = tmp_path / "broken.prt"
+    broken.write_text("\n".join(text) + "\n")
+    with pytest.raises(pyadore.AdoreInputError, match=rf"broken.prt: line {bad + 1}: expected a traction-slip"):
+        plots.traction_slip(broken)
     # a table file given to the figure (read by the engine's reader)
     fig = plots.traction_slip(GOLDEN_BALL, table=table_file)
     (label, u, k), _hold = lines_of(fig.get_axes()[0])
@@ -362,6 +370,8 @@ def test_cli_plot_golden_with_compare_as_pngs(ball_print, tmp_path):
                      "05-race-contacts.png", "09-pocket-force.png"]
     for p in out.iterdir():
         assert matplotlib.image.imread(p).shape[0] > 100
+    # the step-0 run is compared where it has data (type 1) and named where it has none
+    assert f"figure type 2 (total power loss vs time): {ball_print} has no total power loss" in res.stderr
 
 
 def test_cli_plot_runs_a_deck(roller_deck, tmp_path):

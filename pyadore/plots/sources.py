@@ -85,12 +85,15 @@ def _pre_banner(path: Path) -> tuple[str, pd.DataFrame | None]:
         if m:
             n = int(m.group(1))
             rows = []
-            for row in head[k + 3:k + 3 + n]:
-                parts = row.split()
-                if len(parts) != 2:
-                    raise AdoreInputError(f"{path}: line {head.index(row) + 1}: expected a traction-slip "
-                                          f"table point (slip, coefficient) of the ADRX7 listing")
-                rows.append((float(parts[0]), float(parts[1])))
+            for j in range(k + 3, min(k + 3 + n, len(head))):
+                parts = head[j].split()
+                try:
+                    rows.append((float(parts[0]), float(parts[1])))
+                except (IndexError, ValueError):
+                    raise AdoreInputError(f"{path}: line {j + 1}: expected a traction-slip table point (slip "
+                                          "m/s, coefficient) of the ADRX7 listing") from None
+            if len(rows) != n:
+                raise AdoreInputError(f"{path}: the ADRX7 listing ends after {len(rows)} of its {n} points")
             table = pd.DataFrame(rows, columns=["slip_m_s", "kappa"])
     listing = ""
     starts = [k for k, s in enumerate(head) if s.strip() == _LISTING_TITLE]

@@ -164,7 +164,7 @@ def traction_slip(source, *, table=None, compare=None, label: str | None = None,
             else:
                 u, k = curve_points(data[0], u_end)
                 a.plot(u, k, style.line_style(i), color=c, label=prefix + name)
-        if model == _EHD_MODEL and i == 0:
+        if model == _EHD_MODEL and i == 0 and not any(kind == "table" for _n, kind, _d in laws):
             warnings.warn(f"{FIGURE}: {run.label} uses the EHD traction model 3, whose traction-slip curve at a "
                           "given load and speed the engine does not expose; plotted: the deck's curve",
                           MissingSeriesWarning, stacklevel=2)
