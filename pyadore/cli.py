@@ -32,7 +32,7 @@ def _version() -> str:
 @click.group(context_settings=CONTEXT)
 @click.version_option(version=_version(), prog_name="pyadore", message="%(prog)s %(version)s")
 def cli() -> None:
-    """pyadore: run ADORE 5.0 decks, validate them and compare print files."""
+    """pyadore: run ADORE 5.0 decks, validate them, compare print files and plot them."""
 
 
 @cli.command()
@@ -112,6 +112,90 @@ def diff(run_file: Path, golden: Path, tolerances: Path | None, fmt: str) -> Non
     from .diff import diff_command
 
     sys.exit(diff_command(run_file, golden, tolerances, fmt))
+
+
+def _plot_input(path: Path, what: str, tmpdir: Path):
+    """A print file to plot: ``path`` itself when it is one (it has the banner line), else
+    ``path`` run as a deck (as many steps as it asks for) into ``tmpdir``."""
+    from .api import run as run_deck
+    from .errors import AdoreInputError
+    from .printout.layout import BANNER_LINE
+
+    try:
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            is_print = any(line.strip() == BANNER_LINE for line in handle)
+    except OSError as exc:
+        raise AdoreInputError(f"{path}: cannot read the {what} ({exc.strerror or exc})") from None
+    if is_print:
+        return path
+    click.echo(f"pyadore: {path} is not a print file: running it as a deck", err=True)
+    result = run_deck(path, out=tmpdir / f"{what}-{path.stem}.prt")
+    for note in result.notes:
+        click.echo(f"pyadore: note: {note}", err=True)
+    return result.print_path
+
+
+@cli.command()
+@click.argument("run_file", metavar="RUN", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--set", "set_name", default="report", show_default=True,
+              help="figure set: 'report' = every figure type of the report that the data supports")
+@click.option("-o", "--out", type=click.Path(path_type=Path),
+              help="a .pdf file (one page per figure) or a directory (one PNG per figure) "
+                   "[default: out/<RUN name>-report.pdf]")
+@click.option("--compare", type=click.Path(dir_okay=False, path_type=Path),
+              help="a second print file (or deck) overlaid on every figure, e.g. the golden print")
+@click.option("--step", type=int, help="printed step of the load distribution [default: the first printed step]")
+@click.option("--element", type=click.IntRange(min=1), default=1, show_default=True,
+              help="rolling element of the race-contact and pocket-force figures")
+@click.option("--traction-table", type=click.Path(dir_okay=False, path_type=Path),
+              help="traction-slip table file (ADRX7) drawn in the traction-slip figure")
+def plot(run_file: Path, set_name: str, out: Path | None, compare: Path | None, step: int | None, element: int,
+         traction_table: Path | None) -> None:
+    """Write the report's figures (figure types 1-10) from RUN, a print file or a deck.
+
+    Figures the data cannot support are skipped with one line each on stderr; exit 1 if
+    none can be made.  A PDF is written whole or not at all."""
+    import tempfile
+
+    from .plots import make_set, write_pdf, write_pngs
+
+    if out is None:
+        out = Path("out") / f"{run_file.stem}-{set_name}.pdf"
+    to_pdf = out.suffix.lower() == ".pdf"
+    try:
+        (out.parent if to_pdf else out).mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        click.echo(f"pyadore: error: cannot create the output directory {out.parent if to_pdf else out}: "
+                   f"{exc.strerror}", err=True)
+        sys.exit(1)
+    try:
+        with tempfile.TemporaryDirectory(prefix="pyadore-plot-") as tmp:
+            run_print = _plot_input(run_file, "run", Path(tmp))
+            other = _plot_input(compare, "compare", Path(tmp)) if compare is not None else None
+            made = make_set(run_print, set_name, compare=other, step=step, element=element, table=traction_table,
+                            label=str(run_file), compare_label=str(compare) if compare is not None else None)
+    except AdoreError as exc:
+        _fail(exc)
+    for _ftype, reason in made.skipped:
+        click.echo(f"pyadore: skipped {reason}", err=True)
+    for note in made.notes:
+        click.echo(f"pyadore: note: {note}", err=True)
+    if not made.figures:
+        click.echo(f"pyadore: error: {run_file}: no figure of set {set_name!r} can be made from its data", err=True)
+        sys.exit(1)
+    types = ", ".join(str(t.number) for t, _fig in made.figures)
+    try:
+        if to_pdf:
+            write_pdf(made.figures, out)
+        else:
+            paths = write_pngs(made.figures, out)
+    except OSError as exc:
+        click.echo(f"pyadore: error: cannot write {exc.filename or out}: {exc.strerror or exc}", err=True)
+        sys.exit(1)
+    if to_pdf:
+        click.echo(f"figures written: {out} ({len(made.figures)} pages: figure types {types})")
+    else:
+        click.echo(f"figures written: {len(paths)} PNG files in {out} (figure types {types})")
 
 
 def main() -> None:

@@ -7,7 +7,8 @@ so ``except pyadore.AdoreError`` catches everything pyadore raises on purpose.
 
 from __future__ import annotations
 
-__all__ = ["AdoreError", "AdoreInputError", "AdoreEngineError", "STATUS_OK", "STATUS_INPUT", "STATUS_ENGINE"]
+__all__ = ["AdoreError", "AdoreInputError", "AdoreEngineError", "MissingSeriesError", "MissingSeriesWarning",
+           "STATUS_OK", "STATUS_INPUT", "STATUS_ENGINE"]
 
 #: Status codes shared with the Fortran engine (fortran/core/error.f90) and used as
 #: process exit codes by the ``adore`` executable and the ``pyadore`` CLI.
@@ -32,3 +33,13 @@ class AdoreEngineError(AdoreError):
     """The engine failed on an input it accepted (no convergence, numerical breakdown)."""
 
     status = STATUS_ENGINE
+
+
+class MissingSeriesError(AdoreInputError):
+    """A figure cannot be made: the run, print file or time history lacks every series it
+    plots.  The message is one line naming the figure type and the missing series."""
+
+
+class MissingSeriesWarning(UserWarning):
+    """A figure was made without one of its series (or without the compared run's): the
+    message is one line naming the figure type and the missing series."""
