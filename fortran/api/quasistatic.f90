@@ -134,7 +134,7 @@ subroutine adore_race_control(d, r_b, n_o, n_i, w_o, w_i, control, kin, status, 
 end subroutine adore_race_control
 
 !> Race mounting: effective fits, raceway displacements and internal clearance
-!> (fortran/mounting/fits.f90).  rings(5, 4): columns shaft, inner race, outer race,
+!> (fortran/geometry/fits.f90).  rings(5, 4): columns shaft, inner race, outer race,
 !> housing; rows [inner diameter, outer diameter (m), E (Pa), nu, density (kg/m**3)]
 !> (inner race outer diameter and outer race inner diameter: equivalent raceway-side
 !> diameters).  fits = [inner, outer] mounted diametral interference (m);
@@ -144,7 +144,7 @@ end subroutine adore_race_control
 subroutine adore_mount_races(rings, fits, speeds, dia_play, result, status, message)
    use adore_core_kinds, only: wp
    use adore_core_error, only: ADORE_OK, ADORE_INPUT_ERROR
-   use adore_mounting_fits, only: ring_t, mounting_t, mount_races
+   use adore_geometry_fits, only: ring_t, mounting_t, mount_races
    implicit none
    real(wp), intent(in) :: rings(5, 4), fits(2), speeds(2), dia_play
    real(wp), intent(out) :: result(7)

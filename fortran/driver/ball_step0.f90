@@ -16,7 +16,7 @@ module adore_driver_ball_step0
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
-   use adore_mounting_fits, only: mounting_t
+   use adore_geometry_fits, only: mounting_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t
    use adore_quasistatic_models, only: ball_qs_model

@@ -2,7 +2,7 @@
 !> start with line contacts by slices (ADORE's start-up: ADRA4 with ADRC1 LineContact).
 !> Pure compute, no printing.
 !>
-!> * Mounting (section 3 of the print): adore_mounting_fits, as for the ball bearing.
+!> * Mounting (section 3 of the print): adore_geometry_fits, as for the ball bearing.
 !> * Contact geometry: raceway radii R_o = d_o/2 - n s_o, R_i = d_i/2 + n g_i with the
 !>   raceway displacements of the mounting (g_i inner growth, s_o outer shrink).
 !>   n = growth_count = 1 is the consistent model (the operating clearance of the print is
@@ -38,7 +38,7 @@ module adore_driver_roller_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_error, only: error_type, input_error
    use adore_model_bearing, only: bearing_t, ROLLER_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER
-   use adore_mounting_fits, only: mounting_t
+   use adore_geometry_fits, only: mounting_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_quasistatic_models, only: roller_qs_model
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &

@@ -4,7 +4,7 @@
 !> mounted = f(bearing model, temperatures): the one place the physics gets raceway and
 !> groove positions from, at step 0 and (later) at every derivative call, so that the
 !> thermal model can change the geometry during a run.
-!> * Mounting (adore_mounting_fits): shaft, inner race, outer race and housing as elastic
+!> * Mounting (adore_geometry_fits): shaft, inner race, outer race and housing as elastic
 !>   rings of their Rec 8 materials, pressed together (Rec 9 fits) and spun at the race
 !>   speeds.
 !> * Thermal growth: until the report's thermal distortions (ADRC2, report 4.3) are built,
@@ -28,7 +28,7 @@ module adore_geometry_mounted
    use adore_core_kinds, only: wp
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_SHAFT, BODY_HOUSING, &
                                   TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER
-   use adore_mounting_fits, only: ring_t, mounting_t, mount_races
+   use adore_geometry_fits, only: ring_t, mounting_t, mount_races
    implicit none
    private
 

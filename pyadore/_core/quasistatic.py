@@ -60,7 +60,7 @@ def race_control(d, r_b, n_o, n_i, w_o, w_i, control: int):
 
 
 def mount_races(rings, fits, speeds, dia_play: float) -> dict:
-    """Effective fits, raceway displacements and internal clearance (adore_mounting_fits).
+    """Effective fits, raceway displacements and internal clearance (adore_geometry_fits).
 
     rings: 4 rows (shaft, inner race, outer race, housing) of [inner diameter, outer
     diameter (m), E (Pa), nu, density (kg/m**3)]; fits, speeds: [inner, outer] (m, rad/s).

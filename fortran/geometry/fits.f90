@@ -24,7 +24,7 @@
 !> race (not rotating here) is pressed into the housing.  The internal (diametral)
 !> clearance is the unmounted diametral play less twice the two raceway displacements.
 !> A race is represented by an equivalent ring (bore..raceway-side diameter), lengths m.
-module adore_mounting_fits
+module adore_geometry_fits
    use adore_core_kinds, only: wp
    implicit none
    private
@@ -134,4 +134,4 @@ contains
               + 0.25_wp*g%density*w**2*((3.0_wp + g%poisson)*b**2 + (1.0_wp - g%poisson)*a**2)
    end function bore_hoop_stress
 
-end module adore_mounting_fits
+end module adore_geometry_fits
