@@ -7,7 +7,10 @@
 !> * a perturbed, non-equilibrium state (a ball displaced and spinning about a skewed
 !>   axis, the inner race shifted and misaligned): the normal forces and moments equal
 !>   minus the gradient of the contact energy (central finite differences, frozen K), and
-!>   the contact loads (normal and traction) obey action = reaction in force and moment.
+!>   the contact loads (normal and traction) obey action = reaction in force and moment;
+!> * the equations of motion (adore_dynamics_ball_motion): at the step-0 state the balls
+!>   accelerate centripetally and the inner race not at all; a free asymmetric body keeps
+!>   its inertial angular momentum and its attitude rate is R [omega]x.
 !> Run by `meson test` with the decks/ directory as argument.
 program test_forces
    use adore_core_kinds, only: wp
@@ -23,6 +26,10 @@ program test_forces
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, ball_contacts
    use adore_tribology_slip, only: ball_race_contact_t
+   use adore_dynamics_ball_motion, only: ball_bearing_rates, body_rates
+   use adore_forces_ball_bearing, only: body_load_t
+   use adore_state_bearing_state, only: body_state_t
+   use adore_core_rotation, only: quat_matrix
    use adore_test_support, only: check, finish
    implicit none
 
@@ -45,6 +52,8 @@ program test_forces
    call test_pack_round_trip(st)
    call test_planar_special_case(b, g, s0, st)
    call test_perturbed_state(b, g, st)
+   call test_motion_at_step0(b, g, s0, st)
+   call test_free_body_rates()
    call finish("force assembly")
 
 contains
@@ -335,6 +344,76 @@ contains
                  "perturbed: ball 1 carries traction and a traction moment")
       call check(norm2(ld%contacts(1, 1)%tangent_slip) > 0.0_wp, "perturbed: ball 1 slips at the outer race")
    end subroutine test_perturbed_state
+
+   !> Equations of motion at the step-0 state without traction: every ball accelerates
+   !> towards the axis with its orbit's centripetal acceleration r w_m**2 and the inner
+   !> race does not accelerate (the quasi-static equilibrium, eqs 65-72, seen from the
+   !> inertial frame), to the equilibrium's linearisation order.
+   subroutine test_motion_at_step0(b, g, s0, st)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(ball_step0_t), intent(in) :: s0
+      type(bearing_state_t), intent(in) :: st
+      type(bearing_state_t) :: rates
+      type(ball_bearing_loads_t) :: ld
+      real(wp) :: worst, a_c, e_r(3), phi, tol
+      integer :: k
+
+      call ball_bearing_rates(b, g, st, rates, ld, error, traction=.false.)
+      call check(.not. allocated(error), "equations of motion at the step-0 state")
+      if (allocated(error)) return
+      worst = 0.0_wp
+      associate (e => s0%start%equilibrium, kin => s0%start%kinematics)
+         tol = 2.0_wp*1.5_wp*(hypot(e%u(2), e%u(3))**2/g%groove_centre(2, 2))/minval([e%delta_o, e%delta_i])
+         do k = 1, b%n_elements
+            phi = e%azimuth(k)
+            e_r = [0.0_wp, -sin(phi), cos(phi)]
+            a_c = e%r(k)*kin(k)%orbital_speed**2
+            ! normal loads + weight over the mass, less the weight's share
+            worst = max(worst, norm2(rates%elements(k)%velocity - b%gravity + a_c*e_r)*b%mass(1)/ &
+                               maxval([e%q_o, e%q_i]))
+            call check(all(rates%elements(k)%position == st%elements(k)%velocity), "ball position rate = velocity")
+         end do
+         write (*, "(a,2es10.2)") "step-0 motion: ball acceleration - centripetal (rel. to largest load), "// &
+            "inner race acceleration (rel. to applied) ", worst, &
+            norm2(rates%races(RACE_INNER)%velocity)*b%mass(4)/norm2(b%force)
+         call check(worst < tol, "step-0 motion: balls accelerate centripetally (r w_m**2 towards the axis)")
+         call check(norm2(rates%races(RACE_INNER)%velocity)*b%mass(4)/norm2(b%force) < tol, &
+                    "step-0 motion: the inner race does not accelerate")
+      end associate
+      call check(all(rates%races(RACE_OUTER)%velocity == 0.0_wp) .and. all(rates%races(RACE_OUTER)%omega == 0.0_wp), &
+                 "outer race fixed")
+      call check(all(rates%races(RACE_INNER)%omega == 0.0_wp), "inner race turns at its prescribed speed")
+   end subroutine test_motion_at_step0
+
+   !> A free asymmetric body (no load) tumbling about a skewed axis: Euler's equations keep
+   !> the inertial angular momentum R I omega constant, and the attitude rate is R [omega]x
+   !> (central finite differences of R(q(t)) and of L(t) with the rates).
+   subroutine test_free_body_rates()
+      type(body_state_t) :: body, r, plus, minus
+      type(body_load_t) :: none
+      real(wp), parameter :: inertia(3) = [0.9_wp, 0.5_wp, 0.3_wp], dt = 1.0e-6_wp
+      real(wp) :: l_plus(3), l_minus(3), rdot(3, 3), skew(3, 3), w(3)
+
+      body%attitude = quat_from_rotation_vector([0.3_wp, -0.2_wp, 0.7_wp])
+      body%omega = [3.0_wp, -5.0_wp, 2.0_wp]
+      r = body_rates(body, none, 1.0_wp, inertia)
+      plus = body
+      minus = body
+      plus%attitude = body%attitude + dt*r%attitude
+      minus%attitude = body%attitude - dt*r%attitude
+      plus%omega = body%omega + dt*r%omega
+      minus%omega = body%omega - dt*r%omega
+      l_plus = matmul(quat_matrix(plus%attitude), inertia*plus%omega)
+      l_minus = matmul(quat_matrix(minus%attitude), inertia*minus%omega)
+      call check(norm2(l_plus - l_minus)/(2.0_wp*dt) < 1.0e-6_wp*norm2(inertia*body%omega), &
+                 "free body: inertial angular momentum constant (Euler's equations)")
+      w = body%omega
+      skew = reshape([0.0_wp, w(3), -w(2), -w(3), 0.0_wp, w(1), w(2), -w(1), 0.0_wp], [3, 3])
+      rdot = (quat_matrix(plus%attitude) - quat_matrix(minus%attitude))/(2.0_wp*dt)
+      call check(maxval(abs(rdot - matmul(quat_matrix(body%attitude), skew))) < 1.0e-6_wp*norm2(w), &
+                 "free body: attitude rate dR/dt = R [omega]x")
+   end subroutine test_free_body_rates
 
    subroutine get_decks_dir(path)
       character(len=:), allocatable, intent(out) :: path

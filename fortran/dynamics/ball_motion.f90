@@ -1,0 +1,84 @@
+!> Equations of motion of a ball bearing: the rates of every body's state from the loads
+!> of the force assembly, Newton's law for the mass centres and Euler's equations with the
+!> gyroscopic terms for the rotations (report section 1 and 4.4.3: ADORE's "generalized
+!> dynamic model" of every element in six degrees of freedom).
+!>
+!> For each body (adore_state_bearing_state: inertial position and velocity, attitude
+!> quaternion, body-frame angular velocity omega; principal inertia I of Appendix A's
+!> inertial parameters, adore_model_bearing's mass and moments):
+!>     dx/dt = v,   m dv/dt = F,   dq/dt = 1/2 q [0, omega],
+!>     I domega/dt = M_b - omega x (I omega),   M_b = R(q)^T M
+!> (Euler's equations in principal axes; Goldstein, Classical Mechanics, 5.6), F and M the
+!> body's loads about its mass centre (adore_forces_ball_bearing: contacts, traction,
+!> gravity, the applied load of the inner race).  A ball's inertia is isotropic, so its
+!> gyroscopic term vanishes.
+!> Constraints (report 4.4.6, until the deck's DOF constraints of Rec 3.3 are identified):
+!> the outer race is fixed in the housing and turns at its Rec 9.1.2 speed; the inner race
+!> turns at its prescribed speed about its axis (no angular acceleration, its misalignment
+!> held) and translates freely under the applied load.  The cage moves in six degrees of
+!> freedom; its pocket and guide-land contacts come with [Dynamics] (4.4.11).
+!> Temperatures do not change here (the thermal model is [Thermal]).  Units SI, time in s.
+module adore_dynamics_ball_motion
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type
+   use adore_core_rotation, only: cross, quat_matrix, quat_rate
+   use adore_model_bearing, only: bearing_t
+   use adore_geometry_mounted, only: mounted_geometry_t
+   use adore_state_bearing_state, only: bearing_state_t, body_state_t, new_bearing_state, RACE_OUTER, RACE_INNER
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, body_load_t, ball_bearing_loads
+   implicit none
+   private
+
+   public :: ball_bearing_rates, body_rates
+
+contains
+
+   !> Rates ds/dt of the ball bearing state s (module header): in rates, each body's
+   !> position holds its velocity (m/s), velocity its acceleration (m/s**2), attitude the
+   !> quaternion rate (1/s) and omega the body-frame angular acceleration (rad/s**2); the
+   !> temperatures' rates are 0.  loads: the force assembly at s (adore_forces_ball_bearing).
+   !> traction as ball_bearing_loads.  Input errors of the traction model come back in error.
+   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: s
+      type(bearing_state_t), intent(out) :: rates
+      type(ball_bearing_loads_t), intent(out) :: loads
+      type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: traction
+      integer :: k
+
+      call ball_bearing_loads(b, g, s, loads, error, traction)
+      if (allocated(error)) return
+      rates = new_bearing_state(size(s%elements))
+      rates%time = 1.0_wp
+      rates%temperature = 0.0_wp
+      do k = 1, size(s%elements)
+         rates%elements(k) = body_rates(s%elements(k), loads%elements(k), b%mass(1), b%moments(:, 1))
+      end do
+      rates%cage = body_rates(s%cage, loads%cage, b%mass(2), b%moments(:, 2))
+      ! outer race fixed, turning at its speed: only its attitude moves
+      rates%races(RACE_OUTER) = body_state_t(0.0_wp, 0.0_wp, quat_rate(s%races(RACE_OUTER)%attitude, &
+                                             s%races(RACE_OUTER)%omega), 0.0_wp)
+      ! inner race: free translation, prescribed rotation
+      rates%races(RACE_INNER) = body_rates(s%races(RACE_INNER), loads%races(RACE_INNER), b%mass(4), b%moments(:, 4))
+      rates%races(RACE_INNER)%omega = 0.0_wp
+   end subroutine ball_bearing_rates
+
+   !> Rates of one free rigid body of mass m (kg) and principal moments inertia(3) (kg m**2)
+   !> under the load ld (force and moment about the mass centre, inertial components).
+   pure function body_rates(body, ld, m, inertia) result(r)
+      type(body_state_t), intent(in) :: body
+      type(body_load_t), intent(in) :: ld
+      real(wp), intent(in) :: m, inertia(3)
+      type(body_state_t) :: r
+      real(wp) :: m_b(3)
+
+      r%position = body%velocity
+      r%velocity = ld%force/m
+      r%attitude = quat_rate(body%attitude, body%omega)
+      m_b = matmul(transpose(quat_matrix(body%attitude)), ld%moment)
+      r%omega = (m_b - cross(body%omega, inertia*body%omega))/inertia
+   end function body_rates
+
+end module adore_dynamics_ball_motion
