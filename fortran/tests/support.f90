@@ -4,7 +4,7 @@ module adore_test_support
    implicit none
    private
 
-   public :: check, finish
+   public :: check, finish, get_decks_dir
 
    !> Failed checks of this test program so far.
    integer :: failures = 0
@@ -30,5 +30,15 @@ contains
       end if
       write (*, "(a)") "all "//suite//" tests passed"
    end subroutine finish
+
+   !> The decks/ directory: the program's first argument (meson passes it), else "decks".
+   subroutine get_decks_dir(path)
+      character(len=:), allocatable, intent(out) :: path
+      integer :: n
+      call get_command_argument(1, length=n)
+      allocate (character(len=n) :: path)
+      if (n > 0) call get_command_argument(1, path)
+      if (n == 0) path = "decks"
+   end subroutine get_decks_dir
 
 end module adore_test_support

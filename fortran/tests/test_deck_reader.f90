@@ -2,7 +2,7 @@
 !> (adore_deck_reader).  Run by `meson test` with the decks/ directory as argument;
 !> pytest runs it from tests/test_engine_units.py.
 program test_deck_reader
-   use adore_test_support, only: check, finish
+   use adore_test_support, only: check, finish, get_decks_dir
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR, ADORE_ENGINE_ERROR
    use adore_deck_tokenizer, only: split_label, cut_field, parse_int_field, parse_real_field, show_real
@@ -26,15 +26,6 @@ program test_deck_reader
    call finish("deck reader")
 
 contains
-
-   subroutine get_decks_dir(path)
-      character(len=:), allocatable, intent(out) :: path
-      integer :: n
-      call get_command_argument(1, length=n)
-      allocate (character(len=n) :: path)
-      if (n > 0) call get_command_argument(1, path)
-      if (n == 0) path = "decks"
-   end subroutine get_decks_dir
 
    !> Real value of field `text` that must parse without message.
    subroutine expect_real(text, expected, what)

@@ -30,7 +30,7 @@ program test_forces
    use adore_forces_ball_bearing, only: body_load_t
    use adore_state_bearing_state, only: body_state_t
    use adore_core_rotation, only: quat_matrix
-   use adore_test_support, only: check, finish
+   use adore_test_support, only: check, finish, get_decks_dir
    implicit none
 
    character(len=:), allocatable :: decks
@@ -414,14 +414,5 @@ contains
       call check(maxval(abs(rdot - matmul(quat_matrix(body%attitude), skew))) < 1.0e-6_wp*norm2(w), &
                  "free body: attitude rate dR/dt = R [omega]x")
    end subroutine test_free_body_rates
-
-   subroutine get_decks_dir(path)
-      character(len=:), allocatable, intent(out) :: path
-      integer :: n
-      call get_command_argument(1, length=n)
-      allocate (character(len=n) :: path)
-      if (n > 0) call get_command_argument(1, path)
-      if (n == 0) path = "decks"
-   end subroutine get_decks_dir
 
 end program test_forces
