@@ -1,4 +1,4 @@
-"""The engine's Fortran deck reader (fortran/deck/reader.f90) against the Python reader.
+"""The engine's Fortran deck reader (fortran/deck/parser.f90 and its modules) against the Python reader.
 
 * the generated Fortran schema table is current (Python and Fortran read one table);
 * both appendix decks: every field equal, exactly, with the same kind;

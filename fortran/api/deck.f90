@@ -1,6 +1,6 @@
 !> Flat f2py wrapper of the deck reader (module pyadore._engine).
 
-!> Read the deck `deck_path` with the engine's reader (adore_deck_reader::read_deck) and
+!> Read the deck `deck_path` with the engine's reader (adore_deck_parser::read_deck) and
 !> write its field table to `table_path`: one line per field, in deck order,
 !>     rid <TAB> occurrence <TAB> name <TAB> kind <TAB> value
 !> with occurrence 0-based among records of the same type (as pyadore.deck.field_table),
@@ -10,7 +10,8 @@ subroutine adore_deck_table(deck_path, table_path, status, message)
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
    use adore_api_status, only: set_error
    use adore_core_strings, only: itoa
-   use adore_deck_reader, only: deck_t, read_deck, FIELD_INT, FIELD_REAL
+   use adore_deck_deck_type, only: deck_t, FIELD_INT, FIELD_REAL
+   use adore_deck_parser, only: read_deck
    implicit none
    character(len=*), intent(in) :: deck_path    !< deck file to read
    character(len=*), intent(in) :: table_path   !< text file to write the field table to

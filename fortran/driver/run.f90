@@ -1,6 +1,6 @@
 !> Run one deck from file to print file: the engine's top-level procedure (ADORE main).
 !>
-!> Flow: read the deck (text, then records: adore_deck_reader) → (model, quasi-static start, dynamics: later issues) → print.
+!> Flow: read the deck (text, then records: adore_deck_parser) → (model, quasi-static start, dynamics: later issues) → print.
 !> The print file is written under `<out>.part` and renamed to `<out>` only when the
 !> run succeeded; on any error the partial file is deleted, so no half-written
 !> output ever poses as a good one.  No state outlives the call.
@@ -9,7 +9,8 @@ module adore_driver_run
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
-   use adore_deck_reader, only: deck_t, parse_deck
+   use adore_deck_deck_type, only: deck_t
+   use adore_deck_parser, only: parse_deck
    use adore_deck_traction_table, only: read_traction_table
    use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING, ROLLER_BEARING
    use adore_output_banner, only: write_listing, write_banner

@@ -5,8 +5,10 @@ module adore_model_bearing
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
-   use adore_deck_reader, only: deck_t, read_deck, deck_has, deck_count, deck_collect_real, deck_collect_int, &
-                                deck_collect_text, deck_field_problem
+   use adore_deck_deck_type, only: deck_t, deck_has, deck_count, deck_collect_real, deck_collect_int, &
+                                   deck_collect_text
+   use adore_deck_parser, only: read_deck
+   use adore_deck_problems, only: deck_field_problem
    use adore_deck_tokenizer, only: show_real, itoa
    use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
                                     roller_race_diameters
@@ -373,7 +375,7 @@ contains
 
    end subroutine check_values
 
-   !> Read the deck at `path` (all checks of adore_deck_reader) and build its bearing model.
+   !> Read the deck at `path` (all checks of adore_deck_parser) and build its bearing model.
    subroutine read_bearing(path, b, error)
       character(len=*), intent(in) :: path
       type(bearing_t), intent(out) :: b

@@ -7,7 +7,7 @@ module adore_output_echo_fill
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type
-   use adore_deck_reader, only: deck_t, deck_collect_real, deck_collect_int, deck_count, deck_has
+   use adore_deck_deck_type, only: deck_t, deck_collect_real, deck_collect_int, deck_count, deck_has
    use adore_model_bearing, only: bearing_t, BALL_BEARING
    use adore_model_scales, only: scale_factors
    use adore_tribology_film, only: LUBRICANT_MIL_L_7808
