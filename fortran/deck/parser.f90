@@ -12,7 +12,7 @@
 !> bad integers and reals, blank required fields, and every value's range or choices
 !> (adore_deck_ranges).  Not checked here: the relations between values (pitch between
 !> bore and OD, elements fit, cage ID < OD, step order, traction peak...), which
-!> adore_model_bearing's check_values applies when the bearing model is built.  All problems are
+!> adore_model_checks applies when the bearing model is built.  All problems are
 !> collected, then returned as one input error (adore_deck_problems).
 module adore_deck_parser
    use adore_core_kinds, only: wp

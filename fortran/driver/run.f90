@@ -12,7 +12,8 @@ module adore_driver_run
    use adore_deck_deck_type, only: deck_t
    use adore_deck_parser, only: parse_deck
    use adore_deck_traction_table, only: read_traction_table
-   use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING, ROLLER_BEARING
+   use adore_model_bearing, only: bearing_t, BALL_BEARING, ROLLER_BEARING
+   use adore_model_from_deck, only: build_bearing
    use adore_output_banner, only: write_listing, write_banner
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo

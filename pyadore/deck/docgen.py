@@ -146,7 +146,7 @@ def _validation() -> list[str]:
             "* unconditional records present once, in order (`missing_record`, `surplus_record`).", "",
             "The engine's deck reader does not repeat the cross-field value checks; the engine "
             "applies them when it builds the bearing model (`check_values` in "
-            "`fortran/model/bearing.f90`), so `adore` and `pyadore run` refuse such a deck "
+            "`fortran/model/checks.f90`), so `adore` and `pyadore run` refuse such a deck "
             "with the same lines, exit status 1 and no print file.  The engine also refuses, in the same "
             "form, a deck without any applied force (Rec 9.1.1): the echo's load scale is the largest "
             "applied load, and ADORE's rule for an unloaded bearing is not known.", "",
