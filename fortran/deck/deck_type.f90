@@ -16,7 +16,7 @@ module adore_deck_deck_type
    private
 
    public :: deck_field_t, deck_record_t, deck_t
-   public :: deck_has, deck_count, record_matches
+   public :: deck_has, deck_count, record_matches, deck_find_first
    public :: deck_get_real, deck_get_int, deck_get_text
    public :: deck_collect_real, deck_collect_int, deck_collect_text
    public :: FIELD_INT, FIELD_REAL, FIELD_TEXT
@@ -202,6 +202,22 @@ contains
          value = v
       end if
    end subroutine deck_collect_text
+
+   !> Record r and field f of the first field called `name` anywhere in the deck, readable
+   !> or not (r = f = 0 when there is none): the value the schema's record conditions and
+   !> the cross-field checks see, as Python's Deck.lookup.
+   pure subroutine deck_find_first(deck, name, r, f)
+      type(deck_t), intent(in) :: deck
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: r, f
+      do r = 1, deck%n_records
+         do f = 1, deck%records(r)%n_fields
+            if (deck%records(r)%fields(f)%name == name) return
+         end do
+      end do
+      r = 0
+      f = 0
+   end subroutine deck_find_first
 
    !> Locate field `field` of the `occurrence`-th record answering to `rid`.
    subroutine find_field(deck, rid, field, kind, r, f, error, occurrence)

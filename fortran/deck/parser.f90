@@ -26,7 +26,7 @@ module adore_deck_parser
    use adore_deck_tokenizer, only: split_label, cut_field, parse_int_field, parse_real_field, &
                                    is_blank, strip, lstrip_count, itoa
    use adore_core_strings, only: rstrip, quoted
-   use adore_deck_deck_type, only: deck_t, deck_record_t, deck_field_t
+   use adore_deck_deck_type, only: deck_t, deck_record_t, deck_field_t, deck_find_first
    use adore_deck_problems, only: problem_list_t, add_problem, problems_error
    use adore_deck_ranges, only: check_ranges
    implicit none
@@ -235,16 +235,12 @@ contains
       integer :: r, f
       value = 0
       found = .false.
-      do r = 1, deck%n_records
-         do f = 1, deck%records(r)%n_fields
-            associate (fv => deck%records(r)%fields(f))
-               if (fv%name /= name) cycle
-               found = fv%valid .and. fv%kind == KIND_INT
-               if (found) value = fv%int_value
-               return
-            end associate
-         end do
-      end do
+      call deck_find_first(deck, name, r, f)
+      if (r == 0) return
+      associate (fv => deck%records(r)%fields(f))
+         found = fv%valid .and. fv%kind == KIND_INT
+         if (found) value = fv%int_value
+      end associate
    end subroutine lookup_int
 
    !> Value of `name` as Python would print it in a message ("2", or "None").

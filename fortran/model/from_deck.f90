@@ -175,7 +175,7 @@ contains
                                   b%material(BODY_CAGE)%density, b%mass(2), b%moments(:, 2))
       end if
       b%traction_input = k
-      call check_values(deck, b, error)
+      call check_values(deck, error)
       if (allocated(error)) return
       call hollow_cylinder_inertia(b%bearing_od, b%outer_raceway_dia, b%width_outer, &
                                    b%material(BODY_OUTER)%density, b%mass(3), b%moments(:, 3))
