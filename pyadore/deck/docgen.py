@@ -9,7 +9,7 @@ from __future__ import annotations
 import sys
 
 from .. import _core
-from .model import PROBLEM_KINDS
+from .problems import PROBLEM_KINDS
 from .provenance import DECK_FILES, PROVENANCE, SOURCES
 from .records import RECORDS
 from .schema import INT_WIDTH, LABEL_WIDTH, REAL_WIDTH, TEXT_WIDTH, FieldSpec, RecordSpec

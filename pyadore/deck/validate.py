@@ -7,9 +7,15 @@ None (unreadable; already reported by the reader) are skipped.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from .. import _core
-from .model import Deck, FieldValue, Problem, Record
+from .problems import Problem
 from .schema import expected_records
+from .values import FieldValue, Record
+
+if TYPE_CHECKING:  # annotations only: model.py imports this module
+    from .model import Deck
 
 __all__ = ["validate_deck"]
 
