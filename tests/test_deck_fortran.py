@@ -1,12 +1,12 @@
-"""The engine's Fortran deck reader (fortran/deck/reader.f90) against the Python reader.
+"""The engine's Fortran deck reader (fortran/deck/parser.f90 and its modules) against the Python reader.
 
 * the generated Fortran schema table is current (Python and Fortran read one table);
 * both appendix decks: every field equal, exactly, with the same kind;
 * every bad deck of tests/data/bad_decks: the Fortran reader rejects it with the same
   problem list, word for word, as the Python reader plus the range checks of validate();
-  decks whose only problem is a cross-field value check of pyadore/deck/validate.py
-  (CROSS_CHECKS) are accepted by the Fortran reader, which does not port those checks;
-* the engine's run refuses every deck with a cross-field value problem (CROSS_CHECKS), with
+  decks whose only problem is a cross-field value check are accepted by the Fortran
+  reader (the engine's model applies those checks, fortran/model/checks.f90);
+* the engine's run refuses every deck with a cross-field value problem, with
   validate()'s words, location and caret, before any physics (a degenerate ring once
   divided by zero in the mounting);
 * a malformed deck makes `adore` exit 1 and pyadore.run raise AdoreInputError, with no
@@ -90,7 +90,7 @@ def test_bad_deck_rejected_by_fortran_reader(name):
     path = BAD / name
     problems, deck = _python_read_and_range_problems(path)
     if not problems:
-        # only a cross-field value check of validate.py fails: not ported to Fortran
+        # only a cross-field value check fails: the reader accepts it, the model's checks refuse it
         assert e["kind"] == "cross_field" and e["field"] is not None
         assert _core.deck_field_table(path) == field_table(deck)
         assert any(p.kind == "cross_field" and p.field == e["field"] for p in validate_deck(deck))
@@ -119,7 +119,7 @@ CROSS_VALUE_DECKS = sorted(n for n, e in EXPECTED.items() if e["kind"] == "cross
 @pytest.mark.parametrize("name", CROSS_VALUE_DECKS)
 def test_engine_run_refuses_cross_field_values_with_validates_words(name, tmp_path):
     """The reader accepts these decks (above); building the bearing model then refuses them
-    with every CROSS_CHECKS problem of pyadore validate, word for word, and writes nothing."""
+    with every cross-field problem of pyadore validate, word for word, and writes nothing."""
     path = BAD / name
     deck = read_deck(path)
     problems = [p for p in validate_deck(deck) if p.kind == "cross_field" and p.field is not None]

@@ -36,7 +36,7 @@ STEP0_SECTION4_AND_TEMPERATURES = [
 
 #: Section 2's bodies columns but the hoop stress (the cage's is not computed; the ball
 #: report prints 0 for it): cage state (tests/test_cage_step0.py) and the race rows
-#: (report.f90 race_rows; Archard race wear).
+#: (output/step_report.f90 race_rows; Archard race wear).
 BODY_COLUMNS_BUT_HOOP = ["mc_pos_axial_m", "mc_pos_radial_m", "mc_pos_orbital_deg", "orbital_velocity_rpm",
                          "ang_vel_amplitude_rpm", "ang_vel_theta_deg", "ang_vel_phi_deg", "ang_pos_theta_deg",
                          "ang_pos_phi_deg", "wear_rate_m3_s"]

@@ -189,7 +189,8 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
-   use adore_model_bearing, only: bearing_t, read_bearing, BALL_BEARING
+   use adore_model_bearing, only: bearing_t, BALL_BEARING
+   use adore_model_from_deck, only: read_bearing
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
    implicit none
    character(len=*), intent(in) :: deck_path

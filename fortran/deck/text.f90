@@ -11,7 +11,7 @@ module adore_deck_text
    implicit none
    private
 
-   public :: deck_line_t, deck_text_t, read_deck_text
+   public :: deck_line_t, deck_text_t, read_deck_text, first_invalid_utf8
 
    !> One line of the deck, without its line terminator.
    type :: deck_line_t
@@ -105,5 +105,57 @@ contains
          return
       end if
    end subroutine read_deck_text
+
+   !> Line and column (1-based) of the first byte sequence of `text` that is not valid
+   !> UTF-8; line = col = 0 when every line is valid UTF-8.
+   pure subroutine first_invalid_utf8(text, line, col)
+      type(deck_text_t), intent(in) :: text
+      integer, intent(out) :: line, col
+      integer :: l, i, c, n, k, lo, hi
+
+      line = 0
+      col = 0
+
+      do l = 1, size(text%lines)
+         associate (s => text%lines(l)%s)
+            i = 1
+            do while (i <= len(s))
+               c = iachar(s(i:i))
+               lo = 128
+               hi = 191
+               select case (c)
+               case (0:127); n = 0
+               case (194:223); n = 1
+               case (224); n = 2; lo = 160
+               case (225:236, 238:239); n = 2
+               case (237); n = 2; hi = 159
+               case (240); n = 3; lo = 144
+               case (241:243); n = 3
+               case (244); n = 3; hi = 143
+               case default; n = -1
+               end select
+               do k = 1, n
+                  if (i + k > len(s)) then
+                     n = -1
+                     exit
+                  end if
+                  c = iachar(s(i + k:i + k))
+                  if (c < lo .or. c > hi) then
+                     n = -1
+                     exit
+                  end if
+                  lo = 128
+                  hi = 191
+               end do
+               if (n < 0) then
+                  line = l
+                  col = i
+                  return
+               end if
+               i = i + n + 1
+            end do
+         end associate
+      end do
+   end subroutine first_invalid_utf8
 
 end module adore_deck_text

@@ -1,23 +1,27 @@
 !> Run one deck from file to print file: the engine's top-level procedure (ADORE main).
 !>
-!> Flow: read the deck (text, then records: adore_deck_reader) → (model, quasi-static start, dynamics: later issues) → print.
+!> Flow: read the deck (text, then records: adore_deck_parser) → (model, quasi-static start, dynamics: later issues) → print.
 !> The print file is written under `<out>.part` and renamed to `<out>` only when the
 !> run succeeded; on any error the partial file is deleted, so no half-written
 !> output ever poses as a good one.  No state outlives the call.
 module adore_driver_run
+   use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
-   use adore_deck_reader, only: deck_t, parse_deck
+   use adore_deck_deck_type, only: deck_t
+   use adore_deck_parser, only: parse_deck
    use adore_deck_traction_table, only: read_traction_table
-   use adore_model_bearing, only: bearing_t, build_bearing, BALL_BEARING, ROLLER_BEARING
+   use adore_model_bearing, only: bearing_t, BALL_BEARING, ROLLER_BEARING
+   use adore_model_from_deck, only: build_bearing
    use adore_output_banner, only: write_listing, write_banner
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
    use adore_quasistatic_ball_start, only: start_method_from_name, start_method_title
    use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
-   use adore_driver_report, only: fill_echo, write_ball_step0, write_roller_step0
+   use adore_output_echo_fill, only: fill_echo
+   use adore_output_step_report, only: write_ball_step0, write_roller_step0
    implicit none
    private
 
@@ -127,9 +131,9 @@ contains
       ! its issue; until then the print ends here.
       select case (bearing%bearing_type)
       case (BALL_BEARING)
-         call write_ball_step0(unit, bearing, ball0)
+         call write_ball_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], bearing, ball0)
       case (ROLLER_BEARING)
-         call write_roller_step0(unit, bearing, roller0)
+         call write_roller_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], bearing, roller0)
       end select
 
       close (unit, iostat=stat, iomsg=iomsg)

@@ -1,13 +1,14 @@
 !> Engine unit tests of the deck tokenizer (adore_deck_tokenizer) and reader accessors
-!> (adore_deck_reader).  Run by `meson test` with the decks/ directory as argument;
+!> (adore_deck_deck_type, adore_deck_parser).  Run by `meson test` with the decks/ directory as argument;
 !> pytest runs it from tests/test_engine_units.py.
 program test_deck_reader
    use adore_test_support, only: check, finish, get_decks_dir
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR, ADORE_ENGINE_ERROR
    use adore_deck_tokenizer, only: split_label, cut_field, parse_int_field, parse_real_field, show_real
-   use adore_deck_reader, only: deck_t, read_deck, deck_has, deck_count, deck_get_real, deck_get_int, &
-                                deck_get_text
+   use adore_deck_deck_type, only: deck_t, deck_has, deck_count, deck_get_real, deck_get_int, &
+                                   deck_get_text
+   use adore_deck_parser, only: read_deck
    implicit none
 
    character(len=:), allocatable :: decks

@@ -16,7 +16,8 @@ program test_forces
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_rotation, only: cross, quat_from_rotation_vector, quat_multiply
-   use adore_model_bearing, only: bearing_t, read_bearing
+   use adore_model_bearing, only: bearing_t
+   use adore_model_from_deck, only: read_bearing
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, RACE_OUTER, RACE_INNER, &
                                         state_size, pack_state, unpack_state

@@ -13,7 +13,7 @@ from .quasistatic import BALL_QS_COLUMNS, ball_quasi_static, ball_race_jacobian,
 from .roller_tribology import ROLLER_TRIBOLOGY_COLUMNS, ROLLER_TRIBOLOGY_SLICES, ROLLER_TRIBOLOGY_SUMMARY, SPIN_ROLLING, SPIN_EQUILIBRIUM, roller_step0_tribology  # noqa: F401
 from .model import ball_clearance, roller_races, body_inertia, traction_fit, traction_eval, scale_factors  # noqa: F401
 from .life import LIFE_CONSTANT_NAMES, life_default_constants, ball_bearing_life  # noqa: F401
-from .deck import deck_field_table  # noqa: F401
+from .deck import deck_field_table, cross_field_fields, cross_field_rules, cross_field_problems  # noqa: F401
 from .printer import fortran_print_step, fortran_print_end, fortran_print_echo  # noqa: F401
 from .tribology import film_thickness, thermal_reduction_factor, lubricant, LUBRICANT_KEYS, CONTACT_TRACTION_KEYS, contact_traction, ehd_contact_traction, ehd_temperature_rise, film_shear_stress, contact_slip, flash_rise, contact_temperature_rise, wear_rate, traction_table  # noqa: F401
 
@@ -53,6 +53,9 @@ __all__ = [
     "life_default_constants",
     "ball_bearing_life",
     "deck_field_table",
+    "cross_field_fields",
+    "cross_field_rules",
+    "cross_field_problems",
     "fortran_print_step",
     "fortran_print_end",
     "fortran_print_echo",

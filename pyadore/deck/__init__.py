@@ -9,9 +9,11 @@ Public API::
     write_deck(deck, "out.inp")                          # unchanged records verbatim
     field_table(deck)                                    # [(record id, occurrence, field, value)]
 
-The layout is defined once, in :mod:`pyadore.deck.schema` and :mod:`pyadore.deck.records`;
-``python -m pyadore.deck.docgen`` prints ``docs/deck-format.md`` from it.  This package
-never imports the compiled engine.
+The layout is defined once, in :mod:`pyadore.deck.spec` (types), :mod:`pyadore.deck.records`
+(the record table) and :mod:`pyadore.deck.schema` (queries on it); ``python -m
+pyadore.deck.docgen`` prints ``docs/deck-format.md`` from it.  Importing this package never
+loads the compiled engine; validation calls the engine's cross-field checks
+(:mod:`pyadore._core`), the one implementation of those checks.
 """
 
 from __future__ import annotations

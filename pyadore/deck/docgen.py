@@ -8,11 +8,11 @@ from __future__ import annotations
 
 import sys
 
-from .model import PROBLEM_KINDS
+from .. import _core
+from .problems import PROBLEM_KINDS
 from .provenance import DECK_FILES, PROVENANCE, SOURCES
 from .records import RECORDS
 from .schema import INT_WIDTH, LABEL_WIDTH, REAL_WIDTH, TEXT_WIDTH, FieldSpec, RecordSpec
-from .validate import CROSS_CHECKS
 
 __all__ = ["generate", "main"]
 
@@ -139,17 +139,20 @@ def _validation() -> list[str]:
     out += [f"* `{k}`" for k in PROBLEM_KINDS]
     out += ["", "Ranges are the *valid range* column above (types are checked while reading).  "
             "Cross-field checks:", ""]
-    for check in CROSS_CHECKS:
-        out.append(f"* {' '.join(check.__doc__.split())}")
+    for rule in _core.cross_field_rules():
+        out.append(f"* {rule}")
     out += ["* guide-land records: exactly `n_guide_lands` records 7.2.n (`cross_field`);",
             "* conditional records present exactly when their condition holds (`cross_field`);",
             "* unconditional records present once, in order (`missing_record`, `surplus_record`).", "",
-            "The engine's deck reader does not repeat the cross-field value checks; the engine "
-            "applies them when it builds the bearing model (`check_values` in "
-            "`fortran/model/bearing.f90`), so `adore` and `pyadore run` refuse such a deck "
-            "with the same lines, exit status 1 and no print file.  The engine also refuses, in the same "
-            "form, a deck without any applied force (Rec 9.1.1): the echo's load scale is the largest "
-            "applied load, and ADORE's rule for an unloaded bearing is not known.", "",
+            "The cross-field value checks have one implementation, the engine's "
+            "(`fortran/model/checks.f90`): the engine applies them when it builds the bearing model, "
+            "so `adore` and `pyadore run` refuse such a deck with exit status 1 and no print file, "
+            "and `pyadore validate` calls the same checks through the extension "
+            "(`pyadore._core.cross_field_problems`) and reports them, in the same lines, with the "
+            "reading, range and record problems.  The engine also refuses, in the same form, a deck "
+            "without any applied force (Rec 9.1.1), a limit of this engine rather than an inconsistent "
+            "deck (validate does not report it): the echo's load scale is the largest applied load, and "
+            "ADORE's rule for an unloaded bearing is not known.", "",
             "The malformed decks in `tests/data/bad_decks/` and their expectations "
             "(`expected.json`: file -> record id, field, problem class, line) are shared by the "
             "Python reader's tests and the Fortran reader's.", ""]

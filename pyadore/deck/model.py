@@ -1,4 +1,5 @@
-"""In-memory deck: :class:`Deck`, its :class:`Record` objects, :class:`FieldValue` and :class:`Problem`.
+"""In-memory deck: :class:`Deck`, with its :class:`Record` and :class:`FieldValue` objects
+(:mod:`.values`) and :class:`Problem` (:mod:`.problems`), re-exported here.
 
 A :class:`Deck` is a list of records in deck order.  Each record keeps its concrete id
 (``"7.2.2"``), its occurrence index among records of the same type, the source line it
@@ -9,148 +10,15 @@ came from (so unchanged records are written back verbatim) and its fields as
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..errors import AdoreInputError
-from .schema import FieldSpec, RecordSpec, record_spec
+from .problems import PROBLEM_KINDS, DeckError, Problem
+from .schema import record_spec
+from .validate import validate_deck
+from .values import FieldValue, Record
+from .writer import write_deck
 
 __all__ = ["Problem", "FieldValue", "Record", "Deck", "DeckError", "PROBLEM_KINDS"]
-
-#: Problem classes (also used in tests/data/bad_decks/expected.json).
-PROBLEM_KINDS = (
-    "io",              # file missing or unreadable
-    "non_text",        # binary content, NUL bytes, not UTF-8
-    "empty",           # no records at all
-    "truncated",       # the file ends before the last required record
-    "format",          # tab, text in the label zone, data beyond the last field
-    "type",            # a field that is not a valid integer / real / text
-    "missing_value",   # a required field left blank
-    "range",           # a value outside its valid range
-    "cross_field",     # inconsistent values, or a record required / forbidden by a flag or count
-    "missing_record",  # an unconditional record absent (labelled decks)
-    "surplus_record",  # a record where none is expected (duplicate, out of order, after the end)
-    "unknown_record",  # a label naming no record of the schema
-)
-
-
-@dataclass
-class Problem:
-    """One problem found in a deck, with its location.
-
-    ``line`` and ``col`` are 1-based (0 when not applicable); ``source_line`` is the text of
-    the offending line (None when there is none, e.g. a missing file).
-    """
-
-    path: str
-    line: int
-    col: int
-    record: str | None
-    field: str | None
-    value: object
-    message: str
-    kind: str
-    source_line: str | None = None
-
-    def format(self) -> str:
-        """``file:line:col  Rec X  field name = value: expected ...`` plus the offending line
-        and a caret line pointing at the column."""
-        loc = f"{self.path}:{self.line}:{self.col}" if self.line else self.path
-        parts = [loc]
-        if self.record:
-            parts.append(f"Rec {self.record}")
-        head = "  ".join(parts)
-        if self.field is not None:
-            head += f"  field {self.field} = {_show(self.value)}"
-        head += f": {self.message}"
-        if self.source_line is None:
-            return head
-        caret = " " * max(self.col - 1, 0) + "^"
-        shown = self.source_line.replace("\t", " ")  # one column per character, so the caret lines up
-        return f"{head}\n    {shown}\n    {caret}"
-
-    def to_dict(self) -> dict:
-        """JSON-friendly dict of the problem."""
-        return {"path": self.path, "line": self.line, "col": self.col, "record": self.record,
-                "field": self.field, "value": _jsonable(self.value), "message": self.message,
-                "kind": self.kind}
-
-
-def _show(v: object) -> str:
-    if v is None:
-        return "(blank)"
-    if isinstance(v, float):
-        return f"{v:.6G}"
-    if isinstance(v, str):
-        return repr(v)
-    return str(v)
-
-
-def _jsonable(v):
-    return v if isinstance(v, (int, float, str, type(None))) else str(v)
-
-
-class DeckError(AdoreInputError):
-    """A deck could not be read or written; ``problems`` lists every problem found."""
-
-    def __init__(self, message: str, problems: list[Problem] | None = None):
-        super().__init__(message)
-        self.problems = list(problems or [])
-
-    def __str__(self) -> str:
-        base = super().__str__()
-        if not self.problems:
-            return base
-        return base + "\n" + "\n".join(p.format() for p in self.problems)
-
-
-@dataclass
-class FieldValue:
-    """One field of a record: value (``int``/``float``/``str``, None if unreadable), its
-    spec, whether it was blank in the file, and its 1-based line and column (0 if built in memory)."""
-
-    name: str
-    spec: FieldSpec
-    value: object
-    blank: bool = False
-    line: int = 0
-    col: int = 0
-    raw: str = ""
-
-    @property
-    def unit(self) -> str:
-        """Unit of the value (SI; ``-`` for dimensionless)."""
-        return self.spec.unit
-
-
-@dataclass
-class Record:
-    """One record of a deck: concrete id, occurrence index (0-based among records of the
-    same spec), fields in order, and the source line it was read from."""
-
-    rid: str
-    spec: RecordSpec
-    fields: dict[str, FieldValue]
-    occurrence: int = 0
-    line: int = 0
-    labelled: bool = True
-    source: str | None = None
-    _read_values: tuple | None = field(default=None, repr=False, compare=False)
-
-    def __getitem__(self, name: str) -> object:
-        return self.fields[name].value
-
-    def values(self) -> dict[str, object]:
-        """Field name -> value, in order."""
-        return {n: f.value for n, f in self.fields.items()}
-
-    def unchanged(self) -> bool:
-        """True when the values still equal those read from ``source`` (write it verbatim)."""
-        return self.source is not None and self._read_values == tuple(self.values().items())
-
-    def mark_read(self) -> None:
-        """Remember the current values as the values read from ``source``."""
-        self._read_values = tuple(self.values().items())
 
 
 class Deck:
@@ -259,7 +127,6 @@ class Deck:
     # -- reports ----------------------------------------------------------------------------
     def validate(self) -> list[Problem]:
         """Range and cross-field checks (all problems at once); see :mod:`.validate`."""
-        from .validate import validate_deck
         return validate_deck(self)
 
     def summary(self) -> str:
@@ -273,5 +140,4 @@ class Deck:
 
     def save(self, path: str | Path, canonical: bool = False) -> None:
         """Write the deck to ``path`` (see :func:`pyadore.deck.write_deck`)."""
-        from .writer import write_deck
         write_deck(self, path, canonical=canonical)

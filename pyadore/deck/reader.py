@@ -14,6 +14,7 @@ from pathlib import Path
 from .model import Deck, DeckError, FieldValue, Problem, Record
 from .schema import ExpectedRecord, RecordSpec, expected_records, record_spec, static_order
 from .tokenizer import cut_fields, parse_value, split_label
+from .validate import validate_deck
 
 __all__ = ["read_deck", "check_deck", "parse_text", "decode_bytes"]
 
@@ -257,7 +258,6 @@ def check_deck(path) -> tuple[Deck | None, list[Problem]]:
         if text is None:
             return None, problems
         deck, read_problems = parse_text(text, str(path))
-        from .validate import validate_deck
         problems = read_problems + validate_deck(deck, structure=not read_problems)
         problems.sort(key=lambda p: (p.line == 0, p.line, p.col))
         return (None if read_problems else deck), problems

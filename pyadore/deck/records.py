@@ -13,7 +13,7 @@ Sources for names and meanings (cited per field in ``evidence``):
 
 from __future__ import annotations
 
-from .schema import FieldSpec, RecordSpec
+from .spec import FieldSpec, RecordSpec
 
 __all__ = ["RECORDS"]
 

@@ -13,10 +13,15 @@ verbatim from their source line, and formats the others canonically.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from .model import Deck, DeckError, FieldValue, Record
+from .problems import DeckError
 from .schema import LABEL_WIDTH
 from .tokenizer import parse_value
+from .values import FieldValue, Record
+
+if TYPE_CHECKING:  # annotations only: model.py imports this module
+    from .model import Deck
 
 __all__ = ["write_deck", "format_deck", "format_record", "format_value"]
 

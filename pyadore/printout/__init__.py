@@ -1,7 +1,9 @@
 """Reading (and writing) ADORE 5.0 print files in the fixed layout of docs/print-layout.md.
 
-``read_print(path)`` parses golden files and engine output alike; ``write_step_tables``
-and friends format tables in the same layout (used to build golden files and in tests).
+``read_print(path)`` parses golden files and engine output alike; ``format_step`` and
+friends format tables in the same layout, ``?`` markers included, which the engine's writer
+never writes (used to build the golden files and in tests; print files come from the
+engine).
 """
 
 from .model import (NOT_COMPUTED, NOT_COMPUTED_VALUE, OVERFLOW, OVERFLOW_VALUE, UNKNOWN, UNKNOWN_VALUE,

@@ -1,7 +1,9 @@
 """Formatting of step tables in the fixed ADORE 5.0 layout (docs/print-layout.md).
 
-The writer is the executable form of the layout: golden files are built with it and the
-tests use it to make perturbed or malformed copies.  It formats only; it computes nothing.
+The writer is the executable form of the layout: the golden files' steps were built with it
+(golden/transcription/assemble.py: it writes the unknown marker ``?``, which the engine's
+writer never does) and the tests use it to make perturbed or malformed copies and as the
+reference of the engine's writer.  It formats only; it computes nothing.
 """
 
 from __future__ import annotations

@@ -1,23 +1,17 @@
-!> Assembly of the print output from the model and the solution (no formatting here, no
-!> physics): the input echo record from the deck and the bearing model, and the step-0
-!> tables of a ball bearing from its quasi-static start.
+!> The printed tables of one step (sections 1-4) assembled from the bearing model and the
+!> solution at that step (no formatting here, no physics): write_ball_step0 and
+!> write_roller_step0 from the quasi-static start, with the step number and the step header
+!> values (tau, time, race rotations) passed by the caller.
 !>
 !> A value pyadore does not compute yet (cage contact forces and their wear, the roller's modified
 !> life, deck fields whose meaning is not identified) is left as
 !> IEEE NaN / INT_NOT_COMPUTED and prints "NaN": the print never shows a made-up number.
-module adore_driver_report
+module adore_output_step_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi, rad_to_deg, rad_s_to_rpm
-   use adore_core_error, only: error_type
-   use adore_deck_reader, only: deck_t, deck_collect_real, deck_collect_int, deck_count, deck_has
-   use adore_model_bearing, only: bearing_t, BALL_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, &
-                                  BODY_SHAFT, BODY_HOUSING
-   use adore_model_scales, only: scale_factors
-   use adore_tribology_film, only: LUBRICANT_MIL_L_7808
-   use adore_life_lundberg_palmgren, only: life_params_t
-   use adore_output_echo_data, only: echo_data_t, echo_data_init
-   use adore_output_layout, only: ELEMENT_BALL, ELEMENT_ROLLER, INT_NOT_COMPUTED, ECHO_MAX_GUIDE, N_PERFORMANCE
+   use adore_model_bearing, only: bearing_t
+   use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
    use adore_output_print_tables, only: write_step
    use adore_driver_ball_step0, only: ball_step0_t
    use adore_driver_roller_step0, only: roller_step0_t
@@ -25,195 +19,17 @@ module adore_driver_report
    implicit none
    private
 
-   public :: fill_echo, write_ball_step0, write_roller_step0, cage_tables
+   public :: write_ball_step0, write_roller_step0, cage_tables
 
 
 contains
 
-   !> The input echo record of deck / bearing model b (SI units; angles in deg as printed).
-   subroutine fill_echo(deck, b, e, error)
-      type(deck_t), intent(in) :: deck
-      type(bearing_t), intent(in) :: b
-      type(echo_data_t), intent(out) :: e
-      type(error_type), allocatable, intent(out) :: error
-
-      real(wp) :: v(9), scales(3)
-      integer :: k, body, code
-      type(life_params_t) :: life
-
-      e = echo_data_init()
-      e%run_id = b%run_id
-      e%title = b%run_id
-      e%program_mode = b%mode
-      e%n_elements = b%n_elements
-      e%element_dia = b%d
-      e%pitch_dia = b%dm
-      e%dia_play = b%dia_play
-      e%fit = [b%fit_outer, b%fit_inner]
-      e%width = [b%width_outer, b%width_inner]
-      e%shaft_od = b%shaft_od
-      e%shaft_id = b%shaft_id
-      e%bearing_od = b%bearing_od
-      e%housing_od = b%housing_od
-      if (b%bearing_type == BALL_BEARING) then
-         e%bearing_type = "BALL"
-         e%element_kind = ELEMENT_BALL
-         e%contact_angle = b%alpha0*180.0_wp/pi
-         e%cur_fac = [b%f_o, b%f_i]
-         e%end_play = b%end_play
-      else
-         e%bearing_type = "ROLLER"
-         e%element_kind = ELEMENT_ROLLER
-         e%roller_len = b%roller_length
-         call deck_collect_real(deck, "5B", "central_land_length", e%cen_land, error, if_present=.true.)
-         call deck_collect_real(deck, "5B", "crown_radius", e%crown_rad, error, if_present=.true.)
-         call deck_collect_real(deck, "5B", "corner_radius_1", e%cor_rad(1), error, if_present=.true.)
-         call deck_collect_real(deck, "5B", "corner_radius_2", e%cor_rad(2), error, if_present=.true.)
-         call deck_collect_real(deck, "5B", "outer_race_crown_radius", e%race_crown(1), error, if_present=.true.)
-         call deck_collect_real(deck, "5B", "inner_race_crown_radius", e%race_crown(2), error, if_present=.true.)
-         call deck_collect_real(deck, "5B.1", "outer_race_len1", e%outer_len(1), error, if_present=.true.)
-         call deck_collect_real(deck, "5B.1", "outer_race_len2", e%outer_len(2), error, if_present=.true.)
-         call deck_collect_real(deck, "5B.1", "inner_race_len1", e%inner_len(1), error, if_present=.true.)
-         call deck_collect_real(deck, "5B.1", "inner_race_len2", e%inner_len(2), error, if_present=.true.)
-      end if
-
-      ! cage and guide lands (Rec 7.x)
-      e%cage_od = b%cage_od
-      e%cage_id = b%cage_id
-      e%cage_width = b%cage_width
-      e%poc_cls = b%pocket_clearance
-      call deck_collect_real(deck, "7.1", "segment_cut_angle", e%seg_cut, error, if_present=.true.)
-      call deck_collect_real(deck, "7.1", "cage_cone_angle", e%cage_cone, error, if_present=.true.)
-      call deck_collect_real(deck, "7.1", "cage_outer_clearance", e%race_cls(1), error, if_present=.true.)
-      call deck_collect_real(deck, "7.1", "cage_inner_clearance", e%race_cls(2), error, if_present=.true.)
-      e%pocket_shape = INT_NOT_COMPUTED     ! kPocType: its Rec 7.0 position is not identified
-      e%n_cage_segs = INT_NOT_COMPUTED
-      call deck_collect_int(deck, "7.0", "n_guide_lands", e%n_lands, error)
-      e%n_guide = min(deck_count(deck, "7.2"), ECHO_MAX_GUIDE)
-      do k = 1, e%n_guide
-         e%guide_land(k) = k
-         call deck_collect_int(deck, "7.0", "guide_type["//achar(iachar("0") + k)//"]", e%guide_type(k), error)
-         call deck_collect_real(deck, "7.2", "guide_land_diameter", e%guide(1, k), error, k, .true.)
-         call deck_collect_real(deck, "7.2", "guide_land_clearance", e%guide(2, k), error, k, .true.)
-         call deck_collect_real(deck, "7.2", "guide_land_width", e%guide(3, k), error, k, .true.)
-         call deck_collect_real(deck, "7.2", "guide_land_position", e%guide(4, k), error, k, .true.)
-      end do
-
-      ! materials: rows = properties, columns = RE, outer, inner, cage, shaft, housing
-      do body = 1, 6
-         associate (m => b%material(body))
-            v = [m%density, m%modulus, m%poisson, m%expansion, m%conductivity, m%heat_capacity, &
-                 m%strain_limit, m%hardness, m%wear]
-         end associate
-         e%material(body, :) = v
-      end do
-      ! inertia rows: RE, cage, outer race, inner race: mass, 3 moments, 3 offsets (0: centred)
-      do k = 1, 4
-         e%inertia(:, k) = [b%mass(k), b%moments(:, k), 0.0_wp, 0.0_wp, 0.0_wp]
-         e%principal(:, k) = 0.0_wp
-      end do
-
-      ! lubrication: RE/race traction curve coefficients (Rec 10.1x fit); cage friction (Rec 10.5.x)
-      e%lubrication(2:5, 1) = b%traction_input
-      e%lubrication(2:5, 2) = b%traction_input
-      e%lubrication(6:9, 1) = b%traction
-      e%lubrication(6:9, 2) = b%traction
-      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_d", e%lubrication(9, 3), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_d", e%lubrication(9, 4), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_a", e%lubrication(6, 3), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_b", e%lubrication(7, 3), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_c", e%lubrication(8, 3), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_a", e%lubrication(6, 4), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_b", e%lubrication(7, 4), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_c", e%lubrication(8, 4), error, if_present=.true.)
-      ! "HYPOTHETICAL MODELS" column: the deck value echoed, its meaning not identified.  RE/RACE
-      ! rows: Rec 10.3 field 1 (ball deck 1.25E-07; the roller deck has no Rec 10.3 and prints
-      ! 0.0, the field's default); RE/CAGE and RACE/CAGE: field 5 of Rec 10.5.1B / 10.5.2B
-      ! (1.25E-07 in both decks; the roller's 0.0 rows rule out these for RE/RACE)
-      e%lubrication(1, 1:2) = 0.0_wp
-      call deck_collect_real(deck, "10.3", "rec10_3_value_1", e%lubrication(1, 1), error, if_present=.true.)
-      call deck_collect_real(deck, "10.3", "rec10_3_value_1", e%lubrication(1, 2), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.1B", "rec10_5_1b_value_5", e%lubrication(1, 3), error, if_present=.true.)
-      call deck_collect_real(deck, "10.5.2B", "rec10_5_2b_value_5", e%lubrication(1, 4), error, if_present=.true.)
-
-      ! fatigue parameters: the constants the life model uses (the decks carry no fatigue
-      ! records; these are the model's defaults, docs/life-model.md), same for both races
-      do k = 1, 2
-         if (b%bearing_type == BALL_BEARING) then
-            e%fatigue(:, k) = [life%b_line, life%load_exp_line, life%a_point, life%load_exp_point, &
-                               life%weibull_e_point]
-         else
-            e%fatigue(:, k) = [life%b_line, life%load_exp_line, life%a_point, life%load_exp_point, &
-                               life%weibull_e_line]
-         end if
-         e%asperity(:, k) = [life%sigma_rms, life%theta_rms, life%mu_asperity, life%tau0, life%sigma_residual, &
-                             life%matrix_m, life%contamination, life%processing_i]
-      end do
-
-      ! lubricant of the library (Rec 10.0 lubricant code); none printed for other codes
-      if (deck_has(deck, "10.0")) then
-         call deck_collect_int(deck, "10.0", "lubricant_code", code, error)
-         if (code == LUBRICANT_MIL_L_7808) e%lubricant = "MIL-L-7808"
-      end if
-
-      ! initial operating conditions
-      ! coolant type (Rec 2.4): 0 prints "No Coolant" (Appendix D echo), 1 "Lubricant"
-      ! (Table 5 of the report for the Appendix C deck, whose echo line is lost)
-      call deck_collect_int(deck, "2.4", "coolant_type", code, error)
-      select case (code)
-      case (0)
-         e%coolant_type = "No Coolant"
-      case (1)
-         e%coolant_type = "Lubricant"
-      end select
-      e%room_temp = b%temperature(1)
-      e%housing_temp = b%temperature(2)
-      e%shaft_temp = b%temperature(3)
-      e%re_temp = b%temperature(4)
-      e%cage_temp = b%temperature(5)
-      e%race_temp = b%temperature(6:7)
-      e%race_speed = [b%speed_outer, b%speed_inner]*30.0_wp/pi
-      e%misalign_y = 0.0_wp
-      e%misalign_z = 0.0_wp
-      e%n_qs = 0
-      e%trans_constraints = INT_NOT_COMPUTED
-      e%rot_constraints = INT_NOT_COMPUTED
-      call deck_collect_real(deck, "2.1", "constraining_load_fraction", e%load_fraction, error, if_present=.true.)
-      e%applied_load = b%force
-      e%rel_disp = 0.0_wp
-      e%applied_moment = b%moment
-      e%gravity = b%gravity
-      call deck_collect_real(deck, "9.5.1", "cage_center_x", e%cage_position(1), error, if_present=.true.)
-      call deck_collect_real(deck, "9.5.1", "cage_center_y", e%cage_position(2), error, if_present=.true.)
-      call deck_collect_real(deck, "9.5.1", "cage_center_z", e%cage_position(3), error, if_present=.true.)
-      call deck_collect_real(deck, "9.5.1", "cage_angle_x", e%cage_angle(1), error, if_present=.true.)
-      call deck_collect_real(deck, "9.5.1", "cage_angle_y", e%cage_angle(2), error, if_present=.true.)
-      call deck_collect_real(deck, "9.5.1", "cage_angle_z", e%cage_angle(3), error, if_present=.true.)
-      call deck_collect_real(deck, "9.5.1", "cage_whirl_ratio", e%whirl_ratio, error, if_present=.true.)
-      call deck_collect_real(deck, "9.5.1", "cage_epicyclic_ratio", e%epicyclic_ratio, error, if_present=.true.)
-
-      ! scale factors and output controls
-      call scale_factors(b%d, b%mass(1), b%force, scales, error)
-      if (allocated(error)) return
-      e%scale_length = scales(1)
-      e%scale_load = scales(2)
-      e%scale_time = scales(3)
-      call deck_collect_real(deck, "2.1", "step_min", e%step_min, error, if_present=.true.)
-      call deck_collect_real(deck, "2.1", "step_max", e%step_max, error, if_present=.true.)
-      call deck_collect_real(deck, "2.1", "step_initial", e%step_initial, error, if_present=.true.)
-      call deck_collect_real(deck, "2.1", "error_limit", e%error_limit, error, if_present=.true.)
-      e%n_steps = b%n_steps
-      call deck_collect_int(deck, "1", "data_control_1", e%data_control(1), error)
-      call deck_collect_int(deck, "1", "data_control_2", e%data_control(2), error)
-      e%data_control(3) = INT_NOT_COMPUTED
-      e%auto_plots = INT_NOT_COMPUTED
-      call deck_collect_int(deck, "1", "int_method", e%int_method, error)
-
-   end subroutine fill_echo
-
    !> Write step 0 of a ball bearing (sections 1-4) from its quasi-static start s.
-   subroutine write_ball_step0(unit, b, s)
+   subroutine write_ball_step0(unit, step, header, b, s)
       integer, intent(in) :: unit
+      integer, intent(in) :: step           !< step number (0: the quasi-static start)
+      !> step header: tau, time (s), outer and inner race rotations (rev); all 0 at step 0
+      real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
       type(ball_step0_t), intent(in) :: s
 
@@ -304,14 +120,14 @@ contains
       perf(5) = s%mounting%clearance
       perf(6) = s%power_loss                           ! energy balance: sum of the contact losses
       summary = nan
-      summary(1, 1:3) = 0.0_wp
+      summary(1, 1:3) = header(2:4)                   ! time, race rotations
       summary(1, 5) = s%power_loss
       summary(1, 4) = s%modified_life_hours            ! the report's summary shows the modified life
       summary(1, 6:8) = speed_ratios(b, sum(s%start%kinematics%orbital_speed)/n, s%cage)
       summary(1, 9) = bodies(1, 11)                    ! cage wear: 0 without a cage contact
-      call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
+      call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
-                      land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)
+                      land_no, land_code, race_cage, bodies, loads, acc, perf, [step], summary)
    end subroutine write_ball_step0
 
    !> Write step 0 of a cylindrical roller bearing (sections 1, 1a for roller 1, 2-4) from
@@ -320,8 +136,11 @@ contains
    !> loads per unit length in N/m for both races (the report's outer column appears to be
    !> scaled by the length scale D/2; pyadore prints N/m as the heading says - a known
    !> difference, see tests/test_run_golden.py).
-   subroutine write_roller_step0(unit, b, s)
+   subroutine write_roller_step0(unit, step, header, b, s)
       integer, intent(in) :: unit
+      integer, intent(in) :: step           !< step number (0: the quasi-static start)
+      !> step header: tau, time (s), outer and inner race rotations (rev); all 0 at step 0
+      real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
       type(roller_step0_t), intent(in) :: s
 
@@ -416,14 +235,14 @@ contains
       perf(5) = s%mounting%clearance
       perf(6) = s%power_loss             ! energy balance; NaN while a cage contact is not modelled
       summary = nan
-      summary(1, 1:3) = 0.0_wp
+      summary(1, 1:3) = header(2:4)                   ! time, race rotations
       summary(1, 5) = s%power_loss
       summary(1, 4) = s%basic_life_hours   ! no modified life for line contacts: the basic one, as printed
       summary(1, 6:8) = speed_ratios(b, sum(s%equilibrium%orbital_speed)/n, s%cage)
       summary(1, 9) = bodies(1, 11)      ! cage wear: NaN while a cage contact is not modelled
-      call write_step(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], b%run_id, re_no, contact, motion, traction, &
+      call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
                       thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
-                      land_no, land_code, race_cage, bodies, loads, acc, perf, [0], summary)
+                      land_no, land_code, race_cage, bodies, loads, acc, perf, [step], summary)
    end subroutine write_roller_step0
 
    !> Section 2 cage rows from the step-0 cage c: RE/cage rows (one per ball, or end 1 and
@@ -582,4 +401,4 @@ contains
       r = ([mean_orbital_speed, c%state%angular_speed, c%state%whirl_speed] - b%speed_outer)/rel
    end function speed_ratios
 
-end module adore_driver_report
+end module adore_output_step_report
