@@ -10,7 +10,8 @@ module adore_model_from_deck
    use adore_deck_deck_type, only: deck_t, deck_has, deck_count, deck_collect_real, deck_collect_int, &
                                    deck_collect_text
    use adore_deck_parser, only: read_deck
-   use adore_model_bearing, only: bearing_t, BALL_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE
+   use adore_model_bearing, only: bearing_t, BALL_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, &
+                                   TEMP_CAGE, TEMP_ELEMENT, TEMP_HOUSING, TEMP_INNER, TEMP_OUTER, TEMP_ROOM, TEMP_SHAFT
    use adore_model_checks, only: check_values
    use adore_model_clearance, only: ball_diametral_play, ball_end_play, ball_groove_diameters, &
                                     roller_race_diameters
@@ -87,13 +88,13 @@ contains
       if (allocated(error)) return
 
       ! operating conditions (Rec 2.7, 9.0, 9.1, 11)
-      call deck_collect_real(deck, "9.0", "room_temperature", b%temperature(1), error)
-      call deck_collect_real(deck, "2.7", "housing_temperature", b%temperature(2), error)
-      call deck_collect_real(deck, "2.7", "shaft_temperature", b%temperature(3), error)
-      call deck_collect_real(deck, "2.7", "rolling_element_temperature", b%temperature(4), error)
-      call deck_collect_real(deck, "2.7", "cage_temperature", b%temperature(5), error)
-      call deck_collect_real(deck, "2.7", "outer_race_temperature", b%temperature(6), error)
-      call deck_collect_real(deck, "2.7", "inner_race_temperature", b%temperature(7), error)
+      call deck_collect_real(deck, "9.0", "room_temperature", b%temperature(TEMP_ROOM), error)
+      call deck_collect_real(deck, "2.7", "housing_temperature", b%temperature(TEMP_HOUSING), error)
+      call deck_collect_real(deck, "2.7", "shaft_temperature", b%temperature(TEMP_SHAFT), error)
+      call deck_collect_real(deck, "2.7", "rolling_element_temperature", b%temperature(TEMP_ELEMENT), error)
+      call deck_collect_real(deck, "2.7", "cage_temperature", b%temperature(TEMP_CAGE), error)
+      call deck_collect_real(deck, "2.7", "outer_race_temperature", b%temperature(TEMP_OUTER), error)
+      call deck_collect_real(deck, "2.7", "inner_race_temperature", b%temperature(TEMP_INNER), error)
       call deck_collect_real(deck, "9.0", "outer_race_fit", b%fit_outer, error)
       call deck_collect_real(deck, "9.0", "inner_race_fit", b%fit_inner, error)
       call deck_collect_real(deck, "9.1.2", "inner_race_speed", b%speed_inner, error)

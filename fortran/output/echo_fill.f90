@@ -8,7 +8,8 @@ module adore_output_echo_fill
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type
    use adore_deck_deck_type, only: deck_t, deck_collect_real, deck_collect_int, deck_count, deck_has
-   use adore_model_bearing, only: bearing_t, BALL_BEARING
+   use adore_model_bearing, only: bearing_t, BALL_BEARING, &
+                                   TEMP_CAGE, TEMP_ELEMENT, TEMP_HOUSING, TEMP_INNER, TEMP_OUTER, TEMP_ROOM, TEMP_SHAFT
    use adore_model_scales, only: scale_factors
    use adore_tribology_film, only: LUBRICANT_MIL_L_7808
    use adore_life_lundberg_palmgren, only: life_params_t
@@ -157,12 +158,12 @@ contains
       case (1)
          e%coolant_type = "Lubricant"
       end select
-      e%room_temp = b%temperature(1)
-      e%housing_temp = b%temperature(2)
-      e%shaft_temp = b%temperature(3)
-      e%re_temp = b%temperature(4)
-      e%cage_temp = b%temperature(5)
-      e%race_temp = b%temperature(6:7)
+      e%room_temp = b%temperature(TEMP_ROOM)
+      e%housing_temp = b%temperature(TEMP_HOUSING)
+      e%shaft_temp = b%temperature(TEMP_SHAFT)
+      e%re_temp = b%temperature(TEMP_ELEMENT)
+      e%cage_temp = b%temperature(TEMP_CAGE)
+      e%race_temp = b%temperature([TEMP_OUTER, TEMP_INNER])
       e%race_speed = [b%speed_outer, b%speed_inner]*30.0_wp/pi
       e%misalign_y = 0.0_wp
       e%misalign_z = 0.0_wp

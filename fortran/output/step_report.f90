@@ -10,7 +10,8 @@ module adore_output_step_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi, rad_to_deg, rad_s_to_rpm
-   use adore_model_bearing, only: bearing_t
+   use adore_model_bearing, only: bearing_t, &
+                                   TEMP_CAGE, TEMP_ELEMENT, TEMP_HOUSING, TEMP_INNER, TEMP_OUTER, TEMP_SHAFT
    use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
    use adore_output_print_tables, only: write_step
    use adore_driver_ball_step0, only: ball_step0_t
@@ -110,8 +111,8 @@ contains
       acc = nan
       acc(2, 1:6) = 0.0_wp                             ! quasi-static: races at rest / in equilibrium
       acc(3, 1:6) = 0.0_wp
-      acc(2, 7) = b%temperature(6)
-      acc(3, 7) = b%temperature(7)
+      acc(2, 7) = b%temperature(TEMP_OUTER)
+      acc(3, 7) = b%temperature(TEMP_INNER)
       call initial_thermal_state(b, s%cage, thermal, loads, acc, perf)
       perf(1) = s%basic_life_hours
       perf(2) = s%modified_life_hours
@@ -225,8 +226,8 @@ contains
       call cage_tables(s%cage, cage_code, re_cage, land_code, race_cage, bodies(1, :))
       acc = nan
       acc(2:3, 1:6) = 0.0_wp
-      acc(2, 7) = b%temperature(6)
-      acc(3, 7) = b%temperature(7)
+      acc(2, 7) = b%temperature(TEMP_OUTER)
+      acc(3, 7) = b%temperature(TEMP_INNER)
       call initial_thermal_state(b, s%cage, thermal, loads, acc, perf)
       perf(1) = s%basic_life_hours       ! eqs 73, 75, 76, 102 (adore_life_roller)
       perf(2) = s%modified_life_hours    ! NaN: no Tallian life for line contacts
@@ -363,10 +364,10 @@ contains
       real(wp), intent(inout) :: thermal(:, :), loads(:, :), acc(:, :)
       real(wp), intent(out) :: perf(:)
       perf = ieee_value(1.0_wp, ieee_quiet_nan)
-      thermal(:, 10) = b%temperature(4)
-      acc(1, 7) = b%temperature(5)
-      perf(9:11) = b%temperature(2)                    ! Hsng/Bulk, Hsng/Outer, Hsng/Inner
-      perf(12:14) = b%temperature(3)                   ! Shft/Bulk, Shft/Outer, Shft/Inner
+      thermal(:, 10) = b%temperature(TEMP_ELEMENT)
+      acc(1, 7) = b%temperature(TEMP_CAGE)
+      perf(9:11) = b%temperature(TEMP_HOUSING)                    ! Hsng/Bulk, Hsng/Outer, Hsng/Inner
+      perf(12:14) = b%temperature(TEMP_SHAFT)                   ! Shft/Bulk, Shft/Outer, Shft/Inner
       if (cage_free(c)) then
          loads(1, :) = 0.0_wp
          acc(1, 1:3) = b%gravity
