@@ -29,7 +29,7 @@ module adore_driver_ball_step0
                                    THERMAL_LOADING_SCALE
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise
    use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
-   use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
+   use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start, is_loaded
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
                                            life_hours
@@ -227,6 +227,7 @@ contains
          type(ball_start_t) :: previous
          real(wp) :: change
          integer :: iter
+         logical, allocatable :: loaded(:)
 
          call current_films(films, error)
          if (allocated(error)) return
@@ -237,8 +238,10 @@ contains
             if (allocated(error)) return
             call current_films(next, error)
             if (allocated(error)) return
-            change = maxval(abs(next%h(1) - films%h(1))/max(next%h(1), tiny(1.0_wp)))
-            change = max(change, maxval(abs(next%h(2) - films%h(2))/max(next%h(2), tiny(1.0_wp))))
+            ! only the loaded balls' films set speeds (unloaded ones follow the cage)
+            loaded = is_loaded(s%start%equilibrium%q_i)
+            change = maxval(abs(next%h(1) - films%h(1))/max(next%h(1), tiny(1.0_wp)), mask=loaded)
+            change = max(change, maxval(abs(next%h(2) - films%h(2))/max(next%h(2), tiny(1.0_wp)), mask=loaded))
             films = next
             if (change <= 1.0e-5_wp) return
          end do

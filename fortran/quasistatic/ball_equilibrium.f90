@@ -361,11 +361,11 @@ contains
             jac = jac_t
             sol%iterations = sol%iterations + 1
          end do
-         call update_contacts(b, sol, change)
+         call update_contacts(b, sol, fscale, change)
          if (change <= 1.0e-13_wp) exit
       end do
       call race_residual(b, ld, sol%u, sol, res, jac)
-      call update_contacts(b, sol, change)
+      call update_contacts(b, sol, fscale, change)
       sol%race_residual = res
       if (scaled_norm(res) > 1.0e-9_wp .or. change > 1.0e-10_wp) then
          write (msg, '(a,es10.3,a)') "ball equilibrium did not converge (relative race residual ", &
@@ -473,10 +473,15 @@ contains
    end subroutine axial_start
 
    !> Contact loads, angles, deflections and stiffness at the current ball positions;
-   !> change = largest relative change of a stiffness.
-   subroutine update_contacts(b, sol, change)
+   !> change = largest change of a contact force that the stiffness update makes, relative
+   !> to the load scale fscale (N): |dK/K| Q/fscale.  A contact without load has no force to
+   !> change (the contact angle, hence K, of a ball floating in the unloaded zone is
+   !> undetermined and must not hold up the race equilibrium); a loaded contact counts in
+   !> proportion to the load it carries.
+   subroutine update_contacts(b, sol, fscale, change)
       type(ball_qs_bearing_t), intent(in) :: b
       type(ball_qs_solution_t), intent(inout) :: sol
+      real(wp), intent(in) :: fscale
       real(wp), intent(out) :: change
 
       real(wp) :: c_o(2), c_i(2), s(2, 5), a(2), e(2), k_new
@@ -496,7 +501,7 @@ contains
          sol%q_o(k) = sol%k_o(k)*max(sol%delta_o(k), 0.0_wp)**1.5_wp
          k_new = contact_stiffness(b, sol%alpha_o(k), .true., geo)
          sol%c_o(k) = hertz_contact(geo, sol%q_o(k))
-         change = max(change, abs(k_new - sol%k_o(k))/k_new)
+         change = max(change, abs(k_new - sol%k_o(k))/k_new*sol%q_o(k)/fscale)
          sol%k_o(k) = k_new
          ! inner contact
          a = [sol%x(k), sol%r(k)] - c_i
@@ -507,7 +512,7 @@ contains
          sol%q_i(k) = sol%k_i(k)*max(sol%delta_i(k), 0.0_wp)**1.5_wp
          k_new = contact_stiffness(b, sol%alpha_i(k), .false., geo)
          sol%c_i(k) = hertz_contact(geo, sol%q_i(k))
-         change = max(change, abs(k_new - sol%k_i(k))/k_new)
+         change = max(change, abs(k_new - sol%k_i(k))/k_new*sol%q_i(k)/fscale)
          sol%k_i(k) = k_new
          sol%centrifugal(k) = b%ball_mass*sol%r(k)*sol%orbital_speed(k)**2
       end do
