@@ -98,13 +98,16 @@ contains
    !> Race misalignments are prescribed (the deck's quasi-static constraint flags are not
    !> identified; both appendix echoes show prescribed misalignment), ball speeds from the
    !> start hypothesis (default: minimum contact dissipation).
-   subroutine solve_ball_step0(b, s, error, start_method)
+   subroutine solve_ball_step0(b, s, error, start_method, moment_equilibrium)
       type(bearing_t), intent(in) :: b
       type(ball_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
       !> start hypothesis (report 4.4.7): MIN_DISSIPATION (default), CONTROL_OUTER or
       !> CONTROL_INNER (race control, the report's kAngVel alternative)
       integer, intent(in), optional :: start_method
+      !> .true.: the inner race's misalignments about y and z are solved for moment
+      !> equilibrium (ADORE kFS4 = kFS5 = 0) instead of prescribed (zero)
+      logical, intent(in), optional :: moment_equilibrium
 
       type(ball_qs_bearing_t) :: qb
       type(ball_qs_load_t) :: ld
@@ -142,6 +145,7 @@ contains
       ld%moment = b%moment
       ld%gravity = b%gravity
       ld%solve_moment = .false.
+      if (present(moment_equilibrium)) ld%solve_moment = moment_equilibrium
       ld%misalignment = 0.0_wp
       s%inner_weight = b%mass(4)*b%gravity
       s%outer_weight = b%mass(3)*b%gravity

@@ -40,7 +40,7 @@ module adore_quasistatic_ball_equilibrium
 
    public :: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t
    public :: solve_ball_equilibrium, race_residual, ball_residual, contact_stiffness
-   public :: inner_groove_centre, set_groove_centres
+   public :: inner_groove_centre, set_groove_centres, mounted_axial_origin
 
    !> Bearing data needed by the quasi-static solution.
    type :: ball_qs_bearing_t
@@ -80,6 +80,9 @@ module adore_quasistatic_ball_equilibrium
       real(wp), allocatable :: centrifugal(:)      !< m r w_m**2 (N)
       type(hertz_contact_t), allocatable :: c_o(:), c_i(:)  !< contact ellipses
       real(wp) :: u(5) = 0.0_wp                    !< inner race X, Y, Z (m), theta_2, theta_3 (rad)
+      !> axial displacement of the inner race from its mounted, unloaded position (m):
+      !> u(1) - mounted_axial_origin (the print's IRace axial Mass Center Position)
+      real(wp) :: axial_displacement = 0.0_wp
       real(wp) :: inner_force(3) = 0.0_wp         !< force of the balls on the inner race (N)
       real(wp) :: inner_moment(3) = 0.0_wp        !< moment of the balls on the inner race (N m)
       real(wp) :: outer_force(3) = 0.0_wp         !< force of the balls on the outer race (N)
@@ -109,6 +112,24 @@ contains
       b%x_i = (b%f_i - 0.5_wp)*b%d*sin(alpha0)
       b%r_i = 0.5_wp*b%dm + (b%f_i - 0.5_wp)*b%d*cos(alpha0) + inner_growth
    end subroutine set_groove_centres
+
+   !> The inner race's mounted, unloaded axial position u_x (m) in the frame of u: the race
+   !> centred radially (Y = Z = 0), untilted, moved along +x until the balls just touch
+   !> both mounted raceways (groove centre distance (f_o + f_i - 1) D), i.e. the axial play
+   !> taken up towards +x:  u_x = sqrt(A**2 - (r_i - r_o)**2) - (x_i - x_o).  A bearing
+   !> whose mounted radial clearance is negative (r_i - r_o > A) has no unloaded position;
+   !> its origin is the axially centred one, x_i + u_x = x_o.  Zero for the unmounted
+   !> geometry of set_groove_centres (both races touching along alpha0).
+   pure function mounted_axial_origin(b) result(u_x)
+      type(ball_qs_bearing_t), intent(in) :: b
+      real(wp) :: u_x
+      real(wp) :: a, dr
+
+      a = (b%f_o + b%f_i - 1.0_wp)*b%d
+      dr = b%r_i - b%r_o
+      u_x = b%x_o - b%x_i
+      if (abs(dr) < a) u_x = u_x + sqrt(a*a - dr*dr)
+   end function mounted_axial_origin
 
    !> Hertz stiffness K (N/m**1.5) of a ball/race contact at contact angle alpha (rad).
    !>
@@ -374,6 +395,7 @@ contains
          return
       end if
       call race_loads(b, sol)
+      sol%axial_displacement = sol%u(1) - mounted_axial_origin(b)
 
    contains
 
