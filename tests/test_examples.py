@@ -190,3 +190,35 @@ def test_moment_equilibrium_option(tmp_path):
                     moment_equilibrium=True)
     with pytest.raises(pyadore.AdoreInputError):
         pyadore.run(deck, steps=0, out=tmp_path / "x.prt", moment_equilibrium="yes")
+
+
+def test_moment_equilibrium_on_every_front_end(tmp_path, run_exe):
+    """`adore --moment-equilibrium`, `pyadore run --moment-equilibrium` and
+    pyadore.run(moment_equilibrium=True) write the same print."""
+    import subprocess
+    import sys
+
+    deck = make_deck(tmp_path / "m.inp", 1000, 10e-6, (1000.0, 0.0, 2.0))
+    api = pyadore.run(deck, steps=0, out=tmp_path / "api.prt", moment_equilibrium=True)
+    exe = run_exe(deck, tmp_path / "exe.prt", "--steps", "0", "--moment-equilibrium")
+    assert exe.returncode == 0, exe.stderr
+    cli = subprocess.run([sys.executable, "-m", "pyadore", "run", str(deck), "-o", str(tmp_path / "cli.prt"),
+                          "--steps", "0", "--moment-equilibrium"], capture_output=True, text=True, timeout=300)
+    assert cli.returncode == 0, cli.stderr
+    assert (tmp_path / "exe.prt").read_text() == api.text == (tmp_path / "cli.prt").read_text()
+
+
+def test_unloaded_balls_follow_the_cage(tmp_path):
+    """The unloaded balls of the radial deck (no inner contact load) orbit at the mean
+    orbital speed of the loaded balls, and roll on the outer race: their outer contact
+    has no slip at its centre, so its power loss is far below the loaded balls' (docs/examples.md)."""
+    res = pyadore.run(BASE, steps=0, out=tmp_path / "r.prt")
+    t = read_print(res.print_path).steps[0].tables
+    q_i = t["re_contact"]["contact_load_inner_N"].to_numpy()
+    orbit = t["re_motion"]["orbital_velocity_rpm"].to_numpy()
+    loaded = q_i > 0.0
+    assert 0 < loaded.sum() < N_BALLS
+    cage = orbit[loaded].mean()
+    assert np.allclose(orbit[~loaded], cage, rtol=2e-4)    # 4 printed digits
+    loss = t["re_motion"]["contact_loss_outer_W"].to_numpy()
+    assert np.all(loss[~loaded] < 1e-3 * loss[loaded].min())
