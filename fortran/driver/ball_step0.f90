@@ -95,8 +95,9 @@ contains
 
    !> Solve step 0 for the ball bearing b (report sections 3.1, 3.2, 4.4.7).
    !>
-   !> Race misalignments are prescribed (the deck's quasi-static constraint flags are not
-   !> identified; both appendix echoes show prescribed misalignment), ball speeds from the
+   !> Race misalignments are prescribed zero (the deck's quasi-static constraint flags are not
+   !> identified; both appendix echoes show prescribed misalignment) unless moment_equilibrium
+   !> asks for them to be solved (docs/examples.md), ball speeds from the
    !> start hypothesis (default: minimum contact dissipation).
    subroutine solve_ball_step0(b, s, error, start_method, moment_equilibrium)
       type(bearing_t), intent(in) :: b
