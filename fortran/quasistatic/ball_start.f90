@@ -194,10 +194,13 @@ contains
 
    !> The balls whose inner race contact carries load: more than UNLOADED_FRACTION of the
    !> largest inner contact load q_i (N).  Only these have a traction that sets their speed.
+   !> With no inner contact loaded at all every ball counts as loaded (each then needs its
+   !> own kinematics; the minimum-dissipation search reports a ball without any load).
    pure function is_loaded(q_i) result(loaded)
       real(wp), intent(in) :: q_i(:)
       logical :: loaded(size(q_i))
       loaded = q_i > UNLOADED_FRACTION*maxval(q_i)
+      if (.not. any(loaded)) loaded = .true.
    end function is_loaded
 
    !> Kinematic state of the unloaded balls (the rule of docs/examples.md): an unloaded ball
