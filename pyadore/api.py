@@ -50,7 +50,8 @@ def read_traction_table(path):
     return pd.DataFrame({"slip_m_s": slip, "kappa": kappa})
 
 
-def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball_start=None) -> Result:
+def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball_start=None,
+        moment_equilibrium: bool = False) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
 
     steps: ``None`` runs as many time steps as the deck asks for, ``0`` only the
@@ -62,6 +63,11 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
     ball_start: the initial ball angular velocity (report 4.4.7), one of
     :data:`BALL_STARTS`; ``None`` for the default (minimum dissipation).  Race control
     is listed in the print's first section.  Ball decks only.
+    moment_equilibrium: ``True`` solves the inner race's misalignments about y and z for
+    moment equilibrium in the quasi-static start (ADORE kFS4 = kFS5 = 0) instead of
+    prescribing them zero (the default; the deck's Rec 3.3 flags are not identified, see
+    docs/examples.md).  Listed in the print's first section; the tilts are printed in
+    section 2 (IRace Ang Position Theta, Phi).  Ball decks only.
     Raises :class:`~pyadore.errors.AdoreInputError` for bad input and
     :class:`~pyadore.errors.AdoreEngineError` when the engine fails.
     """
@@ -83,7 +89,9 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
         table = Path(os.fspath(traction_table))
         if not str(traction_table).strip():
             raise AdoreInputError("traction table: the file name is blank")
-    _core.run_file(deck, out_path, engine_steps, table, ball_start)
+    if not isinstance(moment_equilibrium, bool):
+        raise AdoreInputError(f"moment_equilibrium must be True or False, got {moment_equilibrium!r}")
+    _core.run_file(deck, out_path, engine_steps, table, ball_start, moment_equilibrium)
     notes = []
     if engine_steps != 0 and _core.time_steps_implemented() == 0:
         notes.append("time integration is not implemented yet; the print file ends after step 0 "

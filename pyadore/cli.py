@@ -47,8 +47,11 @@ def cli() -> None:
 @click.option("--ball-start", type=click.Choice(BALL_STARTS),
               help="initial ball angular velocity (report 4.4.7): minimum contact dissipation "
                    "[default] or race control at one race (ball decks only)")
+@click.option("--moment-equilibrium", is_flag=True, default=False,
+              help="solve the inner race's misalignment for moment equilibrium (ADORE kFS4 = kFS5 = 0) "
+                   "instead of prescribing it zero (ball decks only)")
 def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | None,
-        ball_start: str | None) -> None:
+        ball_start: str | None, moment_equilibrium: bool) -> None:
     """Run DECK through the engine and write its print file."""
     from .api import run as run_deck
 
@@ -60,7 +63,8 @@ def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | 
         click.echo(f"pyadore: error: cannot create the output directory {out.parent}: {exc.strerror}", err=True)
         sys.exit(1)
     try:
-        result = run_deck(deck, steps=steps, out=out, traction_table=traction_table, ball_start=ball_start)
+        result = run_deck(deck, steps=steps, out=out, traction_table=traction_table, ball_start=ball_start,
+                            moment_equilibrium=moment_equilibrium)
     except AdoreError as exc:
         _fail(exc)
     click.echo(f"print file written: {result.print_path}")

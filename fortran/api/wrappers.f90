@@ -6,7 +6,8 @@
 !> process.  The interface seen by Python is declared in _engine.pyf.
 
 !> Run a deck and write its print file (see adore_driver_run::run_deck).
-subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start, status, message)
+subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, status, &
+                          message)
    use adore_core_error, only: error_type, ADORE_OK
    use adore_api_status, only: set_error
    use adore_driver_run, only: run_deck
@@ -16,12 +17,13 @@ subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start
    integer, intent(in) :: steps                !< -1 deck's count, 0 quasi-static only, n steps
    character(len=*), intent(in) :: traction_table  !< traction-slip table file (ADRX7); blank: none
    character(len=*), intent(in) :: ball_start      !< ball start hypothesis name (report 4.4.7); blank: default
+   integer, intent(in) :: moment_equilibrium   !< 1: moment equilibrium of the inner race (kFS4 = kFS5 = 0); 0: prescribed
    integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
    character(len=16384), intent(out) :: message !< error message, blank on success
 
    type(error_type), allocatable :: error
 
-   call run_deck(deck_path, out_path, steps, error, traction_table, ball_start)
+   call run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium /= 0)
    status = ADORE_OK
    message = ""
    if (allocated(error)) then

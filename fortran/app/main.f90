@@ -1,5 +1,5 @@
 !> The standalone `adore` program:
-!> `adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME]`.
+!> `adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME] [--moment-equilibrium]`.
 !>
 !> The only place that ends the process: exit code 0 ok, 1 bad input, 2 engine failure.
 program adore
@@ -12,11 +12,13 @@ program adore
    type(error_type), allocatable :: error
    character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start
    integer :: i, nargs, steps, stat, dot
+   logical :: moments
 
    steps = STEPS_FROM_DECK
    deck_path = ""
    table_path = ""
    ball_start = ""
+   moments = .false.
    out_path = ""
    nargs = command_argument_count()
    i = 1
@@ -40,6 +42,8 @@ program adore
       case ("--traction-table")
          call option_value(i, "--traction-table", "a file", table_path, error)
          if (allocated(error)) exit
+      case ("--moment-equilibrium")
+         moments = .true.
       case ("--ball-start")
          call option_value(i, "--ball-start", "a start hypothesis name", ball_start, error)
          if (allocated(error)) exit
@@ -72,7 +76,7 @@ program adore
             out_path = deck_path//".prt"
          end if
       end if
-      call run_deck(deck_path, out_path, steps, error, table_path, ball_start)
+      call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments)
    end if
 
    if (allocated(error)) then
@@ -116,7 +120,8 @@ contains
 
    subroutine usage(unit)
       integer, intent(in) :: unit
-      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME]"
+      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME]"// &
+         " [--moment-equilibrium]"
       write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt)"
       write (unit, "(a)") "  --steps N                -1 = as the deck says (default), 0 = quasi-static start only"
       write (unit, "(a)") "  --traction-table FILE    traction-slip table (slip m/s, coefficient per line; ADRX7)"
@@ -124,6 +129,8 @@ contains
       write (unit, "(a)") "  --ball-start NAME        initial ball angular velocity (report 4.4.7): dissipation"
       write (unit, "(a)") "                           (default, minimum contact dissipation), outer-race-control"
       write (unit, "(a)") "                           or inner-race-control (ball decks only)"
+      write (unit, "(a)") "  --moment-equilibrium     solve the inner race's misalignment for moment equilibrium"
+      write (unit, "(a)") "                           (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks)"
    end subroutine usage
 
    !> End the process with exit status `code` and nothing printed by the runtime.

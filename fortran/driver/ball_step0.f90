@@ -26,7 +26,7 @@ module adore_driver_ball_step0
    use adore_tribology_race_contact, only: PRINT_GAUSS, ehd_traction_model, wall_temperature, wall_rheology, &
                                            lubricant_film, check_ehd_film, ehd_traction, ehd_flash, law_flash, &
                                            printed_slip
-   use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start
+   use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start, is_loaded
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
                                            life_hours
@@ -85,16 +85,20 @@ contains
 
    !> Solve step 0 for the ball bearing b (report sections 3.1, 3.2, 4.4.7).
    !>
-   !> Race misalignments are prescribed (the deck's quasi-static constraint flags are not
-   !> identified; both appendix echoes show prescribed misalignment), ball speeds from the
+   !> Race misalignments are prescribed zero (the deck's quasi-static constraint flags are not
+   !> identified; both appendix echoes show prescribed misalignment) unless moment_equilibrium
+   !> asks for them to be solved (docs/examples.md), ball speeds from the
    !> start hypothesis (default: minimum contact dissipation).
-   subroutine solve_ball_step0(b, s, error, start_method)
+   subroutine solve_ball_step0(b, s, error, start_method, moment_equilibrium)
       type(bearing_t), intent(in) :: b
       type(ball_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
       !> start hypothesis (report 4.4.7): MIN_DISSIPATION (default), CONTROL_OUTER or
       !> CONTROL_INNER (race control, the report's kAngVel alternative)
       integer, intent(in), optional :: start_method
+      !> .true.: the inner race's misalignments about y and z are solved for moment
+      !> equilibrium (ADORE kFS4 = kFS5 = 0) instead of prescribed (zero)
+      logical, intent(in), optional :: moment_equilibrium
 
       type(ball_qs_bearing_t) :: qb
       type(mounted_geometry_t) :: geometry
@@ -121,6 +125,7 @@ contains
       ld%moment = b%moment
       ld%gravity = b%gravity
       ld%solve_moment = .false.
+      if (present(moment_equilibrium)) ld%solve_moment = moment_equilibrium
       ld%misalignment = 0.0_wp
       s%inner_weight = b%mass(4)*b%gravity
       s%outer_weight = b%mass(3)*b%gravity
@@ -206,6 +211,7 @@ contains
          type(ball_start_t) :: previous
          real(wp) :: change
          integer :: iter
+         logical, allocatable :: loaded(:)
 
          call current_films(films, error)
          if (allocated(error)) return
@@ -216,8 +222,10 @@ contains
             if (allocated(error)) return
             call current_films(next, error)
             if (allocated(error)) return
-            change = maxval(abs(next%h(1) - films%h(1))/max(next%h(1), tiny(1.0_wp)))
-            change = max(change, maxval(abs(next%h(2) - films%h(2))/max(next%h(2), tiny(1.0_wp))))
+            ! only the loaded balls' films set speeds (unloaded ones follow the cage)
+            loaded = is_loaded(s%start%equilibrium%q_i)
+            change = maxval(abs(next%h(1) - films%h(1))/max(next%h(1), tiny(1.0_wp)), mask=loaded)
+            change = max(change, maxval(abs(next%h(2) - films%h(2))/max(next%h(2), tiny(1.0_wp)), mask=loaded))
             films = next
             if (change <= 1.0e-5_wp) return
          end do

@@ -40,7 +40,7 @@ contains
    !>
    !> steps: STEPS_FROM_DECK (-1) for the deck's own count, 0 for the quasi-static
    !> start only, n > 0 to stop after n time steps.
-   subroutine run_deck(deck_path, out_path, steps, error, traction_table, ball_start)
+   subroutine run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium)
       character(len=*), intent(in) :: deck_path, out_path
       integer, intent(in) :: steps
       type(error_type), allocatable, intent(out) :: error
@@ -51,6 +51,10 @@ contains
       !> START_NAMES: dissipation, outer-race-control, inner-race-control); absent or
       !> blank: the default, minimum dissipation.  Ball decks only.
       character(len=*), intent(in), optional :: ball_start
+      !> .true.: moment equilibrium of the inner race in the quasi-static start (its
+      !> misalignments about y and z solved, ADORE kFS4 = kFS5 = 0) instead of the prescribed
+      !> zero misalignment; absent: .false.  Ball decks only (docs/examples.md).
+      logical, intent(in), optional :: moment_equilibrium
 
       type(deck_text_t) :: text
       type(deck_t) :: deck
@@ -61,7 +65,7 @@ contains
       character(len=:), allocatable :: part_path, table_path, start_title
       character(len=256) :: iomsg
       integer :: unit, stat, start_method
-      logical :: ok, table, start_given
+      logical :: ok, table, start_given, moments
 
       if (steps < STEPS_FROM_DECK) then
          call input_error(error, "steps must be -1 (from the deck), 0 (quasi-static start "// &
@@ -95,6 +99,13 @@ contains
          call start_method_from_name(ball_start, start_method, error)
          if (allocated(error)) return
       end if
+      moments = .false.
+      if (present(moment_equilibrium)) moments = moment_equilibrium
+      if (moments .and. bearing%bearing_type /= BALL_BEARING) then
+         call input_error(error, trim(deck_path)//": the moment equilibrium option applies to ball "// &
+                          "bearings; this deck is a cylindrical roller bearing (Rec 3.2)")
+         return
+      end if
       table = .false.
       if (present(traction_table)) table = len_trim(traction_table) > 0
       if (table) then
@@ -105,7 +116,7 @@ contains
       if (allocated(error)) return
       select case (bearing%bearing_type)
       case (BALL_BEARING)
-         call solve_ball_step0(bearing, ball0, error, start_method)
+         call solve_ball_step0(bearing, ball0, error, start_method, moments)
       case (ROLLER_BEARING)
          call solve_roller_step0(bearing, roller0, error)
       end select
@@ -124,7 +135,7 @@ contains
       if (table) table_path = trim(traction_table)
       start_title = ""
       if (start_method /= BALL_START_METHOD) start_title = trim(start_method_title(start_method))
-      call write_listing(unit, text, bearing%race_traction, table_path, start_title)
+      call write_listing(unit, text, bearing%race_traction, table_path, start_title, moments)
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start.  The time integration of later steps comes with

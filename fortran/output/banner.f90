@@ -14,15 +14,18 @@ contains
 
    !> "Input from optional user subroutines" (a traction-slip table of ADRX7, report 4.4.9,
    !> when the run has one: its file and points, slip in m/s; the ball start hypothesis
-   !> when a run option replaced the default, start_title non-blank) and the "Listing of
+   !> when a run option replaced the default, start_title non-blank; moment equilibrium of
+   !> the inner race when the run option asked for it) and the "Listing of
    !> input data records": every deck line, verbatim (ADORE prints the deck before its
    !> banner, report Appendix C/D).
-   subroutine write_listing(unit, text, traction, traction_path, start_title)
+   subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
       character(len=*), intent(in), optional :: traction_path
       character(len=*), intent(in), optional :: start_title
+      !> .true. when the run option asked for moment equilibrium of the inner race
+      logical, intent(in), optional :: moment_equilibrium
       integer :: i
 
       write (unit, "(a)") "Input from optional user subroutines"
@@ -31,6 +34,13 @@ contains
          if (len_trim(start_title) > 0) then
             write (unit, "(a)") "INITIAL BALL ANGULAR VELOCITY: "//trim(start_title)//","
             write (unit, "(a)") "  REPLACES THE MINIMUM-DISSIPATION START (REPORT 4.4.7)"
+            write (unit, "(a)") ""
+         end if
+      end if
+      if (present(moment_equilibrium)) then
+         if (moment_equilibrium) then
+            write (unit, "(a)") "QUASI-STATIC MOMENT CONSTRAINTS: MOMENT EQUILIBRIUM OF THE INNER RACE ABOUT Y AND Z"
+            write (unit, "(a)") "  (ADORE kFS4 = kFS5 = 0), REPLACES THE PRESCRIBED ZERO MISALIGNMENT"
             write (unit, "(a)") ""
          end if
       end if

@@ -93,6 +93,7 @@ contains
          thermal(:, 9) = s%contact_temp(2, :)
          ! section 2 bodies: Cage, ORace, IRace
          call race_rows(bodies, e%u(2:3), b%speed_outer, b%speed_inner)
+         bodies(3, [1, 8, 9]) = [e%axial_displacement, e%u(4)*deg, e%u(5)*deg]  ! docs/examples.md
          bodies(2, 10) = s%mounting%outer_hoop_stress  ! largest hoop stress (adore_geometry_fits)
          bodies(3, 10) = s%mounting%inner_hoop_stress
          bodies(2:3, 11) = s%race_wear                 ! Archard over each race's contacts

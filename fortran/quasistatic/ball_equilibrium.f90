@@ -41,7 +41,7 @@ module adore_quasistatic_ball_equilibrium
 
    public :: ball_qs_bearing_t, ball_qs_load_t, ball_qs_solution_t
    public :: solve_ball_equilibrium, race_residual, ball_residual, contact_stiffness
-   public :: inner_groove_centre
+   public :: inner_groove_centre, mounted_axial_origin
 
    !> Bearing data needed by the quasi-static solution.
    type :: ball_qs_bearing_t
@@ -81,6 +81,9 @@ module adore_quasistatic_ball_equilibrium
       real(wp), allocatable :: centrifugal(:)      !< m r w_m**2 (N)
       type(hertz_contact_t), allocatable :: c_o(:), c_i(:)  !< contact ellipses
       real(wp) :: u(5) = 0.0_wp                    !< inner race X, Y, Z (m), theta_2, theta_3 (rad)
+      !> axial displacement of the inner race from its mounted, unloaded position (m):
+      !> u(1) - mounted_axial_origin (the print's IRace axial Mass Center Position)
+      real(wp) :: axial_displacement = 0.0_wp
       real(wp) :: inner_force(3) = 0.0_wp         !< force of the balls on the inner race (N)
       real(wp) :: inner_moment(3) = 0.0_wp        !< moment of the balls on the inner race (N m)
       real(wp) :: outer_force(3) = 0.0_wp         !< force of the balls on the outer race (N)
@@ -92,6 +95,25 @@ module adore_quasistatic_ball_equilibrium
 
 
 contains
+
+   !> The inner race's mounted, unloaded axial position u_x (m) in the frame of u: the race
+   !> centred radially (Y = Z = 0), untilted, moved along +x until the balls just touch
+   !> both mounted raceways (groove centre distance (f_o + f_i - 1) D), i.e. the axial play
+   !> taken up towards +x:  u_x = sqrt(A**2 - (r_i - r_o)**2) - (x_i - x_o).  A bearing
+   !> whose mounted radial clearance is negative (r_i - r_o > A) has no unloaded position;
+   !> its origin is the axially centred one, x_i + u_x = x_o.  Zero for the unmounted
+   !> geometry of adore_geometry_mounted's ball_groove_centres (both races touching along
+   !> alpha0).
+   pure function mounted_axial_origin(b) result(u_x)
+      type(ball_qs_bearing_t), intent(in) :: b
+      real(wp) :: u_x
+      real(wp) :: a, dr
+
+      a = (b%f_o + b%f_i - 1.0_wp)*b%d
+      dr = b%r_i - b%r_o
+      u_x = b%x_o - b%x_i
+      if (abs(dr) < a) u_x = u_x + sqrt(a*a - dr*dr)
+   end function mounted_axial_origin
 
    !> Hertz stiffness K (N/m**1.5) of a ball/race contact at contact angle alpha (rad).
    !>
@@ -341,11 +363,11 @@ contains
             jac = jac_t
             sol%iterations = sol%iterations + 1
          end do
-         call update_contacts(b, sol, change)
+         call update_contacts(b, sol, fscale, change)
          if (change <= 1.0e-13_wp) exit
       end do
       call race_residual(b, ld, sol%u, sol, res, jac)
-      call update_contacts(b, sol, change)
+      call update_contacts(b, sol, fscale, change)
       sol%race_residual = res
       if (scaled_norm(res) > 1.0e-9_wp .or. change > 1.0e-10_wp) then
          write (msg, '(a,es10.3,a)') "ball equilibrium did not converge (relative race residual ", &
@@ -354,6 +376,7 @@ contains
          return
       end if
       call race_loads(b, sol)
+      sol%axial_displacement = sol%u(1) - mounted_axial_origin(b)
 
    contains
 
@@ -453,10 +476,15 @@ contains
    end subroutine axial_start
 
    !> Contact loads, angles, deflections and stiffness at the current ball positions;
-   !> change = largest relative change of a stiffness.
-   subroutine update_contacts(b, sol, change)
+   !> change = largest change of a contact force that the stiffness update makes, relative
+   !> to the load scale fscale (N): |dK/K| Q/fscale.  A contact without load has no force to
+   !> change (the contact angle, hence K, of a ball floating in the unloaded zone is
+   !> undetermined and must not hold up the race equilibrium); a loaded contact counts in
+   !> proportion to the load it carries.
+   subroutine update_contacts(b, sol, fscale, change)
       type(ball_qs_bearing_t), intent(in) :: b
       type(ball_qs_solution_t), intent(inout) :: sol
+      real(wp), intent(in) :: fscale
       real(wp), intent(out) :: change
 
       real(wp) :: c_o(2), c_i(2), s(2, 5), a(2), e(2), k_new
@@ -476,7 +504,7 @@ contains
          sol%q_o(k) = sol%k_o(k)*max(sol%delta_o(k), 0.0_wp)**1.5_wp
          k_new = contact_stiffness(b, sol%alpha_o(k), .true., geo)
          sol%c_o(k) = hertz_contact(geo, sol%q_o(k))
-         change = max(change, abs(k_new - sol%k_o(k))/k_new)
+         change = max(change, abs(k_new - sol%k_o(k))/k_new*sol%q_o(k)/fscale)
          sol%k_o(k) = k_new
          ! inner contact
          a = [sol%x(k), sol%r(k)] - c_i
@@ -487,7 +515,7 @@ contains
          sol%q_i(k) = sol%k_i(k)*max(sol%delta_i(k), 0.0_wp)**1.5_wp
          k_new = contact_stiffness(b, sol%alpha_i(k), .false., geo)
          sol%c_i(k) = hertz_contact(geo, sol%q_i(k))
-         change = max(change, abs(k_new - sol%k_i(k))/k_new)
+         change = max(change, abs(k_new - sol%k_i(k))/k_new*sol%q_i(k)/fscale)
          sol%k_i(k) = k_new
          sol%centrifugal(k) = b%ball_mass*sol%r(k)*sol%orbital_speed(k)**2
       end do

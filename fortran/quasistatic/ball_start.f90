@@ -4,7 +4,12 @@
 !> The centrifugal force of each ball depends on its orbital speed, and the orbital speed
 !> (race control) depends on the contact angles: solve the equilibrium for the current
 !> speeds, update the speeds from the contact angles, and repeat until the speeds change
-!> by less than 1e-12 relative (1e-7 for minimum dissipation).  The equilibrium is warm-started from the previous pass.
+!> by less than 1e-12 relative (race control) or 1e-7 (minimum dissipation, whose search
+!> locates a minimum to ~sqrt(epsilon); it also stops when the speed change moves no
+!> centrifugal force by more than MECH_TOL of the load scale).  The equilibrium is
+!> warm-started from the previous pass.  Balls whose inner contact carries no load have no
+!> traction to set their speed: they orbit with the cage, keep the spin-axis pitch of the
+!> last loaded ball and roll on the outer race (unloaded_kinematics; docs/examples.md).
 !> The report's start chooses the spin-axis pitch by minimum contact dissipation
 !> (MIN_DISSIPATION, needs the traction curve); race control (CONTROL_OUTER,
 !> CONTROL_INNER) is ADORE's kAngVel alternative.
@@ -20,7 +25,7 @@ module adore_quasistatic_ball_start
    implicit none
    private
 
-   public :: ball_start_t, solve_ball_start
+   public :: ball_start_t, solve_ball_start, is_loaded
    public :: MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER, START_NAMES, start_method_from_name, &
              start_method_title
 
@@ -29,6 +34,15 @@ module adore_quasistatic_ball_start
    character(len=*), parameter :: START_NAMES(3) = [character(len=18) :: &
                                   "dissipation", "outer-race-control", "inner-race-control"]
    integer, parameter :: START_CODES(3) = [MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER]
+   !> A ball whose inner contact load is at most this fraction of the largest inner contact
+   !> load is unloaded: its speed is set by the cage, not by its own traction
+   !> (unloaded_kinematics; docs/examples.md)
+   real(wp), parameter :: UNLOADED_FRACTION = 1.0e-6_wp
+   !> The speeds and the equilibrium are also consistent when the last speed change moves
+   !> no centrifugal force by more than this fraction of the load scale (1000 times below
+   !> the print's 5 digits): lightly loaded balls have a flat dissipation minimum, located
+   !> only to ~1e-4 of their speed, and their speeds need not settle further
+   real(wp), parameter :: MECH_TOL = 1.0e-8_wp
 
    !> The consistent start: equilibrium plus the kinematics of every ball.
    type :: ball_start_t
@@ -92,9 +106,10 @@ contains
       type(ball_start_t), intent(in), optional :: guess
 
       real(wp), allocatable :: speed(:), new_speed(:)
-      real(wp) :: d_i(2), d_o(2), change, previous, tol
+      real(wp) :: d_i(2), d_o(2), change, previous, tol, fscale, mech
       integer :: pass, k
       logical :: first
+      logical, allocatable :: loaded(:)
 
       if (control == MIN_DISSIPATION .and. .not. present(law)) then
          call engine_error(error, "ball start: minimum dissipation needs the traction law")
@@ -112,7 +127,9 @@ contains
       do pass = 1, 50
          call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
          if (allocated(error)) return
+         loaded = is_loaded(start%equilibrium%q_i)
          do k = 1, b%n_balls
+            if (.not. loaded(k)) cycle
             d_o = start%equilibrium%n_o(:, k)
             d_i = start%equilibrium%n_i(:, k)
             if (control == MIN_DISSIPATION) then
@@ -153,17 +170,78 @@ contains
             end if
             new_speed(k) = start%kinematics(k)%orbital_speed
          end do
-         change = maxval(abs(new_speed - speed))/max(maxval(abs(new_speed)), tiny(1.0_wp))
+         call unloaded_kinematics(loaded, b, start%equilibrium, w_outer, start%kinematics)
+         new_speed = start%kinematics%orbital_speed
+         change = maxval(abs(new_speed - speed), mask=loaded)/max(maxval(abs(new_speed)), tiny(1.0_wp))
+         ! what the speed change does to the mechanics: the change of the centrifugal
+         ! forces relative to the load scale of the equilibrium
+         fscale = max(norm2(ld%force), b%ball_mass*b%dm*maxval(abs(new_speed))**2, 1.0_wp)
+         ! (minimum dissipation only: race control has no search jitter and settles to 1e-12)
+         mech = huge(1.0_wp)
+         if (control == MIN_DISSIPATION) &
+            mech = maxval(b%ball_mass*start%equilibrium%r*abs(new_speed**2 - speed**2))/fscale
          speed = new_speed
          start%passes = pass
-         if (change <= tol) exit
+         if (change <= tol .or. mech <= MECH_TOL) exit
       end do
-      if (change > tol) then
+      if (change > tol .and. mech > MECH_TOL) then
          call engine_error(error, "ball start: orbital speeds and equilibrium did not become consistent")
          return
       end if
       ! final equilibrium at the converged speeds
       call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
    end subroutine solve_ball_start
+
+   !> The balls whose inner race contact carries load: more than UNLOADED_FRACTION of the
+   !> largest inner contact load q_i (N).  Only these have a traction that sets their speed.
+   !> With no inner contact loaded at all every ball counts as loaded (each then needs its
+   !> own kinematics; the minimum-dissipation search reports a ball without any load).
+   pure function is_loaded(q_i) result(loaded)
+      real(wp), intent(in) :: q_i(:)
+      logical :: loaded(size(q_i))
+      loaded = q_i > UNLOADED_FRACTION*maxval(q_i)
+      if (.not. any(loaded)) loaded = .true.
+   end function is_loaded
+
+   !> Kinematic state of the unloaded balls (the rule of docs/examples.md): an unloaded ball
+   !> is carried by the cage, so its orbital speed w_m is the cage speed, the mean orbital
+   !> speed of the loaded balls (rad/s); its spin axis keeps the pitch beta of its last
+   !> loaded state, that of the nearest loaded ball behind it in the orbit direction (ball
+   !> k - 1, k - 2, ..., cyclic: the balls orbit towards increasing azimuth); its spin speed
+   !> w_b makes it roll at the centre of the one contact that still carries load, the outer
+   !> one pressed by the centrifugal force (the rolling equation of race_control_kinematics,
+   !> j = o: the least dissipation there at the given w_m and beta).  Without an outer
+   !> contact normal (degenerate) the spin speed is held too.  Loaded balls are left as they
+   !> are; with no loaded ball nothing changes.
+   pure subroutine unloaded_kinematics(loaded, b, e, w_outer, kin)
+      logical, intent(in) :: loaded(:)
+      type(ball_qs_bearing_t), intent(in) :: b
+      type(ball_qs_solution_t), intent(in) :: e
+      real(wp), intent(in) :: w_outer
+      type(ball_kinematics_t), intent(inout) :: kin(:)
+      real(wp) :: cage, beta, arm, r_c
+      integer :: k, j, n, src
+
+      n = size(loaded)
+      if (all(loaded) .or. .not. any(loaded)) return
+      cage = sum(kin%orbital_speed, mask=loaded)/count(loaded)
+      do k = 1, n
+         if (loaded(k)) cycle
+         src = k
+         do j = 1, n - 1
+            src = modulo(k - 1 - j, n) + 1
+            if (loaded(src)) exit
+         end do
+         beta = kin(src)%pitch
+         kin(k)%orbital_speed = cage
+         kin(k)%pitch = beta
+         kin(k)%spin_speed = kin(src)%spin_speed
+         arm = 0.5_wp*b%d*(cos(beta)*e%n_o(2, k) - sin(beta)*e%n_o(1, k))
+         r_c = e%r(k) + 0.5_wp*b%d*e%n_o(2, k)
+         if (abs(arm) > 0.0_wp) kin(k)%spin_speed = (w_outer - cage)*r_c/arm
+         kin(k)%power = 0.0_wp
+         kin(k)%ok = .true.
+      end do
+   end subroutine unloaded_kinematics
 
 end module adore_quasistatic_ball_start

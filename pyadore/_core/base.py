@@ -44,18 +44,21 @@ def check(status: int, message) -> None:
 
 
 def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: int,
-             traction_table: str | os.PathLike | None = None, ball_start: str | None = None) -> None:
+             traction_table: str | os.PathLike | None = None, ball_start: str | None = None,
+             moment_equilibrium: bool = False) -> None:
     """Run the engine on a deck file and write the print file (status checked).
 
     traction_table: a traction-slip table file (ADRX7) replacing the deck's RE/race
     traction model; ``None`` for the deck's model.
     ball_start: the ball start hypothesis by name (report 4.4.7; the engine checks it);
     ``None`` for the default, minimum dissipation.
+    moment_equilibrium: solve the inner race's misalignment for moment equilibrium
+    (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks only).
     """
     table = "" if traction_table is None else os.fspath(traction_table)
     start = "" if ball_start is None else str(ball_start)
     status, message = _engine().adore_run_file(os.fspath(deck_path), os.fspath(out_path), int(steps), table,
-                                               start)
+                                               start, int(bool(moment_equilibrium)))
     check(int(status), message)
 
 
