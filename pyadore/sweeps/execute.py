@@ -186,7 +186,7 @@ def run_dask(jobs: Iterable[tuple], scheduler, on_result: Callable[[dict], None]
         token = os.urandom(4).hex()
         futures = {client.submit(run_case, *job, key=f"pyadore-sweep-{job[0]}-{token}", pure=False): job
                    for job in jobs}
-        for fut in as_completed(list(futures)):
+        for fut in as_completed(list(futures), loop=client.loop):
             job = futures[fut]
             try:
                 res = fut.result()
