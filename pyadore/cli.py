@@ -160,6 +160,10 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
                           scheduler=scheduler, ball_start=ball_start)
     except AdoreError as exc:
         _fail(exc)
+    except OSError as exc:  # the sweep folder cannot be made or written
+        click.echo(f"pyadore: error: {out_dir}: {exc.strerror or exc}"
+                   + (f" ({exc.filename})" if exc.filename else ""), err=True)
+        sys.exit(1)
     except KeyboardInterrupt:
         click.echo(f"pyadore: sweep interrupted; finished cases are kept in {out_dir}: rerun the same "
                    "command to run the rest", err=True)

@@ -197,6 +197,33 @@ def test_killed_sweep_resumes_with_nothing_lost_or_run_twice(tmp_path):
         assert read_deck(case / "deck.inp").get("9.1.2", "inner_race_speed") == row.inner_race_speed
 
 
+def test_terminated_sweep_ends_its_workers(tmp_path):
+    """SIGTERM (or Ctrl-C) stops the sweep at once: exit status 130, its worker processes
+    ended, the finished cases kept."""
+    folder = tmp_path / "s"
+    proc = subprocess.Popen([sys.executable, "-m", "pyadore", "sweep", str(ROLLER), "--vary",
+                             f"inner_race_speed={_roller_speeds(60)}", "--steps", "0", "-o", str(folder),
+                             "--workers", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 300
+    while time.monotonic() < deadline and proc.poll() is None:
+        if (folder / "events.log").exists() and len(_events(folder)) >= 3:
+            break
+        time.sleep(0.01)
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    assert "interrupted" in err and "Traceback" not in err
+    events = _events(folder)
+    assert 3 <= len(events) < 60
+    workers = {int(e[4].rsplit(":", 1)[1]) for e in events}
+    time.sleep(0.5)
+    for pid in workers:
+        with pytest.raises(ProcessLookupError):
+            os.kill(pid, 0)
+    for e in events:
+        assert (folder / "cases" / e[1] / "case.prt").exists()
+
+
 def test_dask_cluster_gives_the_local_summary(tmp_path):
     distributed = pytest.importorskip("distributed")
     grid = {"inner_race_speed": [50000, 70000], "applied_force_z": [500, 1000]}

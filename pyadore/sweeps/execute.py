@@ -83,12 +83,9 @@ class _Worker:
         self.thread.start()
 
     def _serve(self, jobs, results) -> None:
-        import queue
-
         while True:
-            try:
-                job = jobs.get_nowait()
-            except queue.Empty:
+            job = jobs.get()
+            if job is None:
                 break
             try:
                 self.proc.stdin.write(json.dumps(list(job)) + "\n")
@@ -121,25 +118,31 @@ class _Worker:
     def kill(self) -> None:
         """End the worker now (the sweep was interrupted)."""
         self.proc.kill()
+        try:
+            self.proc.wait(timeout=5)
+        except Exception:
+            pass
 
 
-def run_local(jobs: Iterable[tuple], workers: int, on_result: Callable[[dict], None]) -> None:
-    """Run ``jobs`` (tuples of :func:`run_case` arguments) on ``workers`` local worker
-    processes started once for the sweep; ``on_result`` gets each :func:`run_case` result,
-    in this thread, as it arrives.  A case whose process dies (a crash in the engine) is
-    reported as an error and a fresh process takes the next case; the others are not
-    affected."""
+def run_local(jobs: Iterable[tuple], workers: int, on_result: Callable[[dict], None], count: int) -> None:
+    """Run ``jobs`` (tuples of :func:`run_case` arguments, at most ``count``) on ``workers``
+    local worker processes started once for the sweep, when the first job comes (they boot
+    while the client prepares the next ones); ``on_result`` gets each :func:`run_case`
+    result, in this thread, as it arrives.  A case whose process dies (a crash in the
+    engine) is reported as an error and a fresh process takes the next case; the others
+    are not affected."""
     import queue
 
-    jobs = list(jobs)
-    if not jobs:
-        return
     pending: queue.Queue = queue.Queue()
-    for job in jobs:
-        pending.put(job)
     results: queue.Queue = queue.Queue()
-    pool = [_Worker(pending, results) for _ in range(max(1, min(workers, len(jobs))))]
+    pool: list[_Worker] = []
     try:
+        for job in jobs:
+            if not pool:
+                pool = [_Worker(pending, results) for _ in range(max(1, min(workers, count)))]
+            pending.put(job)
+        for _ in pool:
+            pending.put(None)  # no more jobs: each worker ends after its last one
         running = len(pool)
         while running:
             try:
@@ -157,6 +160,7 @@ def run_local(jobs: Iterable[tuple], workers: int, on_result: Callable[[dict], N
             except queue.Empty:
                 break
         for w in pool:
+            pending.put(None)
             w.kill()
         raise
 
@@ -170,7 +174,6 @@ def run_dask(jobs: Iterable[tuple], scheduler, on_result: Callable[[dict], None]
         from distributed import Client, as_completed
     except ImportError:
         raise SweepError("--scheduler needs dask.distributed: pip install 'pyadore[dask]'") from None
-    jobs = list(jobs)
     own = not isinstance(scheduler, Client)
     if own:
         try:
@@ -181,11 +184,11 @@ def run_dask(jobs: Iterable[tuple], scheduler, on_result: Callable[[dict], None]
         client = scheduler
     futures = {}
     try:
-        if not jobs:
-            return
         token = os.urandom(4).hex()
-        futures = {client.submit(run_case, *job, key=f"pyadore-sweep-{job[0]}-{token}", pure=False): job
-                   for job in jobs}
+        for job in jobs:  # submitted as the client prepares them
+            futures[client.submit(run_case, *job, key=f"pyadore-sweep-{job[0]}-{token}", pure=False)] = job
+        if not futures:
+            return
         for fut in as_completed(list(futures), loop=client.loop):
             job = futures[fut]
             try:

@@ -17,7 +17,8 @@ import difflib
 import itertools
 from dataclasses import dataclass
 
-from ..deck import Deck, DeckError, all_specs, format_deck
+from ..deck import Deck, DeckError, FieldValue, all_specs, format_deck
+from ..deck.writer import format_value
 from ..errors import AdoreInputError
 
 __all__ = ["SweepError", "Varied", "Case", "resolve_field", "parse_vary", "make_cases", "case_deck_text"]
@@ -117,6 +118,11 @@ def parse_vary(spec_text: str, deck: Deck) -> Varied:
         raise SweepError(f"--vary {spec_text!r}: expected FIELD=V1,V2,... with no empty value")
     records, field, fspec = resolve_field(name, deck)
     values = tuple(_convert(name, fspec, v) for v in texts)
+    for value in values:
+        try:
+            format_value(FieldValue(field, fspec, value))
+        except DeckError as exc:
+            raise SweepError(f"--vary {name}: {exc} (the deck's fixed columns; round the value)") from None
     if len(set(values)) != len(values):
         raise SweepError(f"--vary {name}: a value is repeated in {rest!r}")
     return Varied(name=name, records=records, field=field, unit=fspec.unit, values=values)

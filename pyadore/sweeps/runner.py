@@ -13,6 +13,7 @@ import json
 import math
 import os
 import sys
+import time
 from pathlib import Path
 
 from ..deck import DeckError, check_deck, parse_text
@@ -22,6 +23,10 @@ from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_va
 from .results import RESULT_COLUMNS, key_results
 
 __all__ = ["sweep", "read_summary"]
+
+#: While cases finish, manifest.json is rewritten at most this often (s); it is always
+#: written at the end.  Each case's own result.json is what a resume reads.
+MANIFEST_INTERVAL = 1.0
 
 
 def _vary_specs(vary) -> list[str]:
@@ -64,10 +69,11 @@ class _Sweep:
             "zip": zip_values, "steps": steps, "ball_start": ball_start,
         }
         self.entries: dict[str, dict] = {}
-        self.results: dict[str, dict] = {}
+        self._manifest_written = 0.0
 
     # -- folder -------------------------------------------------------------------------------
     def case_dir(self, case_id: str) -> Path:
+        """The folder of case ``case_id``."""
         return self.root / store.CASES / case_id
 
     def open_folder(self) -> None:
@@ -131,9 +137,12 @@ class _Sweep:
         self.entries[case.case_id] = entry
         dur = "-" if duration is None or not math.isfinite(duration) else f"{duration:.3f}s"
         store.append_event(self.root, f"{entry['finished_at']} {case.case_id} {status} {dur} {worker}".rstrip())
-        self.write_manifest()
+        if time.monotonic() - self._manifest_written > MANIFEST_INTERVAL:
+            self.write_manifest()
 
     def write_manifest(self) -> None:
+        """Write manifest.json: every case with its parameters, status, duration and error."""
+        self._manifest_written = time.monotonic()
         rows = []
         for case in self.cases:
             e = self.entries.get(case.case_id)
@@ -164,6 +173,7 @@ class _Sweep:
         return pd.DataFrame(rows, columns=columns)
 
     def write_summary(self):
+        """Write summary.csv and return its frame."""
         frame = self.summary()
         store.write_atomic(self.root / store.SUMMARY, frame.to_csv(index=False))
         return frame
@@ -246,20 +256,21 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
         if bar is not None:
             bar.update(1)
 
-    try:
-        jobs = []
+    def jobs():
         for case in todo:
             text = run.prepare(case)
             if text is None:
                 if bar is not None:
                     bar.update(1)
                 continue
-            jobs.append((case.case_id, text, steps, ball_start))
+            yield (case.case_id, text, steps, ball_start)
+
+    try:
         run.write_manifest()
         if scheduler is not None:
-            run_dask(jobs, scheduler, on_result)
+            run_dask(jobs(), scheduler, on_result)
         else:
-            run_local(jobs, workers or os.cpu_count() or 1, on_result)
+            run_local(jobs(), workers or os.cpu_count() or 1, on_result, count=len(todo))
     finally:
         if bar is not None:
             bar.close()
