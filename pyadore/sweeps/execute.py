@@ -37,7 +37,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, ball_start: str | 
     try:
         from ..api import run
         from ..errors import AdoreEngineError, AdoreInputError
-        from ..printout import read_print
+        from ..printout import PrintFormatError, read_print
         from .results import key_results
 
         with tempfile.TemporaryDirectory(prefix="pyadore-case-") as tmp:
@@ -50,6 +50,9 @@ def run_case(case_id: str, deck_text: str, steps: int | None, ball_start: str | 
                 out["notes"] = list(result.notes)
                 out["results"] = key_results(read_print(prt))
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
+            except PrintFormatError as exc:  # the engine's own print does not read: not the deck's fault
+                out.update(status="error", error=f"the case's print file does not read: {exc}", results={},
+                           print_text=None)
             except AdoreInputError as exc:
                 out.update(status="input-error", error=str(exc))
             except AdoreEngineError as exc:

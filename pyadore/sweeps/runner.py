@@ -86,7 +86,8 @@ class _Sweep:
             old = store.read_json(path)
             if old is None:
                 raise SweepError(f"{path}: unreadable; this folder does not hold a sweep pyadore can resume")
-            diffs = [k for k in ("deck_sha256", "vary", "zip", "steps", "ball_start") if old.get(k) != self.definition[k]]
+            keys = ("deck_sha256", "vary", "zip", "steps", "ball_start")
+            diffs = [k for k in keys if old.get(k) != self.definition[k]]
             if diffs:
                 what = ", ".join({"deck_sha256": "the deck's content", "vary": "the varied fields or values",
                                   "zip": "--zip", "steps": "--steps", "ball_start": "--ball-start"}[k] for k in diffs)
