@@ -34,10 +34,13 @@ def _time(fn, repeat=REPEAT):
 
 
 def main() -> int:
+    """`run_bench.py [runs] [sweep]`: the runs of the appendix decks and/or the sweep bench [default: both]."""
+    names = sys.argv[1:] or ["runs", "sweep"]
     exe = os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore"))
     rows = []
+    decks = DECKS if "runs" in names else []
     with tempfile.TemporaryDirectory() as tmp:
-        for deck in DECKS:
+        for deck in decks:
             out = Path(tmp) / (deck.stem + ".prt")
             for label, fn in [
                 ("step 0, f2py", lambda: pyadore.run(deck, steps=0, out=out)),
@@ -47,12 +50,17 @@ def main() -> int:
                 best, median = _time(fn)
                 rows.append({"deck": deck.name, "case": label, "best_s": best, "median_s": median})
         # the physics alone: Appendix C deck -> model -> mounting -> quasi-static start -> life
-        deck = DECKS[0]
-        best, median = _time(lambda: _core.ball_step0_from_deck(deck), repeat=20)
-        rows.append({"deck": deck.name, "case": "step-0 solve (ball)", "best_s": best, "median_s": median})
-    print(f"{'deck':28s} {'case':22s} {'best (s)':>10s} {'median (s)':>11s}")
+        for deck in decks[:1]:
+            best, median = _time(lambda: _core.ball_step0_from_deck(deck), repeat=20)
+            rows.append({"deck": deck.name, "case": "step-0 solve (ball)", "best_s": best, "median_s": median})
+    if "sweep" in names:
+        sys.path.insert(0, str(Path(__file__).resolve().parent))
+        from sweep_bench import bench_sweep
+
+        rows += bench_sweep()
+    print(f"{'deck':28s} {'case':30s} {'best (s)':>10s} {'median (s)':>11s}")
     for row in rows:
-        print(f"{row['deck']:28s} {row['case']:22s} {row['best_s']:10.4f} {row['median_s']:11.4f}")
+        print(f"{row['deck']:28s} {row['case']:30s} {row['best_s']:10.4f} {row['median_s']:11.4f}")
     results = ROOT / "bench" / "results"
     results.mkdir(exist_ok=True)
     (results / "latest.json").write_text(json.dumps({"python": sys.version, "rows": rows}, indent=2))

@@ -32,7 +32,7 @@ def _version() -> str:
 @click.group(context_settings=CONTEXT)
 @click.version_option(version=_version(), prog_name="pyadore", message="%(prog)s %(version)s")
 def cli() -> None:
-    """pyadore: run ADORE 5.0 decks, validate them, compare print files and plot them."""
+    """pyadore: run ADORE 5.0 decks, validate them, compare print files, plot them, sweep parameters."""
 
 
 @cli.command()
@@ -200,6 +200,111 @@ def plot(run_file: Path, set_name: str, out: Path | None, compare: Path | None, 
         click.echo(f"figures written: {out} ({len(made.figures)} pages: figure types {types})")
     else:
         click.echo(f"figures written: {len(paths)} PNG files in {out} (figure types {types})")
+
+
+@cli.command()
+@click.argument("deck", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--vary", "vary", multiple=True, required=True, metavar="FIELD=V1,V2,...",
+              help="a deck field and its values, in the deck's units (rpm for speeds, N for forces, m for "
+                   "lengths and fits, K for temperatures); FIELD as in docs/deck-format.md, REC/FIELD where "
+                   "several records have it (e.g. 8.2/density). Repeat for a grid.")
+@click.option("--zip", "zip_values", is_flag=True,
+              help="pair the i-th values of every --vary instead of the full grid")
+@click.option("--steps", type=click.IntRange(min=0),
+              help="time steps per case; 0 = the quasi-static start only [default: as the deck says]")
+@click.option("-o", "--out", "out_dir", required=True, type=click.Path(file_okay=False, path_type=Path),
+              help="sweep folder: case decks and prints, manifest.json, summary.csv; rerun to resume")
+@click.option("--workers", type=click.IntRange(min=1),
+              help="local worker processes [default: the number of CPUs]")
+@click.option("--scheduler", metavar="ADDRESS",
+              help="run the cases on the Dask distributed scheduler at ADDRESS (e.g. tcp://127.0.0.1:8786)")
+@click.option("--ball-start", type=click.Choice(BALL_STARTS),
+              help="initial ball angular velocity of every case (as for `run`)")
+def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None, out_dir: Path,
+          workers: int | None, scheduler: str | None, ball_start: str | None) -> None:
+    """Run DECK over a grid of field values, one case folder each, into a summary table.
+
+    Every case deck is the deck with the varied fields changed (the other records copied
+    verbatim), validated before it runs.  A failed case is recorded with its message and
+    never stops the others.  Rerunning the same command keeps the finished cases and runs
+    only the missing and failed ones.  Exit status 0 when every case finished, 1 when some
+    failed or the sweep could not start, 130 when interrupted.
+    """
+    import signal
+
+    from .sweeps import sweep as run_sweep
+
+    if workers is not None and scheduler is not None:
+        click.echo("pyadore: error: --workers and --scheduler exclude each other (the Dask cluster has its "
+                   "own workers)", err=True)
+        sys.exit(1)
+
+    def _terminate(signum, frame):
+        raise KeyboardInterrupt
+
+    signal.signal(signal.SIGTERM, _terminate)
+    try:
+        frame = run_sweep(deck, list(vary), out_dir, zip=zip_values, steps=steps, workers=workers,
+                          scheduler=scheduler, ball_start=ball_start)
+    except AdoreError as exc:
+        _fail(exc)
+    except OSError as exc:  # the sweep folder cannot be made or written
+        click.echo(f"pyadore: error: {out_dir}: {exc.strerror or exc}"
+                   + (f" ({exc.filename})" if exc.filename else ""), err=True)
+        sys.exit(1)
+    except KeyboardInterrupt:
+        click.echo(f"pyadore: sweep interrupted; finished cases are kept in {out_dir}: rerun the same "
+                   "command to run the rest", err=True)
+        sys.exit(130)
+    counts = frame["status"].value_counts()
+    done = int(counts.get("ok", 0))
+    click.echo(f"{len(frame)} cases: {done} finished" + "".join(
+        f", {int(n)} {status}" for status, n in counts.items() if status != "ok"))
+    failed = frame[frame["status"] != "ok"]
+    if not failed.empty:
+        import json
+
+        manifest = json.loads((out_dir / "manifest.json").read_text(encoding="utf-8"))
+        errors = {e["case"]: e["error"] for e in manifest["cases"]}
+        for case in failed["case"]:
+            first = (errors.get(case) or "").strip().splitlines()
+            click.echo(f"  {case}: {first[0] if first else 'no message'}", err=True)
+        click.echo(f"full messages: {out_dir / 'manifest.json'}", err=True)
+    click.echo(f"summary: {out_dir / 'summary.csv'}")
+    sys.exit(0 if failed.empty else 1)
+
+
+@cli.command("plot-sweep")
+@click.argument("sweep_dir", metavar="DIR", type=click.Path(file_okay=False, path_type=Path))
+@click.option("--x", "x", required=True, metavar="FIELD", help="varied parameter on the horizontal axis")
+@click.option("--y", "y", default="total_power_loss_W", show_default=True, metavar="COLUMN",
+              help="result column of summary.csv to draw")
+@click.option("--by", metavar="FIELD", help="varied parameter drawn as one line per value")
+@click.option("--where", "where", multiple=True, metavar="FIELD=VALUE",
+              help="hold another varied parameter at one value (repeat as needed)")
+@click.option("--log-y", is_flag=True, help="logarithmic result axis (e.g. for lives)")
+@click.option("-o", "--out", type=click.Path(dir_okay=False, path_type=Path),
+              help="image file to write [default: DIR/<y>_vs_<x>[_by_<by>].png]")
+def plot_sweep(sweep_dir: Path, x: str, y: str, by: str | None, where: tuple[str, ...], log_y: bool,
+               out: Path | None) -> None:
+    """Draw a result of the sweep in DIR against a varied parameter, one line per value of --by."""
+    from .sweeps import sweep_plot_command
+
+    held = {}
+    for item in where:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip() or not value.strip():
+            click.echo(f"pyadore: error: --where {item!r}: expected FIELD=VALUE", err=True)
+            sys.exit(1)
+        held[name.strip()] = value.strip()
+    try:
+        path = sweep_plot_command(sweep_dir, x=x, y=y, by=by, where=held, out=out, log_y=log_y)
+    except AdoreError as exc:
+        _fail(exc)
+    except OSError as exc:
+        click.echo(f"pyadore: error: cannot write the plot: {exc}", err=True)
+        sys.exit(1)
+    click.echo(f"plot written: {path}")
 
 
 def main() -> None:

@@ -1,0 +1,73 @@
+"""Sweep benchmark (`python bench/run_bench.py sweep`): the issue's 32-case step-0 grid of
+Appendix C on 1 and on 2 local worker processes, the speedup, and a rerun that must
+recompute nothing; then 64 fast roller cases for the sweep's own cost per case.
+
+Target: 2 workers at least 1.6x faster than 1, on 2 free cores.  On a shared machine
+the wall-time speedup also measures the other load, so the bench prints how busy the
+workers were: the sum of the cases' own run times over (workers x wall time).  Near 100 %
+the pool loses nothing to its own overhead and the speedup is what the free cores allow.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+import time
+from pathlib import Path
+
+import pyadore
+
+ROOT = Path(__file__).resolve().parent.parent
+BALL = ROOT / "decks" / "appendix_c_ball.inp"
+ROLLER = ROOT / "decks" / "appendix_d_roller.inp"
+GRID = {"inner_race_speed": [10000, 15000, 20000, 25000], "applied_force_z": [1000, 2000, 3000, 4000],
+        "applied_force_x": [3000, 4500]}
+ROLLER_GRID = {"inner_race_speed": [50000 + 500 * k for k in range(16)], "applied_force_z": [500, 750, 1000, 1250]}
+SPEEDUP_TARGET = 1.6
+
+
+def _one(deck: Path, grid: dict, workers: int) -> dict:
+    """One sweep into a fresh folder, then its rerun; wall times, case time sum, busy fraction."""
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp) / "sweep"
+        start = time.perf_counter()
+        frame = pyadore.sweep(deck, grid, folder, steps=0, workers=workers, progress=False)
+        wall = time.perf_counter() - start
+        if set(frame["status"]) != {"ok"}:
+            raise SystemExit(f"sweep bench: not every case finished: {frame['status'].value_counts().to_dict()}")
+        events = (folder / "events.log").read_text()
+        start = time.perf_counter()
+        pyadore.sweep(deck, grid, folder, steps=0, workers=workers, progress=False)
+        rerun = time.perf_counter() - start
+        if (folder / "events.log").read_text() != events:
+            raise SystemExit("sweep bench: the rerun recomputed cases")
+        cases = json.loads((folder / "manifest.json").read_text())["cases"]
+    busy = sum(c["duration_s"] for c in cases)
+    return {"n": len(frame), "wall": wall, "rerun": rerun, "busy": busy, "fraction": busy / (workers * wall)}
+
+
+def bench_sweep(workers=(1, 2)) -> list[dict]:
+    """Time the sweeps per worker count, print the speedup; returns rows for bench/results/latest.json."""
+    rows, ball = [], {}
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    for deck, grid, label in ((BALL, GRID, "ball"), (ROLLER, ROLLER_GRID, "roller")):
+        for n in workers:
+            r = _one(deck, grid, n)
+            if label == "ball":
+                ball[n] = r
+            print(f"sweep {label}: {r['n']} cases on {n} worker(s): {r['wall']:.2f} s wall, cases' own time "
+                  f"{r['busy']:.2f} s, workers busy {100 * r['fraction']:.0f} %, sweep cost "
+                  f"{1000 * (n * r['wall'] - r['busy']) / r['n']:.1f} ms a case; rerun {r['rerun']:.3f} s")
+            rows.append({"deck": deck.name, "case": f"sweep {r['n']} cases, {n} worker(s)", "best_s": r["wall"],
+                         "median_s": r["wall"]})
+            rows.append({"deck": deck.name, "case": f"sweep rerun, {n} worker(s)", "best_s": r["rerun"],
+                         "median_s": r["rerun"]})
+    if 1 in ball and 2 in ball:
+        speedup = ball[1]["wall"] / ball[2]["wall"]
+        verdict = "met" if speedup >= SPEEDUP_TARGET else "NOT met"
+        print(f"sweep: 32 ball cases, 1 worker {ball[1]['wall']:.1f} s, 2 workers {ball[2]['wall']:.1f} s: speedup "
+              f"{speedup:.2f}x (target >= {SPEEDUP_TARGET}x: {verdict}; {os.cpu_count()} CPUs, load average "
+              f"{load:.1f} before the bench)")
+        rows.append({"deck": BALL.name, "case": "sweep speedup 2 vs 1", "best_s": speedup, "median_s": speedup})
+    return rows

@@ -1,0 +1,208 @@
+"""Where the cases of a sweep run: a local process pool or a Dask distributed cluster.
+
+:func:`run_case` is the worker: it runs one case deck in a private temporary folder and
+returns the print text and key results (it never raises and writes nothing the client
+reads), so the client writes every file of the sweep folder itself, whichever backend ran
+the case.  The local pool starts its worker processes once per sweep, each a fresh
+interpreter (``python -m pyadore.sweeps.worker``, jobs and results as JSON lines on its
+pipes) that loads the engine extension itself: nothing of the client's state is copied
+by a fork (its threads, the Fortran run-time), and unlike multiprocessing's ``spawn`` the
+worker never re-imports the client's ``__main__`` (a script without a main guard, stdin).
+A worker that dies is known by the one case it was running.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import socket
+import sys
+import time
+from pathlib import Path
+from typing import Callable, Iterable
+
+__all__ = ["run_case", "run_local", "run_dask"]
+
+
+def run_case(case_id: str, deck_text: str, steps: int | None, ball_start: str | None) -> dict:
+    """Run one case deck (text) and return ``{case, status, error, notes, duration_s,
+    print_text, results, worker, tmp_deck}``.  ``status`` is ``ok``, ``input-error`` (the
+    engine refused the deck), ``engine-failure`` or ``error`` (anything else, e.g. a print
+    file that does not read).  Never raises."""
+    import tempfile
+
+    start = time.perf_counter()
+    out = {"case": case_id, "status": "ok", "error": "", "notes": [], "print_text": None, "results": {},
+           "worker": f"{socket.gethostname()}:{os.getpid()}", "tmp_deck": ""}
+    try:
+        from ..api import run
+        from ..errors import AdoreEngineError, AdoreInputError
+        from ..printout import PrintFormatError, read_print
+        from .results import key_results
+
+        with tempfile.TemporaryDirectory(prefix="pyadore-case-") as tmp:
+            deck = Path(tmp) / "deck.inp"
+            out["tmp_deck"] = str(deck)
+            deck.write_text(deck_text, encoding="utf-8")
+            prt = Path(tmp) / "case.prt"
+            try:
+                result = run(deck, steps=steps, out=prt, ball_start=ball_start)
+                out["notes"] = list(result.notes)
+                out["results"] = key_results(read_print(prt))
+                out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
+            except PrintFormatError as exc:  # the engine's own print does not read: not the deck's fault
+                out.update(status="error", error=f"the case's print file does not read: {exc}", results={},
+                           print_text=None)
+            except AdoreInputError as exc:
+                out.update(status="input-error", error=str(exc))
+            except AdoreEngineError as exc:
+                out.update(status="engine-failure", error=str(exc))
+    except Exception as exc:  # a case's failure is a row of the manifest, never the sweep's end
+        out.update(status="error", error=f"{type(exc).__name__}: {exc}", print_text=None, results={})
+    out["duration_s"] = time.perf_counter() - start
+    return out
+
+
+def _died(case_id: str, why: str) -> dict:
+    return {"case": case_id, "status": "error", "error": why, "notes": [], "print_text": None, "results": {},
+            "worker": "", "tmp_deck": "", "duration_s": float("nan")}
+
+
+def _start_process():
+    import subprocess
+
+    return subprocess.Popen([sys.executable, "-m", "pyadore.sweeps.worker"], stdin=subprocess.PIPE,
+                            stdout=subprocess.PIPE, text=True, encoding="utf-8")
+
+
+class _Worker:
+    """One local worker process (:mod:`pyadore.sweeps.worker`) and the thread feeding it."""
+
+    def __init__(self, jobs, results) -> None:
+        import threading
+
+        self.proc = _start_process()
+        self.thread = threading.Thread(target=self._serve, args=(jobs, results), daemon=True)
+        self.thread.start()
+
+    def _serve(self, jobs, results) -> None:
+        while True:
+            job = jobs.get()
+            if job is None:
+                break
+            try:
+                self.proc.stdin.write(json.dumps(list(job)) + "\n")
+                self.proc.stdin.flush()
+                line = self.proc.stdout.readline()
+            except (OSError, ValueError):
+                line = ""
+            if not line:  # the process died on this job: report it, go on with a fresh one
+                code = self.proc.poll()
+                results.put(_died(job[0], f"the worker process died while running this case (exit status "
+                                          f"{code}): a crash of the engine"))
+                self.stop()
+                self.proc = _start_process()
+                continue
+            results.put(json.loads(line))
+        results.put(None)
+        self.stop()
+
+    def stop(self) -> None:
+        """Close the worker's stdin (it exits when idle) and end it if it does not."""
+        try:
+            self.proc.stdin.close()
+        except OSError:
+            pass
+        try:
+            self.proc.wait(timeout=5)
+        except Exception:
+            self.proc.kill()
+
+    def kill(self) -> None:
+        """End the worker now (the sweep was interrupted)."""
+        self.proc.kill()
+        try:
+            self.proc.wait(timeout=5)
+        except Exception:
+            pass
+
+
+def run_local(jobs: Iterable[tuple], workers: int, on_result: Callable[[dict], None], count: int) -> None:
+    """Run ``jobs`` (tuples of :func:`run_case` arguments, at most ``count``) on ``workers``
+    local worker processes started once for the sweep, when the first job comes (they boot
+    while the client prepares the next ones); ``on_result`` gets each :func:`run_case`
+    result, in this thread, as it arrives.  A case whose process dies (a crash in the
+    engine) is reported as an error and a fresh process takes the next case; the others
+    are not affected."""
+    import queue
+
+    pending: queue.Queue = queue.Queue()
+    results: queue.Queue = queue.Queue()
+    pool: list[_Worker] = []
+    try:
+        for job in jobs:
+            if not pool:
+                pool = [_Worker(pending, results) for _ in range(max(1, min(workers, count)))]
+            pending.put(job)
+        for _ in pool:
+            pending.put(None)  # no more jobs: each worker ends after its last one
+        running = len(pool)
+        while running:
+            try:
+                res = results.get(timeout=0.5)
+            except queue.Empty:
+                continue
+            if res is None:
+                running -= 1
+                continue
+            on_result(res)
+    except BaseException:
+        while True:  # nothing more is started
+            try:
+                pending.get_nowait()
+            except queue.Empty:
+                break
+        for w in pool:
+            pending.put(None)
+            w.kill()
+        raise
+
+
+def run_dask(jobs: Iterable[tuple], scheduler, on_result: Callable[[dict], None]) -> None:
+    """Run ``jobs`` on a Dask distributed cluster: ``scheduler`` is its address
+    (``tcp://host:8786``) or a ``distributed.Client``.  The workers need pyadore installed."""
+    from .grid import SweepError
+
+    try:
+        from distributed import Client, as_completed
+    except ImportError:
+        raise SweepError("--scheduler needs dask.distributed: pip install 'pyadore[dask]'") from None
+    own = not isinstance(scheduler, Client)
+    if own:
+        try:
+            client = Client(scheduler, timeout="20s", set_as_default=False)
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise SweepError(f"--scheduler {scheduler}: cannot reach the Dask scheduler ({exc})") from None
+    else:
+        client = scheduler
+    futures = {}
+    try:
+        token = os.urandom(4).hex()
+        for job in jobs:  # submitted as the client prepares them
+            futures[client.submit(run_case, *job, key=f"pyadore-sweep-{job[0]}-{token}", pure=False)] = job
+        if not futures:
+            return
+        for fut in as_completed(list(futures), loop=client.loop):
+            job = futures[fut]
+            try:
+                res = fut.result()
+            except Exception as exc:  # e.g. KilledWorker: the case's worker died
+                res = _died(job[0], f"the Dask worker failed on this case ({type(exc).__name__}: {exc})")
+            on_result(res)
+    except BaseException:
+        if futures:
+            client.cancel(list(futures))
+        raise
+    finally:
+        if own:
+            client.close()

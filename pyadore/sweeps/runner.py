@@ -1,0 +1,290 @@
+"""``pyadore.sweep``: run one deck over a grid of field values, resumable, failures isolated.
+
+The client (this module) writes every file of the sweep folder (layout in
+:mod:`.store`); the cases run on a local process pool or a Dask cluster
+(:mod:`.execute`).  A rerun of the same sweep into the same folder keeps every finished
+case and runs only the missing and failed ones.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import os
+import sys
+import time
+from pathlib import Path
+
+from ..deck import DeckError, check_deck, parse_text
+from . import store
+from .execute import run_dask, run_local
+from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_vary
+from .results import RESULT_COLUMNS, key_results
+
+__all__ = ["sweep", "read_summary"]
+
+#: While cases finish, manifest.json is rewritten at most this often (s); it is always
+#: written at the end.  Each case's own result.json is what a resume reads.
+MANIFEST_INTERVAL = 1.0
+
+
+def _vary_specs(vary) -> list[str]:
+    if isinstance(vary, str):
+        return [vary]
+    if isinstance(vary, dict):
+        return [f"{name}=" + ",".join(str(v) for v in values) for name, values in vary.items()]
+    return [str(v) for v in vary]
+
+
+def _now() -> str:
+    from datetime import datetime, timezone
+
+    return datetime.now(timezone.utc).isoformat(timespec="milliseconds").replace("+00:00", "Z")
+
+
+def _jsonable(value):
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+class _Sweep:
+    """The state of one sweep folder while the sweep runs."""
+
+    def __init__(self, deck_path: Path, base_text: str, varied: list[Varied], cases: list[Case],
+                 out_dir: Path, steps: int | None, zip_values: bool, ball_start: str | None):
+        self.deck_path = deck_path
+        self.base_text = base_text
+        self.varied = varied
+        self.cases = cases
+        self.root = out_dir
+        self.steps = steps
+        self.ball_start = ball_start
+        self.definition = {
+            "deck": str(deck_path),
+            "deck_sha256": hashlib.sha256(base_text.encode("utf-8")).hexdigest(),
+            "vary": [{"name": v.name, "records": list(v.records), "field": v.field, "unit": v.unit,
+                      "values": list(v.values)} for v in varied],
+            "zip": zip_values, "steps": steps, "ball_start": ball_start,
+        }
+        self.entries: dict[str, dict] = {}
+        self._manifest_written = 0.0
+
+    # -- folder -------------------------------------------------------------------------------
+    def case_dir(self, case_id: str) -> Path:
+        """The folder of case ``case_id``."""
+        return self.root / store.CASES / case_id
+
+    def open_folder(self) -> None:
+        """Create the folder, or check that it holds this same sweep; clear stale temporaries."""
+        self.root.mkdir(parents=True, exist_ok=True)
+        (self.root / store.CASES).mkdir(exist_ok=True)
+        store.remove_stale_temporaries(self.root)
+        path = self.root / store.SWEEP_FILE
+        if path.exists():
+            old = store.read_json(path)
+            if old is None:
+                raise SweepError(f"{path}: unreadable; this folder does not hold a sweep pyadore can resume")
+            keys = ("deck_sha256", "vary", "zip", "steps", "ball_start")
+            diffs = [k for k in keys if old.get(k) != self.definition[k]]
+            if diffs:
+                what = ", ".join({"deck_sha256": "the deck's content", "vary": "the varied fields or values",
+                                  "zip": "--zip", "steps": "--steps", "ball_start": "--ball-start"}[k] for k in diffs)
+                raise SweepError(f"{self.root} holds another sweep (of {old.get('deck')}; it differs in {what}): "
+                                 f"rerun the same command to resume it, or give another -o DIR")
+        else:
+            store.write_atomic(path, json.dumps(self.definition, indent=1))
+
+    def load_finished(self) -> None:
+        """Take every case already finished (``ok`` with its print) from the folder."""
+        for case in self.cases:
+            cdir = self.case_dir(case.case_id)
+            saved = store.read_json(cdir / store.CASE_RESULT)
+            prt = cdir / store.CASE_PRINT
+            if saved and saved.get("status") == "ok" and saved.get("params") == case.params and prt.exists():
+                self.entries[case.case_id] = saved
+                continue
+            if saved is None and prt.exists():
+                # killed between writing the (complete, renamed) print and its result.json
+                try:
+                    from ..printout import read_print
+
+                    results = key_results(read_print(prt))
+                except Exception:
+                    continue
+                entry = self._entry(case, "ok", "", None, [], "", results)
+                entry["recovered"] = True
+                store.write_atomic(cdir / store.CASE_RESULT, json.dumps(entry, indent=1))
+                self.entries[case.case_id] = entry
+
+    # -- records ------------------------------------------------------------------------------
+    def _entry(self, case: Case, status: str, error: str, duration, notes, worker, results) -> dict:
+        return {"case": case.case_id, "params": case.params, "status": status,
+                "duration_s": _jsonable(duration), "error": error, "notes": list(notes), "worker": worker,
+                "finished_at": _now(), "results": {k: _jsonable(v) for k, v in results.items()}}
+
+    def record(self, case: Case, status: str, error: str = "", duration=None, notes=(), worker: str = "",
+               results=None, print_text: str | None = None) -> None:
+        """Write a finished case: its print (when ok), then result.json, the event and the manifest."""
+        cdir = self.case_dir(case.case_id)
+        prt = cdir / store.CASE_PRINT
+        if status == "ok":
+            store.write_atomic(prt, print_text)
+        elif prt.exists():
+            prt.unlink()  # no print from an earlier run may pose as this case's result
+        entry = self._entry(case, status, error, duration, notes, worker, results or {})
+        store.write_atomic(cdir / store.CASE_RESULT, json.dumps(entry, indent=1))
+        self.entries[case.case_id] = entry
+        dur = "-" if duration is None or not math.isfinite(duration) else f"{duration:.3f}s"
+        store.append_event(self.root, f"{entry['finished_at']} {case.case_id} {status} {dur} {worker}".rstrip())
+        if time.monotonic() - self._manifest_written > MANIFEST_INTERVAL:
+            self.write_manifest()
+
+    def write_manifest(self) -> None:
+        """Write manifest.json: every case with its parameters, status, duration and error."""
+        self._manifest_written = time.monotonic()
+        rows = []
+        for case in self.cases:
+            e = self.entries.get(case.case_id)
+            if e is None:
+                e = {"case": case.case_id, "params": case.params, "status": "pending", "duration_s": None,
+                     "error": "", "notes": [], "worker": "", "finished_at": None, "results": {}}
+            rows.append(e)
+        counts: dict[str, int] = {}
+        for e in rows:
+            counts[e["status"]] = counts.get(e["status"], 0) + 1
+        doc = {"sweep": self.definition, "updated_at": _now(), "counts": counts, "cases": rows}
+        store.write_atomic(self.root / store.MANIFEST, json.dumps(doc, indent=1))
+
+    def summary(self):
+        """The summary frame: case, the varied parameters, status, the key results."""
+        import pandas as pd
+
+        rows = []
+        for case in self.cases:
+            e = self.entries.get(case.case_id, {})
+            row = {"case": case.case_id, **case.params, "status": e.get("status", "pending")}
+            res = e.get("results") or {}
+            for col in RESULT_COLUMNS:
+                v = res.get(col)
+                row[col] = float("nan") if v is None else v
+            rows.append(row)
+        columns = ["case", *[v.name for v in self.varied], "status", *RESULT_COLUMNS]
+        return pd.DataFrame(rows, columns=columns)
+
+    def write_summary(self):
+        """Write summary.csv and return its frame."""
+        frame = self.summary()
+        store.write_atomic(self.root / store.SUMMARY, frame.to_csv(index=False))
+        return frame
+
+    # -- preparing the cases --------------------------------------------------------------------
+    def prepare(self, case: Case) -> str | None:
+        """Write the case deck and validate it; the deck text when valid, else None (the case
+        is recorded ``invalid`` with the validator's message)."""
+        cdir = self.case_dir(case.case_id)
+        cdir.mkdir(parents=True, exist_ok=True)
+        deck_file = cdir / store.CASE_DECK
+        try:
+            text = case_deck_text(self.base_text, str(self.deck_path), self.varied, case)
+        except DeckError as exc:
+            self.record(case, "invalid", error=str(exc))
+            return None
+        store.write_atomic(deck_file, text)
+        _, problems = check_deck(deck_file)
+        if problems:
+            message = "\n".join(p.format() for p in problems) + f"\n{deck_file}: {len(problems)} problem(s)"
+            self.record(case, "invalid", error=message)
+            return None
+        return text
+
+
+def _progress(total: int, enabled: bool | None):
+    try:
+        from tqdm import tqdm
+    except ImportError:  # the bar is a convenience
+        return None
+    disable = None if enabled is None else not enabled  # None: shown only on a terminal
+    return tqdm(total=total, unit="case", desc="sweep", disable=disable, file=sys.stderr, dynamic_ncols=True)
+
+
+def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, workers: int | None = None,
+          scheduler=None, ball_start: str | None = None, progress: bool | None = None):
+    """Run ``deck`` over the values of ``vary`` and return the summary as a pandas DataFrame.
+
+    vary: ``{"inner_race_speed": [10000, 20000], "applied_force_z": [1000, 2000]}`` or a list of
+    ``"FIELD=V1,V2,..."`` strings; field names as in docs/deck-format.md (``REC/FIELD`` where
+    several records of the deck have the field), values in the deck's units (rpm, N, m, K).
+    Several fields make the full grid; ``zip=True`` pairs the i-th values.
+    out_dir: the sweep folder (layout in :mod:`pyadore.sweeps.store`); rerunning the same
+    sweep into it runs only the cases that are missing or failed.
+    steps: as :func:`pyadore.run` (0 = the quasi-static start only).
+    workers: local worker processes [default: the CPU count]; scheduler: the address of a
+    Dask distributed scheduler (or a ``distributed.Client``) to run the cases on instead.
+    progress: ``None`` shows a progress bar on a terminal only.
+    Raises :class:`~pyadore.sweeps.SweepError` (an ``AdoreInputError``) when the sweep cannot
+    start; a case that fails is a row with its status and message, never an exception.
+    """
+    deck_path = Path(os.fspath(deck))
+    if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int) or steps < 0):
+        raise SweepError(f"steps must be None or an integer >= 0, got {steps!r}")
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
+        raise SweepError(f"workers must be an integer >= 1, got {workers!r}")
+    try:
+        base_text = deck_path.read_bytes().decode("utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise SweepError(f"{deck_path}: cannot read the deck ({exc})") from None
+    base, problems = parse_text(base_text, str(deck_path))
+    if problems:
+        raise DeckError(f"{deck_path}: {len(problems)} problem(s) reading the deck", problems)
+    varied = [parse_vary(text, base) for text in _vary_specs(vary)]
+    cases = make_cases(varied, zip_values=zip)
+    run = _Sweep(deck_path, base_text, varied, cases, Path(os.fspath(out_dir)), steps, zip, ball_start)
+    run.open_folder()
+    run.load_finished()
+    todo = [c for c in cases if c.case_id not in run.entries]
+    by_id = {c.case_id: c for c in cases}
+    bar = _progress(len(todo), progress)
+
+    def on_result(res: dict) -> None:
+        case = by_id[res["case"]]
+        error = res["error"]
+        if res.get("tmp_deck"):
+            error = error.replace(res["tmp_deck"], str(run.case_dir(case.case_id) / store.CASE_DECK))
+        run.record(case, res["status"], error=error, duration=res["duration_s"], notes=res["notes"],
+                   worker=res["worker"], results=res["results"], print_text=res["print_text"])
+        if bar is not None:
+            bar.update(1)
+
+    def jobs():
+        for case in todo:
+            text = run.prepare(case)
+            if text is None:
+                if bar is not None:
+                    bar.update(1)
+                continue
+            yield (case.case_id, text, steps, ball_start)
+
+    try:
+        run.write_manifest()
+        if scheduler is not None:
+            run_dask(jobs(), scheduler, on_result)
+        else:
+            run_local(jobs(), workers or os.cpu_count() or 1, on_result, count=len(todo))
+    finally:
+        if bar is not None:
+            bar.close()
+        run.write_manifest()
+        frame = run.write_summary()
+    return frame
+
+
+def read_summary(out_dir):
+    """The summary of the sweep folder ``out_dir`` (``summary.csv``) as a DataFrame."""
+    import pandas as pd
+
+    path = Path(os.fspath(out_dir)) / store.SUMMARY
+    if not path.exists():
+        raise SweepError(f"{out_dir}: no {store.SUMMARY}; is this a sweep folder (pyadore sweep ... -o DIR)?")
+    return pd.read_csv(path)

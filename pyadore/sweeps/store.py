@@ -1,0 +1,91 @@
+"""The files of a sweep folder, each written atomically (a temporary file, then a rename).
+
+Layout of ``DIR``::
+
+    sweep.json            what the sweep is (base deck hash, varied fields and values, steps)
+    manifest.json         every case: parameters, status, duration, error, when and where it ran
+    summary.csv           one row per case: varied parameters, status, key results
+    events.log            one line per finished case (appended; a rerun adds lines)
+    cases/<case>/deck.inp the case deck (base deck with the varied fields changed)
+    cases/<case>/case.prt the case's print file, present only when the run finished
+    cases/<case>/result.json  status, message and key results; a case counts as done only
+                          when this says ``ok`` and its print file is present
+
+A killed sweep leaves at most temporary files (``.<name>.tmp-*``), removed by the next run.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+
+__all__ = ["SWEEP_FILE", "MANIFEST", "SUMMARY", "EVENTS", "CASES", "CASE_DECK", "CASE_PRINT", "CASE_RESULT",
+           "write_atomic", "read_json", "remove_stale_temporaries", "append_event"]
+
+SWEEP_FILE = "sweep.json"
+MANIFEST = "manifest.json"
+SUMMARY = "summary.csv"
+EVENTS = "events.log"
+CASES = "cases"
+CASE_DECK = "deck.inp"
+CASE_PRINT = "case.prt"
+CASE_RESULT = "result.json"
+_TMP_TAG = ".tmp-"
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+#: permissions of the files written (mkstemp makes them private; these are ordinary files)
+_MODE = 0o666 & ~_umask()
+
+
+def write_atomic(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` so that ``path`` is either the old file or the whole new one."""
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}{_TMP_TAG}", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+            fh.write(text)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.chmod(tmp, _MODE)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def read_json(path: Path):
+    """The JSON content of ``path``, or None when it is absent or unreadable."""
+    try:
+        return json.loads(Path(path).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+
+
+def remove_stale_temporaries(root: Path) -> int:
+    """Remove the temporary files a killed sweep left under ``root``; returns how many."""
+    n = 0
+    for tmp in Path(root).rglob(f".*{_TMP_TAG}*"):
+        try:
+            tmp.unlink()
+            n += 1
+        except OSError:
+            pass
+    return n
+
+
+def append_event(root: Path, line: str) -> None:
+    """Append one line to ``events.log`` (one write call, so a line is whole or absent
+    unless the process dies within that call)."""
+    with open(Path(root) / EVENTS, "a", encoding="utf-8") as fh:
+        fh.write(line.rstrip("\n") + "\n")

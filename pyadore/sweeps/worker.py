@@ -1,0 +1,37 @@
+"""A local sweep worker process: ``python -m pyadore.sweeps.worker``.
+
+It reads one job a line on stdin (JSON: the arguments of
+:func:`pyadore.sweeps.execute.run_case`) and writes one result a line (JSON) on its
+protocol channel, until stdin closes.  The channel is the original stdout; fd 1 is
+pointed at stderr so that nothing else (a stray print) can mix into it.  A fresh
+interpreter: nothing of the client's state (threads, its ``__main__``) is inherited.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import sys
+
+
+def main() -> int:
+    """Serve jobs until stdin closes; exit status 0."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the client ends its workers on Ctrl-C
+    channel = os.fdopen(os.dup(1), "w", encoding="utf-8")
+    os.dup2(2, 1)
+    sys.stdout = sys.stderr
+    from .execute import run_case
+
+    for line in sys.stdin:
+        if not line.strip():
+            continue
+        job = json.loads(line)
+        result = run_case(*job)
+        channel.write(json.dumps(result) + "\n")
+        channel.flush()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,285 @@
+"""Parametric sweeps (pyadore.sweep, `pyadore sweep`, `pyadore plot-sweep`).
+
+Kept small: a 2 x 2 ball grid at step 0 (about 3 s a case) for the physics, resume and
+plot checks, and the roller deck (a few hundredths of a second a case) for the rest.
+The 32-case grid of the issue and the 1-vs-2-worker timing are in bench/run_bench.py.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+import pyadore
+from pyadore.deck import read_deck
+from pyadore.printout import read_print
+from pyadore.sweeps import RESULT_COLUMNS, SweepError
+from pyadore.sweeps.grid import make_cases, parse_vary
+
+ROOT = Path(__file__).resolve().parent.parent
+BALL = ROOT / "decks" / "appendix_c_ball.inp"
+ROLLER = ROOT / "decks" / "appendix_d_roller.inp"
+BALL_GRID = {"inner_race_speed": [10000, 20000], "applied_force_z": [1000, 3000]}
+
+
+def _cli(*args, **kw):
+    return subprocess.run([sys.executable, "-m", "pyadore", *map(str, args)], capture_output=True, text=True,
+                          timeout=600, **kw)
+
+
+def _events(folder: Path) -> list[list[str]]:
+    return [line.split() for line in (folder / "events.log").read_text().splitlines() if line.strip()]
+
+
+@pytest.fixture(scope="module")
+def ball_sweep(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("ball_sweep") / "sweep"
+    frame = pyadore.sweep(BALL, BALL_GRID, folder, steps=0, workers=2, progress=False)
+    return folder, frame
+
+
+def test_ball_grid_physics(ball_sweep):
+    """Step 0 of Appendix C: power loss rises with shaft speed, life falls with load."""
+    _, frame = ball_sweep
+    assert list(frame.columns) == ["case", "inner_race_speed", "applied_force_z", "status", *RESULT_COLUMNS]
+    assert len(frame) == 4
+    assert list(frame["status"]) == ["ok"] * 4
+    for _, part in frame.groupby("applied_force_z"):
+        part = part.sort_values("inner_race_speed")
+        assert part["total_power_loss_W"].is_monotonic_increasing and part["total_power_loss_W"].nunique() == 2
+    for speed, part in frame.groupby("inner_race_speed"):
+        part = part.sort_values("applied_force_z")
+        for col in ("basic_life_h", "modified_life_h"):
+            assert part[col].iloc[1] < part[col].iloc[0], (speed, col)
+        assert part["max_contact_load_N"].iloc[1] > part["max_contact_load_N"].iloc[0]
+        assert part["max_contact_stress_Pa"].iloc[1] > part["max_contact_stress_Pa"].iloc[0]
+    assert frame["cage_speed_ratio"].between(0.3, 0.6).all()
+
+
+def test_ball_results_are_the_prints(ball_sweep):
+    """The summary row of a case is its own print's values, and the case deck differs from
+    the base only in the varied records (the others verbatim)."""
+    folder, frame = ball_sweep
+    row = frame.iloc[3]
+    case = folder / "cases" / row["case"]
+    step = read_print(case / "case.prt").step(0)
+    perf = step.table("performance").loc["bearing"]
+    assert row["total_power_loss_W"] == perf["total_power_loss_W"]
+    assert row["basic_life_h"] == perf["basic_fatigue_life_hours"]
+    contact = step.table("re_contact")
+    largest = max(contact["contact_load_outer_N"].max(), contact["contact_load_inner_N"].max())
+    assert row["max_contact_load_N"] == largest
+    base = BALL.read_text().splitlines()
+    mine = (case / "deck.inp").read_text().splitlines()
+    changed = sorted(b.split()[1] for a, b in zip(base, mine) if a != b)
+    deck, base_deck = read_deck(case / "deck.inp"), read_deck(BALL)
+    differ = sorted(r.rid for r, b in zip(deck.records, base_deck.records) if r.values() != b.values())
+    assert len(base) == len(mine) and changed == differ and set(differ) <= {"9.1.1", "9.1.2"} and differ
+    assert deck.get("9.1.2", "inner_race_speed") == row["inner_race_speed"] == 20000
+    assert deck.get("9.1.1", "applied_force_z") == row["applied_force_z"] == 3000
+    on_disk = pd.read_csv(folder / "summary.csv")
+    pd.testing.assert_frame_equal(on_disk, frame, check_dtype=False)
+    manifest = json.loads((folder / "manifest.json").read_text())
+    assert [e["status"] for e in manifest["cases"]] == ["ok"] * 4
+    assert all(e["duration_s"] > 0 and e["error"] == "" for e in manifest["cases"])
+
+
+def test_rerun_recomputes_nothing(ball_sweep):
+    folder, frame = ball_sweep
+    def files():
+        return {p: (p.read_text(), p.stat().st_mtime_ns) for p in (folder / "cases").rglob("*") if p.is_file()}
+
+    before = files()
+    events = _events(folder)
+    again = pyadore.sweep(BALL, BALL_GRID, folder, steps=0, workers=2, progress=False)
+    pd.testing.assert_frame_equal(again, frame)
+    assert _events(folder) == events  # no case finished again
+    assert files() == before  # not one case file rewritten
+
+
+def test_another_sweep_in_the_same_folder_is_refused(ball_sweep):
+    folder, _ = ball_sweep
+    with pytest.raises(SweepError, match="holds another sweep.*varied fields or values"):
+        pyadore.sweep(BALL, {"inner_race_speed": [10000, 25000]}, folder, steps=0, progress=False)
+    with pytest.raises(SweepError, match="--steps"):
+        pyadore.sweep(BALL, BALL_GRID, folder, steps=1, progress=False)
+
+
+def test_plot_sweep(ball_sweep, tmp_path):
+    from pyadore.plots.sweep import plot_sweep
+
+    folder, frame = ball_sweep
+    fig = plot_sweep(folder, x="inner_race_speed", y="total_power_loss_W", by="applied_force_z")
+    ax = fig.axes[0]
+    assert [line.get_label() for line in ax.lines] == ["applied_force_z = 1000 N", "applied_force_z = 3000 N"]
+    low = frame[frame["applied_force_z"] == 1000].sort_values("inner_race_speed")
+    assert list(ax.lines[0].get_xdata()) == list(low["inner_race_speed"])
+    assert list(ax.lines[0].get_ydata()) == list(low["total_power_loss_W"])
+    assert ax.get_xlabel() == "inner_race_speed (rpm)" and ax.get_ylabel() == "Total power loss (W)"
+    with pytest.raises(SweepError, match="also varies applied_force_z"):
+        plot_sweep(folder, x="inner_race_speed", y="total_power_loss_W")
+    with pytest.raises(SweepError, match="choose one of inner_race_speed, applied_force_z"):
+        plot_sweep(folder, x="speed", y="total_power_loss_W")
+    out = tmp_path / "life.png"
+    proc = _cli("plot-sweep", folder, "--x", "applied_force_z", "--y", "basic_life_h",
+                "--where", "inner_race_speed=20000", "-o", out)
+    assert proc.returncode == 0, proc.stderr
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_invalid_and_refused_cases_are_reported(tmp_path):
+    """An out-of-range value is reported with validate's message, a deck the engine refuses
+    with the engine's; the other cases run."""
+    folder = tmp_path / "s"
+    proc = _cli("sweep", ROLLER, "--vary", "applied_force_z=0,1000", "--vary", "constraining_load_fraction=0.5,2",
+                "--steps", "0", "-o", folder, "--workers", "2")
+    assert proc.returncode == 1, proc.stderr
+    assert "Traceback" not in proc.stderr
+    frame = pd.read_csv(folder / "summary.csv")
+    assert list(frame["status"]) == ["input-error", "invalid", "ok", "invalid"]
+    manifest = {e["case"]: e for e in json.loads((folder / "manifest.json").read_text())["cases"]}
+    for case in ("case_0002", "case_0004"):
+        deck = folder / "cases" / case / "deck.inp"
+        validate = _cli("validate", deck)
+        assert validate.returncode == 1
+        assert manifest[case]["error"].strip() == validate.stderr.strip()
+        assert "constraining_load_fraction = 2: expected [0, 1]" in manifest[case]["error"]
+        assert not (folder / "cases" / case / "case.prt").exists()
+    refused = manifest["case_0001"]["error"]
+    assert "expected a non-zero applied force" in refused
+    assert str(folder / "cases" / "case_0001" / "deck.inp") in refused  # the case's deck, not the worker's copy
+    assert manifest["case_0003"]["status"] == "ok" and frame.loc[2, "basic_life_h"] > 0
+    assert "case_0002: " in proc.stderr and "4 cases: 1 finished" in proc.stdout
+
+
+def _roller_speeds(n: int) -> str:
+    return ",".join(str(50000 + 250 * k) for k in range(n))
+
+
+def test_killed_sweep_resumes_with_nothing_lost_or_run_twice(tmp_path):
+    folder = tmp_path / "s"
+    n = 60
+    args = ["sweep", ROLLER, "--vary", f"inner_race_speed={_roller_speeds(n)}", "--steps", "0", "-o", folder,
+            "--workers", "1"]
+    proc = subprocess.Popen([sys.executable, "-m", "pyadore", *map(str, args)], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 300
+        while time.monotonic() < deadline and proc.poll() is None:
+            if (folder / "events.log").exists() and len(_events(folder)) >= 5:
+                break
+            time.sleep(0.01)
+    finally:
+        os.killpg(proc.pid, signal.SIGKILL)  # the sweep and its worker: no clean-up at all
+        proc.wait()
+    finished_before = {e[1]: e for e in _events(folder)}
+    assert 5 <= len(finished_before) < n, "the sweep was not stopped midway"
+    kept = {c: (folder / "cases" / c / "result.json").read_text() for c in finished_before}
+
+    rerun = _cli(*args)
+    assert rerun.returncode == 0, rerun.stderr
+    frame = pd.read_csv(folder / "summary.csv")
+    assert len(frame) == n and set(frame["status"]) == {"ok"}
+    finished = [e[1] for e in _events(folder)]
+    assert sorted(finished) == sorted(frame["case"]), "every case finished exactly once"
+    for case, text in kept.items():
+        assert (folder / "cases" / case / "result.json").read_text() == text
+    assert not [p for p in folder.rglob("*") if ".tmp-" in p.name], "no temporary file left"
+    for row in frame.itertuples():
+        case = folder / "cases" / row.case
+        assert read_print(case / "case.prt").step_numbers == [0]
+        assert read_deck(case / "deck.inp").get("9.1.2", "inner_race_speed") == row.inner_race_speed
+
+
+def test_terminated_sweep_ends_its_workers(tmp_path):
+    """SIGTERM (or Ctrl-C) stops the sweep at once: exit status 130, its worker processes
+    ended, the finished cases kept."""
+    folder = tmp_path / "s"
+    proc = subprocess.Popen([sys.executable, "-m", "pyadore", "sweep", str(ROLLER), "--vary",
+                             f"inner_race_speed={_roller_speeds(60)}", "--steps", "0", "-o", str(folder),
+                             "--workers", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 300
+    while time.monotonic() < deadline and proc.poll() is None:
+        if (folder / "events.log").exists() and len(_events(folder)) >= 3:
+            break
+        time.sleep(0.01)
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    assert "interrupted" in err and "Traceback" not in err
+    events = _events(folder)
+    assert 3 <= len(events) < 60
+    workers = {int(e[4].rsplit(":", 1)[1]) for e in events}
+    time.sleep(0.5)
+    for pid in workers:
+        with pytest.raises(ProcessLookupError):
+            os.kill(pid, 0)
+    for e in events:
+        assert (folder / "cases" / e[1] / "case.prt").exists()
+
+
+def test_dask_cluster_gives_the_local_summary(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    grid = {"inner_race_speed": [50000, 70000], "applied_force_z": [500, 1000]}
+    local = pyadore.sweep(ROLLER, grid, tmp_path / "local", steps=0, workers=2, progress=False)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False,
+                                  dashboard_address=None) as cluster:
+        remote = pyadore.sweep(ROLLER, grid, tmp_path / "dask", steps=0, scheduler=cluster.scheduler_address,
+                               progress=False)
+    assert list(remote["status"]) == ["ok"] * 4
+    pd.testing.assert_frame_equal(remote, local)
+    for case in local["case"]:
+        a = (tmp_path / "local" / "cases" / case / "case.prt").read_text()
+        b = (tmp_path / "dask" / "cases" / case / "case.prt").read_text()
+        assert a == b
+    assert (tmp_path / "dask" / "summary.csv").read_text() == (tmp_path / "local" / "summary.csv").read_text()
+
+
+def test_field_names_and_values():
+    deck = read_deck(ROLLER)
+    v = parse_vary("inner_race_speed=1e4,2.5E4", deck)
+    assert v.records == ("9.1.2",) and v.unit == "rpm" and v.values == (10000.0, 25000.0)
+    assert parse_vary("9.1.2/inner_race_speed=1", deck).records == ("9.1.2",)
+    assert parse_vary("7.2.n/guide_land_clearance=1e-4", deck).records == ("7.2.1", "7.2.2")
+    assert parse_vary("7.2.2/guide_land_clearance=1e-4", deck).records == ("7.2.2",)
+    with pytest.raises(SweepError, match="did you mean inner_race_speed"):
+        parse_vary("inner_race_sped=1", deck)
+    with pytest.raises(SweepError, match="several records.*7.2.1/guide_land_clearance, 7.2.2/guide_land_clearance"):
+        parse_vary("guide_land_clearance=1e-4", deck)
+    with pytest.raises(SweepError, match="Rec 5A, which this deck"):
+        parse_vary("ball_diameter=1", deck)
+    with pytest.raises(SweepError, match="is not a number"):
+        parse_vary("applied_force_z=10 kN", deck)
+    with pytest.raises(SweepError, match="FIELD=V1,V2"):
+        parse_vary("applied_force_z", deck)
+
+
+def test_grid_and_zip():
+    deck = read_deck(ROLLER)
+    a = parse_vary("inner_race_speed=1,2,3", deck)
+    b = parse_vary("applied_force_z=10,20,30", deck)
+    grid = make_cases([a, b])
+    assert len(grid) == 9 and grid[1].params == {"inner_race_speed": 1.0, "applied_force_z": 20.0}
+    zipped = make_cases([a, b], zip_values=True)
+    assert [c.params["applied_force_z"] for c in zipped] == [10.0, 20.0, 30.0]
+    assert [c.case_id for c in zipped] == ["case_0001", "case_0002", "case_0003"]
+    with pytest.raises(SweepError, match="same number of values"):
+        make_cases([a, parse_vary("applied_force_z=1,2", deck)], zip_values=True)
+
+
+def test_cli_errors_have_no_traceback(tmp_path):
+    proc = _cli("sweep", ROLLER, "--vary", "speed=1,2", "-o", tmp_path / "x")
+    assert proc.returncode == 1 and "Traceback" not in proc.stderr
+    assert "--vary speed: no deck field of that name" in proc.stderr
+    proc = _cli("sweep", ROLLER, "--vary", "inner_race_speed=1,2", "-o", tmp_path / "x", "--workers", "2",
+                "--scheduler", "tcp://127.0.0.1:1")
+    assert proc.returncode == 1 and "exclude each other" in proc.stderr
+
