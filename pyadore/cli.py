@@ -288,7 +288,7 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
 def plot_sweep(sweep_dir: Path, x: str, y: str, by: str | None, where: tuple[str, ...], log_y: bool,
                out: Path | None) -> None:
     """Draw a result of the sweep in DIR against a varied parameter, one line per value of --by."""
-    from .sweeps import sweep_plot_command
+    from .plots.sweep import sweep_plot_command
 
     held = {}
     for item in where:

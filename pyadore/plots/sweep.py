@@ -12,7 +12,7 @@ import math
 import os
 from pathlib import Path
 
-__all__ = ["plot_sweep", "RESULT_TITLES"]
+__all__ = ["plot_sweep", "sweep_plot_command", "RESULT_TITLES"]
 
 #: Axis titles of the summary's result columns (the report's words, SI units).
 RESULT_TITLES = {
@@ -141,3 +141,17 @@ def _is_close(a: float, b) -> bool:
         return math.isclose(float(a), float(b), rel_tol=1e-9, abs_tol=0.0)
     except (TypeError, ValueError):
         return False
+
+
+def sweep_plot_command(out_dir, x: str, y: str, by: str | None = None, where: dict | None = None, out=None,
+                       log_y: bool = False):
+    """``pyadore plot-sweep DIR``: draw result ``y`` of the sweep in ``out_dir`` against the
+    varied parameter ``x``, one line per value of ``by`` (the others held by ``where``);
+    save it to ``out`` [default: ``DIR/<y>_vs_<x>[_by_<by>].png``] and return the path."""
+    fig = plot_sweep(out_dir, x=x, y=y, by=by, where=where, log_y=log_y)
+    if out is None:
+        stem = f"{y}_vs_{x}" + (f"_by_{by}" if by else "")
+        out = Path(out_dir) / (stem.replace("/", "_") + ".png")  # a REC/FIELD name in a file name
+    out = Path(out)
+    fig.savefig(out, dpi=120)
+    return out
