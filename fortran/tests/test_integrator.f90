@@ -243,7 +243,8 @@ contains
       type(decay_t) :: f
       type(error_type), allocatable :: error
       real(wp) :: t, y(1), err
-      integer :: m, method(2) = [INT_METHOD_DP54, INT_METHOD_BS32]
+      integer, parameter :: method(2) = [INT_METHOD_DP54, INT_METHOD_BS32]
+      integer :: m
 
       do m = 1, 2
          call it%init(1, settings_of(method(m), 1.0e-8_wp), error)
@@ -264,7 +265,8 @@ contains
    !> Fixed steps (h_min = h_max = h, the error test out of the way): the global error at t = 2 of
    !> y' = y cos t falls as h**p, p = 5 (DP5) and 3 (BS3); slope from h = 0.1 -> 0.05 -> 0.025.
    subroutine test_order_of_convergence()
-      integer :: m, j, method(2) = [INT_METHOD_DP54, INT_METHOD_BS32], expected(2) = [5, 3]
+      integer, parameter :: method(2) = [INT_METHOD_DP54, INT_METHOD_BS32], expected(2) = [5, 3]
+      integer :: m, j
       real(wp) :: e(4), slope(3)
       character(len=120) :: line
 
@@ -372,8 +374,9 @@ contains
       type(kepler_t) :: f
       type(error_type), allocatable :: error
       real(wp) :: t, y(4), y0(4), ecc, e0, l0, e1, l1, back
-      integer :: method(2) = [INT_METHOD_DP54, INT_METHOD_BS32], m
-      real(wp) :: tol(2) = [1.0e-10_wp, 1.0e-9_wp]
+      integer, parameter :: method(2) = [INT_METHOD_DP54, INT_METHOD_BS32]
+      real(wp), parameter :: tol(2) = [1.0e-10_wp, 1.0e-9_wp]
+      integer :: m
 
       ecc = 0.6_wp
       y0 = [1.0_wp - ecc, 0.0_wp, 0.0_wp, sqrt((1.0_wp + ecc)/(1.0_wp - ecc))]
