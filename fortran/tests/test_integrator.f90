@@ -7,7 +7,7 @@ module integrator_test_problems
    implicit none
    private
 
-   public :: decay_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
+   public :: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
 
    !> y' = -lambda y (exact: y0 exp(-lambda t)).
    type, extends(derivative_t) :: decay_t
@@ -15,6 +15,13 @@ module integrator_test_problems
    contains
       procedure :: eval => decay_eval
    end type decay_t
+
+   !> y_i' = -lambda_i y_i, two unknowns decaying at different rates.
+   type, extends(derivative_t) :: two_rates_t
+      real(wp) :: lambda(2) = [10.0_wp, 1.0_wp]
+   contains
+      procedure :: eval => two_rates_eval
+   end type two_rates_t
 
    !> y' = y cos t (exact: y0 exp(sin t)); non-autonomous, tests the stage times.
    type, extends(derivative_t) :: growth_t
@@ -75,6 +82,16 @@ contains
       dydt = -self%lambda*y
       flag = DERIV_OK
    end subroutine decay_eval
+
+   subroutine two_rates_eval(self, t, y, dydt, flag)
+      class(two_rates_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      dydt = -self%lambda*y
+      flag = DERIV_OK
+   end subroutine two_rates_eval
 
    subroutine growth_eval(self, t, y, dydt, flag)
       class(growth_t), intent(inout) :: self
@@ -166,7 +183,7 @@ program test_integrator
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR, ADORE_ENGINE_ERROR
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, derivative_t, &
       INT_METHOD_BS32, INT_METHOD_DP54
-   use integrator_test_problems, only: decay_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
+   use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
    implicit none
 
    call test_settings_errors()
@@ -176,6 +193,7 @@ program test_integrator
    call test_oscillator_many_periods()
    call test_kepler_orbit()
    call test_rigid_body()
+   call test_mixed_scales()
    call test_statistics_and_fsal()
    call test_rejection_by_derivative()
    call test_minimum_step()
@@ -422,6 +440,39 @@ contains
       call check(abs(e1/e0 - 1) < 1.0e-7_wp .and. abs(l1/l0 - 1) < 1.0e-7_wp, &
                  "rigid body: energy and angular momentum conserved")
    end subroutine test_rigid_body
+
+   !> Unknowns of very different size (a 1e-5 m displacement beside a 1e3 rad/s speed, as in the
+   !> bearing state): with the caller's scale each is held to the error limit relative to its
+   !> own size; with the default (scale 1, relative weight 1) the small, fast unknown is held
+   !> only to 1e-6 absolute, a tenth of its size.  Errors relative to y(0), at t = 0.2 (before the
+   !> fast decay e**(-10 t) damps the early errors away).
+   subroutine test_mixed_scales()
+      type(integrator_t) :: it
+      type(two_rates_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(2), exact(2), err_scaled(2), err_default(2)
+      real(wp), parameter :: y0(2) = [1.0e-5_wp, 1.0e3_wp], t_end = 0.2_wp
+
+      exact = y0*exp(-f%lambda*t_end)
+      s = settings_of(INT_METHOD_BS32, 1.0e-6_wp)
+      s%rel_weight = 0.0_wp
+      call it%init(2, s, error, scale=y0)
+      t = 0.0_wp
+      y = y0
+      call it%advance(f, t, y, t_end, error)
+      err_scaled = abs(y - exact)/y0
+      call it%init(2, settings_of(INT_METHOD_BS32, 1.0e-6_wp), error)
+      t = 0.0_wp
+      y = y0
+      call it%advance(f, t, y, t_end, error)
+      err_default = abs(y - exact)/y0
+      write (*, "(a,2es10.2,a,2es10.2)") "mixed scales, errors / y(0): with the scale", err_scaled, &
+         "; default", err_default
+      call check(maxval(err_scaled) < 1.0e-5_wp, "mixed scales: both unknowns within 10 x the limit with the scale")
+      call check(err_default(1) > 100.0_wp*err_scaled(1), &
+                 "mixed scales: without the scale the small unknown is far less accurate")
+   end subroutine test_mixed_scales
 
    !> Derivative calls: 1 + (s - 1) per attempt with FSAL; a state changed by the caller between
    !> steps costs one more call; steps cut to land on t_out stay out of the step-size statistics.
