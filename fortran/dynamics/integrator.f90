@@ -1,0 +1,462 @@
+!> The error-controlled explicit integrator of the equations of motion (issue #20, item 3).
+!>
+!> Design (ddeabm style): `integrator_t` owns its settings, its workspace (stage vectors
+!> allocated once by init for n unknowns) and its statistics; the right-hand side is an
+!> argument, an extension of the abstract type `derivative_t` whose deferred `eval` gives
+!> dy/dt.  The model data travel inside the caller's extension, so there is no module state
+!> and two integrations never share anything.
+!>
+!> Methods (Rec 1 field int_method, echo INT METHOD; see docs/dynamics.md for what is known
+!> and what is assumed): 5 = Dormand-Prince 5(4), 3 = Bogacki-Shampine 3(2), both explicit,
+!> embedded, FSAL, propagating the higher order.  Step control (Rec 2.1): initial, minimum and
+!> maximum step and ERROR LIMIT; weighted max-norm of the embedded error estimate,
+!>     err = max_i |e_i| / (ERROR LIMIT * (scale_i + rel_weight * max(|y_i|, |y_new,i|))),
+!> step accepted when err <= 1; PI step-size controller (Hairer, Norsett & Wanner, Solving ODEs I,
+!> 2nd ed., section II.4, eq 4.13, with the constants of DOPRI5; Gustafsson, ACM TOMS 17 (1991)).
+!> A derivative may refuse a step (DERIV_REJECT_STEP: abnormal rolling element/cage contact,
+!> report section 4.4.12): the step is rejected and retried with half the step.
+!> Library code: errors return through error_type, never stop.
+module adore_dynamics_integrator
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error, engine_error
+   use adore_core_strings, only: itoa
+   use adore_deck_tokenizer, only: show_real
+   use adore_dynamics_rk_tableau, only: rk_tableau_t, dormand_prince_54, bogacki_shampine_32
+   implicit none
+   private
+
+   public :: derivative_t, integrator_t, integrator_settings_t, integrator_stats_t
+   public :: DERIV_OK, DERIV_REJECT_STEP, DERIV_FAIL
+   public :: INT_METHOD_BS32, INT_METHOD_DP54
+
+   !> Flags a derivative returns: the values are good; the step must be rejected and retried
+   !> smaller (report 4.4.12, abnormal cage contact); the model failed (the run stops).
+   integer, parameter :: DERIV_OK = 0, DERIV_REJECT_STEP = 1, DERIV_FAIL = 2
+
+   !> INT METHOD codes pyadore knows (Rec 1 field int_method): 3 Bogacki-Shampine 3(2),
+   !> 5 Dormand-Prince 5(4).  Only 5 is attested (both decks); its meaning in ADORE is not.
+   integer, parameter :: INT_METHOD_BS32 = 3, INT_METHOD_DP54 = 5
+
+   !> Step-size controller constants (DOPRI5's: safety factor, bounds of h_new/h).
+   real(wp), parameter :: safety = 0.9_wp, fac_min = 0.2_wp, fac_max = 10.0_wp
+   !> Step reduction after a derivative refused the step (4.4.12 says "a reduced step").
+   real(wp), parameter :: flag_cut = 0.5_wp
+   !> Lower bound of the previous error in the PI controller (DOPRI5's facold floor).
+   real(wp), parameter :: err_floor = 1.0e-4_wp
+
+   !> The right-hand side of y' = f(t, y): extend it with the model data and give eval.
+   type, abstract :: derivative_t
+   contains
+      procedure(eval_i), deferred :: eval
+   end type derivative_t
+
+   abstract interface
+      !> dydt = f(t, y) (units of y per unit of t); flag = DERIV_OK, DERIV_REJECT_STEP or DERIV_FAIL.
+      subroutine eval_i(self, t, y, dydt, flag)
+         import :: derivative_t, wp
+         class(derivative_t), intent(inout) :: self
+         real(wp), intent(in) :: t
+         real(wp), intent(in) :: y(:)
+         real(wp), intent(out) :: dydt(:)
+         integer, intent(out) :: flag
+      end subroutine eval_i
+   end interface
+
+   !> Settings: Rec 1 int_method and Rec 2.1 (steps in the unit of t: ADORE's dimensionless tau).
+   type :: integrator_settings_t
+      integer :: int_method = INT_METHOD_DP54   !< Rec 1 int_method (INT METHOD)
+      real(wp) :: h_initial = 0.0_wp            !< Rec 2.1 step_initial (INITIAL)
+      real(wp) :: h_min = 0.0_wp                !< Rec 2.1 step_min (MINIMUM)
+      real(wp) :: h_max = 0.0_wp                !< Rec 2.1 step_max (MAXIMUM)
+      real(wp) :: error_limit = 0.0_wp          !< Rec 2.1 error_limit (ERROR LIMIT)
+      real(wp) :: rel_weight = 1.0_wp           !< weight of |y| in the error scale (0: absolute only)
+      !> At h_min with err > 1: .false. stops the run with an error; .true. accepts the step and
+      !> counts it (stats%forced_at_h_min), as ADORE's Appendix C statistics suggest it does.
+      logical :: accept_at_h_min = .false.
+      integer :: max_rejections = 100           !< consecutive rejections of one step before an error
+   end type integrator_settings_t
+
+   !> Counts for "Statistics of this Run" (Appendix C) and diagnostics.
+   type :: integrator_stats_t
+      integer :: derivative_calls = 0       !< Total Derivative Calls
+      integer :: accepted = 0               !< accepted steps
+      integer :: rejected_error = 0         !< attempts rejected by the error test
+      integer :: rejected_flag = 0          !< attempts refused by the derivative (4.4.12)
+      integer :: rejected_nonfinite = 0     !< attempts with non-finite stages or result
+      integer :: forced_at_h_min = 0        !< steps accepted at h_min with err > 1 (accept_at_h_min)
+      real(wp) :: h_min_used = huge(1.0_wp) !< Minimum Step Size (steps cut to land on t_out excluded)
+      real(wp) :: h_max_used = 0.0_wp       !< Maximum Step Size (idem)
+      real(wp) :: h_last = 0.0_wp           !< Last Step Size
+      real(wp) :: max_truncation = 0.0_wp   !< Max Truncation: largest err * error_limit accepted
+   end type integrator_stats_t
+
+   !> The integrator: settings, method, workspace, step proposal and statistics.
+   type :: integrator_t
+      type(integrator_settings_t) :: settings
+      type(rk_tableau_t) :: tab
+      type(integrator_stats_t) :: stats
+      integer :: n = 0                        !< number of unknowns
+      real(wp) :: h_next = 0.0_wp             !< size of the next attempt
+      real(wp), allocatable :: scale(:)       !< error scale per unknown (units of y), > 0
+      real(wp), allocatable :: k(:, :)        !< stage derivatives, n x stages
+      real(wp), allocatable :: y_stage(:), y_new(:), y_err(:)
+      real(wp), allocatable :: y_fsal(:)      !< the state at which k(:, 1) = f(t_fsal, y_fsal)
+      real(wp) :: t_fsal = 0.0_wp
+      logical :: fsal_valid = .false.
+      real(wp) :: err_old = err_floor         !< previous accepted error (PI controller)
+      real(wp) :: alpha = 0.0_wp, beta = 0.0_wp  !< PI exponents
+      logical :: ready = .false.
+   contains
+      procedure :: init
+      procedure :: step
+      procedure :: advance
+      procedure :: restart
+   end type integrator_t
+
+contains
+
+   !> Check the settings, choose the method and allocate the workspace for n unknowns.
+   !> scale(n) (units of y, > 0) sets the absolute part of the error test; default 1.
+   subroutine init(self, n, settings, error, scale)
+      class(integrator_t), intent(out) :: self
+      integer, intent(in) :: n
+      type(integrator_settings_t), intent(in) :: settings
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), intent(in), optional :: scale(:)
+      integer :: k
+      character(len=:), allocatable :: msg
+
+      associate (s => settings)
+         select case (s%int_method)
+         case (INT_METHOD_DP54)
+            self%tab = dormand_prince_54()
+         case (INT_METHOD_BS32)
+            self%tab = bogacki_shampine_32()
+         case default
+            call input_error(error, "Rec 1 field int_method = "//itoa(s%int_method)// &
+                             ": unknown integration method (INT METHOD); pyadore knows 5 (Dormand-Prince 5(4)) "// &
+                             "and 3 (Bogacki-Shampine 3(2))")
+            return
+         end select
+         if (.not. (s%h_min > 0.0_wp .and. s%h_min < huge(1.0_wp))) then
+            msg = "Rec 2.1 field step_min = "
+            call put_real(msg, s%h_min)
+            msg = msg//": expected > 0"
+         else if (.not. (s%h_max >= s%h_min .and. s%h_max < huge(1.0_wp))) then
+            msg = "Rec 2.1 field step_max = "
+            call put_real(msg, s%h_max)
+            msg = msg//": expected >= step_min = "
+            call put_real(msg, s%h_min)
+         else if (.not. (s%h_initial >= s%h_min .and. s%h_initial <= s%h_max)) then
+            msg = "Rec 2.1 field step_initial = "
+            call put_real(msg, s%h_initial)
+            msg = msg//": expected between step_min = "
+            call put_real(msg, s%h_min)
+            msg = msg//" and step_max = "
+            call put_real(msg, s%h_max)
+         else if (.not. (s%error_limit > 0.0_wp .and. s%error_limit < 1.0_wp)) then
+            msg = "Rec 2.1 field error_limit = "
+            call put_real(msg, s%error_limit)
+            msg = msg//": expected > 0 and < 1"
+         end if
+         if (allocated(msg)) then
+            call input_error(error, msg)
+            return
+         end if
+         if (.not. (s%rel_weight >= 0.0_wp .and. s%max_rejections >= 1 .and. n >= 1)) then
+            call engine_error(error, "integrator: expected rel_weight >= 0, max_rejections >= 1 and n >= 1 "// &
+                              "(n = "//itoa(n)//", max_rejections = "//itoa(s%max_rejections)//")")
+         end if
+         if (allocated(error)) return
+      end associate
+      self%settings = settings
+      self%n = n
+      allocate (self%scale(n), source=1.0_wp)
+      if (present(scale)) then
+         if (size(scale) /= n) then
+            call engine_error(error, "integrator: scale has "//itoa(size(scale))//" values for "// &
+                              itoa(n)//" unknowns")
+            return
+         end if
+         do k = 1, n
+            if (.not. (scale(k) > 0.0_wp .and. scale(k) < huge(1.0_wp))) then
+               msg = "integrator: error scale of unknown "//itoa(k)//" is "
+               call put_real(msg, scale(k))
+               call engine_error(error, msg//", expected > 0")
+               return
+            end if
+         end do
+         self%scale = scale
+      end if
+      allocate (self%k(n, self%tab%stages), self%y_stage(n), self%y_new(n), self%y_err(n), self%y_fsal(n))
+      ! PI exponents for an error of order k = error_order: beta = 0.2/k, alpha = 1/k - 0.75 beta
+      ! (for k = 5 these are DOPRI5's beta = 0.04, expo1 = 0.17)
+      self%beta = 0.2_wp/self%tab%error_order
+      self%alpha = 1.0_wp/self%tab%error_order - 0.75_wp*self%beta
+      self%h_next = settings%h_initial
+      self%ready = .true.
+   end subroutine init
+
+   !> Forget the first-same-as-last derivative and the controller's memory, e.g. after the model
+   !> changed discontinuously (thermal geometry update); h (unit of t), if given, is the next attempt.
+   subroutine restart(self, h)
+      class(integrator_t), intent(inout) :: self
+      real(wp), intent(in), optional :: h
+      self%fsal_valid = .false.
+      self%err_old = err_floor
+      if (present(h)) self%h_next = min(max(h, self%settings%h_min), self%settings%h_max)
+   end subroutine restart
+
+   !> Take one accepted step from (t, y), rejecting and retrying internally; t and y are
+   !> updated.  With t_limit the step ends at t_limit at the latest (landing exactly on it).
+   subroutine step(self, deriv, t, y, error, t_limit)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(inout) :: t
+      real(wp), intent(inout) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), intent(in), optional :: t_limit
+      real(wp) :: h, h_plan, err, fac, fac_err, h_min
+      integer :: flag, tries
+      logical :: clipped, rejected_before, forced
+      character(len=:), allocatable :: why
+
+      if (.not. self%ready) then
+         call engine_error(error, "integrator: step called before init")
+         return
+      end if
+      if (size(y) /= self%n) then
+         call engine_error(error, "integrator: state has "//itoa(size(y))//" values, init was for "//itoa(self%n))
+         return
+      end if
+      if (.not. (ieee_is_finite(t) .and. all(ieee_is_finite(y)))) then
+         why = " (non-finite unknowns: "
+         call put_bad(why, y)
+         call stop_error(self, error, "non-finite state at the start of a step", t, self%h_next, why//")")
+         return
+      end if
+      call first_stage(self, deriv, t, y, error)
+      if (allocated(error)) return
+
+      h_min = self%settings%h_min
+      h_plan = min(self%h_next, self%settings%h_max)
+      h = h_plan
+      clipped = .false.
+      if (present(t_limit)) then
+         if (.not. t_limit > t) then
+            call stop_error(self, error, "t_limit is not after t", t, h)
+            return
+         end if
+         ! land on t_limit; stretch by up to 1 % rather than leave a sliver of a step
+         if (t + 1.01_wp*h >= t_limit) then
+            h = t_limit - t
+            clipped = .true.
+         end if
+      end if
+      rejected_before = .false.
+      forced = .false.
+      do tries = 0, self%settings%max_rejections
+         call attempt(self, deriv, t, y, h, flag, err)
+         if (flag == DERIV_FAIL) then
+            call stop_error(self, error, "the derivative failed", t, h)
+            return
+         end if
+         if (flag == DERIV_REJECT_STEP) then
+            self%stats%rejected_flag = self%stats%rejected_flag + 1
+            why = "the derivative refused the step (abnormal contact, report 4.4.12)"
+            fac = flag_cut
+         else if (.not. ieee_is_finite(err)) then
+            self%stats%rejected_nonfinite = self%stats%rejected_nonfinite + 1
+            why = "non-finite state or derivative"
+            fac = fac_min
+         else if (err <= 1.0_wp) then
+            exit
+         else if (self%settings%accept_at_h_min .and. h <= h_min .and. .not. clipped) then
+            forced = .true.
+            exit
+         else
+            self%stats%rejected_error = self%stats%rejected_error + 1
+            why = "truncation error estimate "
+            call put_real(why, err*self%settings%error_limit)
+            why = why//" above the error limit "
+            call put_real(why, self%settings%error_limit)
+            fac = max(fac_min, safety/err**self%alpha)
+         end if
+         ! rejected: retry smaller, never below h_min
+         rejected_before = .true.
+         if (h <= h_min) then
+            call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min)", &
+                            t, h, ": "//why)
+            return
+         end if
+         h = max(fac*h, h_min)
+         clipped = .false.
+      end do
+      if (tries > self%settings%max_rejections) then
+         call stop_error(self, error, itoa(tries)//" consecutive rejected attempts", t, h, "; last: "//why)
+         return
+      end if
+
+      ! accepted: statistics, the new state, the next step (PI controller, HNW II.4 eq 4.13)
+      associate (st => self%stats)
+         st%accepted = st%accepted + 1
+         if (forced) st%forced_at_h_min = st%forced_at_h_min + 1
+         st%h_last = h
+         if (.not. clipped) then
+            st%h_min_used = min(st%h_min_used, h)
+            st%h_max_used = max(st%h_max_used, h)
+         end if
+         st%max_truncation = max(st%max_truncation, err*self%settings%error_limit)
+      end associate
+      if (clipped) then
+         t = t_limit
+      else
+         t = t + h
+      end if
+      y = self%y_new
+      self%k(:, 1) = self%k(:, self%tab%stages)
+      self%y_fsal = y
+      self%t_fsal = t
+      fac_err = err**self%alpha
+      fac = max(1.0_wp/fac_max, min(1.0_wp/fac_min, fac_err/self%err_old**self%beta/safety))
+      h = h/fac
+      if (rejected_before) h = min(h, self%stats%h_last)
+      self%err_old = max(err, err_floor)
+      if (clipped) h = max(h, h_plan)   ! a step shortened to land on t_limit does not shrink the plan
+      self%h_next = min(max(h, h_min), self%settings%h_max)
+   end subroutine step
+
+   !> Integrate from (t, y) to t_out (same unit as t), landing on it; t = t_out on return.
+   subroutine advance(self, deriv, t, y, t_out, error)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(inout) :: t
+      real(wp), intent(inout) :: y(:)
+      real(wp), intent(in) :: t_out
+      type(error_type), allocatable, intent(out) :: error
+
+      if (t_out < t) then
+         call stop_error(self, error, "t_out is before t (only forward integration)", t, t_out - t)
+         return
+      end if
+      do while (t < t_out)
+         call self%step(deriv, t, y, error, t_limit=t_out)
+         if (allocated(error)) return
+      end do
+   end subroutine advance
+
+   !> Make k(:, 1) = f(t, y), reusing the last stage of the previous step when (t, y) is its end.
+   subroutine first_stage(self, deriv, t, y, error)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: flag
+      character(len=:), allocatable :: msg
+
+      if (self%fsal_valid .and. t == self%t_fsal) then
+         if (all(y == self%y_fsal)) return
+      end if
+      call deriv%eval(t, y, self%k(:, 1), flag)
+      self%stats%derivative_calls = self%stats%derivative_calls + 1
+      if (flag == DERIV_FAIL) then
+         call stop_error(self, error, "the derivative failed", t, self%h_next)
+      else if (flag == DERIV_REJECT_STEP) then
+         call stop_error(self, error, "the derivative flags the state at the start of a step (abnormal "// &
+                         "contact, report 4.4.12), which no smaller step can avoid", t, self%h_next)
+      else if (.not. all(ieee_is_finite(self%k(:, 1)))) then
+         msg = " (non-finite derivatives: "
+         call put_bad(msg, self%k(:, 1))
+         call stop_error(self, error, "non-finite derivative", t, self%h_next, msg//")")
+      end if
+      if (allocated(error)) return
+      self%y_fsal = y
+      self%t_fsal = t
+      self%fsal_valid = .true.
+   end subroutine first_stage
+
+   !> One attempt of size h from (t, y), k(:, 1) given: stages 2..s, y_new, the weighted error
+   !> err (infinite if a stage or y_new is not finite); flag from the derivative.
+   subroutine attempt(self, deriv, t, y, h, flag, err)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t, h
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: flag
+      real(wp), intent(out) :: err
+      integer :: i, j
+
+      err = huge(1.0_wp)
+      flag = DERIV_OK
+      associate (tab => self%tab, k => self%k, ys => self%y_stage)
+         do i = 2, tab%stages
+            ys = y
+            do j = 1, i - 1
+               if (tab%a(i, j) /= 0.0_wp) ys = ys + (h*tab%a(i, j))*k(:, j)
+            end do
+            call deriv%eval(t + tab%c(i)*h, ys, k(:, i), flag)
+            self%stats%derivative_calls = self%stats%derivative_calls + 1
+            if (flag /= DERIV_OK) return
+            if (.not. (all(ieee_is_finite(k(:, i))) .and. all(ieee_is_finite(ys)))) then
+               err = ieee_value(err, ieee_positive_inf)
+               return
+            end if
+         end do
+         ! FSAL pairs: the last stage is taken at y_new = y + h sum_j b_j k_j
+         self%y_new = ys
+         self%y_err = 0.0_wp
+         do j = 1, tab%stages
+            if (tab%e(j) /= 0.0_wp) self%y_err = self%y_err + (h*tab%e(j))*k(:, j)
+         end do
+      end associate
+      err = maxval(abs(self%y_err)/(self%settings%error_limit* &
+                                    (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))))
+   end subroutine attempt
+
+   !> An engine error "integration stopped: <what> at time t = .. (step h = .., after N accepted
+   !> steps)<tail>" (t and h in the unit of t).
+   subroutine stop_error(self, error, what, t, h, tail)
+      class(integrator_t), intent(in) :: self
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: what
+      real(wp), intent(in) :: t, h
+      character(len=*), intent(in), optional :: tail
+      character(len=:), allocatable :: msg
+      msg = "integration stopped: "//what//" at time t = "
+      call put_real(msg, t)
+      msg = msg//" (step h = "
+      call put_real(msg, h)
+      msg = msg//", after "//itoa(self%stats%accepted)//" accepted steps)"
+      if (present(tail)) msg = msg//tail
+      call engine_error(error, msg)
+   end subroutine stop_error
+
+   !> Append x to s as show_real writes it, or "non-finite".
+   subroutine put_real(s, x)
+      character(len=:), allocatable, intent(inout) :: s
+      real(wp), intent(in) :: x
+      if (ieee_is_finite(x)) then
+         s = s//show_real(x)
+      else
+         s = s//"non-finite"
+      end if
+   end subroutine put_real
+
+   !> Append the indices of the first (up to 5) non-finite values of x to s, e.g. "3, 7".
+   subroutine put_bad(s, x)
+      character(len=:), allocatable, intent(inout) :: s
+      real(wp), intent(in) :: x(:)
+      integer :: i, m
+      m = 0
+      do i = 1, size(x)
+         if (ieee_is_finite(x(i))) cycle
+         if (m > 0) s = s//", "
+         s = s//itoa(i)
+         m = m + 1
+         if (m == 5) exit
+      end do
+   end subroutine put_bad
+
+end module adore_dynamics_integrator

@@ -1,0 +1,647 @@
+!> Test problems for the integrator: right-hand sides with exact solutions or exact
+!> conserved quantities, and derivatives that misbehave on purpose.
+module integrator_test_problems
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use adore_core_kinds, only: wp
+   use adore_dynamics_integrator, only: derivative_t, DERIV_OK, DERIV_REJECT_STEP, DERIV_FAIL
+   implicit none
+   private
+
+   public :: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
+
+   !> y' = -lambda y (exact: y0 exp(-lambda t)).
+   type, extends(derivative_t) :: decay_t
+      real(wp) :: lambda = 1.0_wp
+   contains
+      procedure :: eval => decay_eval
+   end type decay_t
+
+   !> y_i' = -lambda_i y_i, two unknowns decaying at different rates.
+   type, extends(derivative_t) :: two_rates_t
+      real(wp) :: lambda(2) = [10.0_wp, 1.0_wp]
+   contains
+      procedure :: eval => two_rates_eval
+   end type two_rates_t
+
+   !> y' = y cos t (exact: y0 exp(sin t)); non-autonomous, tests the stage times.
+   type, extends(derivative_t) :: growth_t
+   contains
+      procedure :: eval => growth_eval
+   end type growth_t
+
+   !> x'' = -omega**2 x as (x, v) (exact: x0 cos(omega t) + v0/omega sin(omega t)).
+   type, extends(derivative_t) :: oscillator_t
+      real(wp) :: omega = 1.0_wp
+   contains
+      procedure :: eval => oscillator_eval
+   end type oscillator_t
+
+   !> Kepler two-body problem, mu = 1, y = (x, y, vx, vy).
+   type, extends(derivative_t) :: kepler_t
+   contains
+      procedure :: eval => kepler_eval
+   end type kepler_t
+
+   !> Euler's equations of a free rigid body, principal moments i(3): energy and |L| conserved.
+   type, extends(derivative_t) :: rigid_body_t
+      real(wp) :: i(3) = [1.0_wp, 2.0_wp, 3.0_wp]
+   contains
+      procedure :: eval => rigid_body_eval
+   end type rigid_body_t
+
+   !> A mass moving at v0 towards a stiff elastic wall at x = 0 (force -k x when x > 0):
+   !> a stand-in for a rolling element hitting its cage pocket.  A stage penetrating deeper
+   !> than depth_limit is an "abnormal contact" (report 4.4.12): the derivative flags
+   !> DERIV_REJECT_STEP.  Exact: the mass leaves the wall after half a period pi/sqrt(k)
+   !> with speed -v0.
+   type, extends(derivative_t) :: wall_t
+      real(wp) :: k = 1.0e4_wp
+      real(wp) :: depth_limit = 1.0_wp
+      integer :: flags = 0   !< times the derivative flagged
+   contains
+      procedure :: eval => wall_eval
+   end type wall_t
+
+   !> y' = -y, misbehaving: mode 1 NaN once y < y_bad; mode 2 DERIV_FAIL once t > t_bad;
+   !> mode 3 DERIV_REJECT_STEP for every t > t_bad; mode 4 NaN everywhere.
+   type, extends(derivative_t) :: bad_t
+      integer :: mode = 1
+      real(wp) :: y_bad = 0.5_wp, t_bad = 0.5_wp
+   contains
+      procedure :: eval => bad_eval
+   end type bad_t
+
+contains
+
+   subroutine decay_eval(self, t, y, dydt, flag)
+      class(decay_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      dydt = -self%lambda*y
+      flag = DERIV_OK
+   end subroutine decay_eval
+
+   subroutine two_rates_eval(self, t, y, dydt, flag)
+      class(two_rates_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      dydt = -self%lambda*y
+      flag = DERIV_OK
+   end subroutine two_rates_eval
+
+   subroutine growth_eval(self, t, y, dydt, flag)
+      class(growth_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      dydt = y*cos(t)
+      flag = DERIV_OK
+   end subroutine growth_eval
+
+   subroutine oscillator_eval(self, t, y, dydt, flag)
+      class(oscillator_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      dydt = [y(2), -self%omega**2*y(1)]
+      flag = DERIV_OK
+   end subroutine oscillator_eval
+
+   subroutine kepler_eval(self, t, y, dydt, flag)
+      class(kepler_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      real(wp) :: r3
+      r3 = norm2(y(1:2))**3
+      dydt = [y(3), y(4), -y(1)/r3, -y(2)/r3]
+      flag = DERIV_OK
+   end subroutine kepler_eval
+
+   subroutine rigid_body_eval(self, t, y, dydt, flag)
+      class(rigid_body_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      associate (i => self%i)
+         dydt = [(i(2) - i(3))*y(2)*y(3)/i(1), (i(3) - i(1))*y(3)*y(1)/i(2), (i(1) - i(2))*y(1)*y(2)/i(3)]
+      end associate
+      flag = DERIV_OK
+   end subroutine rigid_body_eval
+
+   subroutine wall_eval(self, t, y, dydt, flag)
+      class(wall_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      dydt = [y(2), -self%k*max(y(1), 0.0_wp)]
+      flag = DERIV_OK
+      if (y(1) > self%depth_limit) then
+         flag = DERIV_REJECT_STEP
+         self%flags = self%flags + 1
+      end if
+   end subroutine wall_eval
+
+   subroutine bad_eval(self, t, y, dydt, flag)
+      class(bad_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      dydt = -y
+      flag = DERIV_OK
+      select case (self%mode)
+      case (1)
+         if (y(1) < self%y_bad) dydt = ieee_value(1.0_wp, ieee_quiet_nan)
+      case (2)
+         if (t > self%t_bad) flag = DERIV_FAIL
+      case (3)
+         if (t > self%t_bad) flag = DERIV_REJECT_STEP
+      case (4)
+         dydt = ieee_value(1.0_wp, ieee_quiet_nan)
+      end select
+   end subroutine bad_eval
+
+end module integrator_test_problems
+
+!> Unit tests of the error-controlled explicit integrator (fortran/dynamics/integrator.f90):
+!> exact solutions, order of convergence with fixed steps, error control, rejection of steps
+!> refused by the derivative (report 4.4.12), errors instead of crashes, statistics.
+program test_integrator
+   use adore_test_support, only: check, finish
+   use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
+   use adore_core_error, only: error_type, ADORE_INPUT_ERROR, ADORE_ENGINE_ERROR
+   use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, derivative_t, &
+      INT_METHOD_BS32, INT_METHOD_DP54
+   use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
+   implicit none
+
+   call test_settings_errors()
+   call test_exponential_decay()
+   call test_order_of_convergence()
+   call test_error_control()
+   call test_oscillator_many_periods()
+   call test_kepler_orbit()
+   call test_rigid_body()
+   call test_mixed_scales()
+   call test_statistics_and_fsal()
+   call test_rejection_by_derivative()
+   call test_minimum_step()
+   call test_failures()
+
+   call finish("integrator")
+
+contains
+
+   !> Settings with the Appendix C ball deck's Rec 2.1 step sizes and the given error limit.
+   function settings_of(method, error_limit) result(s)
+      integer, intent(in) :: method
+      real(wp), intent(in) :: error_limit
+      type(integrator_settings_t) :: s
+      s%int_method = method
+      s%h_initial = 5.0e-2_wp
+      s%h_min = 1.0e-6_wp
+      s%h_max = 3.0e-1_wp
+      s%error_limit = error_limit
+   end function settings_of
+
+   logical function has(text, part)
+      character(len=*), intent(in) :: text, part
+      has = index(text, part) > 0
+   end function has
+
+   subroutine test_settings_errors()
+      type(integrator_t) :: it
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+
+      s = settings_of(4, 1.0e-4_wp)
+      call it%init(1, s, error)
+      call check(allocated(error), "unknown INT METHOD refused")
+      if (allocated(error)) then
+         call check(error%stat == ADORE_INPUT_ERROR .and. has(error%message, "Rec 1 field int_method = 4"), &
+                    "unknown INT METHOD: input error naming Rec 1 field int_method: "//error%message)
+      end if
+      s = settings_of(INT_METHOD_DP54, 1.0e-4_wp)
+      s%h_initial = 1.0_wp   ! above h_max = 0.3
+      call it%init(1, s, error)
+      call check(allocated(error), "step_initial above step_max refused")
+      if (allocated(error)) call check(error%stat == ADORE_INPUT_ERROR .and. &
+                                       has(error%message, "Rec 2.1 field step_initial"), &
+                                       "step_initial error names the field: "//error%message)
+      s = settings_of(INT_METHOD_DP54, 0.0_wp)
+      call it%init(1, s, error)
+      call check(allocated(error), "error_limit 0 refused")
+      if (allocated(error)) call check(has(error%message, "Rec 2.1 field error_limit"), &
+                                       "error_limit error names the field: "//error%message)
+      s = settings_of(INT_METHOD_DP54, 1.0e-4_wp)
+      call it%init(2, s, error, scale=[1.0_wp, 0.0_wp])
+      call check(allocated(error), "zero error scale refused")
+      call it%init(2, s, error, scale=[1.0_wp, 1.0_wp])
+      call check(.not. allocated(error), "the Appendix C Rec 2.1 values are accepted")
+      call check(it%tab%name == "Dormand-Prince 5(4)" .and. it%tab%stages == 7, "INT METHOD 5 is Dormand-Prince 5(4)")
+      call it%init(2, settings_of(INT_METHOD_BS32, 1.0e-4_wp), error)
+      call check(it%tab%name == "Bogacki-Shampine 3(2)" .and. it%tab%stages == 4, &
+                 "INT METHOD 3 is Bogacki-Shampine 3(2)")
+   end subroutine test_settings_errors
+
+   !> y' = -y to t = 5 with both methods: error below the error limit, exact landing on t_out.
+   subroutine test_exponential_decay()
+      type(integrator_t) :: it
+      type(decay_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1), err
+      integer, parameter :: method(2) = [INT_METHOD_DP54, INT_METHOD_BS32]
+      integer :: m
+
+      do m = 1, 2
+         call it%init(1, settings_of(method(m), 1.0e-8_wp), error)
+         t = 0.0_wp
+         y = 1.0_wp
+         call it%advance(f, t, y, 5.0_wp, error)
+         call check(.not. allocated(error), "decay: advance completes")
+         call check(t == 5.0_wp, "decay: advance lands exactly on t_out")
+         err = abs(y(1) - exp(-5.0_wp))
+         write (*, "(a,a,es10.3,a,i0,a)") it%tab%name, ": decay global error ", err, " in ", &
+            it%stats%accepted, " steps"
+         ! error per step <= 1e-8 (1 + |y|); the global error is a sum of damped local errors
+         call check(err < 1.0e-7_wp, "decay: global error within 10 x the error limit ("//it%tab%name//")")
+         call check(it%stats%max_truncation <= 1.0e-8_wp, "decay: every accepted step within the error limit")
+      end do
+   end subroutine test_exponential_decay
+
+   !> Fixed steps (h_min = h_max = h, the error test out of the way): the global error at t = 2 of
+   !> y' = y cos t falls as h**p, p = 5 (DP5) and 3 (BS3); slope from h = 0.1 -> 0.05 -> 0.025.
+   subroutine test_order_of_convergence()
+      integer, parameter :: method(2) = [INT_METHOD_DP54, INT_METHOD_BS32], expected(2) = [5, 3]
+      integer :: m, j
+      real(wp) :: e(4), slope(3)
+      character(len=120) :: line
+
+      do m = 1, 2
+         do j = 1, 4
+            e(j) = fixed_step_error(method(m), 0.1_wp/2**(j - 1), 20*2**(j - 1))
+         end do
+         slope = log(e(1:3)/e(2:4))/log(2.0_wp)
+         write (line, "(a,i0,a,3f7.3,a,4es9.2)") "INT METHOD ", method(m), ": observed order ", slope, &
+            "; errors", e
+         write (*, "(a)") trim(line)
+         ! the asymptotic rate: the last halving (h = 0.025 -> 0.0125)
+         call check(abs(slope(3) - expected(m)) < 0.1_wp, "order of convergence: "//trim(line))
+      end do
+   end subroutine test_order_of_convergence
+
+   real(wp) function fixed_step_error(method, h, nsteps) result(err)
+      integer, intent(in) :: method, nsteps
+      real(wp), intent(in) :: h
+      type(integrator_t) :: it
+      type(integrator_settings_t) :: s
+      type(growth_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1)
+      integer :: i
+
+      s%int_method = method
+      s%h_initial = h
+      s%h_min = h
+      s%h_max = h
+      s%error_limit = 0.5_wp
+      ! a huge error scale: the estimate never rejects, every step has size h
+      s%rel_weight = 0.0_wp
+      call it%init(1, s, error, scale=[1.0e10_wp])
+      t = 0.0_wp
+      y = 1.0_wp
+      do i = 1, nsteps
+         call it%step(f, t, y, error)
+      end do
+      call check(.not. allocated(error) .and. it%stats%accepted == nsteps .and. &
+                 it%stats%h_min_used == h .and. it%stats%h_max_used == h, "fixed steps of size h")
+      err = abs(y(1) - exp(sin(t)))
+   end function fixed_step_error
+
+   !> The achieved error follows the error limit: 100 times tighter gives ~100 times smaller
+   !> (local extrapolation with error-per-step control: global error ~ limit, HNW II.4).
+   subroutine test_error_control()
+      type(integrator_t) :: it
+      type(growth_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1), tol, err(3), ratio(2)
+      integer :: j, steps(3)
+      character(len=120) :: line
+
+      do j = 1, 3
+         tol = 1.0e-4_wp*1.0e-2_wp**(j - 1)
+         s = settings_of(INT_METHOD_DP54, tol)
+         s%h_max = 10.0_wp   ! the error limit, not step_max, must set the steps
+         call it%init(1, s, error)
+         t = 0.0_wp
+         y = 1.0_wp
+         call it%advance(f, t, y, 10.0_wp, error)
+         call check(.not. allocated(error), "error control: advance completes")
+         err(j) = abs(y(1) - exp(sin(t)))/exp(sin(t))
+         steps(j) = it%stats%accepted
+         call check(err(j) < 10.0_wp*tol, "error control: relative global error within 10 x the error limit")
+      end do
+      ratio = err(1:2)/err(2:3)
+      write (line, "(a,3es10.2,a,3(1x,i0))") "error limits 1e-4, 1e-6, 1e-8: relative errors", err, &
+         ", steps", steps
+      write (*, "(a)") trim(line)
+      call check(all(ratio > 10.0_wp .and. ratio < 1000.0_wp), "error scales with the error limit: "//trim(line))
+      ! fewer steps for looser limits: about 100**(1/5) = 2.5 times per factor 100 (DP5)
+      call check(steps(2) > 2*steps(1) .and. steps(3) > 2*steps(2), "step count grows as the limit tightens")
+   end subroutine test_error_control
+
+   !> Harmonic oscillator over 100 periods: position and energy against the exact solution.
+   subroutine test_oscillator_many_periods()
+      type(integrator_t) :: it
+      type(oscillator_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(2), t_end, energy_err, pos_err
+
+      f%omega = 2.0_wp*pi
+      call it%init(2, settings_of(INT_METHOD_DP54, 1.0e-10_wp), error, scale=[1.0_wp, f%omega])
+      t = 0.0_wp
+      y = [1.0_wp, 0.0_wp]
+      t_end = 100.0_wp
+      call it%advance(f, t, y, t_end, error)
+      call check(.not. allocated(error), "oscillator: completes")
+      pos_err = max(abs(y(1) - cos(f%omega*t_end)), abs(y(2) + f%omega*sin(f%omega*t_end))/f%omega)
+      energy_err = abs(0.5_wp*(y(2)/f%omega)**2 + 0.5_wp*y(1)**2 - 0.5_wp)/0.5_wp
+      write (*, "(a,es10.3,a,es10.3,a,i0,a)") "oscillator, 100 periods: state error ", pos_err, &
+         ", relative energy error ", energy_err, " (", it%stats%accepted, " steps)"
+      ! error per step <= 1e-10 * (1 + |y|); RK energy drift grows linearly over the periods
+      call check(pos_err < 1.0e-6_wp, "oscillator: state after 100 periods")
+      call check(energy_err < 1.0e-6_wp, "oscillator: energy after 100 periods")
+   end subroutine test_oscillator_many_periods
+
+   !> Kepler orbit, eccentricity 0.6, 10 periods (2 pi each, mu = a = 1): back to the start,
+   !> energy and angular momentum conserved.
+   subroutine test_kepler_orbit()
+      type(integrator_t) :: it
+      type(kepler_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(4), y0(4), ecc, e0, l0, e1, l1, back
+      integer, parameter :: method(2) = [INT_METHOD_DP54, INT_METHOD_BS32]
+      real(wp), parameter :: tol(2) = [1.0e-10_wp, 1.0e-9_wp]
+      integer :: m
+
+      ecc = 0.6_wp
+      y0 = [1.0_wp - ecc, 0.0_wp, 0.0_wp, sqrt((1.0_wp + ecc)/(1.0_wp - ecc))]
+      e0 = 0.5_wp*sum(y0(3:4)**2) - 1.0_wp/norm2(y0(1:2))
+      l0 = y0(1)*y0(4) - y0(2)*y0(3)
+      do m = 1, 2
+         call it%init(4, settings_of(method(m), tol(m)), error)
+         t = 0.0_wp
+         y = y0
+         call it%advance(f, t, y, 20.0_wp*pi, error)
+         call check(.not. allocated(error), "Kepler: completes")
+         e1 = 0.5_wp*sum(y(3:4)**2) - 1.0_wp/norm2(y(1:2))
+         l1 = y(1)*y(4) - y(2)*y(3)
+         back = maxval(abs(y - y0))
+         write (*, "(a,a,3es10.2,a,i0,a,i0,a)") it%tab%name, ": Kepler e=0.6, 10 orbits: |y-y0|, dE, dL", &
+            back, abs(e1 - e0), abs(l1 - l0), " (", it%stats%accepted, " steps, ", it%stats%rejected_error, &
+            " rejected)"
+         call check(back < 1.0e-5_wp, "Kepler: back at the start after 10 periods ("//it%tab%name//")")
+         call check(abs(e1 - e0) < 1.0e-6_wp .and. abs(l1 - l0) < 1.0e-6_wp, &
+                    "Kepler: energy and angular momentum ("//it%tab%name//")")
+         call check(it%stats%h_max_used > 5.0_wp*it%stats%h_min_used, &
+                    "Kepler: the step adapts along the orbit (small at perihelion)")
+      end do
+   end subroutine test_kepler_orbit
+
+   !> Free rigid-body rotation (Euler's equations): kinetic energy and |L| conserved.
+   subroutine test_rigid_body()
+      type(integrator_t) :: it
+      type(rigid_body_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, w(3), e0, l0, e1, l1
+
+      w = [0.3_wp, 1.0_wp, 0.4_wp]   ! near the unstable middle axis: tumbling motion
+      e0 = 0.5_wp*sum(f%i*w**2)
+      l0 = norm2(f%i*w)
+      call it%init(3, settings_of(INT_METHOD_DP54, 1.0e-10_wp), error)
+      t = 0.0_wp
+      call it%advance(f, t, w, 100.0_wp, error)
+      call check(.not. allocated(error), "rigid body: completes")
+      e1 = 0.5_wp*sum(f%i*w**2)
+      l1 = norm2(f%i*w)
+      write (*, "(a,2es10.2)") "free rigid body, t = 100: relative dE, d|L|", abs(e1/e0 - 1), abs(l1/l0 - 1)
+      call check(abs(e1/e0 - 1) < 1.0e-7_wp .and. abs(l1/l0 - 1) < 1.0e-7_wp, &
+                 "rigid body: energy and angular momentum conserved")
+   end subroutine test_rigid_body
+
+   !> Unknowns of very different size (a 1e-5 m displacement beside a 1e3 rad/s speed, as in the
+   !> bearing state): with the caller's scale each is held to the error limit relative to its
+   !> own size; with the default (scale 1, relative weight 1) the small, fast unknown is held
+   !> only to 1e-6 absolute, a tenth of its size.  Errors relative to y(0), at t = 0.2 (before the
+   !> fast decay e**(-10 t) damps the early errors away).
+   subroutine test_mixed_scales()
+      type(integrator_t) :: it
+      type(two_rates_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(2), exact(2), err_scaled(2), err_default(2)
+      real(wp), parameter :: y0(2) = [1.0e-5_wp, 1.0e3_wp], t_end = 0.2_wp
+
+      exact = y0*exp(-f%lambda*t_end)
+      s = settings_of(INT_METHOD_BS32, 1.0e-6_wp)
+      s%rel_weight = 0.0_wp
+      call it%init(2, s, error, scale=y0)
+      t = 0.0_wp
+      y = y0
+      call it%advance(f, t, y, t_end, error)
+      err_scaled = abs(y - exact)/y0
+      call it%init(2, settings_of(INT_METHOD_BS32, 1.0e-6_wp), error)
+      t = 0.0_wp
+      y = y0
+      call it%advance(f, t, y, t_end, error)
+      err_default = abs(y - exact)/y0
+      write (*, "(a,2es10.2,a,2es10.2)") "mixed scales, errors / y(0): with the scale", err_scaled, &
+         "; default", err_default
+      call check(maxval(err_scaled) < 1.0e-5_wp, "mixed scales: both unknowns within 10 x the limit with the scale")
+      call check(err_default(1) > 100.0_wp*err_scaled(1), &
+                 "mixed scales: without the scale the small unknown is far less accurate")
+   end subroutine test_mixed_scales
+
+   !> Derivative calls: 1 + (s - 1) per attempt with FSAL; a state changed by the caller between
+   !> steps costs one more call; steps cut to land on t_out stay out of the step-size statistics.
+   subroutine test_statistics_and_fsal()
+      type(integrator_t) :: it
+      type(kepler_t) :: f
+      type(decay_t) :: g
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(4), z(1)
+      integer :: attempts, calls
+
+      call it%init(4, settings_of(INT_METHOD_DP54, 1.0e-6_wp), error)
+      t = 0.0_wp
+      y = [0.4_wp, 0.0_wp, 0.0_wp, 2.0_wp]
+      call it%advance(f, t, y, 10.0_wp, error)
+      attempts = it%stats%accepted + it%stats%rejected_error
+      call check(it%stats%rejected_error > 0, "statistics: this orbit has error rejections")
+      call check(it%stats%derivative_calls == 1 + 6*attempts, "statistics: DP5 calls = 1 + 6 per attempt")
+      call check(it%stats%max_truncation <= 1.0e-6_wp .and. it%stats%max_truncation > 1.0e-8_wp, &
+                 "statistics: max truncation within the error limit and of its order")
+      call check(it%stats%h_min_used <= it%stats%h_max_used .and. it%stats%h_max_used <= 0.3_wp, &
+                 "statistics: minimum <= maximum <= step_max")
+      ! the caller changes the state between steps (e.g. a thermal update): f is evaluated anew
+      calls = it%stats%derivative_calls
+      call it%step(f, t, y, error)
+      call check(it%stats%derivative_calls == calls + 6, "FSAL: an unchanged state reuses the last stage")
+      calls = it%stats%derivative_calls
+      y(1) = y(1)*(1.0_wp + 1.0e-12_wp)
+      call it%step(f, t, y, error)
+      call check(it%stats%derivative_calls == calls + 7, "FSAL: a changed state is evaluated anew")
+
+      call it%init(1, settings_of(INT_METHOD_BS32, 1.0e-3_wp), error)
+      t = 0.0_wp
+      z = 1.0_wp
+      call it%advance(g, t, z, 1.0e-3_wp, error)   ! far below h_initial: one cut step
+      call check(.not. allocated(error) .and. t == 1.0e-3_wp .and. it%stats%accepted == 1, &
+                 "advance: one cut step lands on t_out")
+      call check(it%stats%derivative_calls == 4, "statistics: BS3 calls = 1 + 3 for one step")
+      call check(it%stats%h_last == 1.0e-3_wp .and. it%stats%h_max_used == 0.0_wp, &
+                 "statistics: a step cut to land on t_out is the last step but not in min/max")
+      call check(it%h_next >= 5.0e-2_wp, "a cut step does not shrink the next step")
+   end subroutine test_statistics_and_fsal
+
+   !> A mass hits a stiff wall; initial steps penetrate "abnormally" deep and the derivative
+   !> refuses them (report 4.4.12): the steps are retried smaller and the bounce is exact.
+   subroutine test_rejection_by_derivative()
+      type(integrator_t) :: it
+      type(wall_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(2), t_hit, t_leave, t_end, x_exact, v0
+
+      v0 = 1.0_wp
+      f%k = 1.0e4_wp                     ! half period in contact pi/100
+      f%depth_limit = 2.0_wp*v0/sqrt(f%k) ! twice the physical maximum penetration v0/sqrt(k)
+      s = settings_of(INT_METHOD_DP54, 1.0e-10_wp)
+      s%h_initial = 0.2_wp               ! the first steps jump deep into the wall
+      call it%init(2, s, error)
+      t = 0.0_wp
+      y = [-0.5_wp, v0]
+      t_hit = 0.5_wp/v0
+      t_leave = t_hit + pi/sqrt(f%k)
+      t_end = 1.5_wp
+      call it%advance(f, t, y, t_end, error)
+      call check(.not. allocated(error), "wall: the integration completes despite refused steps")
+      if (allocated(error)) write (*, "(a)") error%message
+      x_exact = -v0*(t_end - t_leave)
+      write (*, "(a,i0,a,i0,a,2es10.2)") "wall bounce: ", it%stats%rejected_flag, " refused attempts, ", &
+         it%stats%accepted, " steps; error in x, v:", abs(y(1) - x_exact), abs(y(2) + v0)
+      call check(it%stats%rejected_flag > 0 .and. it%stats%rejected_flag == f%flags, &
+                 "wall: refused attempts counted")
+      call check(abs(y(1) - x_exact) < 1.0e-6_wp .and. abs(y(2) + v0) < 1.0e-6_wp, &
+                 "wall: elastic bounce, x and v after contact exact")
+   end subroutine test_rejection_by_derivative
+
+   !> A step that must go below h_min: an error naming time and step, or (accept_at_h_min)
+   !> forced steps whose truncation exceeds the error limit, as in ADORE's Appendix C run.
+   subroutine test_minimum_step()
+      type(integrator_t) :: it
+      type(decay_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1)
+
+      f%lambda = 50.0_wp
+      s = settings_of(INT_METHOD_DP54, 1.0e-10_wp)
+      s%h_min = 5.0e-2_wp   ! lambda h_min = 2.5: far too large for 1e-10
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 1.0_wp, error)
+      call check(allocated(error), "h_min: a step driven below the minimum is an error")
+      if (allocated(error)) then
+         write (*, "(a)") "h_min error: "//error%message
+         call check(error%stat == ADORE_ENGINE_ERROR .and. has(error%message, "below the minimum step size") &
+                    .and. has(error%message, "at time t = 0") .and. has(error%message, "step h = 0.05"), &
+                    "h_min: the message names the minimum, the time and the step")
+      end if
+      s%accept_at_h_min = .true.
+      s%h_min = 1.0e-2_wp
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 1.0_wp, error)
+      call check(.not. allocated(error), "accept_at_h_min: completes")
+      call check(it%stats%forced_at_h_min > 0 .and. it%stats%max_truncation > s%error_limit .and. &
+                 it%stats%h_min_used == s%h_min, "accept_at_h_min: forced steps at h_min, truncation above limit")
+   end subroutine test_minimum_step
+
+   !> Non-finite values, a failing derivative, a derivative refusing every step: errors.
+   subroutine test_failures()
+      type(integrator_t) :: it
+      type(bad_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1)
+
+      call it%init(1, settings_of(INT_METHOD_DP54, 1.0e-6_wp), error)
+      f%mode = 1   ! NaN once y < 0.5 (t > ln 2)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 2.0_wp, error)
+      call check(allocated(error), "NaN derivative: error")
+      if (allocated(error)) then
+         write (*, "(a)") "NaN error: "//error%message
+         call check(has(error%message, "non-finite") .and. has(error%message, "at time t = 0.69"), &
+                    "NaN derivative: message names non-finite values and the time")
+      end if
+      call check(t < log(2.0_wp) .and. y(1) >= 0.5_wp, "NaN derivative: the state is the last good one")
+
+      f%mode = 4   ! NaN at the start
+      call it%init(1, settings_of(INT_METHOD_DP54, 1.0e-6_wp), error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%step(f, t, y, error)
+      call check(allocated(error), "NaN at the start: error")
+      if (allocated(error)) call check(has(error%message, "non-finite derivative"), "NaN at the start: message")
+
+      f%mode = 2   ! DERIV_FAIL after t = 0.5
+      call it%init(1, settings_of(INT_METHOD_DP54, 1.0e-6_wp), error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 2.0_wp, error)
+      call check(allocated(error), "DERIV_FAIL: error")
+      if (allocated(error)) call check(has(error%message, "the derivative failed"), &
+                                       "DERIV_FAIL: message: "//error%message)
+
+      f%mode = 3   ! refuses every step past t = 0.5
+      call it%init(1, settings_of(INT_METHOD_DP54, 1.0e-6_wp), error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 2.0_wp, error)
+      call check(allocated(error), "always refused: error")
+      if (allocated(error)) then
+         write (*, "(a)") "refused error: "//error%message
+         call check(has(error%message, "4.4.12") .and. has(error%message, "below the minimum"), &
+                    "always refused: message names 4.4.12 and the minimum step")
+      end if
+      call check(t <= 0.5_wp, "always refused: stopped at the last good time")
+
+      y = ieee_nan()
+      t = 0.0_wp
+      call it%init(1, settings_of(INT_METHOD_DP54, 1.0e-6_wp), error)
+      call it%step(f, t, y, error)
+      call check(allocated(error), "non-finite initial state: error")
+   end subroutine test_failures
+
+   real(wp) function ieee_nan()
+      use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+      ieee_nan = ieee_value(1.0_wp, ieee_quiet_nan)
+   end function ieee_nan
+
+end program test_integrator
