@@ -1,0 +1,216 @@
+!> Unit tests of the ball bearing's equations of motion under the integrator
+!> (adore_dynamics_ball_system, adore_dynamics_ball_motion, adore_dynamics_integrator):
+!> * free rigid bodies (a ball and the asymmetric cage, no load) over 10**4 steps keep their
+!>   kinetic energy and inertial angular momentum to 1e-8;
+!> * the Appendix C bearing started from its step-0 state without traction (normal contact
+!>   loads, applied load and gravity only): the total energy (kinetic + Hertz contact
+!>   energy - work of the applied load and gravity) changes only by what the contact-
+!>   angle dependence of the Hertz stiffness K(alpha) puts in (eqs 61-63: dE/dt =
+!>   sum 2/5 delta**2.5 dK/dt, bounded from the K range seen) plus the integrator's error;
+!>   the balls keep orbiting (no contact lost, loads within the equilibrium's range).
+!> Run by `meson test` with the decks/ directory as argument.
+!> A free rigid body for the tests: the 13 state values of one body without load.
+module test_dynamics_free_body
+   use adore_core_kinds, only: wp
+   use adore_state_bearing_state, only: body_state_t
+   use adore_forces_ball_bearing, only: body_load_t
+   use adore_dynamics_ball_motion, only: body_rates
+   use adore_dynamics_integrator, only: derivative_t, DERIV_OK
+   implicit none
+   private
+   public :: free_body_t
+
+   !> One free rigid body (no load): the derivative of its 13 state values.
+   type, extends(derivative_t) :: free_body_t
+      real(wp) :: inertia(3) = 1.0_wp
+   contains
+      procedure :: eval => free_body_eval
+   end type free_body_t
+
+contains
+
+   subroutine free_body_eval(self, t, y, dydt, flag)
+      class(free_body_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      type(body_state_t) :: b, r
+      type(body_load_t) :: none
+      b = body_state_t(y(1:3), y(4:6), y(7:10), y(11:13))
+      r = body_rates(b, none, 1.0_wp, self%inertia)
+      dydt = [r%position, r%velocity, r%attitude, r%omega]
+      flag = DERIV_OK
+      if (t < 0.0_wp) flag = DERIV_OK   ! autonomous: t unused
+   end subroutine free_body_eval
+
+end module test_dynamics_free_body
+
+program test_dynamics
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type
+   use adore_core_rotation, only: quat_matrix, quat_from_rotation_vector
+   use adore_model_bearing, only: bearing_t
+   use adore_model_from_deck, only: read_bearing
+   use adore_model_scales, only: length_scale, load_scale, time_scale
+   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_state_bearing_state, only: bearing_state_t, body_state_t, state_size, pack_state, unpack_state, &
+                                        new_bearing_state, BODY_SIZE, RACE_INNER
+   use adore_contact_ball_race, only: contact_energy
+   use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state
+   use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
+   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
+   use adore_test_support, only: check, finish, get_decks_dir
+   use test_dynamics_free_body, only: free_body_t
+   implicit none
+
+   character(len=:), allocatable :: decks
+
+   call get_decks_dir(decks)
+   call test_free_body("ball", [1.0_wp, 1.0_wp, 1.0_wp]*2.8e-7_wp, [1200.0_wp, -300.0_wp, 2500.0_wp])
+   call test_free_body("cage", [3.1e-5_wp, 1.7e-5_wp, 1.7e-5_wp]*[1.0_wp, 1.1_wp, 0.9_wp], [900.0_wp, 40.0_wp, -25.0_wp])
+   call test_energy_without_traction()
+   call finish("dynamics")
+
+contains
+
+   !> A free body tumbling about a skewed axis, integrated over 10**4 accepted steps
+   !> (step capped at a hundredth of a spin period): energy 1/2 omega.I omega and the
+   !> inertial angular momentum R I omega stay constant to 1e-8.
+   subroutine test_free_body(name, inertia, omega)
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: inertia(3), omega(3)
+      type(free_body_t) :: body
+      type(integrator_t) :: it
+      type(error_type), allocatable :: error
+      real(wp) :: y(BODY_SIZE), t, e0, l0(3), e1, l1(3), period
+      integer :: i
+
+      body%inertia = inertia
+      y = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, quat_from_rotation_vector([0.2_wp, -0.4_wp, 0.1_wp]), omega]
+      period = 2.0_wp*acos(-1.0_wp)/norm2(omega)
+      call it%init(BODY_SIZE, integrator_settings_t(h_initial=period/100.0_wp, h_min=1.0e-12_wp*period, &
+                   h_max=period/100.0_wp, error_limit=1.0e-12_wp), error, &
+                   scale=[([1.0_wp], i=1, 6), ([1.0_wp], i=1, 4), (norm2(omega), i=1, 3)])
+      call check(.not. allocated(error), name//": integrator set up")
+      if (allocated(error)) return
+      e0 = 0.5_wp*dot_product(omega, inertia*omega)
+      l0 = matmul(quat_matrix(y(7:10)), inertia*omega)
+      t = 0.0_wp
+      do i = 1, 10000
+         call it%step(body, t, y, error)
+         if (allocated(error)) exit
+      end do
+      call check(.not. allocated(error), name//": 10**4 steps without error")
+      e1 = 0.5_wp*dot_product(y(11:13), inertia*y(11:13))
+      l1 = matmul(quat_matrix(y(7:10)), inertia*y(11:13))
+      write (*, "(a,i0,a,2es10.2)") name//": steps ", it%stats%accepted, ", energy and angular momentum drift ", &
+         abs(e1 - e0)/e0, norm2(l1 - l0)/norm2(l0)
+      call check(it%stats%accepted == 10000, name//": 10**4 accepted steps")
+      call check(abs(e1 - e0) <= 1.0e-8_wp*e0, name//": kinetic energy conserved to 1e-8")
+      call check(norm2(l1 - l0) <= 1.0e-8_wp*norm2(l0), name//": inertial angular momentum conserved to 1e-8")
+   end subroutine test_free_body
+
+   !> Total energy (J) of state s of system sys: kinetic energy of the balls, the cage and
+   !> the inner race's translation (its prescribed spin does no work without traction: the
+   !> normal loads are normal to its axisymmetric groove), Hertz energy of every
+   !> contact, minus the work of the constant applied force and gravity. kmin/kmax: the
+   !> range of each contact's stiffness is widened by s's stiffnesses.
+   function total_energy(sys, s, kmin, kmax, delta_max) result(e)
+      type(ball_system_t), intent(inout) :: sys
+      type(bearing_state_t), intent(in) :: s
+      real(wp), intent(inout) :: kmin(:, :), kmax(:, :), delta_max(:, :)
+      real(wp) :: e, y(state_size(size(s%elements))), dydt(state_size(size(s%elements)))
+      integer :: k, j, flag
+
+      call pack_state(s, y)
+      call sys%eval(s%time/sys%time_scale, y, dydt, flag)   ! fills sys%loads (the contacts at s)
+      associate (b => sys%bearing)
+         e = 0.0_wp
+         do k = 1, size(s%elements)
+            e = e + 0.5_wp*b%mass(1)*dot_product(s%elements(k)%velocity, s%elements(k)%velocity) &
+                + 0.5_wp*dot_product(s%elements(k)%omega, b%moments(:, 1)*s%elements(k)%omega) &
+                - b%mass(1)*dot_product(b%gravity, s%elements(k)%position)
+            do j = 1, 2
+               e = e + contact_energy(sys%loads%contacts(j, k))
+               kmin(j, k) = min(kmin(j, k), sys%loads%contacts(j, k)%stiffness)
+               kmax(j, k) = max(kmax(j, k), sys%loads%contacts(j, k)%stiffness)
+               delta_max(j, k) = max(delta_max(j, k), sys%loads%contacts(j, k)%delta)
+            end do
+         end do
+         e = e + 0.5_wp*b%mass(2)*dot_product(s%cage%velocity, s%cage%velocity) &
+             + 0.5_wp*dot_product(s%cage%omega, b%moments(:, 2)*s%cage%omega) &
+             - b%mass(2)*dot_product(b%gravity, s%cage%position)
+         e = e + 0.5_wp*b%mass(4)*dot_product(s%races(RACE_INNER)%velocity, s%races(RACE_INNER)%velocity) &
+             - dot_product(b%force + b%mass(4)*b%gravity, s%races(RACE_INNER)%position)
+      end associate
+   end function total_energy
+
+   subroutine test_energy_without_traction()
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(ball_system_t) :: sys
+      type(bearing_state_t) :: s
+      type(integrator_t) :: it
+      type(error_type), allocatable :: error
+      real(wp), allocatable :: y(:), scale(:), kmin(:, :), kmax(:, :), dmax(:, :)
+      real(wp) :: l, f, tt, t, e0, e1, bound, tau_end
+      integer :: n, i, k
+
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      call check(.not. allocated(error), "energy: read Appendix C")
+      if (allocated(error)) return
+      g = mount_geometry(b, b%temperature)
+      call solve_ball_step0(b, s0, error, CONTROL_OUTER)
+      call check(.not. allocated(error), "energy: step 0 of Appendix C")
+      if (allocated(error)) return
+      l = length_scale(b%d)
+      f = load_scale(b%force)
+      tt = time_scale(b%mass(1), l, f)
+      sys = new_ball_system(b, g, tt, traction=.false.)
+      s = initial_ball_state(b, g, s0)
+      n = b%n_elements
+      allocate (y(state_size(n)), scale(state_size(n)), kmin(2, n), kmax(2, n), dmax(2, n))
+      kmin = huge(1.0_wp)
+      kmax = 0.0_wp
+      dmax = 0.0_wp
+      ! error scales: positions L, velocities L/T, quaternions 1, angular velocities 1/T, temperatures 1 K
+      do i = 0, n + 2
+         scale(BODY_SIZE*i + 1:BODY_SIZE*(i + 1)) = [l, l, l, l/tt, l/tt, l/tt, 1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, &
+                                                     1.0_wp/tt, 1.0_wp/tt, 1.0_wp/tt]
+      end do
+      scale(BODY_SIZE*(n + 3) + 1:) = 1.0_wp
+      e0 = total_energy(sys, s, kmin, kmax, dmax)
+      call pack_state(s, y)
+      tau_end = 10.0_wp
+      call it%init(size(y), integrator_settings_t(h_initial=1.0e-3_wp, h_min=1.0e-9_wp, h_max=0.05_wp, &
+                   error_limit=1.0e-10_wp, rel_weight=0.0_wp), error, scale=scale)
+      call check(.not. allocated(error), "energy: integrator set up")
+      if (allocated(error)) return
+      t = 0.0_wp
+      do while (t < tau_end)
+         call it%step(sys, t, y, error, t_limit=tau_end)
+         if (allocated(error)) exit
+         call unpack_state(y, t*tt, s)
+         e1 = total_energy(sys, s, kmin, kmax, dmax)
+      end do
+      call check(.not. allocated(error), "energy: integration to tau = 10 without error")
+      if (allocated(error)) then
+         write (*, "(a)") error%message
+         return
+      end if
+      ! the non-conservative part of K(alpha): |sum over contacts of 2/5 delta**2.5 dK| at most
+      bound = 0.0_wp
+      do k = 1, n
+         bound = bound + sum(0.4_wp*max(dmax(:, k), 0.0_wp)**2.5_wp*(kmax(:, k) - kmin(:, k)))
+      end do
+      write (*, "(a,es10.3,a,es10.3,a,es10.3,a,i0,a,i0)") "no traction: energy ", e0, " J, change ", e1 - e0, &
+         " J, K(alpha) bound ", bound, " J; steps ", it%stats%accepted, ", derivative calls ", sys%calls
+      call check(abs(e1 - e0) <= bound + 1.0e-6_wp*abs(e0), &
+                 "no traction: total energy conserved up to the K(alpha) work and the integrator's error")
+      call check(all(sys%loads%contacts%load > 0.0_wp), "no traction: every ball stays in contact with both races")
+   end subroutine test_energy_without_traction
+
+end program test_dynamics
