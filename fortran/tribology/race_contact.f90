@@ -183,10 +183,9 @@ contains
       integer, intent(in) :: race
       real(wp), intent(out) :: rise
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: dt_max
       call ehd_temperature_rise(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, FLASH_POINTS, &
                                 u_e, u_e, thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), &
-                                rise, dt_max, error)
+                                rise, error=error)
    end subroutine ehd_flash
 
    !> Average flash temperature rise (K) of a race contact whose traction is the run's law
@@ -204,13 +203,12 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(contact_traction_t) :: t
       real(wp), allocatable :: x(:), w(:), u(:)
-      real(wp) :: dt_max
 
       call major_axis_nodes(cj, EHD_GAUSS, t, x, w)
       u = contact_slip(cj, x)
       call contact_temperature_rise(cj%a, b_minor, p0, x, w, law_kappa(b%race_traction, u)*abs(u), u_e, u_e, &
                                     thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), FLASH_POINTS, &
-                                    rise, dt_max, error)
+                                    rise, error=error)
    end subroutine law_flash
 
    !> Average flash temperature rise (K) of one roller/race line contact c with its slice
@@ -229,7 +227,7 @@ contains
       real(wp), intent(in) :: r_race, w_race, w_r
       real(wp), intent(out) :: rise
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: u_e, dt_max, centre
+      real(wp) :: u_e, centre
 
       rise = 0.0_wp
       if (.not. c%in_contact .or. t%power <= 0.0_wp) return
@@ -238,7 +236,7 @@ contains
       call contact_temperature_rise(c%half_length, c%mean_half_width, c%stress, c%x - centre, c%weight, &
                                     merge(t%kappa*abs(t%slip), 0.0_wp, c%q > 0.0_wp), u_e, u_e, &
                                     thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), FLASH_POINTS, &
-                                    rise, dt_max, error)
+                                    rise, error=error)
    end subroutine line_flash
 
 end module adore_tribology_race_contact
