@@ -26,10 +26,9 @@ module adore_quasistatic_ball_kinematics
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_power
    use adore_tribology_traction_law, only: traction_law_t
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
-                                   SIDE_OUTER, SIDE_INNER
+   use adore_tribology_slip, only: ball_race_contact_t, contact_power, SIDE_OUTER, SIDE_INNER
    use adore_quasistatic_ball_min_dissipation, only: brent_minimum, newton_minimum_2d
    implicit none
    private
@@ -189,7 +188,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(ehd_films_t), intent(in), optional :: ehd
       type(ball_race_contact_t) :: c(2)
-      type(contact_traction_t) :: t
+      real(wp) :: pj
       integer :: j
 
       p = 0.0_wp
@@ -197,12 +196,12 @@ contains
       do j = 1, 2
          if (.not. (q(j) > 0.0_wp .and. a(j) > 0.0_wp)) cycle
          if (present(ehd)) then
-            call ehd_contact_traction(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, t, error)
+            call ehd_contact_power(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, pj, error)
          else
-            call contact_traction(c(j), law, 1.0_wp, n_gauss, t, error)
+            call contact_power(c(j), law, 1.0_wp, n_gauss, pj, error)
          end if
          if (allocated(error)) return
-         p = p + t%power
+         p = p + pj
       end do
    end subroutine dissipation
 

@@ -28,11 +28,18 @@ module adore_tribology_ehd_traction
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_flash, only: strip_temperature_rise, flash_trapezoid_weights
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
-                                   interior_extremum
+                                   interior_extremum, contact_kinematics, pure_rolling_points
    implicit none
    private
 
    public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_temperature_rise, ehd_strip_traction
+   public :: ehd_contact_traction_fast, ehd_contact_power
+
+   !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
+   !> zone in the angle phi of s = a sin(phi) along the major axis, and on [0, pi/2] in the
+   !> angle psi of y = b sin(psi) across each strip (tests/test_ehd_fast.py bounds its
+   !> difference from the 16 x 24 reference)
+   integer, parameter, public :: EHD_FAST_MAJOR = 8, EHD_FAST_STRIP = 6
 
 
    !> Rheology of the film at the wall temperature.
@@ -87,16 +94,8 @@ contains
       real(wp) :: u, f, q, y(n_strip), wy(n_strip)
       integer :: j, m
 
-      if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load > 0.0_wp &
-                 .and. c%r_b > c%rho .and. abs(c%side) == 1 .and. b > 0.0_wp)) then
-         call input_error(error, "EHD traction: need 0 < a < rho < r_b, b > 0, load > 0, side = +-1")
-         return
-      end if
-      if (.not. (h > 0.0_wp .and. rheo%eta_w > 0.0_wp .and. rheo%alpha >= 0.0_wp .and. rheo%beta >= 0.0_wp &
-                 .and. (rheo%beta == 0.0_wp .or. rheo%conductivity > 0.0_wp))) then
-         call input_error(error, "EHD traction: need film h > 0, viscosity > 0, alpha, beta >= 0, conductivity > 0")
-         return
-      end if
+      call check_ehd_inputs(c, rheo, h, b, error)
+      if (allocated(error)) return
       if (n_gauss < 1 .or. n_strip < 1) then
          call input_error(error, "EHD traction: need at least one Gauss point per zone and per strip")
          return
@@ -117,6 +116,157 @@ contains
       call interior_extremum(c, t%max_slip)
       t%coefficient = t%force/c%load
    end subroutine ehd_contact_traction
+
+   !> The EHD traction of contact c as ehd_contact_traction, fast: the square-root edges of
+   !> the Hertz ellipse are taken out by s = a sin(phi) along the major axis (zones still
+   !> split at the pure-rolling points) and y = b' sin(psi) across each strip, so that
+   !> Gauss-Legendre converges fast in phi and psi: n_major points per zone in phi
+   !> (default EHD_FAST_MAJOR), n_strip on psi in [0, pi/2] (default EHD_FAST_STRIP).
+   !> Same outputs as ehd_contact_traction (force, force_cos, force_sin, power, sliding,
+   !> max_slip, kinematics); input error for bad data.
+   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip)
+      type(ball_race_contact_t), intent(in) :: c
+      type(ehd_rheology_t), intent(in) :: rheo
+      real(wp), intent(in) :: h, b
+      type(contact_traction_t), intent(out) :: t
+      type(error_type), allocatable, intent(out) :: error
+      integer, intent(in), optional :: n_major, n_strip
+      real(wp), allocatable :: xg(:), wg(:), yg(:), wy(:), cy(:)
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, mid, half, phi, cphi, sphi, w, s, th, ct, st, u, f, fs, &
+                  e_half, rs, cal, sal, scale_sl
+      integer :: nm, ns, nz, z, j, i
+
+      call check_ehd_inputs(c, rheo, h, b, error)
+      if (allocated(error)) return
+      nm = EHD_FAST_MAJOR
+      ns = EHD_FAST_STRIP
+      if (present(n_major)) nm = n_major
+      if (present(n_strip)) ns = n_strip
+      if (nm < 1 .or. ns < 1) then
+         call input_error(error, "EHD traction: need at least one Gauss point per zone and per strip")
+         return
+      end if
+      allocate (xg(nm), wg(nm), yg(ns), wy(ns), cy(ns))
+      call gauss_legendre(nm, xg, wg)
+      call gauss_legendre(ns, yg, wy)
+      ! psi = pi/4 (1 + y) on [0, pi/2]; dy' = cos(psi) dpsi; both halves of the strip
+      cy = cos(0.25_wp*pi*(1.0_wp + yg))
+      wy = 2.0_wp*0.25_wp*pi*wy*cy
+      call contact_kinematics(c, t)
+      call pure_rolling_points(c, t%n_rolling, t%rolling_points)
+      nz = t%n_rolling + 1
+      edges(1) = -c%a
+      edges(2:nz) = t%rolling_points(1:t%n_rolling)
+      edges(nz + 1) = c%a
+      p0 = 1.5_wp*c%load/(pi*c%a*b)
+      amp = 0.0_wp
+      zeta = 0.0_wp
+      if (rheo%beta > 0.0_wp) then
+         amp = sqrt(2.0_wp*rheo%conductivity*rheo%eta_w/rheo%beta)/h
+         zeta = 0.5_wp*sqrt(rheo%beta*rheo%eta_w/(2.0_wp*rheo%conductivity))
+      end if
+      rs = c%race_speed
+      cal = cos(c%alpha)
+      sal = sin(c%alpha)
+      scale_sl = 0.75_wp*c%load/c%a
+      t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
+      do z = 1, nz
+         lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
+         hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
+         mid = 0.5_wp*(lo + hi)
+         half = 0.5_wp*(hi - lo)
+         do j = 1, nm
+            phi = mid + half*xg(j)
+            cphi = cos(phi)
+            sphi = sin(phi)
+            s = c%a*sphi
+            w = half*wg(j)*c%a*cphi                     ! ds = a cos(phi) dphi
+            th = s/c%rho
+            ct = cos(c%alpha + th)
+            st = sin(c%alpha + th)
+            u = c%side*c%rho*(c%omega(1) - rs)*ct - c%side*c%rho*c%omega(2)*st - rs*c%r_b
+            ! strip traction per unit length: b cos(phi) x the integral of tau over y' in [-1, 1]
+            f = 0.0_wp
+            do i = 1, ns
+               e_half = exp(0.5_wp*rheo%alpha*p0*cphi*cy(i))
+               if (rheo%beta > 0.0_wp) then
+                  f = f + wy(i)*amp*e_half*shear_shape(zeta*abs(u)*e_half)
+               else
+                  f = f + wy(i)*rheo%eta_w*e_half*e_half*abs(u)/h
+               end if
+            end do
+            f = b*cphi*f
+            fs = sign(f, u)*w
+            t%force = t%force + fs
+            t%force_cos = t%force_cos + fs*(ct*cal + st*sal)   ! cos(s / rho)
+            t%force_sin = t%force_sin + fs*(st*cal - ct*sal)   ! sin(s / rho)
+            t%power = t%power + f*abs(u)*w
+            t%sliding = t%sliding + abs(u)*scale_sl*cphi*cphi*w
+            t%max_slip = max(t%max_slip, abs(u))
+         end do
+      end do
+      call interior_extremum(c, t%max_slip)
+      t%coefficient = t%force/c%load
+   end subroutine ehd_contact_traction_fast
+
+   !> Power (W) of contact c with the EHD film: ehd_contact_traction's t%power, the same
+   !> nodes and sums bit for bit, without the other integrals (the minimum-dissipation
+   !> search's objective).  Input error for bad data.
+   subroutine ehd_contact_power(c, rheo, h, b, n_gauss, n_strip, power, error)
+      type(ball_race_contact_t), intent(in) :: c
+      type(ehd_rheology_t), intent(in) :: rheo
+      real(wp), intent(in) :: h, b
+      integer, intent(in) :: n_gauss, n_strip
+      real(wp), intent(out) :: power
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: xg(n_gauss), wg(n_gauss), y(n_strip), wy(n_strip), edges(4), pts(2), lo, hi, x, w, u, f, q
+      integer :: nr, nz, z, j, m
+
+      power = 0.0_wp
+      call check_ehd_inputs(c, rheo, h, b, error)
+      if (allocated(error)) return
+      if (n_gauss < 1 .or. n_strip < 1) then
+         call input_error(error, "EHD traction: need at least one Gauss point per zone and per strip")
+         return
+      end if
+      call pure_rolling_points(c, nr, pts)
+      nz = nr + 1
+      edges(1) = -c%a
+      edges(2:nz) = pts(1:nr)
+      edges(nz + 1) = c%a
+      call gauss_legendre(n_gauss, xg, wg)
+      call strip_rule(n_strip, y, wy, m)
+      do z = 1, nz
+         lo = edges(z)
+         hi = edges(z + 1)
+         do j = 1, n_gauss                        ! the nodes of major_axis_nodes
+            x = 0.5_wp*(lo + hi) + 0.5_wp*(hi - lo)*xg(j)
+            w = 0.5_wp*(hi - lo)*wg(j)
+            u = contact_slip(c, x)
+            call strip_traction(c, rheo, h, b, y(1:m), wy(1:m), x, u, f, q)
+            power = power + f*abs(u)*w
+         end do
+      end do
+   end subroutine ehd_contact_power
+
+   !> Input error unless contact c, film h (m), rheology and semi-minor axis b (m) are valid
+   !> for the EHD traction.
+   subroutine check_ehd_inputs(c, rheo, h, b, error)
+      type(ball_race_contact_t), intent(in) :: c
+      type(ehd_rheology_t), intent(in) :: rheo
+      real(wp), intent(in) :: h, b
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load > 0.0_wp &
+                 .and. c%r_b > c%rho .and. abs(c%side) == 1 .and. b > 0.0_wp)) then
+         call input_error(error, "EHD traction: need 0 < a < rho < r_b, b > 0, load > 0, side = +-1")
+         return
+      end if
+      if (.not. (h > 0.0_wp .and. rheo%eta_w > 0.0_wp .and. rheo%alpha >= 0.0_wp .and. rheo%beta >= 0.0_wp &
+                 .and. (rheo%beta == 0.0_wp .or. rheo%conductivity > 0.0_wp))) then
+         call input_error(error, "EHD traction: need film h > 0, viscosity > 0, alpha, beta >= 0, conductivity > 0")
+         return
+      end if
+   end subroutine check_ehd_inputs
 
    !> The EHD traction of contact c (as ehd_contact_traction) at the node s (m) of the major
    !> axis with slip u (m/s): the strip's traction f (N/m) and load q (N/m), with n_strip

@@ -27,7 +27,7 @@ module adore_tribology_slip
 
    public :: ball_race_contact_t, contact_traction_t
    public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
-             major_axis_nodes, print_slip_node
+             major_axis_nodes, print_slip_node, contact_power
 
    integer, parameter, public :: SIDE_OUTER = 1   !< contact with the outer race
    integer, parameter, public :: SIDE_INNER = -1  !< contact with the inner race
@@ -177,6 +177,49 @@ contains
       call interior_extremum(c, t%max_slip)
       if (c%load > 0.0_wp) t%coefficient = t%force/c%load
    end subroutine contact_traction
+
+   !> Power (W) of contact c with the traction law: contact_traction's t%power, the same
+   !> nodes and sums bit for bit, without the other integrals (the minimum-dissipation
+   !> search's objective).  Input error as contact_traction.
+   subroutine contact_power(c, law, kappa_scale, n_gauss, power, error)
+      type(ball_race_contact_t), intent(in) :: c
+      type(traction_law_t), intent(in) :: law
+      real(wp), intent(in) :: kappa_scale
+      integer, intent(in) :: n_gauss
+      real(wp), intent(out) :: power
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: xg(n_gauss), wg(n_gauss), edges(4), pts(2), lo, hi, x, w, u, kap, dq
+      integer :: nr, nz, z, j
+
+      power = 0.0_wp
+      if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load >= 0.0_wp &
+                 .and. c%r_b > c%rho .and. abs(c%side) == 1)) then
+         call input_error(error, "contact traction: need 0 < a < rho < r_b, load >= 0, side = +-1")
+         return
+      end if
+      if (n_gauss < 1) then
+         call input_error(error, "contact traction: need at least one Gauss point per zone")
+         return
+      end if
+      call pure_rolling_points(c, nr, pts)
+      nz = nr + 1
+      edges(1) = -c%a
+      edges(2:nz) = pts(1:nr)
+      edges(nz + 1) = c%a
+      call gauss_legendre(n_gauss, xg, wg)
+      do z = 1, nz
+         lo = edges(z)
+         hi = edges(z + 1)
+         do j = 1, n_gauss                        ! the nodes of major_axis_nodes
+            x = 0.5_wp*(lo + hi) + 0.5_wp*(hi - lo)*xg(j)
+            w = 0.5_wp*(hi - lo)*wg(j)
+            u = contact_slip(c, x)
+            kap = kappa_scale*law_kappa(law, u)
+            dq = 0.75_wp*c%load/c%a*(1.0_wp - (x/c%a)**2)*w
+            power = power + kap*abs(u)*dq
+         end do
+      end do
+   end subroutine contact_power
 
    !> Centre kinematics and pure-rolling points of contact c into t, and the slip zones
    !> of the major axis: edges(1:nz+1) from -a to a (m), split at the pure-rolling points.
