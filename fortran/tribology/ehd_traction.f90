@@ -39,7 +39,7 @@ module adore_tribology_ehd_traction
    !> zone in the angle phi of s = a sin(phi) along the major axis, and on [0, pi/2] in the
    !> angle psi of y = b sin(psi) across each strip (tests/test_ehd_fast.py bounds its
    !> difference from the 16 x 24 reference)
-   integer, parameter, public :: EHD_FAST_MAJOR = 8, EHD_FAST_STRIP = 6
+   integer, parameter, public :: EHD_FAST_MAJOR = 12, EHD_FAST_STRIP = 8
 
 
    !> Rheology of the film at the wall temperature.
@@ -131,10 +131,11 @@ contains
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: n_major, n_strip
+      !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
+      real(wp), parameter :: LAYER = 20.0_wp
       real(wp), allocatable :: xg(:), wg(:), yg(:), wy(:), cy(:)
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, mid, half, phi, cphi, sphi, w, s, th, ct, st, u, f, fs, &
-                  e_half, rs, cal, sal, scale_sl
-      integer :: nm, ns, nz, z, j, i
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, phi, w, rs, cal, sal, scale_sl, sub(3, 8), vmax, v
+      integer :: nm, ns, nz, z, j, nsub
 
       call check_ehd_inputs(c, rheo, h, b, error)
       if (allocated(error)) return
@@ -170,43 +171,97 @@ contains
       sal = sin(c%alpha)
       scale_sl = 0.75_wp*c%load/c%a
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
+      ! sub-zones in phi: a zone that ends at a pure-rolling point is graded there (the
+      ! film's shear saturates within |u| ~ 1 / (zeta E) of it); one between two rolling
+      ! points is halved first
+      nsub = 0
       do z = 1, nz
          lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
          hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
-         mid = 0.5_wp*(lo + hi)
-         half = 0.5_wp*(hi - lo)
-         do j = 1, nm
-            phi = mid + half*xg(j)
-            cphi = cos(phi)
-            sphi = sin(phi)
-            s = c%a*sphi
-            w = half*wg(j)*c%a*cphi                     ! ds = a cos(phi) dphi
-            th = s/c%rho
-            ct = cos(c%alpha + th)
-            st = sin(c%alpha + th)
-            u = c%side*c%rho*(c%omega(1) - rs)*ct - c%side*c%rho*c%omega(2)*st - rs*c%r_b
-            ! strip traction per unit length: b cos(phi) x the integral of tau over y' in [-1, 1]
-            f = 0.0_wp
-            do i = 1, ns
-               e_half = exp(0.5_wp*rheo%alpha*p0*cphi*cy(i))
-               if (rheo%beta > 0.0_wp) then
-                  f = f + wy(i)*amp*e_half*shear_shape(zeta*abs(u)*e_half)
+         if (z > 1 .and. z < nz) then
+            call add_sub((lo + hi)*0.5_wp, lo, edges(z))
+            call add_sub((lo + hi)*0.5_wp, hi, edges(z + 1))
+         else if (z > 1) then
+            call add_sub(hi, lo, edges(z))
+         else if (z < nz) then
+            call add_sub(lo, hi, edges(z + 1))
+         else
+            call add_sub(lo, hi, huge(1.0_wp))
+         end if
+      end do
+      do z = 1, nsub
+         associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z))
+            vmax = asinh(kp*abs(pf - pr))
+            do j = 1, nm
+               if (kp > 0.0_wp .and. vmax > 1.0_wp) then
+                  v = 0.5_wp*vmax*(1.0_wp + xg(j))
+                  phi = pr + sign(1.0_wp, pf - pr)*sinh(v)/kp
+                  w = 0.5_wp*vmax*wg(j)*cosh(v)/kp
                else
-                  f = f + wy(i)*rheo%eta_w*e_half*e_half*abs(u)/h
+                  phi = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xg(j)
+                  w = 0.5_wp*abs(pf - pr)*wg(j)
                end if
+               call add_node(phi, w)
             end do
-            f = b*cphi*f
-            fs = sign(f, u)*w
-            t%force = t%force + fs
-            t%force_cos = t%force_cos + fs*(ct*cal + st*sal)   ! cos(s / rho)
-            t%force_sin = t%force_sin + fs*(st*cal - ct*sal)   ! sin(s / rho)
-            t%power = t%power + f*abs(u)*w
-            t%sliding = t%sliding + abs(u)*scale_sl*cphi*cphi*w
-            t%max_slip = max(t%max_slip, abs(u))
-         end do
+         end associate
       end do
       call interior_extremum(c, t%max_slip)
       t%coefficient = t%force/c%load
+
+   contains
+
+      !> A sub-zone of phi from pf (free end) to pr, graded at pr when s_r (m) is a
+      !> pure-rolling point (huge(): no grading): sinh grading with the inverse width
+      !> zeta |du/ds| E_max a cos(phi) of the shear's saturation layer (1/rad).
+      subroutine add_sub(pf, pr, s_r)
+         real(wp), intent(in) :: pf, pr, s_r
+         real(wp) :: th, dudx
+         nsub = nsub + 1
+         sub(:, nsub) = [pf, pr, 0.0_wp]
+         if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) return
+         th = c%alpha + s_r/c%rho
+         dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
+         sub(3, nsub) = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr)
+         if (sub(3, nsub)*abs(pf - pr) > 2.0_wp*LAYER) then
+            ! the layer graded up to LAYER / K from pr, the rest of the zone plain
+            sub(1, nsub) = pr + sign(LAYER/sub(3, nsub), pf - pr)
+            nsub = nsub + 1
+            sub(:, nsub) = [pf, sub(1, nsub - 1), 0.0_wp]
+         end if
+      end subroutine add_sub
+
+      !> Add the node at phi (rad) with weight w (rad) to the integrals.
+      subroutine add_node(phi, w)
+         real(wp), intent(in) :: phi, w
+         real(wp) :: cphi, sphi, s, wl, ct, st, u, f, fs, e_half
+         integer :: i
+         cphi = cos(phi)
+         sphi = sin(phi)
+         s = c%a*sphi
+         wl = w*c%a*cphi                                 ! ds = a cos(phi) dphi
+         ct = cos(c%alpha + s/c%rho)
+         st = sin(c%alpha + s/c%rho)
+         u = c%side*c%rho*(c%omega(1) - rs)*ct - c%side*c%rho*c%omega(2)*st - rs*c%r_b
+         ! strip traction per unit length: b cos(phi) x the integral of tau over y' in [-1, 1]
+         f = 0.0_wp
+         do i = 1, ns
+            e_half = exp(0.5_wp*rheo%alpha*p0*cphi*cy(i))
+            if (rheo%beta > 0.0_wp) then
+               f = f + wy(i)*amp*e_half*shear_shape(zeta*abs(u)*e_half)
+            else
+               f = f + wy(i)*rheo%eta_w*e_half*e_half*abs(u)/h
+            end if
+         end do
+         f = b*cphi*f
+         fs = sign(f, u)*wl
+         t%force = t%force + fs
+         t%force_cos = t%force_cos + fs*(ct*cal + st*sal)   ! cos(s / rho)
+         t%force_sin = t%force_sin + fs*(st*cal - ct*sal)   ! sin(s / rho)
+         t%power = t%power + f*abs(u)*wl
+         t%sliding = t%sliding + abs(u)*scale_sl*cphi*cphi*wl
+         t%max_slip = max(t%max_slip, abs(u))
+      end subroutine add_node
+
    end subroutine ehd_contact_traction_fast
 
    !> Power (W) of contact c with the EHD film: ehd_contact_traction's t%power, the same
