@@ -20,8 +20,9 @@ program test_tribology
    use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, min_dissipation_kinematics, ehd_films_t
    implicit none
 
-   !> a four-parameter traction curve kappa = (A + B u) exp(-C u) + D: [A, B, C, D]
-   real(wp), parameter :: LAW(4) = [0.0_wp, 2.0e-2_wp, 1.6e-2_wp, 1.0_wp]
+   !> the Appendix C deck's fitted traction curve kappa = (A + B u) exp(-C u) + D: [A, B, C, D]
+   !> (tests/test_ball_step0_tribology.py COEF)
+   real(wp), parameter :: LAW(4) = [-1.6e-2_wp, 3.82896e-2_wp, 1.71782_wp, 1.6e-2_wp]
 
    call test_gauss()
    call test_film()
