@@ -219,7 +219,8 @@ contains
    !> (within +-4 deg of `hint` when given), best spin speed by golden section at each,
    !> refined by parabolic interpolation and golden section.
    !> Input error when neither contact is loaded or the inner contact geometry is degenerate.
-   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, law, k, error, hint, ehd, reference)
+   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, law, k, error, hint, ehd, reference, &
+                                         hint_speed)
       real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2)
       type(traction_law_t), intent(in) :: law
       type(ball_kinematics_t), intent(out) :: k
@@ -231,6 +232,9 @@ contains
       type(ehd_films_t), intent(in), optional :: ehd
       !> .true.: the reference search (grid and golden sections) instead of Newton's method
       logical, intent(in), optional :: reference
+      !> spin speed w_b (rad/s) of the previous solution whose pitch is `hint`: Newton starts
+      !> there (the fast search)
+      real(wp), intent(in), optional :: hint_speed
 
       real(wp), parameter :: step = pi/180.0_wp
       integer, parameter :: n_full = 61, n_near = 9
@@ -325,6 +329,17 @@ contains
          hi2 = [betas(n_grid)/step, max(-1.5_wp*s_turn, -0.5_wp*s_turn)]
          if (present(hint)) then
             y0(1) = min(max(hint/step, lo2(1)), hi2(1))
+            if (present(hint_speed)) then
+               ! from the previous solution itself (its basin: the state moved little)
+               y0(2) = min(max(hint_speed/scale, lo2(2)), hi2(2))
+               call newton_minimum_2d(power_objective, y0, lo2, hi2, h, tol, max_step, y, f, ok, failed, n_eval)
+               if (failed) return
+               if (ok) then
+                  call accept(y, f)
+                  done = .true.
+                  return
+               end if
+            end if
          else
             ! the pitch grid of the reference search, best spin speed at each (in a narrow
             ! interval about the neighbouring pitch's), to start Newton in the basin of the
@@ -347,14 +362,20 @@ contains
          if (failed) return
          call newton_minimum_2d(power_objective, y0, lo2, hi2, h, tol, max_step, y, f, ok, failed, n_eval)
          if (failed .or. .not. ok) return
+         call accept(y, f)
+         done = .true.
+
+      end subroutine newton_search
+
+      !> k from the scaled minimum y (pitch in steps, spin speed in units of scale), power f (W)
+      subroutine accept(y, f)
+         real(wp), intent(in) :: y(2), f
          k%pitch = y(1)*step
          k%spin_speed = y(2)*scale
          k%power = f
          k%orbital_speed = inner_rolling_orbit(k%pitch, k%spin_speed)
          k%ok = .true.
-         done = .true.
-
-      end subroutine newton_search
+      end subroutine accept
 
       !> Least power f over the scaled spin speed at pitch beta_fixed: x (to tol) by Brent's
       !> method within 0.03 of x_near (a neighbouring solution), or over the whole search

@@ -410,7 +410,7 @@ contains
       type(contact_traction_t) :: t
       real(wp), allocatable :: x(:), w(:), eta(:), q(:), dt(:), p(:), cw(:)
       real(wp) :: u, ek, bk, p0, strip, denom
-      integer :: j, i
+      integer :: j, i, half_ny
 
       dt_avg = 0.0_wp
       if (present(dt_max)) dt_max = 0.0_wp
@@ -426,6 +426,7 @@ contains
       allocate (eta(ny), q(ny), dt(ny), p(ny), cw(ny))
       eta = [(-1.0_wp + 2.0_wp*real(i - 1, wp)/real(ny - 1, wp), i=1, ny)]
       if (.not. present(dt_max)) call flash_trapezoid_weights(ny, cw)
+      half_ny = (ny + 1)/2
       denom = sqrt(pi*th1(1)*th1(2)*th1(3)*abs(u1)) + sqrt(pi*th2(1)*th2(2)*th2(3)*abs(u2))
       p0 = 1.5_wp*c%load/(pi*c%a*b)
       do j = 1, size(x)
@@ -434,7 +435,14 @@ contains
          u = contact_slip(c, x(j))
          bk = b*sqrt(ek)
          p = p0*sqrt(ek)*sqrt(max(1.0_wp - eta**2, 0.0_wp))
-         q = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)*abs(u)
+         if (present(dt_max)) then
+            q = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)*abs(u)
+         else
+            ! the flux is even across the strip: half of it, mirrored
+            q(1:half_ny) = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p(1:half_ny)), rheo%beta, rheo%conductivity, &
+                                             u, h)*abs(u)
+            q(ny:half_ny + 1:-1) = q(1:ny - half_ny)
+         end if
          if (present(dt_max)) then
             call strip_temperature_rise(bk, eta, q, u1, u2, th1, th2, dt)
             strip = bk*(sum(dt) - 0.5_wp*(dt(1) + dt(ny)))*(eta(2) - eta(1))    ! trapezoid over y
