@@ -133,9 +133,10 @@ contains
       integer, intent(in), optional :: n_major, n_strip
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
-      real(wp), allocatable :: xg(:), wg(:), yg(:), wy(:), cy(:)
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, phi, w, rs, cal, sal, scale_sl, sub(3, 8), vmax, v
-      integer :: nm, ns, nz, z, j, nsub
+      integer, parameter :: MAX_FAST = 64
+      real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST)
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, phi, w, rs, cal, sal, scale_sl, sub(4, 8), vmax, v
+      integer :: nm, nh, ns, nz, z, j, nsub
 
       call check_ehd_inputs(c, rheo, h, b, error)
       if (allocated(error)) return
@@ -143,16 +144,17 @@ contains
       ns = EHD_FAST_STRIP
       if (present(n_major)) nm = n_major
       if (present(n_strip)) ns = n_strip
-      if (nm < 1 .or. ns < 1) then
-         call input_error(error, "EHD traction: need at least one Gauss point per zone and per strip")
+      if (nm < 1 .or. ns < 1 .or. nm > MAX_FAST .or. ns > MAX_FAST) then
+         call input_error(error, "EHD traction (fast): need 1 to 64 Gauss points per zone and per strip")
          return
       end if
-      allocate (xg(nm), wg(nm), yg(ns), wy(ns), cy(ns))
-      call gauss_legendre(nm, xg, wg)
-      call gauss_legendre(ns, yg, wy)
+      nh = max(1, (nm + 1)/2)             ! a half of a zone between two rolling points
+      call gauss_legendre(nm, xq(1:nm, 1), wq(1:nm, 1))
+      call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
+      call gauss_legendre(ns, yg(1:ns), wy(1:ns))
       ! psi = pi/4 (1 + y) on [0, pi/2]; dy' = cos(psi) dpsi; both halves of the strip
-      cy = cos(0.25_wp*pi*(1.0_wp + yg))
-      wy = 2.0_wp*0.25_wp*pi*wy*cy
+      cy(1:ns) = cos(0.25_wp*pi*(1.0_wp + yg(1:ns)))
+      wy(1:ns) = 2.0_wp*0.25_wp*pi*wy(1:ns)*cy(1:ns)
       call contact_kinematics(c, t)
       call pure_rolling_points(c, t%n_rolling, t%rolling_points)
       nz = t%n_rolling + 1
@@ -179,27 +181,27 @@ contains
          lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
          hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
          if (z > 1 .and. z < nz) then
-            call add_sub((lo + hi)*0.5_wp, lo, edges(z))
-            call add_sub((lo + hi)*0.5_wp, hi, edges(z + 1))
+            call add_sub((lo + hi)*0.5_wp, lo, edges(z), 2)
+            call add_sub((lo + hi)*0.5_wp, hi, edges(z + 1), 2)
          else if (z > 1) then
-            call add_sub(hi, lo, edges(z))
+            call add_sub(hi, lo, edges(z), 1)
          else if (z < nz) then
-            call add_sub(lo, hi, edges(z + 1))
+            call add_sub(lo, hi, edges(z + 1), 1)
          else
-            call add_sub(lo, hi, huge(1.0_wp))
+            call add_sub(lo, hi, huge(1.0_wp), 1)
          end if
       end do
       do z = 1, nsub
-         associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z))
+         associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => nint(sub(4, z)))
             vmax = asinh(kp*abs(pf - pr))
-            do j = 1, nm
+            do j = 1, merge(nm, nh, r == 1)
                if (kp > 0.0_wp .and. vmax > 1.0_wp) then
-                  v = 0.5_wp*vmax*(1.0_wp + xg(j))
+                  v = 0.5_wp*vmax*(1.0_wp + xq(j, r))
                   phi = pr + sign(1.0_wp, pf - pr)*sinh(v)/kp
-                  w = 0.5_wp*vmax*wg(j)*cosh(v)/kp
+                  w = 0.5_wp*vmax*wq(j, r)*cosh(v)/kp
                else
-                  phi = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xg(j)
-                  w = 0.5_wp*abs(pf - pr)*wg(j)
+                  phi = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xq(j, r)
+                  w = 0.5_wp*abs(pf - pr)*wq(j, r)
                end if
                call add_node(phi, w)
             end do
@@ -212,12 +214,14 @@ contains
 
       !> A sub-zone of phi from pf (free end) to pr, graded at pr when s_r (m) is a
       !> pure-rolling point (huge(): no grading): sinh grading with the inverse width
-      !> zeta |du/ds| E_max a cos(phi) of the shear's saturation layer (1/rad).
-      subroutine add_sub(pf, pr, s_r)
+      !> zeta |du/ds| E_max a cos(phi) of the shear's saturation layer (1/rad); rule 1: nm
+      !> points, rule 2 (a half zone): nh.
+      subroutine add_sub(pf, pr, s_r, rule)
          real(wp), intent(in) :: pf, pr, s_r
+         integer, intent(in) :: rule
          real(wp) :: th, dudx
          nsub = nsub + 1
-         sub(:, nsub) = [pf, pr, 0.0_wp]
+         sub(:, nsub) = [pf, pr, 0.0_wp, real(rule, wp)]
          if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) return
          th = c%alpha + s_r/c%rho
          dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
@@ -226,14 +230,14 @@ contains
             ! the layer graded up to LAYER / K from pr, the rest of the zone plain
             sub(1, nsub) = pr + sign(LAYER/sub(3, nsub), pf - pr)
             nsub = nsub + 1
-            sub(:, nsub) = [pf, sub(1, nsub - 1), 0.0_wp]
+            sub(:, nsub) = [pf, sub(1, nsub - 1), 0.0_wp, real(rule, wp)]
          end if
       end subroutine add_sub
 
       !> Add the node at phi (rad) with weight w (rad) to the integrals.
       subroutine add_node(phi, w)
          real(wp), intent(in) :: phi, w
-         real(wp) :: cphi, sphi, s, wl, ct, st, u, f, fs, e_half
+         real(wp) :: cphi, sphi, s, wl, ct, st, u, f, fs, e_half, z, sq
          integer :: i
          cphi = cos(phi)
          sphi = sin(phi)
@@ -247,7 +251,11 @@ contains
          do i = 1, ns
             e_half = exp(0.5_wp*rheo%alpha*p0*cphi*cy(i))
             if (rheo%beta > 0.0_wp) then
-               f = f + wy(i)*amp*e_half*shear_shape(zeta*abs(u)*e_half)
+               z = zeta*abs(u)*e_half
+               sq = sqrt(1.0_wp + z*z)
+               ! shear_shape(z) = 2 asinh(z) / sqrt(1 + z**2), asinh by its logarithm: its
+               ! absolute error stays ~eps (relative eps / z at small z, where the shear is small)
+               f = f + wy(i)*amp*e_half*(2.0_wp*log(z + sq)/sq)
             else
                f = f + wy(i)*rheo%eta_w*e_half*e_half*abs(u)/h
             end if
