@@ -83,7 +83,7 @@ def test_fast_ehd_traction_at_the_appendix_c_contacts_is_the_reference_within_1e
 
 def test_fast_ehd_traction_over_scaled_slips_and_loads():
     """Slide/roll and spin/roll x 0.5 .. x 2 and loads x 0.5 .. x 2 on every contact: the
-    fast traction's default orders against the 16 x 24 reference (measured: 1.7e-4 - the
+    fast traction's default orders against the 16 x 24 reference (measured: 1.6e-4 - the
     issue's 1e-4 is met at the step-0 contacts only; docs/tribology.md)."""
     worst = 0.0
     for c, k in itertools.product(_contacts(), itertools.product([0.5, 1, 2], [0.5, 1, 2], [0.5, 2])):
@@ -94,7 +94,7 @@ def test_fast_ehd_traction_over_scaled_slips_and_loads():
 
 
 def test_fast_ehd_traction_converges_to_the_reference_quadratures_limit():
-    """Slips x 0.1 .. x 10 and loads x 0.1 .. x 3: with 16 x 12 points the fast traction is
+    """Slips x 0.1 .. x 10 and loads x 0.1 .. x 3: with 24 x 12 points the fast traction is
     within 3e-5 of the reference quadrature converged (128 x 128 points), where the print's
     16 x 24 is itself up to 1.2e-3 off (the film's shear saturates in thin layers at the
     pure-rolling points, which the fast rule grades and the reference does not)."""
@@ -102,7 +102,7 @@ def test_fast_ehd_traction_converges_to_the_reference_quadratures_limit():
     for c, k in itertools.product(_contacts()[::5], itertools.product([0.1, 1, 10], [0.1, 1, 10], [0.1, 3])):
         cs = _scaled(c, *k)
         conv = _core.ehd_contact_method(**cs, method="reference", n_major=128, n_strip=128)
-        worst_fast = max(worst_fast, _error(_core.ehd_contact_method(**cs, method="fast", n_major=16, n_strip=12),
+        worst_fast = max(worst_fast, _error(_core.ehd_contact_method(**cs, method="fast", n_major=24, n_strip=12),
                                             conv))
         worst_ref = max(worst_ref, _error(_core.ehd_contact_method(**cs, method="reference", n_major=16,
                                                                    n_strip=24), conv))

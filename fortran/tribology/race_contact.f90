@@ -18,7 +18,7 @@ module adore_tribology_race_contact
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise, &
-                                           ehd_strip_traction
+                                           ehd_strip_traction, ehd_contact_traction_fast
    use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
    use adore_contact_line_slices, only: line_contact_t
    use adore_tribology_roller_traction, only: line_traction_t
@@ -134,9 +134,10 @@ contains
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):
    !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
-   !> lubricant's traction rheology at the wall temperature, EHD_GAUSS x EHD_STRIP points
-   !> for the force and heat.
-   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error)
+   !> lubricant's traction rheology at the wall temperature; by the fast quadrature
+   !> (ehd_contact_traction_fast, default) or, with reference = .true., by the reference
+   !> quadrature of EHD_GAUSS x EHD_STRIP points (the step-0 print's).
+   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, reference)
       type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: temperature(:)
       type(ball_race_contact_t), intent(in) :: cj
@@ -144,7 +145,15 @@ contains
       integer, intent(in) :: race
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
-      call ehd_contact_traction(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
+      logical, intent(in), optional :: reference
+      logical :: ref
+      ref = .false.
+      if (present(reference)) ref = reference
+      if (ref) then
+         call ehd_contact_traction(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
+      else
+         call ehd_contact_traction_fast(cj, wall_rheology(b, temperature, race), h, b_minor, t, error)
+      end if
    end subroutine ehd_traction
 
    !> The printed "Slip Velocity" (m/s) and "Trac Coeff" of race contact cj: |u| at the
