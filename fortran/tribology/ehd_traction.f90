@@ -28,7 +28,7 @@ module adore_tribology_ehd_traction
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_flash, only: strip_temperature_rise, flash_trapezoid_weights
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
-                                   interior_extremum, contact_kinematics, pure_rolling_points
+                                   interior_extremum, contact_kinematics, rolling_zones, axis_nodes
    implicit none
    private
 
@@ -94,12 +94,8 @@ contains
       real(wp) :: u, f, q, y(n_strip), wy(n_strip)
       integer :: j, m
 
-      call check_ehd_inputs(c, rheo, h, b, error)
+      call check_ehd_inputs(c, rheo, h, b, n_gauss, n_strip, error)
       if (allocated(error)) return
-      if (n_gauss < 1 .or. n_strip < 1) then
-         call input_error(error, "EHD traction: need at least one Gauss point per zone and per strip")
-         return
-      end if
       call major_axis_nodes(c, n_gauss, t, x, w)
       call strip_rule(n_strip, y, wy, m)
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
@@ -138,13 +134,13 @@ contains
       real(wp) :: edges(4), p0, amp, zeta, lo, hi, phi, w, rs, cal, sal, scale_sl, sub(4, 8), vmax, v
       integer :: nm, nh, ns, nz, z, j, nsub
 
-      call check_ehd_inputs(c, rheo, h, b, error)
-      if (allocated(error)) return
       nm = EHD_FAST_MAJOR
       ns = EHD_FAST_STRIP
       if (present(n_major)) nm = n_major
       if (present(n_strip)) ns = n_strip
-      if (nm < 1 .or. ns < 1 .or. nm > MAX_FAST .or. ns > MAX_FAST) then
+      call check_ehd_inputs(c, rheo, h, b, nm, ns, error)
+      if (allocated(error)) return
+      if (nm > MAX_FAST .or. ns > MAX_FAST) then
          call input_error(error, "EHD traction (fast): need 1 to 64 Gauss points per zone and per strip")
          return
       end if
@@ -156,18 +152,9 @@ contains
       cy(1:ns) = cos(0.25_wp*pi*(1.0_wp + yg(1:ns)))
       wy(1:ns) = 2.0_wp*0.25_wp*pi*wy(1:ns)*cy(1:ns)
       call contact_kinematics(c, t)
-      call pure_rolling_points(c, t%n_rolling, t%rolling_points)
-      nz = t%n_rolling + 1
-      edges(1) = -c%a
-      edges(2:nz) = t%rolling_points(1:t%n_rolling)
-      edges(nz + 1) = c%a
+      call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points)
       p0 = 1.5_wp*c%load/(pi*c%a*b)
-      amp = 0.0_wp
-      zeta = 0.0_wp
-      if (rheo%beta > 0.0_wp) then
-         amp = sqrt(2.0_wp*rheo%conductivity*rheo%eta_w/rheo%beta)/h
-         zeta = 0.5_wp*sqrt(rheo%beta*rheo%eta_w/(2.0_wp*rheo%conductivity))
-      end if
+      call film_constants(rheo, h, amp, zeta)
       rs = c%race_speed
       cal = cos(c%alpha)
       sal = sin(c%alpha)
@@ -282,42 +269,28 @@ contains
       integer, intent(in) :: n_gauss, n_strip
       real(wp), intent(out) :: power
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: xg(n_gauss), wg(n_gauss), y(n_strip), wy(n_strip), edges(4), pts(2), lo, hi, x, w, u, f, q
-      integer :: nr, nz, z, j, m
+      real(wp) :: x(3*max(n_gauss, 0)), w(3*max(n_gauss, 0)), y(n_strip), wy(n_strip), u, f, q
+      integer :: n, j, m
 
       power = 0.0_wp
-      call check_ehd_inputs(c, rheo, h, b, error)
+      call check_ehd_inputs(c, rheo, h, b, n_gauss, n_strip, error)
       if (allocated(error)) return
-      if (n_gauss < 1 .or. n_strip < 1) then
-         call input_error(error, "EHD traction: need at least one Gauss point per zone and per strip")
-         return
-      end if
-      call pure_rolling_points(c, nr, pts)
-      nz = nr + 1
-      edges(1) = -c%a
-      edges(2:nz) = pts(1:nr)
-      edges(nz + 1) = c%a
-      call gauss_legendre(n_gauss, xg, wg)
+      call axis_nodes(c, n_gauss, x, w, n)
       call strip_rule(n_strip, y, wy, m)
-      do z = 1, nz
-         lo = edges(z)
-         hi = edges(z + 1)
-         do j = 1, n_gauss                        ! the nodes of major_axis_nodes
-            x = 0.5_wp*(lo + hi) + 0.5_wp*(hi - lo)*xg(j)
-            w = 0.5_wp*(hi - lo)*wg(j)
-            u = contact_slip(c, x)
-            call strip_traction(c, rheo, h, b, y(1:m), wy(1:m), x, u, f, q)
-            power = power + f*abs(u)*w
-         end do
+      do j = 1, n
+         u = contact_slip(c, x(j))
+         call strip_traction(c, rheo, h, b, y(1:m), wy(1:m), x(j), u, f, q)
+         power = power + f*abs(u)*w(j)
       end do
    end subroutine ehd_contact_power
 
-   !> Input error unless contact c, film h (m), rheology and semi-minor axis b (m) are valid
-   !> for the EHD traction.
-   subroutine check_ehd_inputs(c, rheo, h, b, error)
+   !> Input error unless contact c, film h (m), rheology, semi-minor axis b (m) and the
+   !> quadrature orders n_major, n_strip (>= 1) are valid for the EHD traction.
+   subroutine check_ehd_inputs(c, rheo, h, b, n_major, n_strip, error)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
       real(wp), intent(in) :: h, b
+      integer, intent(in) :: n_major, n_strip
       type(error_type), allocatable, intent(out) :: error
       if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load > 0.0_wp &
                  .and. c%r_b > c%rho .and. abs(c%side) == 1 .and. b > 0.0_wp)) then
@@ -327,6 +300,10 @@ contains
       if (.not. (h > 0.0_wp .and. rheo%eta_w > 0.0_wp .and. rheo%alpha >= 0.0_wp .and. rheo%beta >= 0.0_wp &
                  .and. (rheo%beta == 0.0_wp .or. rheo%conductivity > 0.0_wp))) then
          call input_error(error, "EHD traction: need film h > 0, viscosity > 0, alpha, beta >= 0, conductivity > 0")
+         return
+      end if
+      if (n_major < 1 .or. n_strip < 1) then
+         call input_error(error, "EHD traction: need at least one Gauss point per zone and per strip")
          return
       end if
    end subroutine check_ehd_inputs
@@ -364,6 +341,20 @@ contains
       end do
    end subroutine strip_rule
 
+   !> Constants of the thermal film shear of the module header for film h (m): tau h / h =
+   !> amp shear_shape(zeta |u| E) (amp in Pa, zeta in s/m); both 0 for an isothermal film.
+   pure subroutine film_constants(rheo, h, amp, zeta)
+      type(ehd_rheology_t), intent(in) :: rheo
+      real(wp), intent(in) :: h
+      real(wp), intent(out) :: amp, zeta
+      amp = 0.0_wp
+      zeta = 0.0_wp
+      if (rheo%beta > 0.0_wp) then
+         amp = sqrt(2.0_wp*rheo%conductivity*rheo%eta_w/rheo%beta)/h
+         zeta = 0.5_wp*sqrt(rheo%beta*rheo%eta_w/(2.0_wp*rheo%conductivity))
+      end if
+   end subroutine film_constants
+
    !> Traction f (N/m) and load q (N/m) of the strip across the Hertz ellipse at node s (m)
    !> of the major axis, slip u (m/s), folded strip rule (y, wy): tau h = amp E
    !> shear_shape(zeta |u| E), E = exp(alpha p / 2) (module header with eta_w(p) =
@@ -377,12 +368,7 @@ contains
       integer :: i
 
       p0 = 1.5_wp*c%load/(pi*c%a*b)
-      amp = 0.0_wp
-      zeta = 0.0_wp
-      if (rheo%beta > 0.0_wp) then
-         amp = sqrt(2.0_wp*rheo%conductivity*rheo%eta_w/rheo%beta)/h
-         zeta = 0.5_wp*sqrt(rheo%beta*rheo%eta_w/(2.0_wp*rheo%conductivity))
-      end if
+      call film_constants(rheo, h, amp, zeta)
       xi2 = (s/c%a)**2
       half = b*sqrt(1.0_wp - xi2)
       f = 0.0_wp
