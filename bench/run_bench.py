@@ -1,8 +1,14 @@
-"""Benchmarks (run by `make bench`): wall time of whole runs of the appendix decks.
+"""Benchmarks (run by `make bench`): wall time of whole runs of the appendix decks, and the
+CPU time of one EHD contact evaluation.
 
 Speed targets live here, never in the test suite.  Each case is run a few times;
 the best and median wall times are printed, for the standalone executable and the
-f2py path.  Results are printed, and written to bench/results/latest.json.
+f2py path.  The EHD contact evaluation (force, moment and loss of one ball/race contact,
+traction model 3; issue #16) is timed inside the engine over many evaluations, for every
+race contact of the Appendix C step 0, by the fast and the reference quadrature: its rows
+give the mean over the contacts (best_s) and the slowest contact (median_s column: the
+largest), in seconds, and us_per_contact.  Results are printed, and written to
+bench/results/latest.json.
 """
 
 from __future__ import annotations
@@ -33,6 +39,32 @@ def _time(fn, repeat=REPEAT):
     return min(times), statistics.median(times)
 
 
+def _ehd_contact_rows(deck):
+    """Microseconds per EHD contact evaluation over the race contacts of deck's step 0."""
+    import math
+
+    balls, _ = _core.ball_step0_from_deck(deck)
+    lub = _core.lubricant(1, 323.0)
+    rheo = (lub["eta_t"], lub["alpha_t"], lub["beta_t"], lub["conductivity"])
+    inner_speed = 20000 * math.pi / 30          # Appendix C: inner race at 20000 rpm, outer fixed
+    contacts = []
+    for k in range(len(balls["r"])):
+        om = (balls["spin_speed"][k] * math.cos(balls["pitch"][k]), balls["spin_speed"][k] * math.sin(balls["pitch"][k]))
+        for tag, side, w_race in (("o", 1, 0.0), ("i", -1, inner_speed)):
+            contacts.append(dict(side=side, alpha=balls[f"alpha_{tag}"][k], rho=0.01905 / 2, r_b=balls["r"][k],
+                                 omega=om, race_speed=w_race - balls["orbital_speed"][k], a=balls[f"a_{tag}"][k],
+                                 load=balls[f"q_{tag}"][k], rheology=rheo,
+                                 film=balls[f"film_{tag}"][k] * balls[f"thermal_factor_{tag}"][k],
+                                 b=balls[f"b_{tag}"][k]))
+    rows = []
+    for method, repeat in (("fast", 20000), ("reference", 5000)):
+        us = [min(_core.ehd_contact_microseconds(**c, method=method, repeat=repeat) for _ in range(3))
+              for c in contacts]
+        rows.append({"deck": deck.name, "case": f"EHD contact, {method}", "best_s": statistics.mean(us) * 1e-6,
+                     "median_s": max(us) * 1e-6, "us_per_contact": statistics.mean(us)})
+    return rows
+
+
 def main() -> int:
     """`run_bench.py [runs] [sweep]`: the runs of the appendix decks and/or the sweep bench [default: both]."""
     names = sys.argv[1:] or ["runs", "sweep"]
@@ -53,6 +85,7 @@ def main() -> int:
         for deck in decks[:1]:
             best, median = _time(lambda: _core.ball_step0_from_deck(deck), repeat=20)
             rows.append({"deck": deck.name, "case": "step-0 solve (ball)", "best_s": best, "median_s": median})
+            rows += _ehd_contact_rows(deck)
     if "sweep" in names:
         sys.path.insert(0, str(Path(__file__).resolve().parent))
         from sweep_bench import bench_sweep
@@ -60,6 +93,10 @@ def main() -> int:
         rows += bench_sweep()
     print(f"{'deck':28s} {'case':30s} {'best (s)':>10s} {'median (s)':>11s}")
     for row in rows:
+        if "us_per_contact" in row:
+            print(f"{row['deck']:28s} {row['case']:30s} {row['us_per_contact']:7.2f} us mean, "
+                  f"{row['median_s'] * 1e6:.2f} us slowest contact")
+            continue
         print(f"{row['deck']:28s} {row['case']:30s} {row['best_s']:10.4f} {row['median_s']:11.4f}")
     results = ROOT / "bench" / "results"
     results.mkdir(exist_ok=True)

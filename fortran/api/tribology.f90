@@ -242,6 +242,118 @@ subroutine adore_tribo_ehd_contact(geom, rheo, h, b, n_gauss, n_strip, result, s
    result = traction_result(t, abs(u), f/q)
 end subroutine adore_tribo_ehd_contact
 
+!> EHD contact traction by the reference quadrature (method 0: ehd_contact_traction with
+!> n_major Gauss points per slip zone and n_strip across each strip) or the fast one
+!> (method 1: ehd_contact_traction_fast with n_major, n_strip; 0 takes its defaults).
+!> geom, rheo, h, b as adore_tribo_ehd_contact.  result = [force (N), force_cos (N),
+!> force_sin (N), power (W), sliding (N m/s), max slip (m/s), coefficient, n rolling points].
+subroutine adore_tribo_ehd_contact_method(geom, rheo, h, b, method, n_major, n_strip, result, status, message)
+   use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
+   use adore_core_error, only: error_type, ADORE_OK, input_error
+   use adore_tribology_slip, only: contact_traction_t
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_contact_traction_fast, &
+                                           EHD_FAST_MAJOR, EHD_FAST_STRIP
+   use adore_api_unpack, only: contact_from_geom
+   implicit none
+   real(wp), intent(in) :: geom(9), rheo(4), h, b
+   integer, intent(in) :: method, n_major, n_strip
+   real(wp), intent(out) :: result(8)
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+   type(error_type), allocatable :: error
+   type(contact_traction_t) :: t
+
+   result = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   call ehd_method(contact_from_geom(geom), ehd_rheology_t(eta_w=rheo(1), alpha=rheo(2), beta=rheo(3), &
+                   conductivity=rheo(4)), h, b, method, n_major, n_strip, t, error)
+   if (allocated(error)) then
+      call set_error(error, status, message)
+      return
+   end if
+   result = [t%force, t%force_cos, t%force_sin, t%power, t%sliding, t%max_slip, t%coefficient, real(t%n_rolling, wp)]
+
+contains
+
+   !> the contact by the chosen method
+   subroutine ehd_method(c, rh, h, b, method, n_major, n_strip, t, error)
+      use adore_tribology_slip, only: ball_race_contact_t
+      type(ball_race_contact_t), intent(in) :: c
+      type(ehd_rheology_t), intent(in) :: rh
+      real(wp), intent(in) :: h, b
+      integer, intent(in) :: method, n_major, n_strip
+      type(contact_traction_t), intent(out) :: t
+      type(error_type), allocatable, intent(out) :: error
+      select case (method)
+      case (0)
+         call ehd_contact_traction(c, rh, h, b, n_major, n_strip, t, error)
+      case (1)
+         call ehd_contact_traction_fast(c, rh, h, b, t, error, merge(n_major, EHD_FAST_MAJOR, n_major > 0), &
+                                        merge(n_strip, EHD_FAST_STRIP, n_strip > 0))
+      case default
+         call input_error(error, "EHD contact: method must be 0 (reference) or 1 (fast)")
+      end select
+   end subroutine ehd_method
+
+end subroutine adore_tribo_ehd_contact_method
+
+!> Mean CPU time (microseconds) of one EHD contact evaluation (force, moment and loss of one
+!> ball/race contact), method 0 (reference, 16 x 24 points: EHD_GAUSS x EHD_STRIP) or 1
+!> (fast, default orders), over n_rep evaluations; geom, rheo, h, b as
+!> adore_tribo_ehd_contact.  For the benchmark (bench/run_bench.py), never for tests.
+subroutine adore_tribo_ehd_contact_time(geom, rheo, h, b, method, n_rep, microseconds, status, message)
+   use adore_core_kinds, only: wp
+   use adore_api_status, only: set_error
+   use adore_core_error, only: error_type, ADORE_OK, input_error
+   use adore_tribology_slip, only: contact_traction_t, ball_race_contact_t
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_contact_traction_fast
+   use adore_tribology_race_contact, only: EHD_GAUSS, EHD_STRIP
+   use adore_api_unpack, only: contact_from_geom
+   implicit none
+   real(wp), intent(in) :: geom(9), rheo(4), h, b
+   integer, intent(in) :: method, n_rep
+   real(wp), intent(out) :: microseconds
+   integer, intent(out) :: status
+   character(len=2048), intent(out) :: message
+   type(error_type), allocatable :: error
+   type(contact_traction_t) :: t
+   type(ball_race_contact_t) :: c
+   type(ehd_rheology_t) :: rh
+   real(wp) :: t0, t1, sink
+   integer :: i
+
+   microseconds = 0.0_wp
+   status = ADORE_OK
+   message = ""
+   if (n_rep < 1 .or. (method /= 0 .and. method /= 1)) then
+      call input_error(error, "EHD contact timing: need n_rep >= 1 and method 0 or 1")
+      call set_error(error, status, message)
+      return
+   end if
+   c = contact_from_geom(geom)
+   rh = ehd_rheology_t(eta_w=rheo(1), alpha=rheo(2), beta=rheo(3), conductivity=rheo(4))
+   sink = 0.0_wp
+   call cpu_time(t0)
+   do i = 1, n_rep
+      c%load = geom(9)*(1.0_wp + 1.0e-12_wp*i)    ! a new state each time (nothing hoisted)
+      if (method == 0) then
+         call ehd_contact_traction(c, rh, h, b, EHD_GAUSS, EHD_STRIP, t, error)
+      else
+         call ehd_contact_traction_fast(c, rh, h, b, t, error)
+      end if
+      if (allocated(error)) then
+         call set_error(error, status, message)
+         return
+      end if
+      sink = sink + t%power + t%force_cos
+   end do
+   call cpu_time(t1)
+   microseconds = (t1 - t0)/n_rep*1.0e6_wp
+   if (.not. (sink == sink)) microseconds = -1.0_wp
+end subroutine adore_tribo_ehd_contact_time
+
 !> Shear stress tau(n) (Pa) of a Newtonian film (thickness h, m) sheared at slips u(n)
 !> (m/s); wall viscosity eta_w (Pa s), beta (1/K), K_f (W/m/K); film_shear_stress.
 subroutine adore_tribo_film_shear(n, u, eta_w, beta, k_f, h, tau, status, message)

@@ -329,7 +329,8 @@ contains
                   call check_ehd_film(b, b%temperature, k, j, s%film(j, k), s%thermal_factor(j, k), error)
                   if (allocated(error)) return
                   h = s%film(j, k)*s%thermal_factor(j, k)
-                  call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error)
+                  ! the print's losses and tractions by the reference quadrature
+                  call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error, reference=.true.)
                   if (allocated(error)) return
                   call ehd_flash(b, b%temperature, c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
                else

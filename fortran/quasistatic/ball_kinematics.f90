@@ -26,10 +26,10 @@ module adore_quasistatic_ball_kinematics
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_power
    use adore_tribology_traction_law, only: traction_law_t
-   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
-                                   SIDE_OUTER, SIDE_INNER
+   use adore_tribology_slip, only: ball_race_contact_t, contact_power, SIDE_OUTER, SIDE_INNER
+   use adore_quasistatic_ball_min_dissipation, only: brent_minimum, newton_minimum_2d
    implicit none
    private
 
@@ -188,7 +188,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(ehd_films_t), intent(in), optional :: ehd
       type(ball_race_contact_t) :: c(2)
-      type(contact_traction_t) :: t
+      real(wp) :: pj
       integer :: j
 
       p = 0.0_wp
@@ -196,12 +196,12 @@ contains
       do j = 1, 2
          if (.not. (q(j) > 0.0_wp .and. a(j) > 0.0_wp)) cycle
          if (present(ehd)) then
-            call ehd_contact_traction(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, t, error)
+            call ehd_contact_power(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, pj, error)
          else
-            call contact_traction(c(j), law, 1.0_wp, n_gauss, t, error)
+            call contact_power(c(j), law, 1.0_wp, n_gauss, pj, error)
          end if
          if (allocated(error)) return
-         p = p + t%power
+         p = p + pj
       end do
    end subroutine dissipation
 
@@ -209,10 +209,18 @@ contains
    !> 4.4.7): inner contact centre in pure rolling, (beta, w_b) minimising the power of
    !> both race contacts.  Arguments as race_control_kinematics plus a(2), q(2): semi-major
    !> axes (m) and loads (N) of the outer and inner contact; law: the traction law (the
-   !> deck's curve, Rec 10.1, or a traction-slip table), or the EHD film traction when ehd is given.  Pitch searched in [-30, 30] deg (grid step 1 deg), or within
-   !> +-4 deg of `hint`, then refined by parabolic interpolation and golden section.
+   !> deck's curve, Rec 10.1, or a traction-slip table), or the EHD film traction when ehd is given.
+   !> Fast search (default): Newton's method on the stationarity conditions of the power in
+   !> (pitch, spin speed), adore_quasistatic_ball_min_dissipation, from `hint` (the pitch
+   !> of a previous solution) or from the best point of a 1 deg grid of pitch in
+   !> [-30, 30] deg (spin speed by a 1-D Newton at each); it places the minimum of the same
+   !> power to ~1e-10, and falls back to the reference search when it fails or leaves the
+   !> reference's search box.  Reference search (reference = .true.): pitch on that grid
+   !> (within +-4 deg of `hint` when given), best spin speed by golden section at each,
+   !> refined by parabolic interpolation and golden section.
    !> Input error when neither contact is loaded or the inner contact geometry is degenerate.
-   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, law, k, error, hint, ehd)
+   subroutine min_dissipation_kinematics(d, r_b, n_o, n_i, w_o, w_i, a, q, law, k, error, hint, ehd, reference, &
+                                         hint_speed)
       real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2)
       type(traction_law_t), intent(in) :: law
       type(ball_kinematics_t), intent(out) :: k
@@ -222,12 +230,19 @@ contains
       real(wp), intent(in), optional :: hint
       !> the EHD film of both contacts: the power is the EHD traction's (model 3)
       type(ehd_films_t), intent(in), optional :: ehd
+      !> .true.: the reference search (grid and golden sections) instead of Newton's method
+      logical, intent(in), optional :: reference
+      !> spin speed w_b (rad/s) of the previous solution whose pitch is `hint`: Newton starts
+      !> there (the fast search)
+      real(wp), intent(in), optional :: hint_speed
 
       real(wp), parameter :: step = pi/180.0_wp
       integer, parameter :: n_full = 61, n_near = 9
       real(wp), parameter :: gr = 0.5_wp*(sqrt(5.0_wp) - 1.0_wp)
       real(wp) :: betas(n_full), powers(n_full), speeds(n_full), scale, lo, hi, x1, x2, f1, f2, bp, den, centre
+      real(wp) :: beta_fixed
       integer :: j, i, it, n_grid
+      logical :: done
 
       if (.not. ((q(1) > 0.0_wp .and. a(1) > 0.0_wp) .or. (q(2) > 0.0_wp .and. a(2) > 0.0_wp))) then
          call input_error(error, "minimum dissipation kinematics: no loaded race contact")
@@ -248,6 +263,14 @@ contains
       end if
       do j = 1, n_grid
          betas(j) = centre + (j - 1 - (n_grid - 1)/2)*step
+      end do
+      done = .false.
+      if (present(reference)) done = reference
+      if (.not. done) then
+         call newton_search(done)
+         if (allocated(error) .or. done) return
+      end if
+      do j = 1, n_grid
          call best_speed(betas(j), speeds(j), powers(j))
          if (allocated(error)) return
       end do
@@ -290,6 +313,105 @@ contains
       k%ok = .true.
 
    contains
+
+      !> The fast search (see above): k filled and done = .true. on success.
+      subroutine newton_search(done)
+         logical, intent(out) :: done
+         real(wp), parameter :: h = 1.0e-4_wp, tol = 1.0e-8_wp, max_step = 0.5_wp
+         real(wp) :: lo2(2), hi2(2), y0(2), y(2), f, x, best, s_turn
+         integer :: j, n_eval
+         logical :: ok, failed
+
+         done = .false.
+         ! scaled variables: pitch in steps (deg), spin speed in units of `scale`
+         s_turn = sign(1.0_wp, w_i - w_o)
+         lo2 = [betas(1)/step, min(-1.5_wp*s_turn, -0.5_wp*s_turn)]
+         hi2 = [betas(n_grid)/step, max(-1.5_wp*s_turn, -0.5_wp*s_turn)]
+         if (present(hint)) then
+            y0(1) = min(max(hint/step, lo2(1)), hi2(1))
+            if (present(hint_speed)) then
+               ! from the previous solution itself (its basin: the state moved little)
+               y0(2) = min(max(hint_speed/scale, lo2(2)), hi2(2))
+               call newton_minimum_2d(power_objective, y0, lo2, hi2, h, tol, max_step, y, f, ok, failed, n_eval)
+               if (failed) return
+               if (ok) then
+                  call accept(y, f)
+                  done = .true.
+                  return
+               end if
+            end if
+         else
+            ! the pitch grid of the reference search, best spin speed at each (in a narrow
+            ! interval about the neighbouring pitch's), to start Newton in the basin of the
+            ! least power
+            best = huge(1.0_wp)
+            x = huge(1.0_wp)
+            do j = 1, n_grid
+               beta_fixed = betas(j)
+               call best_scaled_speed(x, lo2(2), hi2(2), 1.0e-4_wp, x, f, failed)
+               if (failed) return
+               if (f < best) then
+                  best = f
+                  y0(1) = betas(j)/step
+               end if
+            end do
+         end if
+         beta_fixed = y0(1)*step
+         x = huge(1.0_wp)
+         call best_scaled_speed(x, lo2(2), hi2(2), 1.0e-7_wp, y0(2), f, failed)
+         if (failed) return
+         call newton_minimum_2d(power_objective, y0, lo2, hi2, h, tol, max_step, y, f, ok, failed, n_eval)
+         if (failed .or. .not. ok) return
+         call accept(y, f)
+         done = .true.
+
+      end subroutine newton_search
+
+      !> k from the scaled minimum y (pitch in steps, spin speed in units of scale), power f (W)
+      subroutine accept(y, f)
+         real(wp), intent(in) :: y(2), f
+         k%pitch = y(1)*step
+         k%spin_speed = y(2)*scale
+         k%power = f
+         k%orbital_speed = inner_rolling_orbit(k%pitch, k%spin_speed)
+         k%ok = .true.
+      end subroutine accept
+
+      !> Least power f over the scaled spin speed at pitch beta_fixed: x (to tol) by Brent's
+      !> method within 0.03 of x_near (a neighbouring solution), or over the whole search
+      !> interval [lo, hi] when x_near is huge() or the minimum lies on the narrow interval's end.
+      subroutine best_scaled_speed(x_near, lo, hi, tol, x, f, failed)
+         real(wp), intent(in) :: x_near, lo, hi, tol
+         real(wp), intent(out) :: x, f
+         logical, intent(out) :: failed
+         real(wp) :: l, u
+         if (x_near < huge(1.0_wp)) then
+            l = max(x_near - 0.03_wp, lo)
+            u = min(x_near + 0.03_wp, hi)
+            call brent_minimum(speed_objective, l, u, tol, x, f, failed)
+            if (failed) return
+            if (x - l > 10.0_wp*tol .and. u - x > 10.0_wp*tol) return
+         end if
+         call brent_minimum(speed_objective, lo, hi, tol, x, f, failed)
+      end subroutine best_scaled_speed
+
+      !> Power (W) at pitch beta_fixed and spin speed x*scale (Newton's scaled variable).
+      subroutine speed_objective(x, f, failed)
+         real(wp), intent(in) :: x
+         real(wp), intent(out) :: f
+         logical, intent(out) :: failed
+         f = power_at(beta_fixed, x*scale)
+         failed = allocated(error)
+      end subroutine speed_objective
+
+      !> Power (W) at pitch y(1)*step and spin speed y(2)*scale (Newton's scaled variables).
+      subroutine power_objective(y, f, failed)
+         real(wp), intent(in) :: y(2)
+         real(wp), intent(out) :: f
+         logical, intent(out) :: failed
+         f = power_at(y(1)*step, y(2)*scale)
+         failed = allocated(error)
+      end subroutine power_objective
 
       !> Orbital speed (rad/s) for which the inner contact centre rolls at (beta, w_b).
       pure function inner_rolling_orbit(beta, w_b) result(w_m)

@@ -106,7 +106,7 @@ contains
       type(ball_start_t), intent(in), optional :: guess
 
       real(wp), allocatable :: speed(:), new_speed(:)
-      real(wp) :: d_i(2), d_o(2), change, previous, tol, fscale, mech
+      real(wp) :: d_i(2), d_o(2), change, previous, previous_speed, tol, fscale, mech
       integer :: pass, k
       logical :: first
       logical, allocatable :: loaded(:)
@@ -136,6 +136,7 @@ contains
                associate (e => start%equilibrium)
                   first = pass == 1 .and. .not. present(guess)
                   previous = start%kinematics(k)%pitch   ! later passes: search near it
+                  previous_speed = start%kinematics(k)%spin_speed
                   if (present(ehd)) then
                      if (first) then
                         call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
@@ -146,7 +147,7 @@ contains
                         call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
                                                         [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
                                                         [e%q_o(k), e%q_i(k)], law, start%kinematics(k), error, &
-                                                        previous, ehd(k))
+                                                        previous, ehd(k), hint_speed=previous_speed)
                      end if
                   else if (first) then
                      call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
@@ -156,7 +157,7 @@ contains
                      call min_dissipation_kinematics(b%d, e%r(k), d_o, d_i, w_outer, w_inner, &
                                                      [e%c_o(k)%semi_major, e%c_i(k)%semi_major], &
                                                      [e%q_o(k), e%q_i(k)], law, start%kinematics(k), error, &
-                                                     previous)
+                                                     previous, hint_speed=previous_speed)
                   end if
                end associate
                if (allocated(error)) return

@@ -6,7 +6,7 @@ program test_tribology
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
-   use adore_core_quadrature, only: gauss_legendre
+   use adore_core_quadrature, only: gauss_legendre, gauss_legendre_newton, TABLED_ORDERS
    use adore_tribology_film, only: lubricant_t, central_film_thickness, thermal_reduction_factor, &
                                    lubricant_from_code, kinematic_viscosity, dynamic_viscosity, &
                                    temperature_viscosity_coefficient, LUBRICANT_MIL_L_7808
@@ -14,14 +14,23 @@ program test_tribology
                                    contact_slip, pure_rolling_points, SIDE_OUTER, SIDE_INNER
    use adore_tribology_flash, only: flash_rise_dimensionless, contact_temperature_rise
    use adore_tribology_traction_law, only: curve_law
+   use adore_tribology_slip, only: contact_power
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_contact_power, &
+                                           ehd_contact_traction_fast
+   use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, min_dissipation_kinematics, ehd_films_t
    implicit none
 
+   !> the Appendix C deck's fitted traction curve kappa = (A + B u) exp(-C u) + D: [A, B, C, D]
+   !> (tests/test_ball_step0_tribology.py COEF)
+   real(wp), parameter :: LAW(4) = [-1.6e-2_wp, 3.82896e-2_wp, 1.71782_wp, 1.6e-2_wp]
 
    call test_gauss()
    call test_film()
    call test_lubricant()
    call test_slip()
    call test_flash()
+   call test_fast_paths()
+   call test_min_dissipation_search()
 
    call finish("tribology")
 
@@ -35,6 +44,97 @@ contains
       call check(abs(sum(w*x**12) - 2.0_wp/13.0_wp) < 1.0e-14_wp, "gauss: x**12 exact")
       call check(abs(sum(w*x**13)) < 1.0e-14_wp, "gauss: x**13 exact")
    end subroutine test_gauss
+
+   !> The fast paths of issue #16 against their references: tabled Gauss rules bit for bit
+   !> the Newton ones; the power-only integrals bit for bit the full routines' power; the
+   !> flash contact average by trapezoid weights equal to eq 53's O(n**2) sum; the fast EHD
+   !> traction converging to the reference quadrature's limit as its orders grow.
+   subroutine test_fast_paths()
+      type(error_type), allocatable :: error
+      type(ball_race_contact_t) :: c
+      type(contact_traction_t) :: t, tf
+      type(ehd_rheology_t) :: rheo
+      real(wp), allocatable :: x(:), w(:), xn(:), wn(:)
+      real(wp) :: p, avg_ref, avg_fast, peak, xk(3), wk(3), g(3)
+      integer :: k, n
+
+      do k = 1, size(TABLED_ORDERS)
+         n = TABLED_ORDERS(k)
+         allocate (x(n), w(n), xn(n), wn(n))
+         call gauss_legendre(n, x, w)
+         call gauss_legendre_newton(n, xn, wn)
+         call check(all(x == xn) .and. all(w == wn), "gauss: tabled rule bit-identical to Newton's")
+         deallocate (x, w, xn, wn)
+      end do
+      ! Appendix C ball 1, outer race contact at its step-0 state (EHD film of model 3)
+      c = ball_race_contact_t(SIDE_OUTER, atan2(0.14701482232434315_wp, 0.9891342891725783_wp), 0.009525_wp, &
+                              0.07004480819399529_wp, -7894.364961447181_wp*[cos(-0.13801441540302414_wp), &
+                              sin(-0.13801441540302414_wp)], -943.0_wp, 0.0023737604859883953_wp, 2479.297919485147_wp)
+      rheo = ehd_rheology_t(eta_w=0.0815882_wp, alpha=5.2214e-9_wp, beta=0.0425519_wp, conductivity=0.1425185_wp)
+      call ehd_contact_traction(c, rheo, 4.55e-7_wp, 3.15e-4_wp, 4, 8, t, error)
+      call ehd_contact_power(c, rheo, 4.55e-7_wp, 3.15e-4_wp, 4, 8, p, error)
+      call check(.not. allocated(error) .and. p == t%power, "EHD power-only: bit-identical to the full routine's")
+      call contact_traction(c, curve_law([0.0_wp, 0.02_wp, 0.016_wp, 1.0_wp]), 1.0_wp, 4, t, error)
+      call contact_power(c, curve_law([0.0_wp, 0.02_wp, 0.016_wp, 1.0_wp]), 1.0_wp, 4, p, error)
+      call check(.not. allocated(error) .and. p == t%power, "law power-only: bit-identical to the full routine's")
+      ! fast EHD traction at high orders against the reference quadrature at high orders
+      call ehd_contact_traction(c, rheo, 4.55e-7_wp, 3.15e-4_wp, 128, 128, t, error)
+      call ehd_contact_traction_fast(c, rheo, 4.55e-7_wp, 3.15e-4_wp, tf, error, 32, 24)
+      call check(abs(tf%power/t%power - 1.0_wp) < 1.0e-7_wp .and. abs(tf%force - t%force) < 1.0e-6_wp*abs(t%force) &
+                 .and. abs(tf%force_sin - t%force_sin) < 1.0e-5_wp*abs(t%force), &
+                 "EHD fast: same limit as the reference quadrature")
+      ! flash contact average: trapezoid weights against eq 53 summed
+      xk = [-0.8e-3_wp, 0.1e-3_wp, 0.7e-3_wp]
+      wk = [0.3e-3_wp, 0.9e-3_wp, 0.4e-3_wp]
+      g = [0.3_wp, 0.01_wp, 0.2_wp]
+      call contact_temperature_rise(1.0e-3_wp, 2.0e-4_wp, 2.0e9_wp, xk, wk, g, 12.0_wp, 9.0_wp, [7800.0_wp, 460.0_wp, &
+                                    40.0_wp], [7800.0_wp, 460.0_wp, 40.0_wp], 201, avg_ref, peak, error)
+      call contact_temperature_rise(1.0e-3_wp, 2.0e-4_wp, 2.0e9_wp, xk, wk, g, 12.0_wp, 9.0_wp, [7800.0_wp, 460.0_wp, &
+                                    40.0_wp], [7800.0_wp, 460.0_wp, 40.0_wp], 201, avg_fast, error=error)
+      call check(abs(avg_fast/avg_ref - 1.0_wp) < 1.0e-12_wp, "flash: trapezoid weights = eq 53's sum")
+   end subroutine test_fast_paths
+
+   !> The minimum-dissipation search (Newton, default) finds the reference search's minimum
+   !> (grid and golden sections) of the same power: Appendix C ball 1's geometry with the
+   !> a traction curve and with EHD films, with and without a pitch hint.
+   subroutine test_min_dissipation_search()
+      type(error_type), allocatable :: error
+      type(ball_kinematics_t) :: kf, kr
+      type(ehd_films_t) :: films
+      real(wp), parameter :: d = 0.01905_wp, r = 0.07004480819399529_wp, w_i = 20000.0_wp*pi/30.0_wp
+      real(wp), parameter :: n_o(2) = [0.14701482232434315_wp, 0.9891342891725783_wp]
+      real(wp), parameter :: n_i(2) = [-0.4611144976769735_wp, -0.8873406448665092_wp]
+      real(wp), parameter :: a(2) = [0.0023737604859883953_wp, 0.0012601685765409561_wp]
+      real(wp), parameter :: q(2) = [2479.297919485147_wp, 790.4621194043308_wp]
+      integer :: m
+
+      films%rheo = ehd_rheology_t(eta_w=0.0815882_wp, alpha=5.2214e-9_wp, beta=0.0425519_wp, &
+                                  conductivity=0.1425185_wp)
+      films%h = [4.549771167475113e-07_wp, 4.5936049558531147e-07_wp]
+      films%b = [0.0003151476071606269_wp, 0.0002141590871031877_wp]
+      do m = 1, 3
+         select case (m)
+         case (1)
+            call min_dissipation_kinematics(d, r, n_o, n_i, 0.0_wp, w_i, a, q, curve_law(LAW), kf, error)
+            call min_dissipation_kinematics(d, r, n_o, n_i, 0.0_wp, w_i, a, q, curve_law(LAW), kr, error, &
+                                            reference=.true.)
+         case (2)
+            call min_dissipation_kinematics(d, r, n_o, n_i, 0.0_wp, w_i, a, q, curve_law(LAW), kf, error, &
+                                            hint=-0.13_wp, ehd=films)
+            call min_dissipation_kinematics(d, r, n_o, n_i, 0.0_wp, w_i, a, q, curve_law(LAW), kr, error, &
+                                            hint=-0.13_wp, ehd=films, reference=.true.)
+         case (3)
+            call min_dissipation_kinematics(d, r, n_o, n_i, 0.0_wp, w_i, a, q, curve_law(LAW), kf, error, ehd=films)
+            call min_dissipation_kinematics(d, r, n_o, n_i, 0.0_wp, w_i, a, q, curve_law(LAW), kr, error, &
+                                            ehd=films, reference=.true.)
+         end select
+         call check(.not. allocated(error) .and. kf%ok .and. kr%ok, "min dissipation: both searches solve")
+         ! the golden section places a shallow minimum to ~sqrt(eps): 1e-6 deg, 1e-8 relative
+         call check(abs(kf%pitch - kr%pitch) < 1.0e-6_wp*pi/180.0_wp, "min dissipation: Newton's pitch = reference's")
+         call check(abs(kf%spin_speed/kr%spin_speed - 1.0_wp) < 1.0e-8_wp, "min dissipation: Newton's speed = reference's")
+         call check(kf%power <= kr%power*(1.0_wp + 1.0e-13_wp), "min dissipation: Newton's power <= reference's")
+      end do
+   end subroutine test_min_dissipation_search
 
    !> Scaling laws of the Hamrock-Dowson formula and the limits of the thermal factor.
    subroutine test_film()

@@ -18,7 +18,7 @@ module adore_tribology_race_contact
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise, &
-                                           ehd_strip_traction
+                                           ehd_strip_traction, ehd_contact_traction_fast
    use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
    use adore_contact_line_slices, only: line_contact_t
    use adore_tribology_roller_traction, only: line_traction_t
@@ -134,9 +134,10 @@ contains
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):
    !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
-   !> lubricant's traction rheology at the wall temperature, EHD_GAUSS x EHD_STRIP points
-   !> for the force and heat.
-   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error)
+   !> lubricant's traction rheology at the wall temperature; by the fast quadrature
+   !> (ehd_contact_traction_fast, default) or, with reference = .true., by the reference
+   !> quadrature of EHD_GAUSS x EHD_STRIP points (the step-0 print's).
+   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, reference)
       type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: temperature(:)
       type(ball_race_contact_t), intent(in) :: cj
@@ -144,7 +145,15 @@ contains
       integer, intent(in) :: race
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
-      call ehd_contact_traction(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
+      logical, intent(in), optional :: reference
+      logical :: ref
+      ref = .false.
+      if (present(reference)) ref = reference
+      if (ref) then
+         call ehd_contact_traction(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
+      else
+         call ehd_contact_traction_fast(cj, wall_rheology(b, temperature, race), h, b_minor, t, error)
+      end if
    end subroutine ehd_traction
 
    !> The printed "Slip Velocity" (m/s) and "Trac Coeff" of race contact cj: |u| at the
@@ -183,10 +192,9 @@ contains
       integer, intent(in) :: race
       real(wp), intent(out) :: rise
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: dt_max
       call ehd_temperature_rise(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, FLASH_POINTS, &
                                 u_e, u_e, thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), &
-                                rise, dt_max, error)
+                                rise, error=error)
    end subroutine ehd_flash
 
    !> Average flash temperature rise (K) of a race contact whose traction is the run's law
@@ -204,13 +212,12 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(contact_traction_t) :: t
       real(wp), allocatable :: x(:), w(:), u(:)
-      real(wp) :: dt_max
 
       call major_axis_nodes(cj, EHD_GAUSS, t, x, w)
       u = contact_slip(cj, x)
       call contact_temperature_rise(cj%a, b_minor, p0, x, w, law_kappa(b%race_traction, u)*abs(u), u_e, u_e, &
                                     thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), FLASH_POINTS, &
-                                    rise, dt_max, error)
+                                    rise, error=error)
    end subroutine law_flash
 
    !> Average flash temperature rise (K) of one roller/race line contact c with its slice
@@ -229,7 +236,7 @@ contains
       real(wp), intent(in) :: r_race, w_race, w_r
       real(wp), intent(out) :: rise
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: u_e, dt_max, centre
+      real(wp) :: u_e, centre
 
       rise = 0.0_wp
       if (.not. c%in_contact .or. t%power <= 0.0_wp) return
@@ -238,7 +245,7 @@ contains
       call contact_temperature_rise(c%half_length, c%mean_half_width, c%stress, c%x - centre, c%weight, &
                                     merge(t%kappa*abs(t%slip), 0.0_wp, c%q > 0.0_wp), u_e, u_e, &
                                     thermal_properties(b, BODY_ELEMENT), thermal_properties(b, race), FLASH_POINTS, &
-                                    rise, dt_max, error)
+                                    rise, error=error)
    end subroutine line_flash
 
 end module adore_tribology_race_contact

@@ -27,7 +27,7 @@ module adore_tribology_slip
 
    public :: ball_race_contact_t, contact_traction_t
    public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
-             major_axis_nodes, print_slip_node
+             major_axis_nodes, print_slip_node, contact_power, rolling_zones, axis_nodes
 
    integer, parameter, public :: SIDE_OUTER = 1   !< contact with the outer race
    integer, parameter, public :: SIDE_INNER = -1  !< contact with the inner race
@@ -151,15 +151,8 @@ contains
       real(wp) :: u, kap, dq
       integer :: j
 
-      if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load >= 0.0_wp &
-                 .and. c%r_b > c%rho .and. abs(c%side) == 1)) then
-         call input_error(error, "contact traction: need 0 < a < rho < r_b, load >= 0, side = +-1")
-         return
-      end if
-      if (n_gauss < 1) then
-         call input_error(error, "contact traction: need at least one Gauss point per zone")
-         return
-      end if
+      call check_law_contact(c, n_gauss, error)
+      if (allocated(error)) return
       call major_axis_nodes(c, n_gauss, t, x, w)
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
       do j = 1, size(x)
@@ -178,26 +171,84 @@ contains
       if (c%load > 0.0_wp) t%coefficient = t%force/c%load
    end subroutine contact_traction
 
-   !> Centre kinematics and pure-rolling points of contact c into t, and the slip zones
-   !> of the major axis: edges(1:nz+1) from -a to a (m), split at the pure-rolling points.
-   pure subroutine slip_zones(c, t, edges, nz)
+   !> Power (W) of contact c with the traction law: contact_traction's t%power, the same
+   !> nodes and sums bit for bit, without the other integrals (the minimum-dissipation
+   !> search's objective).  Input error as contact_traction.
+   subroutine contact_power(c, law, kappa_scale, n_gauss, power, error)
       type(ball_race_contact_t), intent(in) :: c
-      type(contact_traction_t), intent(inout) :: t
-      real(wp), intent(out) :: edges(4)
-      integer, intent(out) :: nz
-      integer :: nr
-      real(wp) :: pts(2)
+      type(traction_law_t), intent(in) :: law
+      real(wp), intent(in) :: kappa_scale
+      integer, intent(in) :: n_gauss
+      real(wp), intent(out) :: power
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: x(3*n_gauss), w(3*n_gauss), u, kap, dq
+      integer :: n, j
+
+      power = 0.0_wp
+      call check_law_contact(c, n_gauss, error)
+      if (allocated(error)) return
+      call axis_nodes(c, n_gauss, x, w, n)
+      do j = 1, n
+         u = contact_slip(c, x(j))
+         kap = kappa_scale*law_kappa(law, u)
+         dq = 0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)
+         power = power + kap*abs(u)*dq
+      end do
+   end subroutine contact_power
+
+   !> The nodes s(1:n) (m) and weights w(1:n) (m) of major_axis_nodes without allocation:
+   !> n_gauss Gauss-Legendre points per slip zone, zones split at the pure-rolling points.
+   pure subroutine axis_nodes(c, n_gauss, s, w, n)
+      type(ball_race_contact_t), intent(in) :: c
+      integer, intent(in) :: n_gauss
+      real(wp), intent(out) :: s(3*n_gauss), w(3*n_gauss)
+      integer, intent(out) :: n
+      real(wp) :: edges(4), pts(2), x(n_gauss), wx(n_gauss), lo, hi
+      integer :: nz, nr, z
+
+      call rolling_zones(c, edges, nz, nr, pts)
+      call gauss_legendre(n_gauss, x, wx)
+      s = 0.0_wp
+      w = 0.0_wp
+      do z = 1, nz
+         lo = edges(z)
+         hi = edges(z + 1)
+         s((z - 1)*n_gauss + 1:z*n_gauss) = 0.5_wp*(lo + hi) + 0.5_wp*(hi - lo)*x
+         w((z - 1)*n_gauss + 1:z*n_gauss) = 0.5_wp*(hi - lo)*wx
+      end do
+      n = nz*n_gauss
+   end subroutine axis_nodes
+
+   !> Input error unless contact c and n_gauss suit contact_traction.
+   subroutine check_law_contact(c, n_gauss, error)
+      type(ball_race_contact_t), intent(in) :: c
+      integer, intent(in) :: n_gauss
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load >= 0.0_wp &
+                 .and. c%r_b > c%rho .and. abs(c%side) == 1)) then
+         call input_error(error, "contact traction: need 0 < a < rho < r_b, load >= 0, side = +-1")
+         return
+      end if
+      if (n_gauss < 1) then
+         call input_error(error, "contact traction: need at least one Gauss point per zone")
+         return
+      end if
+   end subroutine check_law_contact
+
+   !> The slip zones of contact c's major axis: edges(1:nz+1) from -a to a (m), split at
+   !> its pure-rolling points (n_rolling of them, at points(1:n_rolling), m; report 2.1).
+   pure subroutine rolling_zones(c, edges, nz, n_rolling, points)
+      type(ball_race_contact_t), intent(in) :: c
+      real(wp), intent(out) :: edges(4), points(2)
+      integer, intent(out) :: nz, n_rolling
 
       edges = 0.0_wp
-      call contact_kinematics(c, t)
-      call pure_rolling_points(c, nr, pts)
-      t%n_rolling = nr
-      t%rolling_points = pts
+      call pure_rolling_points(c, n_rolling, points)
       edges(1) = -c%a
-      edges(2:nr + 1) = pts(1:nr)
-      edges(nr + 2) = c%a
-      nz = nr + 1
-   end subroutine slip_zones
+      edges(2:n_rolling + 1) = points(1:n_rolling)
+      edges(n_rolling + 2) = c%a
+      nz = n_rolling + 1
+   end subroutine rolling_zones
 
    !> Centre kinematics of contact c into t and the quadrature of the major axis: nodes
    !> s(:) (m) and weights w(:) (m, sum 2a), n_gauss Gauss-Legendre points per slip zone
@@ -207,18 +258,14 @@ contains
       integer, intent(in) :: n_gauss
       type(contact_traction_t), intent(inout) :: t
       real(wp), allocatable, intent(out) :: s(:), w(:)
-      real(wp) :: edges(4), x(n_gauss), wx(n_gauss), lo, hi
-      integer :: nz, z
+      real(wp) :: sa(3*n_gauss), wa(3*n_gauss)
+      integer :: n
 
-      call slip_zones(c, t, edges, nz)
-      call gauss_legendre(n_gauss, x, wx)
-      allocate (s(nz*n_gauss), w(nz*n_gauss))
-      do z = 1, nz
-         lo = edges(z)
-         hi = edges(z + 1)
-         s((z - 1)*n_gauss + 1:z*n_gauss) = 0.5_wp*(lo + hi) + 0.5_wp*(hi - lo)*x
-         w((z - 1)*n_gauss + 1:z*n_gauss) = 0.5_wp*(hi - lo)*wx
-      end do
+      call contact_kinematics(c, t)
+      call pure_rolling_points(c, t%n_rolling, t%rolling_points)
+      call axis_nodes(c, n_gauss, sa, wa, n)
+      s = sa(1:n)
+      w = wa(1:n)
    end subroutine major_axis_nodes
 
    !> The print node of contact c: among the nodes of the n_gauss-point rule per slip zone

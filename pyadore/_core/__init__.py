@@ -15,7 +15,7 @@ from .model import ball_clearance, roller_races, body_inertia, traction_fit, tra
 from .life import LIFE_CONSTANT_NAMES, life_default_constants, ball_bearing_life  # noqa: F401
 from .deck import deck_field_table, cross_field_fields, cross_field_rules, cross_field_problems  # noqa: F401
 from .printer import fortran_print_step, fortran_print_end, fortran_print_echo  # noqa: F401
-from .tribology import film_thickness, thermal_reduction_factor, lubricant, LUBRICANT_KEYS, CONTACT_TRACTION_KEYS, contact_traction, ehd_contact_traction, ehd_temperature_rise, film_shear_stress, contact_slip, flash_rise, contact_temperature_rise, wear_rate, traction_table  # noqa: F401
+from .tribology import film_thickness, thermal_reduction_factor, lubricant, LUBRICANT_KEYS, CONTACT_TRACTION_KEYS, contact_traction, ehd_contact_traction, ehd_contact_method, ehd_contact_microseconds, EHD_METHOD_KEYS, ehd_temperature_rise, film_shear_stress, contact_slip, flash_rise, contact_temperature_rise, wear_rate, traction_table  # noqa: F401
 
 __all__ = [
     "check",
@@ -64,6 +64,9 @@ __all__ = [
     "lubricant",
     "LUBRICANT_KEYS",
     "ehd_contact_traction",
+    "ehd_contact_method",
+    "ehd_contact_microseconds",
+    "EHD_METHOD_KEYS",
     "ehd_temperature_rise",
     "film_shear_stress",
     "CONTACT_TRACTION_KEYS",

@@ -138,6 +138,44 @@ def ehd_contact_traction(side: int, alpha: float, rho: float, r_b: float, omega,
     return dict(zip(CONTACT_TRACTION_KEYS, map(float, values)))
 
 
+EHD_METHOD_KEYS = ["force", "force_cos", "force_sin", "power", "sliding", "max_slip", "coefficient", "n_rolling"]
+EHD_METHODS = {"reference": 0, "fast": 1}
+
+
+def ehd_contact_method(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float,
+                       load: float, rheology, film: float, b: float, method: str = "fast", n_major: int = 0,
+                       n_strip: int = 0) -> dict:
+    """EHD contact traction (model 3) by the reference quadrature (method "reference":
+    n_major Gauss points per slip zone x n_strip across each strip, as ehd_contact_traction)
+    or the fast one (method "fast": ehd_contact_traction_fast, 0 = its default orders);
+    arguments as ehd_contact_traction.  Keys: EHD_METHOD_KEYS (force, its moments
+    force_cos / force_sin in N, power W, sliding N m/s, max_slip m/s, coefficient, n_rolling)."""
+    import numpy as np
+
+    if method not in EHD_METHODS:
+        raise ValueError(f"EHD contact: method must be one of {sorted(EHD_METHODS)}, got {method!r}")
+    values, status, message = _engine().adore_tribo_ehd_contact_method(
+        _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load), np.asarray(rheology, float),
+        float(film), float(b), EHD_METHODS[method], int(n_major), int(n_strip))
+    check(int(status), message)
+    return dict(zip(EHD_METHOD_KEYS, map(float, values)))
+
+
+def ehd_contact_microseconds(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float,
+                             load: float, rheology, film: float, b: float, method: str = "fast",
+                             repeat: int = 20000) -> float:
+    """Mean CPU time (microseconds) of one EHD contact evaluation by `method` ("fast" or
+    "reference" 16 x 24), timed inside the engine over `repeat` evaluations: for the
+    benchmark only."""
+    import numpy as np
+
+    us, status, message = _engine().adore_tribo_ehd_contact_time(
+        _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load), np.asarray(rheology, float),
+        float(film), float(b), EHD_METHODS[method], int(repeat))
+    check(int(status), message)
+    return float(us)
+
+
 def film_shear_stress(u, eta_w: float, beta: float, k_f: float, h: float):
     """Shear stress (Pa) of a Newtonian film of thickness h (m) at slips u (m/s), walls at
     the temperature of the wall viscosity eta_w (Pa s); beta (1/K), K_f (W/m/K)."""

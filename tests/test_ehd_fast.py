@@ -1,0 +1,118 @@
+"""The fast EHD contact traction (adore_tribology_ehd_traction's ehd_contact_traction_fast,
+issue #16) against the reference quadrature (16 Gauss points per slip zone x 24 across each
+strip, the step-0 print's): force, its moments about the ball centre (force_cos,
+force_sin) and loss of every race contact of the Appendix C step 0, and of those contacts
+with their slide/roll and spin/roll ratios and loads scaled.
+
+Errors of the force and its moments are relative to the contact's gross traction (a
+contact's net traction is a difference of opposing tractions and can be near zero): the
+lower bound power / max slip of the integral of |traction| is used.  The Appendix D roller
+deck has no ball/race EHD contact (its line contacts use the deck's traction curve by
+slices), so only Appendix C's contacts enter.  Speed is in bench/run_bench.py, not here.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pyadore import _core
+
+ROOT = Path(__file__).resolve().parents[1]
+D_BALL = 0.01905
+INNER_SPEED = 20000 * math.pi / 30
+
+
+@lru_cache(maxsize=1)
+def _contacts():
+    """Every race contact of the Appendix C step 0 (outer and inner of each ball) as the
+    arguments of ehd_contact_method: the run's speeds, loads, ellipses and films."""
+    b, _ = _core.ball_step0_from_deck(ROOT / "decks" / "appendix_c_ball.inp")
+    lub = _core.lubricant(1, 323.0)
+    rheo = (lub["eta_t"], lub["alpha_t"], lub["beta_t"], lub["conductivity"])
+    out = []
+    for k in range(len(b["r"])):
+        om = (b["spin_speed"][k] * math.cos(b["pitch"][k]), b["spin_speed"][k] * math.sin(b["pitch"][k]))
+        for tag, side, w_race in (("o", 1, 0.0), ("i", -1, INNER_SPEED)):
+            out.append(dict(side=side, alpha=b[f"alpha_{tag}"][k], rho=D_BALL / 2, r_b=b["r"][k], omega=om,
+                            race_speed=w_race - b["orbital_speed"][k], a=b[f"a_{tag}"][k], load=b[f"q_{tag}"][k],
+                            rheology=rheo, film=b[f"film_{tag}"][k] * b[f"thermal_factor_{tag}"][k],
+                            b=b[f"b_{tag}"][k]))
+    return out
+
+
+def _scaled(c, k_slide, k_spin, k_load):
+    """Contact c with its centre slip and spin scaled by k_slide, k_spin (the ball's angular
+    velocity solved from the two linear conditions) and its load by k_load (Hertz: both
+    semi-axes ~ load**(1/3); the film kept)."""
+    c = dict(c)
+    nx, nr = c["side"] * math.sin(c["alpha"]), c["side"] * math.cos(c["alpha"])
+    rho, ws = c["rho"], c["race_speed"]
+    m = np.array([[rho * nr, -rho * nx], [nx, nr]])      # (centre slip, spin) = m omega + m0
+    m0 = np.array([-ws * (c["r_b"] + rho * nr), -ws * nx])
+    slip, spin = m @ np.asarray(c["omega"]) + m0
+    c["omega"] = tuple(np.linalg.solve(m, np.array([k_slide * slip, k_spin * spin]) - m0))
+    f = k_load ** (1 / 3)
+    c.update(load=c["load"] * k_load, a=c["a"] * f, b=c["b"] * f)
+    return c
+
+
+def _error(f, r):
+    """Largest relative error of f against r: force and its moments against the gross
+    traction (module docstring), loss against itself."""
+    gross = r["power"] / r["max_slip"]
+    return max(abs(f["force"] - r["force"]) / max(abs(r["force"]), gross),
+               abs(f["force_cos"] - r["force_cos"]) / max(abs(r["force_cos"]), gross),
+               abs(f["force_sin"] - r["force_sin"]) / max(abs(r["force_sin"]), gross * 0.1),
+               abs(f["power"] / r["power"] - 1))
+
+
+def test_fast_ehd_traction_at_the_appendix_c_contacts_is_the_reference_within_1e_4():
+    """All 36 race contacts of the Appendix C step 0: the fast traction's default orders
+    against the print's 16 x 24 quadrature (measured: 1.9e-5)."""
+    errors = [_error(_core.ehd_contact_method(**c, method="fast"),
+                     _core.ehd_contact_method(**c, method="reference", n_major=16, n_strip=24))
+              for c in _contacts()]
+    assert max(errors) <= 1e-4
+
+
+def test_fast_ehd_traction_over_scaled_slips_and_loads():
+    """Slide/roll and spin/roll x 0.5 .. x 2 and loads x 0.5 .. x 2 on every contact: the
+    fast traction's default orders against the 16 x 24 reference (measured: 1.6e-4 - the
+    issue's 1e-4 is met at the step-0 contacts only; docs/tribology.md)."""
+    worst = 0.0
+    for c, k in itertools.product(_contacts(), itertools.product([0.5, 1, 2], [0.5, 1, 2], [0.5, 2])):
+        cs = _scaled(c, *k)
+        worst = max(worst, _error(_core.ehd_contact_method(**cs, method="fast"),
+                                  _core.ehd_contact_method(**cs, method="reference", n_major=16, n_strip=24)))
+    assert worst <= 3e-4
+
+
+def test_fast_ehd_traction_converges_to_the_reference_quadratures_limit():
+    """Slips x 0.1 .. x 10 and loads x 0.1 .. x 3: with 24 x 12 points the fast traction is
+    within 3e-5 of the reference quadrature converged (128 x 128 points), where the print's
+    16 x 24 is itself up to 1.2e-3 off (the film's shear saturates in thin layers at the
+    pure-rolling points, which the fast rule grades and the reference does not)."""
+    worst_fast, worst_ref = 0.0, 0.0
+    for c, k in itertools.product(_contacts()[::5], itertools.product([0.1, 1, 10], [0.1, 1, 10], [0.1, 3])):
+        cs = _scaled(c, *k)
+        conv = _core.ehd_contact_method(**cs, method="reference", n_major=128, n_strip=128)
+        worst_fast = max(worst_fast, _error(_core.ehd_contact_method(**cs, method="fast", n_major=24, n_strip=12),
+                                            conv))
+        worst_ref = max(worst_ref, _error(_core.ehd_contact_method(**cs, method="reference", n_major=16,
+                                                                   n_strip=24), conv))
+    assert worst_fast <= 3e-5
+    assert worst_ref > 10 * worst_fast
+
+
+def test_fast_ehd_traction_rejects_bad_input():
+    c = dict(_contacts()[0], film=-1.0)
+    with pytest.raises(Exception, match="film h > 0"):
+        _core.ehd_contact_method(**c, method="fast")
+    with pytest.raises(ValueError, match="method"):
+        _core.ehd_contact_method(**_contacts()[0], method="quick")
