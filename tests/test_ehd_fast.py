@@ -81,16 +81,19 @@ def test_fast_ehd_traction_at_the_appendix_c_contacts_is_the_reference_within_1e
     assert max(errors) <= 1e-4
 
 
+@pytest.mark.xfail(strict=True, reason="issue #16's 1e-4 over a range of slips and loads is not met: measured "
+                   "1.6e-4 (x0.5 .. x2 slips and loads; the step-0 contacts themselves 1.9e-5); more points "
+                   "would break the 5 us budget (docs/tribology.md)")
 def test_fast_ehd_traction_over_scaled_slips_and_loads():
     """Slide/roll and spin/roll x 0.5 .. x 2 and loads x 0.5 .. x 2 on every contact: the
-    fast traction's default orders against the 16 x 24 reference (measured: 1.6e-4 - the
-    issue's 1e-4 is met at the step-0 contacts only; docs/tribology.md)."""
+    fast traction's default orders against the 16 x 24 reference within the issue's 1e-4
+    (measured 1.6e-4: a known miss, strict xfail)."""
     worst = 0.0
     for c, k in itertools.product(_contacts(), itertools.product([0.5, 1, 2], [0.5, 1, 2], [0.5, 2])):
         cs = _scaled(c, *k)
         worst = max(worst, _error(_core.ehd_contact_method(**cs, method="fast"),
                                   _core.ehd_contact_method(**cs, method="reference", n_major=16, n_strip=24)))
-    assert worst <= 3e-4
+    assert worst <= 1e-4, worst
 
 
 def test_fast_ehd_traction_converges_to_the_reference_quadratures_limit():
