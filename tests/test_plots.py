@@ -201,11 +201,38 @@ def test_traction_table_of_the_run_and_of_a_file(roller_deck, table_file, tmp_pa
     assert label == f"ADRX7 table {table_file}"
 
 
-def test_traction_ball_run_says_the_ehd_model_is_not_plotted(ball_print):
-    with pytest.warns(MissingSeriesWarning, match="EHD traction model 3"):
-        fig = plots.traction_slip(ball_print)
-    (label, _u, _k), = lines_of(fig.get_axes()[0])
-    assert "not used" in label
+def test_traction_ball_run_draws_the_ehd_model_at_its_most_loaded_ball(ball_print):
+    """A model-3 run: its deck curve labelled not used, and the EHD model's coefficient at
+    the most loaded ball's two contacts (load, semi-axes, film x thermal factor, contact
+    temperature of the print); each point is the engine's EHD traction of that contact
+    under a uniform slip, |net traction| / load, checked here at three slips with the
+    other EHD wrapper (ehd_contact_traction); the coefficient vanishes with the slip."""
+    from pyadore import _core
+    from pyadore.printout import read_print
+
+    fig = plots.traction_slip(ball_print)
+    lines = lines_of(fig.get_axes()[0])
+    assert "not used" in lines[0][0]
+    ehd = [line for line in lines if line[0].startswith("EHD model 3")]
+    assert [label.split()[5] for label, _u, _k in ehd] == ["outer", "inner"]
+    step = read_print(ball_print).steps[0]
+    contact, traction, thermal = (step.tables[n] for n in ("re_contact", "re_traction", "re_thermal"))
+    k = contact["contact_load_inner_N"].astype(float).idxmax()
+    lub = _core.lubricant(1, float(thermal.at[k, "contact_temp_inner_K"]))
+    for (label, u, kappa), side, tag in zip(ehd, (1, -1), ("outer", "inner")):
+        assert f"ball {k} {tag}" in label
+        assert kappa[0] == 0.0 and np.all(kappa[1:] > 0.0)
+        for i in (5, 30, 90):
+            w = -u[i] / 0.09525
+            res = _core.ehd_contact_traction(side, 0.0, 0.009525, 0.09525, (w, 0.0), w,
+                                             float(contact.at[k, f"major_half_width_{tag}_m"]),
+                                             float(contact.at[k, f"contact_load_{tag}_N"]),
+                                             (lub["eta_t"], lub["alpha_t"], lub["beta_t"], lub["conductivity"]),
+                                             float(traction.at[k, f"film_thickness_{tag}_m"])
+                                             * float(traction.at[k, f"thermal_red_fac_{tag}"]),
+                                             float(contact.at[k, f"minor_half_width_{tag}_m"]))
+            assert kappa[i] == pytest.approx(abs(res["force"]) / float(contact.at[k, f"contact_load_{tag}_N"]),
+                                             rel=1e-12)
 
 
 def test_traction_missing_curve_is_one_line():

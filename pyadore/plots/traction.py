@@ -14,11 +14,14 @@ run used:
   straight segments through the points, and the dashed level after the last one, are
   exactly the law the run evaluates.
 
-ADORE's EHD traction model (model 3, the ball deck's) has no traction-slip curve of its
-own: its traction depends on load, film and temperature, and the engine exposes it only
-for a whole ball/race contact with its kinematics (``_core.ehd_contact_traction``), not
-as a coefficient against slip at a given load and speed.  A model-3 run is therefore
-plotted with its deck curve, labelled as not used by the run.
+* ADORE's EHD traction model (model 3, the ball deck's), whose traction depends on load,
+  film and temperature: drawn at the printed step's most loaded ball, for its outer and
+  inner race contact (load, Hertz semi-axes, film = isothermal film x thermal reduction
+  factor, contact temperature from the print; the lubricant's traction rheology at that
+  temperature from the engine's library), as the contact's traction coefficient
+  (net traction / load) under a slip u uniform over the contact, computed by the engine's
+  EHD contact traction (``_core.ehd_contact_method``, the step-0 print's 16 x 24
+  quadrature).  The deck's curve is then drawn too, labelled as not used by the run.
 """
 
 from __future__ import annotations
@@ -95,6 +98,51 @@ def table_points(table: pd.DataFrame, u_end: float) -> tuple[np.ndarray, np.ndar
     return u, k
 
 
+def ehd_contact_curves(source, u_end: float, step=None) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """[(label, slip m/s, traction coefficient)] of the EHD model 3 (module docstring) at the
+    outer and inner contact of the most loaded ball of a printed step (default: the first);
+    [] when the print lacks what the model needs (a deck listing with the lubricant and the
+    ball diameter, the step's loads, semi-axes, films and contact temperatures)."""
+    from .. import _core
+
+    deck = source.deck()
+    if deck is None or source.run is None or not source.run.steps:
+        return []
+    code, d_ball = deck.get("10.0", "lubricant_code"), deck.get("5A", "ball_diameter")
+    if not code or not d_ball:
+        return []
+    st = source.run.steps[0] if step is None else next((s for s in source.run.steps if s.step == step), None)
+    if st is None:
+        return []
+    try:
+        contact, traction, thermal = st.tables["re_contact"], st.tables["re_traction"], st.tables["re_thermal"]
+    except KeyError:
+        return []
+    k = contact["contact_load_inner_N"].astype(float).idxmax()
+    curves = []
+    u = np.linspace(0.0, u_end, CURVE_POINTS // 4 + 1)
+    for side, tag in ((1, "outer"), (-1, "inner")):
+        row = dict(load=float(contact.at[k, f"contact_load_{tag}_N"]), a=float(contact.at[k, f"major_half_width_{tag}_m"]),
+                   b=float(contact.at[k, f"minor_half_width_{tag}_m"]),
+                   film=float(traction.at[k, f"film_thickness_{tag}_m"]) * float(traction.at[k, f"thermal_red_fac_{tag}"]),
+                   temp=float(thermal.at[k, f"contact_temp_{tag}_K"]))
+        if not all(math.isfinite(v) and v > 0.0 for v in row.values()):
+            continue
+        lub = _core.lubricant(int(code), row["temp"])
+        rheology = (lub["eta_t"], lub["alpha_t"], lub["beta_t"], lub["conductivity"])
+        r_b = 5.0 * float(d_ball)        # any radius > D/2: a uniform slip u = -w r_b
+        kappa = []
+        for ui in u:
+            w = -ui / r_b                 # ball and race turn alike but for the slip: u uniform
+            res = _core.ehd_contact_method(side, 0.0, 0.5 * float(d_ball), r_b, (w, 0.0), w, row["a"],
+                                           row["load"], rheology, row["film"], row["b"], method="reference",
+                                           n_major=16, n_strip=24)
+            kappa.append(abs(res["coefficient"]))
+        curves.append((f"EHD model 3, ball {k} {tag} contact ({row['load']:.0f} N, film "
+                       f"{row['film'] * 1e9:.0f} nm, {row['temp']:.0f} K)", u, np.array(kappa)))
+    return curves
+
+
 def _read_table(table) -> pd.DataFrame:
     if isinstance(table, pd.DataFrame):
         return table
@@ -164,10 +212,16 @@ def traction_slip(source, *, table=None, compare=None, label: str | None = None,
             else:
                 u, k = curve_points(data[0], u_end)
                 a.plot(u, k, style.line_style(i), color=c, label=prefix + name)
-        if model == _EHD_MODEL and i == 0 and not any(kind == "table" for _n, kind, _d in laws):
-            warnings.warn(f"{FIGURE}: {run.label} uses the EHD traction model 3, whose traction-slip curve at a "
-                          "given load and speed the engine does not expose; plotted: the deck's curve",
-                          MissingSeriesWarning, stacklevel=2)
+        if model == _EHD_MODEL and not any(kind == "table" for _n, kind, _d in laws):
+            ehd = ehd_contact_curves(run, u_end)
+            for name, u, k in ehd:
+                c = style.COLORS[colour % len(style.COLORS)]
+                colour += 1
+                a.plot(u, k, style.line_style(i), color=c, linewidth=2.0, label=prefix + name)
+            if not ehd and i == 0:
+                warnings.warn(f"{FIGURE}: {run.label} uses the EHD traction model 3, but its print lacks the "
+                              "contact data (deck listing, loads, semi-axes, films, temperatures) to draw it; "
+                              "plotted: the deck's curve", MissingSeriesWarning, stacklevel=2)
     a.set_xlim(0.0, u_end)
     a.set_ylim(bottom=0.0)
     a.set_xlabel(style.label("Slip velocity", "m/s"))
