@@ -17,15 +17,16 @@ module adore_dynamics_ball_system
    use adore_model_bearing, only: bearing_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, state_size, pack_state, unpack_state, &
-                                        RACE_OUTER, RACE_INNER
+                                        RACE_OUTER, RACE_INNER, BODY_SIZE
    use adore_forces_ball_bearing, only: ball_bearing_loads_t
    use adore_dynamics_ball_motion, only: ball_bearing_rates
-   use adore_dynamics_integrator, only: derivative_t, DERIV_OK, DERIV_FAIL
+   use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL
+   use adore_model_scales, only: length_scale, load_scale, time_scale
    use adore_driver_ball_step0, only: ball_step0_t
    implicit none
    private
 
-   public :: ball_system_t, new_ball_system, initial_ball_state
+   public :: ball_system_t, new_ball_system, initial_ball_state, state_error_scale, start_ball_dynamics
 
    !> The ball bearing's equations of motion dy/dtau (integrator's derivative_t).
    type, extends(derivative_t) :: ball_system_t
@@ -122,5 +123,48 @@ contains
          st%cage%omega = [c%angular_speed, 0.0_wp, 0.0_wp]
       end associate
    end function initial_ball_state
+
+   !> The integrator's error scale of each unknown of a packed state of n elements: the
+   !> report's dimensionless variables (4.4.5: ADORE integrates in units of the echo's
+   !> scales) - positions in L (m), velocities in L/T, quaternions in 1, angular velocities
+   !> in 1/T, temperatures in K.
+   pure function state_error_scale(n, l, tt) result(scale)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: l, tt
+      real(wp) :: scale(state_size(n))
+      integer :: i
+      do i = 0, n + 2
+         scale(BODY_SIZE*i + 1:BODY_SIZE*(i + 1)) = [l, l, l, l/tt, l/tt, l/tt, 1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, &
+                                                     1.0_wp/tt, 1.0_wp/tt, 1.0_wp/tt]
+      end do
+      scale(BODY_SIZE*(n + 3) + 1:) = 1.0_wp
+   end function state_error_scale
+
+   !> The dynamics of ball bearing b (mounted geometry g) from its step-0 solution s0: the
+   !> system (time scale from the echo's scales, adore_model_scales), the integrator with the
+   !> deck's Rec 1 int_method and Rec 2.1 steps and error limit (in tau; the minimum step is
+   !> accepted when the error test still fails there, as ADORE's Appendix C statistics
+   !> show: docs/dynamics.md), the packed initial state y at tau = 0.
+   subroutine start_ball_dynamics(b, g, s0, sys, it, y, error, traction)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(ball_step0_t), intent(in) :: s0
+      type(ball_system_t), intent(out) :: sys
+      type(integrator_t), intent(out) :: it
+      real(wp), allocatable, intent(out) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: traction
+      real(wp) :: l, tt
+
+      l = length_scale(b%d)
+      tt = time_scale(b%mass(1), l, load_scale(b%force))
+      sys = new_ball_system(b, g, tt, traction)
+      allocate (y(state_size(b%n_elements)))
+      call pack_state(initial_ball_state(b, g, s0), y)
+      call it%init(size(y), integrator_settings_t(int_method=b%int_method, h_initial=b%step_initial, &
+                                                  h_min=b%step_min, h_max=b%step_max, error_limit=b%error_limit, &
+                                                  rel_weight=0.0_wp, accept_at_h_min=.true.), error, &
+                   scale=state_error_scale(b%n_elements, l, tt))
+   end subroutine start_ball_dynamics
 
 end module adore_dynamics_ball_system

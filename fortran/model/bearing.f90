@@ -46,6 +46,11 @@ module adore_model_bearing
       integer :: mode = 1
       integer :: n_elements = 0
       integer :: n_steps = 0
+      ! time integration (Rec 1, Rec 2.1; steps in dimensionless time tau)
+      integer :: int_method = 5                !< Rec 1 int_method (INT METHOD)
+      integer :: print_interval = 0            !< Rec 1 data_control_2: steps between printed steps
+      real(wp) :: step_initial = 0.0_wp, step_min = 0.0_wp, step_max = 0.0_wp   !< Rec 2.1 (tau)
+      real(wp) :: error_limit = 0.0_wp         !< Rec 2.1 ERROR LIMIT
       ! envelope, Rec 4 (m)
       real(wp) :: shaft_od = 0.0_wp, bearing_od = 0.0_wp, shaft_id = 0.0_wp, housing_od = 0.0_wp
       real(wp) :: width_outer = 0.0_wp, width_inner = 0.0_wp

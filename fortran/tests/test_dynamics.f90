@@ -57,7 +57,7 @@ program test_dynamics
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, state_size, pack_state, unpack_state, &
                                         new_bearing_state, BODY_SIZE, RACE_INNER
    use adore_contact_ball_race, only: contact_energy
-   use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state
+   use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state, start_ball_dynamics
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
@@ -71,6 +71,7 @@ program test_dynamics
    call test_free_body("ball", [1.0_wp, 1.0_wp, 1.0_wp]*2.8e-7_wp, [1200.0_wp, -300.0_wp, 2500.0_wp])
    call test_free_body("cage", [3.1e-5_wp, 1.7e-5_wp, 1.7e-5_wp]*[1.0_wp, 1.1_wp, 0.9_wp], [900.0_wp, 40.0_wp, -25.0_wp])
    call test_energy_without_traction()
+   call test_run_balances_the_applied_load()
    call finish("dynamics")
 
 contains
@@ -216,5 +217,74 @@ contains
                  "no traction: total energy conserved up to the K(alpha) work and the integrator's error")
       call check(all(sys%loads%contacts%load > 0.0_wp), "no traction: every ball stays in contact with both races")
    end subroutine test_energy_without_traction
+
+   !> Appendix C from its step-0 start with the deck's traction (EHD model 3), integration
+   !> settings (Rec 1, Rec 2.1) and no cage contact: over the third inner-race revolution the
+   !> time-averaged force of the balls (normal loads and traction) on the inner race balances the applied load and the
+   !> race weight within 1 % (the inner race is free in translation, so its mean acceleration
+   !> vanishes), every ball stays loaded at both races, and the balls' mean orbital speed
+   !> stays within 2 % of the step-0 start's.
+   subroutine test_run_balances_the_applied_load()
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(ball_system_t) :: sys
+      type(integrator_t) :: it
+      type(bearing_state_t) :: s
+      type(error_type), allocatable :: error
+      real(wp), allocatable :: y(:)
+      real(wp) :: t, t_prev, rev, f_mean(3), w_mean, w_start, applied(3), span
+      integer :: k, n
+
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      call check(.not. allocated(error), "run: read Appendix C")
+      if (allocated(error)) return
+      g = mount_geometry(b, b%temperature)
+      call solve_ball_step0(b, s0, error)
+      call check(.not. allocated(error), "run: step 0 of Appendix C")
+      if (allocated(error)) return
+      call start_ball_dynamics(b, g, s0, sys, it, y, error)
+      call check(.not. allocated(error), "run: dynamics set up from the deck")
+      if (allocated(error)) return
+      n = b%n_elements
+      s = new_bearing_state(n)
+      rev = 2.0_wp*acos(-1.0_wp)/b%speed_inner/sys%time_scale    ! one inner-race revolution in tau
+      t = 0.0_wp
+      f_mean = 0.0_wp
+      w_mean = 0.0_wp
+      span = 0.0_wp
+      do while (t < 3.0_wp*rev)
+         t_prev = t
+         call it%step(sys, t, y, error, t_limit=3.0_wp*rev)
+         if (allocated(error)) exit
+         if (t <= 2.0_wp*rev) cycle
+         ! the loads of the last evaluation belong to the end of the step (FSAL): weight by the step
+         call unpack_state(y, t*sys%time_scale, s)
+         ! contact loads (normal and traction) of the balls on the inner race
+         f_mean = f_mean + (t - t_prev)*(sys%loads%races(RACE_INNER)%force - b%force - b%mass(4)*b%gravity)
+         do k = 1, n
+            w_mean = w_mean + (t - t_prev)*(s%elements(k)%position(2)*s%elements(k)%velocity(3) - &
+                                            s%elements(k)%position(3)*s%elements(k)%velocity(2)) &
+                              /sum(s%elements(k)%position(2:3)**2)/n
+         end do
+         span = span + (t - t_prev)
+      end do
+      call check(.not. allocated(error), "run: three inner-race revolutions without error")
+      if (allocated(error)) then
+         write (*, "(a)") error%message
+         return
+      end if
+      f_mean = f_mean/span
+      w_mean = w_mean/span
+      w_start = sum(s0%start%kinematics%orbital_speed)/n
+      applied = b%force + b%mass(4)*b%gravity
+      write (*, "(a,3es11.3,a,3es11.3,a,f9.3,a,f9.3,a,i0,a,i0)") "run: mean ball force on the inner race ", f_mean, &
+         " N, applied ", applied, " N; mean orbital speed ", w_mean, " rad/s (start ", w_start, "); steps ", &
+         it%stats%accepted, ", derivative calls ", sys%calls
+      call check(norm2(f_mean + applied) <= 0.01_wp*norm2(applied), &
+                 "run: the balls' mean force on the inner race balances the applied load within 1 %")
+      call check(abs(w_mean/w_start - 1.0_wp) <= 0.02_wp, "run: mean orbital speed within 2 % of the start's")
+      call check(all(sys%loads%contacts%load > 0.0_wp), "run: every ball loaded at both races")
+   end subroutine test_run_balances_the_applied_load
 
 end program test_dynamics
