@@ -111,7 +111,8 @@ def ehd_contact_curves(source, u_end: float, step=None) -> list[tuple[str, np.nd
     code, d_ball = deck.get("10.0", "lubricant_code"), deck.get("5A", "ball_diameter")
     if not code or not d_ball:
         return []
-    st = source.run.steps[0] if step is None else next((s for s in source.run.steps if s.step == step), None)
+    steps = source.run.steps                      # {step number: printed step}
+    st = steps.get(next(iter(steps)) if step is None else step)
     if st is None:
         return []
     try:
