@@ -21,8 +21,10 @@ module adore_dynamics_ball_system
    use adore_forces_ball_bearing, only: ball_bearing_loads_t
    use adore_dynamics_ball_motion, only: ball_bearing_rates
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL
-   use adore_model_scales, only: length_scale, load_scale, time_scale
-   use adore_driver_ball_step0, only: ball_step0_t
+
+   use adore_quasistatic_ball_start, only: ball_start_t
+   use adore_cage_step0, only: cage_step0_t
+   use adore_model_scales, only: scale_factors
    implicit none
    private
 
@@ -34,6 +36,10 @@ module adore_dynamics_ball_system
       type(mounted_geometry_t) :: geometry
       real(wp) :: time_scale = 1.0_wp        !< T (s) of one unit of tau
       logical :: traction = .true.           !< race contact traction on (off: normal loads only)
+      !> (2, n): when allocated, every contact's Hertz stiffness frozen at these values
+      !> (N/m**1.5) instead of K(alpha): a verification option, the normal loads then derive
+      !> from an energy (fortran/tests/test_dynamics.f90)
+      real(wp), allocatable :: frozen_stiffness(:, :)
       type(bearing_state_t) :: state, rates  !< scratch of eval
       type(ball_bearing_loads_t) :: loads    !< the loads of the last evaluation
       integer :: calls = 0                   !< evaluations so far
@@ -69,8 +75,13 @@ contains
 
       self%calls = self%calls + 1
       call unpack_state(y, t*self%time_scale, self%state)
-      call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                              self%traction)
+      if (allocated(self%frozen_stiffness)) then
+         call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
+                                 self%traction, self%frozen_stiffness)
+      else
+         call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
+                                 self%traction)
+      end if
       if (allocated(self%failure)) then
          flag = DERIV_FAIL
          dydt = 0.0_wp
@@ -87,19 +98,20 @@ contains
    end subroutine ball_system_eval
 
    !> The state of ball bearing b (mounted geometry g) at the start of the dynamics: its
-   !> step-0 solution s0 (module header).  Positions in the bearing frame (origin at the
-   !> outer race centre).
-   function initial_ball_state(b, g, s0) result(st)
+   !> step-0 start (equilibrium and ball speeds) and cage state (module header).  Positions
+   !> in the bearing frame (origin at the outer race centre).
+   function initial_ball_state(b, g, start, cage) result(st)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
-      type(ball_step0_t), intent(in) :: s0
+      type(ball_start_t), intent(in) :: start
+      type(cage_step0_t), intent(in) :: cage
       type(bearing_state_t) :: st
       real(wp) :: phi, e_r(3), e_t(3), r
       integer :: k
 
       st = new_bearing_state(b%n_elements)
       st%temperature = b%temperature
-      associate (e => s0%start%equilibrium, kin => s0%start%kinematics, c => s0%cage%state)
+      associate (e => start%equilibrium, kin => start%kinematics, c => cage%state)
          do k = 1, b%n_elements
             phi = e%azimuth(k)
             r = e%r(k)
@@ -140,27 +152,31 @@ contains
       scale(BODY_SIZE*(n + 3) + 1:) = 1.0_wp
    end function state_error_scale
 
-   !> The dynamics of ball bearing b (mounted geometry g) from its step-0 solution s0: the
-   !> system (time scale from the echo's scales, adore_model_scales), the integrator with the
+   !> The dynamics of ball bearing b (mounted geometry g) from its step-0 start and cage
+   !> state: the system (time scale from the echo's scales, adore_model_scales; input error
+   !> for a bearing without applied load, whose scales are undefined), the integrator with the
    !> deck's Rec 1 int_method and Rec 2.1 steps and error limit (in tau; the minimum step is
    !> accepted when the error test still fails there, as ADORE's Appendix C statistics
    !> show: docs/dynamics.md), the packed initial state y at tau = 0.
-   subroutine start_ball_dynamics(b, g, s0, sys, it, y, error, traction)
+   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
-      type(ball_step0_t), intent(in) :: s0
+      type(ball_start_t), intent(in) :: start
+      type(cage_step0_t), intent(in) :: cage
       type(ball_system_t), intent(out) :: sys
       type(integrator_t), intent(out) :: it
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: traction
-      real(wp) :: l, tt
+      real(wp) :: scales(3), l, tt
 
-      l = length_scale(b%d)
-      tt = time_scale(b%mass(1), l, load_scale(b%force))
+      call scale_factors(b%d, b%mass(1), b%force, scales, error)
+      if (allocated(error)) return
+      l = scales(1)
+      tt = scales(3)
       sys = new_ball_system(b, g, tt, traction)
       allocate (y(state_size(b%n_elements)))
-      call pack_state(initial_ball_state(b, g, s0), y)
+      call pack_state(initial_ball_state(b, g, start, cage), y)
       call it%init(size(y), integrator_settings_t(int_method=b%int_method, h_initial=b%step_initial, &
                                                   h_min=b%step_min, h_max=b%step_max, error_limit=b%error_limit, &
                                                   rel_weight=0.0_wp, accept_at_h_min=.true.), error, &

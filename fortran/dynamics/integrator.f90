@@ -248,8 +248,9 @@ contains
             call stop_error(self, error, "t_limit is not after t", t, h)
             return
          end if
-         ! land on t_limit; stretch by up to 1 % rather than leave a sliver of a step
-         if (t + 1.01_wp*h >= t_limit) then
+         ! land on t_limit; stretch by up to 1 % (never beyond h_max) rather than leave a
+         ! sliver of a step
+         if (t + min(1.01_wp*h, self%settings%h_max) >= t_limit) then
             h = t_limit - t
             clipped = .true.
          end if
@@ -272,7 +273,8 @@ contains
             fac = fac_min
          else if (err <= 1.0_wp) then
             exit
-         else if (self%settings%accept_at_h_min .and. h <= h_min .and. .not. clipped) then
+         else if (self%settings%accept_at_h_min .and. h <= h_min) then
+            ! at the minimum step (or a shorter step landing on t_limit): accept, counted
             forced = .true.
             exit
          else
@@ -292,6 +294,12 @@ contains
          end if
          h = max(fac*h, h_min)
          clipped = .false.
+         if (present(t_limit)) then
+            if (t + h >= t_limit) then      ! never step past t_limit
+               h = t_limit - t
+               clipped = .true.
+            end if
+         end if
       end do
       if (tries > self%settings%max_rejections) then
          call stop_error(self, error, itoa(tries)//" consecutive rejected attempts", t, h, "; last: "//why)

@@ -66,14 +66,17 @@ contains
 
    !> Loads on every body of ball bearing b (mounted geometry g) at state s (module
    !> header).  traction (default .true.): include the race contacts' traction and heat.
+   !> stiffness(2, n), when given, replaces each contact's Hertz K(alpha) (N/m**1.5; a
+   !> verification option: with K frozen the normal loads derive from an energy).
    !> Input errors of the traction model (e.g. no EHD film) come back in error.
-   subroutine ball_bearing_loads(b, g, s, loads, error, traction)
+   subroutine ball_bearing_loads(b, g, s, loads, error, traction, stiffness)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(out) :: loads
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: traction
+      real(wp), intent(in), optional :: stiffness(:, :)
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: t
@@ -98,7 +101,11 @@ contains
 
       do k = 1, n
          do j = 1, 2
-            call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k))
+            if (present(stiffness)) then
+               call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k), stiffness(j, k))
+            else
+               call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k))
+            end if
             associate (c => loads%contacts(j, k), ball => s%elements(k)%position, race => s%races(j)%position)
                if (.not. (c%load > 0.0_wp)) cycle
                f_n = c%load*c%normal

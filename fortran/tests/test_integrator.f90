@@ -188,6 +188,7 @@ program test_integrator
 
    call test_settings_errors()
    call test_exponential_decay()
+   call test_step_limit()
    call test_order_of_convergence()
    call test_error_control()
    call test_oscillator_many_periods()
@@ -279,6 +280,47 @@ contains
          call check(it%stats%max_truncation <= 1.0e-8_wp, "decay: every accepted step within the error limit")
       end do
    end subroutine test_exponential_decay
+
+   !> Steps with t_limit never pass it, even when the step that lands on it is rejected
+   !> (a fast decay with a large first step: the error test rejects the landing attempt),
+   !> and the last one lands exactly on it; a landing step shorter than h_min that fails the
+   !> error test is accepted with accept_at_h_min (counted), not an error.
+   subroutine test_step_limit()
+      type(integrator_t) :: it
+      type(decay_t) :: f
+      type(error_type), allocatable :: error
+      type(integrator_settings_t) :: s
+      real(wp) :: t, y(1)
+      logical :: past
+      integer :: i
+
+      f%lambda = 50.0_wp
+      s = settings_of(INT_METHOD_DP54, 1.0e-10_wp)
+      s%h_initial = 0.2_wp
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      past = .false.
+      do i = 1, 10000
+         call it%step(f, t, y, error, t_limit=0.19_wp)
+         if (allocated(error)) exit
+         past = past .or. t > 0.19_wp
+         if (t == 0.19_wp) exit
+      end do
+      call check(.not. allocated(error), "t_limit: steps complete")
+      call check(.not. past .and. t == 0.19_wp, "t_limit: never passed, landed exactly")
+      call check(it%stats%rejected_error > 0, "t_limit: the landing attempt was rejected at least once")
+      ! a sliver below h_min before t_limit that fails the error test: accepted, counted
+      s = settings_of(INT_METHOD_DP54, 1.0e-14_wp)
+      s%h_min = 1.0e-2_wp
+      s%h_initial = 1.0e-2_wp
+      s%accept_at_h_min = .true.
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%step(f, t, y, error, t_limit=5.0e-3_wp)
+      call check(.not. allocated(error) .and. t == 5.0e-3_wp, "t_limit: a sliver below h_min lands, no error")
+   end subroutine test_step_limit
 
    !> Fixed steps (h_min = h_max = h, the error test out of the way): the global error at t = 2 of
    !> y' = y cos t falls as h**p, p = 5 (DP5) and 3 (BS3); slope from h = 0.1 -> 0.05 -> 0.025.
