@@ -34,12 +34,13 @@ def _load(summary_or_dir):
     import pandas as pd
 
     from ..sweeps import SweepError, read_summary
+    from ..sweeps.runner import read_summary_file
 
     if isinstance(summary_or_dir, pd.DataFrame):
         return summary_or_dir, "sweep"
     path = Path(os.fspath(summary_or_dir))
     if path.is_file():
-        return pd.read_csv(path), path.parent.name
+        return read_summary_file(path), path.parent.name
     if not path.is_dir():
         raise SweepError(f"{path}: no such sweep folder or summary file")
     return read_summary(path), path.name
@@ -148,6 +149,15 @@ def sweep_plot_command(out_dir, x: str, y: str, by: str | None = None, where: di
     """``pyadore plot-sweep DIR``: draw result ``y`` of the sweep in ``out_dir`` against the
     varied parameter ``x``, one line per value of ``by`` (the others held by ``where``);
     save it to ``out`` [default: ``DIR/<y>_vs_<x>[_by_<by>].png``] and return the path."""
+    from matplotlib.figure import Figure
+
+    from ..sweeps import SweepError
+
+    if out is not None:
+        kinds = Figure().canvas.get_supported_filetypes()
+        suffix = Path(out).suffix.lower().lstrip(".")
+        if suffix not in kinds:
+            raise SweepError(f"{out}: unknown image type {suffix!r}; use one of " + ", ".join(sorted(kinds)))
     fig = plot_sweep(out_dir, x=x, y=y, by=by, where=where, log_y=log_y)
     if out is None:
         stem = f"{y}_vs_{x}" + (f"_by_{by}" if by else "")

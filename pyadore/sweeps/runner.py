@@ -22,7 +22,7 @@ from .execute import run_dask, run_local
 from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_vary
 from .results import RESULT_COLUMNS, key_results
 
-__all__ = ["sweep", "read_summary"]
+__all__ = ["sweep", "read_summary", "read_summary_file"]
 
 #: While cases finish, manifest.json is rewritten at most this often (s); it is always
 #: written at the end.  Each case's own result.json is what a resume reads.
@@ -30,11 +30,29 @@ MANIFEST_INTERVAL = 1.0
 
 
 def _vary_specs(vary) -> list[str]:
+    """The varied fields as FIELD=V1,V2,... texts: from one such text, a list of them, or a
+    dict {field: values} whose values are an iterable or one comma-separated text."""
     if isinstance(vary, str):
         return [vary]
     if isinstance(vary, dict):
-        return [f"{name}=" + ",".join(str(v) for v in values) for name, values in vary.items()]
-    return [str(v) for v in vary]
+        specs = []
+        for name, values in vary.items():
+            if isinstance(values, str):
+                values = [v for v in values.split(",")]
+            elif isinstance(values, (int, float)):
+                values = [values]
+            try:
+                text = ",".join(str(v).strip() for v in values)
+            except TypeError:
+                raise SweepError(f"values of {name!r}: expected a list of numbers or a text 'V1,V2,...', "
+                                 f"got {values!r}") from None
+            specs.append(f"{name}={text}")
+        return specs
+    try:
+        return [str(v) for v in vary]
+    except TypeError:
+        raise SweepError(f"vary: expected a dict {{field: values}}, a text 'FIELD=V1,V2,...' or a list of "
+                         f"them, got {vary!r}") from None
 
 
 def _now() -> str:
@@ -287,4 +305,15 @@ def read_summary(out_dir):
     path = Path(os.fspath(out_dir)) / store.SUMMARY
     if not path.exists():
         raise SweepError(f"{out_dir}: no {store.SUMMARY}; is this a sweep folder (pyadore sweep ... -o DIR)?")
-    return pd.read_csv(path)
+    return read_summary_file(path)
+
+
+def read_summary_file(path):
+    """A sweep summary CSV file as a DataFrame; SweepError when it is empty or not a CSV
+    file of text."""
+    import pandas as pd
+
+    try:
+        return pd.read_csv(path)
+    except (pd.errors.EmptyDataError, pd.errors.ParserError, UnicodeDecodeError) as exc:
+        raise SweepError(f"{path}: not a readable sweep summary ({type(exc).__name__}: {exc})") from None
