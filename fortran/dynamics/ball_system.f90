@@ -20,7 +20,7 @@ module adore_dynamics_ball_system
                                         RACE_OUTER, RACE_INNER
    use adore_forces_ball_bearing, only: ball_bearing_loads_t
    use adore_dynamics_ball_motion, only: ball_bearing_rates
-   use adore_dynamics_integrator, only: derivative_t, DERIV_OK, DERIV_FAIL
+   use adore_dynamics_integrator, only: derivative_t, DERIV_OK, DERIV_FAIL, DERIV_REJECT_STEP
    use adore_driver_ball_step0, only: ball_step0_t
    implicit none
    private
@@ -33,6 +33,7 @@ module adore_dynamics_ball_system
       type(mounted_geometry_t) :: geometry
       real(wp) :: time_scale = 1.0_wp        !< T (s) of one unit of tau
       logical :: traction = .true.           !< race contact traction on (off: normal loads only)
+      logical :: cage = .true.               !< pocket and guide-land contacts on
       type(bearing_state_t) :: state, rates  !< scratch of eval
       type(ball_bearing_loads_t) :: loads    !< the loads of the last evaluation
       integer :: calls = 0                   !< evaluations so far
@@ -44,17 +45,18 @@ module adore_dynamics_ball_system
 contains
 
    !> The system of bearing b in mounted geometry g, time scale time_scale (s per unit
-   !> tau), with (default) or without race traction.
-   function new_ball_system(b, g, time_scale, traction) result(sys)
+   !> tau), with (default) or without race traction and cage contacts.
+   function new_ball_system(b, g, time_scale, traction, cage) result(sys)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       real(wp), intent(in) :: time_scale
-      logical, intent(in), optional :: traction
+      logical, intent(in), optional :: traction, cage
       type(ball_system_t) :: sys
       sys%bearing = b
       sys%geometry = g
       sys%time_scale = time_scale
       if (present(traction)) sys%traction = traction
+      if (present(cage)) sys%cage = cage
       sys%state = new_bearing_state(b%n_elements)
    end function new_ball_system
 
@@ -69,7 +71,7 @@ contains
       self%calls = self%calls + 1
       call unpack_state(y, t*self%time_scale, self%state)
       call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                              self%traction)
+                              self%traction, self%cage)
       if (allocated(self%failure)) then
          flag = DERIV_FAIL
          dydt = 0.0_wp
@@ -78,6 +80,8 @@ contains
       call pack_state(self%rates, dydt)
       dydt = self%time_scale*dydt
       flag = DERIV_OK
+      ! an abnormal cage contact (report 4.4.12): the integrator retries with a smaller step
+      if (self%loads%abnormal) flag = DERIV_REJECT_STEP
       if (.not. all(ieee_is_finite(dydt))) then
          call engine_error(self%failure, "equations of motion: non-finite rates (a body or contact state is "// &
                            "outside the model's range)")

@@ -171,7 +171,7 @@ contains
       l = length_scale(b%d)
       f = load_scale(b%force)
       tt = time_scale(b%mass(1), l, f)
-      sys = new_ball_system(b, g, tt, traction=.false.)
+      sys = new_ball_system(b, g, tt, traction=.false., cage=.false.)   ! cage friction dissipates
       s = initial_ball_state(b, g, s0)
       n = b%n_elements
       allocate (y(state_size(n)), scale(state_size(n)), kmin(2, n), kmax(2, n), dmax(2, n))
