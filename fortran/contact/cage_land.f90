@@ -14,7 +14,7 @@
 !> c - e (> 0 clearance) equals adore_cage_step0's Geo Int for an untilted cage.  Relative
 !> cage/race tilt is not modelled in the film.
 !> Hydrodynamic force (short bearing, Ocvirk; Hamrock, Fundamentals of Fluid Film
-!> Lubrication, NASA RP-1255 1991, ch. 10 "short-width journal bearings", half-Sommerfeld
+!> Lubrication, NASA RP-1255 1991, "short-width journal bearings", half-Sommerfeld
 !> film): with theta from the eccentricity direction e_e towards e_t = a x e_e,
 !> h = c (1 - eps cos theta) and the short-bearing pressure
 !>     p = -(6 eta / h**3) S (L**2/4 - z**2),   S = c [eps (wbar - psidot) sin theta - epsdot cos theta],

@@ -15,8 +15,8 @@
 !> it), Hertz point contact (adore_contact_hertz) with the cage material.
 !> Hydrodynamic force (Gupta 1979, Part III: ball/cage interaction hydrodynamic or metallic,
 !> a critical film thickness between): the isoviscous-rigid point contact of Brewe, Hamrock
-!> & Taylor (1979), Hamrock, Fundamentals of Fluid Film Lubrication (NASA RP-1255, 1991,
-!> ch. 20): H_min (W/U)**2 = 128 alpha_r lambda_b**2 (0.131 atan(alpha_r/2) + 1.683)**2,
+!> & Taylor (1979), Hamrock, Fundamentals of Fluid Film Lubrication (NASA RP-1255, 1991):
+!> H_min (W/U)**2 = 128 alpha_r lambda_b**2 (0.131 atan(alpha_r/2) + 1.683)**2,
 !> lambda_b = 1/(1 + 2/(3 alpha_r)), solved for the load
 !>     W(h) = eta u_e R_x sqrt(Hhat R_x / h),
 !> R_x = D/2 along the pocket axis (the entraining direction of a ball spinning about the
