@@ -16,7 +16,7 @@
 !> the outer race is fixed in the housing and turns at its Rec 9.1.2 speed; the inner race
 !> turns at its prescribed speed about its axis (no angular acceleration, its misalignment
 !> held) and translates freely under the applied load.  The cage moves in six degrees of
-!> freedom; its pocket and guide-land contacts come with [Dynamics] (4.4.11).
+!> freedom under its pocket and guide-land contacts (adore_forces_ball_bearing).
 !> Temperatures do not change here (the thermal model is [Thermal]).  Units SI, time in s.
 module adore_dynamics_ball_motion
    use adore_core_kinds, only: wp
@@ -37,20 +37,20 @@ contains
    !> position holds its velocity (m/s), velocity its acceleration (m/s**2), attitude the
    !> quaternion rate (1/s) and omega the body-frame angular acceleration (rad/s**2); the
    !> temperatures' rates are 0.  loads: the force assembly at s (adore_forces_ball_bearing).
-   !> traction, stiffness as ball_bearing_loads.  Input errors of the traction model come
-   !> back in error.
-   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, stiffness)
+   !> traction, cage and stiffness as ball_bearing_loads.  Input errors of the traction
+   !> model come back in error.
+   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(bearing_state_t), intent(out) :: rates
       type(ball_bearing_loads_t), intent(out) :: loads
       type(error_type), allocatable, intent(out) :: error
-      logical, intent(in), optional :: traction
+      logical, intent(in), optional :: traction, cage
       real(wp), intent(in), optional :: stiffness(:, :)
       integer :: k
 
-      call ball_bearing_loads(b, g, s, loads, error, traction, stiffness)
+      call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness)
       if (allocated(error)) return
       rates = new_bearing_state(size(s%elements))
       rates%time = 1.0_wp

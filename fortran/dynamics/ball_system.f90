@@ -20,8 +20,8 @@ module adore_dynamics_ball_system
                                         RACE_OUTER, RACE_INNER, BODY_SIZE
    use adore_forces_ball_bearing, only: ball_bearing_loads_t
    use adore_dynamics_ball_motion, only: ball_bearing_rates
-   use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL
-
+   use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
+                                        DERIV_REJECT_STEP
    use adore_quasistatic_ball_start, only: ball_start_t
    use adore_cage_step0, only: cage_step0_t
    use adore_model_scales, only: scale_factors
@@ -36,6 +36,12 @@ module adore_dynamics_ball_system
       type(mounted_geometry_t) :: geometry
       real(wp) :: time_scale = 1.0_wp        !< T (s) of one unit of tau
       logical :: traction = .true.           !< race contact traction on (off: normal loads only)
+      !> pocket and guide-land contacts on.  Off by default: the contacts are built and
+      !> unit-tested (fortran/tests/test_cage_contacts.f90), but a trial run of Appendix C
+      !> with them drives the cage onto its guide land with ~900 N of film force, which the
+      !> report's figures 21-22 do not show; [Dynamics] validates them before they are on
+      !> (docs/dynamics.md)
+      logical :: cage = .false.
       !> (2, n): when allocated, every contact's Hertz stiffness frozen at these values
       !> (N/m**1.5) instead of K(alpha): a verification option, the normal loads then derive
       !> from an energy (fortran/tests/test_dynamics.f90)
@@ -51,17 +57,19 @@ module adore_dynamics_ball_system
 contains
 
    !> The system of bearing b in mounted geometry g, time scale time_scale (s per unit
-   !> tau), with (default) or without race traction.
-   function new_ball_system(b, g, time_scale, traction) result(sys)
+   !> tau), with (default) or without race traction, with or without (default) the cage
+   !> contacts.
+   function new_ball_system(b, g, time_scale, traction, cage) result(sys)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       real(wp), intent(in) :: time_scale
-      logical, intent(in), optional :: traction
+      logical, intent(in), optional :: traction, cage
       type(ball_system_t) :: sys
       sys%bearing = b
       sys%geometry = g
       sys%time_scale = time_scale
       if (present(traction)) sys%traction = traction
+      if (present(cage)) sys%cage = cage
       sys%state = new_bearing_state(b%n_elements)
    end function new_ball_system
 
@@ -77,10 +85,10 @@ contains
       call unpack_state(y, t*self%time_scale, self%state)
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                                 self%traction, self%frozen_stiffness)
+                                 self%traction, self%cage, self%frozen_stiffness)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                                 self%traction)
+                                 self%traction, self%cage)
       end if
       if (allocated(self%failure)) then
          flag = DERIV_FAIL
@@ -90,6 +98,8 @@ contains
       call pack_state(self%rates, dydt)
       dydt = self%time_scale*dydt
       flag = DERIV_OK
+      ! an abnormal cage contact (report 4.4.12): the integrator retries with a smaller step
+      if (self%loads%abnormal) flag = DERIV_REJECT_STEP
       if (.not. all(ieee_is_finite(dydt))) then
          call engine_error(self%failure, "equations of motion: non-finite rates (a body or contact state is "// &
                            "outside the model's range)")

@@ -13,12 +13,25 @@
 !> the sums of dF cos psi and dF sin psi; the second is the spin moment about the normal).
 !> Gravity (Rec 11) acts on every body; the applied force and moment of Rec 9.1.1 on the
 !> inner race.  Inertial forces are not loads here: the equations of motion carry them.
+!> Cage contacts (the `cage` flag, default on): every ball against its cylindrical pocket
+!> (adore_contact_cage_pocket; pocket k at cage-frame azimuth 2 pi (k-1)/n, as the balls of
+!> the start) and the cage against each guide land of Rec 7.0/7.2 (adore_contact_cage_land),
+!> with the lubricant's viscosity at the cage temperature when the deck has a lubricant and
+!> the friction 0.05 of Rec 10.5.1B/10.5.2B (docs/dynamics.md); an abnormal cage contact
+!> (report 4.4.12) sets `abnormal` for the integrator to reject the step.
 !> Moments are about each body's mass centre, inertial components.  Units SI.
 module adore_forces_ball_bearing
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
+   use adore_core_constants, only: pi
    use adore_core_rotation, only: cross
-   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, TEMP_CAGE
+   use adore_cage_step0, only: land_contact, land_contact_t, GUIDE_OUTER
+   use adore_contact_cage_pocket, only: cage_pocket_pair_t, cage_pocket_geometry_t, cage_pocket_pair, &
+                                        cage_pocket_contact
+   use adore_contact_cage_land, only: cage_land_pair_t, cage_land_geometry_t, cage_land_contact
+   use adore_contact_line_slices, only: contact_modulus
+   use adore_tribology_film, only: dynamic_viscosity
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, RACE_OUTER, RACE_INNER
    use adore_contact_ball_race, only: ball_race_pair_t, ball_race_geometry_t, ball_race_contact, planar_contact
@@ -28,7 +41,8 @@ module adore_forces_ball_bearing
    implicit none
    private
 
-   public :: body_load_t, ball_bearing_loads_t, ball_race_pairs, ball_bearing_loads
+   public :: body_load_t, ball_bearing_loads_t, ball_race_pairs, ball_bearing_loads, ball_pocket_pair, &
+             guide_land_pairs
 
    !> Force (N) and moment about the mass centre (N m) on one body, inertial components.
    type :: body_load_t
@@ -45,6 +59,9 @@ module adore_forces_ball_bearing
       type(ball_race_geometry_t), allocatable :: contacts(:, :)
       type(contact_traction_t), allocatable :: traction(:, :)  !< zero where unloaded or traction off
       real(wp), allocatable :: heat(:, :)                   !< contact power loss (W)
+      type(cage_pocket_geometry_t), allocatable :: pockets(:)  !< ball k in pocket k (cage flag on)
+      type(cage_land_geometry_t), allocatable :: lands(:)      !< per guide land (cage flag on)
+      logical :: abnormal = .false.                         !< an abnormal cage contact (4.4.12)
    end type ball_bearing_loads_t
 
 contains
@@ -64,18 +81,74 @@ contains
                                        b%material(BODY_INNER)%poisson)
    end function ball_race_pairs
 
+   !> Lubricant dynamic viscosity (Pa s) at the cage temperature temperature(TEMP_CAGE) (K),
+   !> 0 when the deck has no lubricant (dry cage contacts).
+   pure real(wp) function cage_viscosity(b, temperature)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      cage_viscosity = 0.0_wp
+      if (b%lubricant_code /= 0) cage_viscosity = dynamic_viscosity(b%lubricant, temperature(TEMP_CAGE), 0.0_wp)
+   end function cage_viscosity
+
+   !> The ball/pocket pair of ball bearing b (mounted geometry g) at bulk temperatures
+   !> temperature (K): ball diameter, Rec 7.1 pocket clearance, pocket radius (OD + ID)/4,
+   !> ball and cage materials, lubricant at the cage temperature.
+   pure function ball_pocket_pair(b, g, temperature) result(p)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      real(wp), intent(in) :: temperature(:)
+      type(cage_pocket_pair_t) :: p
+      p = cage_pocket_pair(g%element_diameter, b%pocket_clearance(1), 0.25_wp*(b%cage_od + b%cage_id), &
+                           b%material(BODY_ELEMENT)%modulus, b%material(BODY_ELEMENT)%poisson, &
+                           b%material(BODY_CAGE)%modulus, b%material(BODY_CAGE)%poisson, &
+                           cage_viscosity(b, temperature), 0.05_wp)
+   end function ball_pocket_pair
+
+   !> The guide-land pairs of bearing b (Rec 7.0/7.2.n) in mounted geometry g: radial
+   !> clearance = half the effective play of adore_cage_step0 with the guiding race's
+   !> raceway growth (mounting plus thermal), lubricant at the cage temperature.
+   pure function guide_land_pairs(b, g, temperature) result(p)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      real(wp), intent(in) :: temperature(:)
+      type(cage_land_pair_t), allocatable :: p(:)
+      real(wp) :: growth(2), zero(3)
+      type(land_contact_t) :: lc
+      integer :: k, race_body
+
+      growth = [-g%mounting%outer_raceway_shrink + g%thermal_growth(1), &
+                g%mounting%inner_raceway_growth + g%thermal_growth(2)]
+      zero = 0.0_wp
+      allocate (p(b%n_lands))
+      do k = 1, b%n_lands
+         associate (land => b%lands(k))
+            race_body = merge(BODY_OUTER, BODY_INNER, land%guide == GUIDE_OUTER)
+            p(k)%race_is_journal = land%guide /= GUIDE_OUTER
+            p(k)%radius = 0.5_wp*land%diameter
+            p(k)%width = land%width
+            lc = land_contact(land, zero, zero, growth(land%guide))
+            p(k)%clearance = 0.5_wp*lc%effective_play
+            p(k)%e_star = contact_modulus(b%material(BODY_CAGE)%modulus, b%material(BODY_CAGE)%poisson, &
+                                          b%material(race_body)%modulus, b%material(race_body)%poisson)
+            p(k)%viscosity = cage_viscosity(b, temperature)
+            p(k)%friction = 0.05_wp
+         end associate
+      end do
+   end function guide_land_pairs
+
    !> Loads on every body of ball bearing b (mounted geometry g) at state s (module
-   !> header).  traction (default .true.): include the race contacts' traction and heat.
+   !> header).  traction (default .true.): include the race contacts' traction and heat;
+   !> cage (default .true.): include the pocket and guide-land contacts.
    !> stiffness(2, n), when given, replaces each contact's Hertz K(alpha) (N/m**1.5; a
    !> verification option: with K frozen the normal loads derive from an energy).
    !> Input errors of the traction model (e.g. no EHD film) come back in error.
-   subroutine ball_bearing_loads(b, g, s, loads, error, traction, stiffness)
+   subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(out) :: loads
       type(error_type), allocatable, intent(out) :: error
-      logical, intent(in), optional :: traction
+      logical, intent(in), optional :: traction, cage
       real(wp), intent(in), optional :: stiffness(:, :)
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
@@ -127,8 +200,45 @@ contains
             end associate
          end do
       end do
+      if (present(cage)) then
+         if (.not. cage) return
+      end if
+      call add_cage_contacts()
 
    contains
+
+      !> The pocket and guide-land contacts' loads (module header).
+      subroutine add_cage_contacts()
+         type(cage_pocket_pair_t) :: pp
+         type(cage_land_pair_t), allocatable :: lp(:)
+         integer :: k, j
+
+         pp = ball_pocket_pair(b, g, s%temperature)
+         allocate (loads%pockets(n))
+         do k = 1, n
+            call cage_pocket_contact(pp, 2.0_wp*pi*(k - 1)/n, s%elements(k), s%cage, loads%pockets(k))
+            associate (c => loads%pockets(k))
+               loads%elements(k)%force = loads%elements(k)%force + c%force_ball
+               loads%elements(k)%moment = loads%elements(k)%moment + c%moment_ball
+               loads%cage%force = loads%cage%force + c%force_cage
+               loads%cage%moment = loads%cage%moment + c%moment_cage
+               loads%abnormal = loads%abnormal .or. c%abnormal
+            end associate
+         end do
+         lp = guide_land_pairs(b, g, s%temperature)
+         allocate (loads%lands(size(lp)))
+         do k = 1, size(lp)
+            j = b%lands(k)%guide        ! GUIDE_OUTER/INNER = RACE_OUTER/INNER
+            call cage_land_contact(lp(k), s%cage, s%races(j), loads%lands(k))
+            associate (c => loads%lands(k))
+               loads%cage%force = loads%cage%force + c%force_cage
+               loads%cage%moment = loads%cage%moment + c%moment_cage
+               loads%races(j)%force = loads%races(j)%force + c%force_race
+               loads%races(j)%moment = loads%races(j)%moment + c%moment_race
+               loads%abnormal = loads%abnormal .or. c%abnormal
+            end associate
+         end do
+      end subroutine add_cage_contacts
 
       !> Traction of race contact j of ball k (planar form cj; semi-minor axis b_minor, m;
       !> Hertz pressure p_h, Pa) by the run's model: the law, or the EHD film traction with

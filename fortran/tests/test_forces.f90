@@ -339,6 +339,10 @@ contains
          total_f = total_f + f
          total_m = total_m + m + cross(st%races(j)%position, f)
       end do
+      ! the cage's pocket and guide-land contacts
+      f = ld%cage%force - b%mass(2)*b%gravity
+      total_f = total_f + f
+      total_m = total_m + ld%cage%moment + cross(st%cage%position, f)
       call check(norm2(total_f) < 1.0e-9_wp*fscale, "perturbed: contact forces sum to zero (action = reaction)")
       call check(norm2(total_m) < 1.0e-9_wp*fscale*b%dm, "perturbed: contact moments sum to zero")
       call check(abs(ld%traction(1, 1)%force) > 0.0_wp .and. norm2(ld%elements(1)%moment) > 0.0_wp, &
