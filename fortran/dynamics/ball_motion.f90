@@ -79,7 +79,7 @@ contains
       r%position = body%velocity
       r%velocity = ld%force/m
       r%attitude = quat_rate(body%attitude, body%omega)
-      m_b = matmul(transpose(quat_matrix(body%attitude)), ld%moment)
+      m_b = matmul(ld%moment, quat_matrix(body%attitude))   ! R**T M
       r%omega = (m_b - cross(body%omega, inertia*body%omega))/inertia
    end function body_rates
 

@@ -92,6 +92,7 @@ contains
       end if
       if (allocated(self%failure)) then
          flag = DERIV_FAIL
+         self%failure_reason = self%failure%message
          dydt = 0.0_wp
          return
       end if
@@ -103,6 +104,7 @@ contains
       if (.not. all(ieee_is_finite(dydt))) then
          call engine_error(self%failure, "equations of motion: non-finite rates (a body or contact state is "// &
                            "outside the model's range)")
+         self%failure_reason = self%failure%message
          flag = DERIV_FAIL
       end if
    end subroutine ball_system_eval

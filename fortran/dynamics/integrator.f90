@@ -47,6 +47,8 @@ module adore_dynamics_integrator
 
    !> The right-hand side of y' = f(t, y): extend it with the model data and give eval.
    type, abstract :: derivative_t
+      !> why the last eval returned DERIV_FAIL (set by the extension; appended to the error)
+      character(len=:), allocatable :: failure_reason
    contains
       procedure(eval_i), deferred :: eval
    end type derivative_t
@@ -260,7 +262,7 @@ contains
       do tries = 0, self%settings%max_rejections
          call attempt(self, deriv, t, y, h, flag, err)
          if (flag == DERIV_FAIL) then
-            call stop_error(self, error, "the derivative failed", t, h)
+            call stop_error(self, error, "the derivative failed", t, h, failure_tail(deriv))
             return
          end if
          if (flag == DERIV_REJECT_STEP) then
@@ -370,7 +372,7 @@ contains
       call deriv%eval(t, y, self%k(:, 1), flag)
       self%stats%derivative_calls = self%stats%derivative_calls + 1
       if (flag == DERIV_FAIL) then
-         call stop_error(self, error, "the derivative failed", t, self%h_next)
+         call stop_error(self, error, "the derivative failed", t, self%h_next, failure_tail(deriv))
       else if (flag == DERIV_REJECT_STEP) then
          call stop_error(self, error, "the derivative flags the state at the start of a step (abnormal "// &
                          "contact, report 4.4.12), which no smaller step can avoid", t, self%h_next)
@@ -422,6 +424,16 @@ contains
       err = maxval(abs(self%y_err)/(self%settings%error_limit* &
                                     (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))))
    end subroutine attempt
+
+   !> ": <reason>" of a failed derivative, or "" when it gives none.
+   function failure_tail(deriv) result(tail)
+      class(derivative_t), intent(in) :: deriv
+      character(len=:), allocatable :: tail
+      tail = ""
+      if (allocated(deriv%failure_reason)) then
+         if (len(deriv%failure_reason) > 0) tail = ": "//deriv%failure_reason
+      end if
+   end function failure_tail
 
    !> An engine error "integration stopped: <what> at time t = .. (step h = .., after N accepted
    !> steps)<tail>" (t and h in the unit of t).

@@ -208,7 +208,8 @@ contains
    !> is carried by the cage, so its orbital speed w_m is the cage speed, the mean orbital
    !> speed of the loaded balls (rad/s); its spin axis keeps the pitch beta of its last
    !> loaded state, that of the nearest loaded ball behind it in the orbit direction (ball
-   !> k - 1, k - 2, ..., cyclic: the balls orbit towards increasing azimuth); its spin speed
+   !> k - 1, k - 2, ..., cyclic, when the balls orbit towards increasing azimuth; k + 1, ...
+   !> when they orbit the other way); its spin speed
    !> w_b makes it roll at the centre of the one contact that still carries load, the outer
    !> one pressed by the centrifugal force (the rolling equation of race_control_kinematics,
    !> j = o: the least dissipation there at the given w_m and beta).  Without an outer
@@ -221,16 +222,19 @@ contains
       real(wp), intent(in) :: w_outer
       type(ball_kinematics_t), intent(inout) :: kin(:)
       real(wp) :: cage, beta, arm, r_c
-      integer :: k, j, n, src
+      integer :: k, j, n, src, back
 
       n = size(loaded)
       if (all(loaded) .or. .not. any(loaded)) return
       cage = sum(kin%orbital_speed, mask=loaded)/count(loaded)
+      ! "behind" in the orbit direction: lower azimuth when the balls orbit towards
+      ! increasing azimuth (cage > 0), higher when they orbit the other way
+      back = merge(-1, 1, cage >= 0.0_wp)
       do k = 1, n
          if (loaded(k)) cycle
          src = k
          do j = 1, n - 1
-            src = modulo(k - 1 - j, n) + 1
+            src = modulo(k - 1 + back*j, n) + 1
             if (loaded(src)) exit
          end do
          beta = kin(src)%pitch
