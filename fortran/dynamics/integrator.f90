@@ -262,7 +262,7 @@ contains
       do tries = 0, self%settings%max_rejections
          call attempt(self, deriv, t, y, h, flag, err)
          if (flag == DERIV_FAIL) then
-            call stop_error(self, error, "the derivative failed", t, h, failure_tail(deriv))
+            call stop_error(self, error, "the derivative failed", t, h, deriv=deriv)
             return
          end if
          if (flag == DERIV_REJECT_STEP) then
@@ -372,7 +372,7 @@ contains
       call deriv%eval(t, y, self%k(:, 1), flag)
       self%stats%derivative_calls = self%stats%derivative_calls + 1
       if (flag == DERIV_FAIL) then
-         call stop_error(self, error, "the derivative failed", t, self%h_next, failure_tail(deriv))
+         call stop_error(self, error, "the derivative failed", t, self%h_next, deriv=deriv)
       else if (flag == DERIV_REJECT_STEP) then
          call stop_error(self, error, "the derivative flags the state at the start of a step (abnormal "// &
                          "contact, report 4.4.12), which no smaller step can avoid", t, self%h_next)
@@ -425,24 +425,15 @@ contains
                                     (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))))
    end subroutine attempt
 
-   !> ": <reason>" of a failed derivative, or "" when it gives none.
-   function failure_tail(deriv) result(tail)
-      class(derivative_t), intent(in) :: deriv
-      character(len=:), allocatable :: tail
-      tail = ""
-      if (allocated(deriv%failure_reason)) then
-         if (len(deriv%failure_reason) > 0) tail = ": "//deriv%failure_reason
-      end if
-   end function failure_tail
-
    !> An engine error "integration stopped: <what> at time t = .. (step h = .., after N accepted
-   !> steps)<tail>" (t and h in the unit of t).
-   subroutine stop_error(self, error, what, t, h, tail)
+   !> steps)<tail>" (t and h in the unit of t); with deriv, ": <its failure reason>" after it.
+   subroutine stop_error(self, error, what, t, h, tail, deriv)
       class(integrator_t), intent(in) :: self
       type(error_type), allocatable, intent(out) :: error
       character(len=*), intent(in) :: what
       real(wp), intent(in) :: t, h
       character(len=*), intent(in), optional :: tail
+      class(derivative_t), intent(in), optional :: deriv
       character(len=:), allocatable :: msg
       msg = "integration stopped: "//what//" at time t = "
       call put_real(msg, t)
@@ -450,6 +441,9 @@ contains
       call put_real(msg, h)
       msg = msg//", after "//itoa(self%stats%accepted)//" accepted steps)"
       if (present(tail)) msg = msg//tail
+      if (present(deriv)) then
+         if (allocated(deriv%failure_reason)) msg = msg//": "//deriv%failure_reason
+      end if
       call engine_error(error, msg)
    end subroutine stop_error
 
