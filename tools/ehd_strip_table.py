@@ -43,10 +43,10 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "fortran" / "tribology" / "ehd_strip_table.f90"
 
-H_STEP = 0.25         # grid step in A and L
+H_STEP = 0.2          # grid step in A and L
 A_MAX = 12.0          # the table's range of A = alpha p_c / 2
 L_MIN, L_MAX = -A_MAX - 8.0, 8.0
-DEGREE = 7            # Lagrange degree per axis (odd): 8 x 8 nodes
+DEGREE = 5            # Lagrange degree per axis (odd): 6 x 6 nodes
 
 
 def _grid():

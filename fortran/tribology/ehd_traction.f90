@@ -142,7 +142,7 @@ contains
       real(wp), parameter :: Z_MIN = exp(STRIP_L_MIN)
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(4, 8), vmax, v, fac
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(4, 8), vmax, ev, fac
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n
 
       nm = EHD_FAST_MAJOR
@@ -199,9 +199,10 @@ contains
             do j = 1, merge(nm, nh, r == 1)
                n = n + 1
                if (kp > 0.0_wp .and. vmax > 1.0_wp) then
-                  v = 0.5_wp*vmax*(1.0_wp + xq(j, r))
-                  phi(n) = pr + sign(1.0_wp, pf - pr)*sinh(v)/kp
-                  wn(n) = 0.5_wp*vmax*wq(j, r)*cosh(v)/kp
+                  ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2
+                  ev = exp(0.5_wp*vmax*(1.0_wp + xq(j, r)))
+                  phi(n) = pr + sign(1.0_wp, pf - pr)*0.5_wp*(ev - 1.0_wp/ev)/kp
+                  wn(n) = 0.25_wp*vmax*wq(j, r)*(ev + 1.0_wp/ev)/kp
                else
                   phi(n) = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xq(j, r)
                   wn(n) = 0.5_wp*abs(pf - pr)*wq(j, r)
@@ -210,8 +211,9 @@ contains
          end associate
       end do
       ! the strips at the nodes (array operations: the compiler vectorises sin, cos)
-      cphi(1:n) = cos(phi(1:n))
-      phi(1:n) = c%alpha + c%a*sin(phi(1:n))/c%rho        ! now the angle alpha + s / rho
+      phi(1:n) = sin(phi(1:n))                             ! now sin(phi) = s / a
+      cphi(1:n) = sqrt((1.0_wp - phi(1:n))*(1.0_wp + phi(1:n)))   ! cos(phi) >= 0 on [-pi/2, pi/2]
+      phi(1:n) = c%alpha + c%a*phi(1:n)/c%rho              ! now the angle alpha + s / rho
       wn(1:n) = wn(1:n)*c%a*cphi(1:n)                      ! ds = a cos(phi) dphi
       ct(1:n) = cos(phi(1:n))
       st(1:n) = sin(phi(1:n))
