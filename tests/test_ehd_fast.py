@@ -89,8 +89,8 @@ def test_fast_ehd_traction_at_the_appendix_c_contacts_is_the_reference_within_1e
 def test_fast_ehd_traction_over_scaled_slips_and_loads():
     """Slide/roll and spin/roll x 0.5 .. x 2 and loads x 0.5 .. x 2 on every contact: the
     fast traction's default orders against the 16 x 24 reference within the issue's 1e-4
-    (measured 2.8e-5, which is the reference's own error there: the fast traction is within
-    1e-5 of the converged quadrature)."""
+    (measured 2.8e-5, which is the reference's own error there: the fast traction is 1.0e-5
+    from the converged quadrature)."""
     worst = 0.0
     for c, k in itertools.product(_contacts(), itertools.product([0.5, 1, 2], [0.5, 1, 2], [0.5, 2])):
         cs = _scaled(c, *k)
