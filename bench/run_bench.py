@@ -5,9 +5,11 @@ Speed targets live here, never in the test suite.  Each case is run a few times;
 the best and median wall times are printed, for the standalone executable and the
 f2py path.  The EHD contact evaluation (force, moment and loss of one ball/race contact,
 traction model 3; issue #16) is timed inside the engine over many evaluations, for every
-race contact of the Appendix C step 0, by the fast and the reference quadrature: its rows
-give the mean over the contacts (best_s) and the slowest contact (median_s column: the
-largest), in seconds, and us_per_contact.  Results are printed, and written to
+race contact of the Appendix C step 0, by the fast and the reference quadrature, and by the
+fast one over those contacts with slide/roll, spin/roll x 0.5 .. x 2 and loads x 0.5, x 2
+(tests/test_ehd_fast.py's range of the 1e-4 accuracy test): its rows give the mean over the
+contacts (best_s) and the slowest contact (median_s column: the largest), in seconds, and
+us_per_contact.  Results are printed, and written to
 bench/results/latest.json.
 """
 
@@ -56,11 +58,20 @@ def _ehd_contact_rows(deck):
                                  load=balls[f"q_{tag}"][k], rheology=rheo,
                                  film=balls[f"film_{tag}"][k] * balls[f"thermal_factor_{tag}"][k],
                                  b=balls[f"b_{tag}"][k]))
+    # the accuracy test's scaling of slips and loads (imported, not copied)
+    sys.path.insert(0, str(ROOT / "tests"))
+    from itertools import product
+
+    from test_ehd_fast import _scaled
+
+    scaled = [_scaled(c, *k) for c, k in product(contacts, product([0.5, 1, 2], [0.5, 1, 2], [0.5, 2]))]
     rows = []
-    for method, repeat in (("fast", 20000), ("reference", 5000)):
-        us = [min(_core.ehd_contact_microseconds(**c, method=method, repeat=repeat) for _ in range(3))
-              for c in contacts]
-        rows.append({"deck": deck.name, "case": f"EHD contact, {method}", "best_s": statistics.mean(us) * 1e-6,
+    for label, method, cases, repeat, tries in (("fast", "fast", contacts, 20000, 3),
+                                                ("reference", "reference", contacts, 5000, 3),
+                                                ("fast, scaled", "fast", scaled, 2000, 2)):
+        us = [min(_core.ehd_contact_microseconds(**c, method=method, repeat=repeat) for _ in range(tries))
+              for c in cases]
+        rows.append({"deck": deck.name, "case": f"EHD contact, {label}", "best_s": statistics.mean(us) * 1e-6,
                      "median_s": max(us) * 1e-6, "us_per_contact": statistics.mean(us)})
     return rows
 

@@ -27,6 +27,7 @@ module adore_tribology_ehd_traction
    use adore_core_error, only: error_type, input_error
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_flash, only: strip_temperature_rise, flash_trapezoid_weights
+   use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
                                    interior_extremum, contact_kinematics, rolling_zones, axis_nodes
    implicit none
@@ -36,10 +37,15 @@ module adore_tribology_ehd_traction
    public :: ehd_contact_traction_fast, ehd_contact_power
 
    !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
-   !> zone in the angle phi of s = a sin(phi) along the major axis, and on [0, pi/2] in the
-   !> angle psi of y = b sin(psi) across each strip (tests/test_ehd_fast.py bounds its
-   !> difference from the 16 x 24 reference)
-   integer, parameter, public :: EHD_FAST_MAJOR = 12, EHD_FAST_STRIP = 8
+   !> zone in the angle phi of s = a sin(phi) along the major axis, and across each strip
+   !> the table (EHD_STRIP_TABLE) or that many Gauss points on [0, pi/2] in the angle psi of
+   !> y = b sin(psi) (tests/test_ehd_fast.py bounds its difference from the 16 x 24 reference)
+   integer, parameter, public :: EHD_FAST_MAJOR = 16, EHD_FAST_STRIP = 0
+   !> n_strip of ehd_contact_traction_fast that takes the strip integral from the table
+   !> (adore_tribology_ehd_strip_table); EHD_STRIP_FALLBACK: its Gauss points on psi where
+   !> A = alpha p / 2 is beyond the table (STRIP_A_MAX)
+   integer, parameter, public :: EHD_STRIP_TABLE = 0
+   integer, parameter :: EHD_STRIP_FALLBACK = 48
 
 
    !> Rheology of the film at the wall temperature.
@@ -115,11 +121,14 @@ contains
 
    !> The EHD traction of contact c as ehd_contact_traction, fast: the square-root edges of
    !> the Hertz ellipse are taken out by s = a sin(phi) along the major axis (zones still
-   !> split at the pure-rolling points) and y = b' sin(psi) across each strip, so that
-   !> Gauss-Legendre converges fast in phi and psi: n_major points per zone in phi
-   !> (default EHD_FAST_MAJOR), n_strip on psi in [0, pi/2] (default EHD_FAST_STRIP).
-   !> Same outputs as ehd_contact_traction (force, force_cos, force_sin, power, sliding,
-   !> max_slip, kinematics); input error for bad data.
+   !> split at the pure-rolling points, graded there), so that Gauss-Legendre converges fast
+   !> in phi: n_major points per zone (default EHD_FAST_MAJOR).  Across each strip
+   !> (n_strip = EHD_STRIP_TABLE, the default) the integral of the film shear is the table
+   !> of adore_tribology_ehd_strip_table, S = 2 Z exp(G(A, ln Z)), A = alpha p_c / 2,
+   !> Z = zeta |u| (p_c the strip's centre pressure; Gauss on psi with EHD_STRIP_FALLBACK
+   !> points for A beyond the table); n_strip >= 1: Gauss on psi in [0, pi/2] of
+   !> y = b' sin(psi) with n_strip points.  Same outputs as ehd_contact_traction (force,
+   !> force_cos, force_sin, power, sliding, max_slip, kinematics); input error for bad data.
    subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
@@ -129,16 +138,18 @@ contains
       integer, intent(in), optional :: n_major, n_strip
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
-      integer, parameter :: MAX_FAST = 64
+      integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
+      real(wp), parameter :: Z_MIN = exp(STRIP_L_MIN)
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST)
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, phi, w, rs, cal, sal, scale_sl, sub(4, 8), vmax, v
-      integer :: nm, nh, ns, nz, z, j, nsub
+      real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(4, 8), vmax, ev, fac
+      integer :: nm, nh, ns, nq, nz, z, j, nsub, n
 
       nm = EHD_FAST_MAJOR
       ns = EHD_FAST_STRIP
       if (present(n_major)) nm = n_major
       if (present(n_strip)) ns = n_strip
-      call check_ehd_inputs(c, rheo, h, b, nm, ns, error)
+      call check_ehd_inputs(c, rheo, h, b, nm, merge(1, ns, ns == EHD_STRIP_TABLE), error)
       if (allocated(error)) return
       if (nm > MAX_FAST .or. ns > MAX_FAST) then
          call input_error(error, "EHD traction (fast): need 1 to 64 Gauss points per zone and per strip")
@@ -147,18 +158,20 @@ contains
       nh = max(1, (nm + 1)/2)             ! a half of a zone between two rolling points
       call gauss_legendre(nm, xq(1:nm, 1), wq(1:nm, 1))
       call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
-      call gauss_legendre(ns, yg(1:ns), wy(1:ns))
-      ! psi = pi/4 (1 + y) on [0, pi/2]; dy' = cos(psi) dpsi; both halves of the strip
-      cy(1:ns) = cos(0.25_wp*pi*(1.0_wp + yg(1:ns)))
-      wy(1:ns) = 2.0_wp*0.25_wp*pi*wy(1:ns)*cy(1:ns)
       call contact_kinematics(c, t)
       call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points)
       p0 = 1.5_wp*c%load/(pi*c%a*b)
       call film_constants(rheo, h, amp, zeta)
       rs = c%race_speed
-      cal = cos(c%alpha)
-      sal = sin(c%alpha)
-      scale_sl = 0.75_wp*c%load/c%a
+      ! the rule on psi: n_strip points, or the table's fallback where A is beyond it
+      nq = 0
+      if (ns /= EHD_STRIP_TABLE .or. 0.5_wp*rheo%alpha*p0 > STRIP_A_MAX) then
+         nq = merge(EHD_STRIP_FALLBACK, ns, ns == EHD_STRIP_TABLE)
+         call gauss_legendre(nq, yg(1:nq), wy(1:nq))
+         ! psi = pi/4 (1 + y) on [0, pi/2]; dy' = cos(psi) dpsi; both halves of the strip
+         cy(1:nq) = cos(0.25_wp*pi*(1.0_wp + yg(1:nq)))
+         wy(1:nq) = 2.0_wp*0.25_wp*pi*wy(1:nq)*cy(1:nq)
+      end if
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
       ! sub-zones in phi: a zone that ends at a pure-rolling point is graded there (the
       ! film's shear saturates within |u| ~ 1 / (zeta E) of it); one between two rolling
@@ -178,22 +191,73 @@ contains
             call add_sub(lo, hi, huge(1.0_wp), 1)
          end if
       end do
+      ! the nodes phi(1:n) and weights wn(1:n) (rad) of every sub-zone
+      n = 0
       do z = 1, nsub
          associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => nint(sub(4, z)))
             vmax = asinh(kp*abs(pf - pr))
             do j = 1, merge(nm, nh, r == 1)
+               n = n + 1
                if (kp > 0.0_wp .and. vmax > 1.0_wp) then
-                  v = 0.5_wp*vmax*(1.0_wp + xq(j, r))
-                  phi = pr + sign(1.0_wp, pf - pr)*sinh(v)/kp
-                  w = 0.5_wp*vmax*wq(j, r)*cosh(v)/kp
+                  ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2
+                  ev = exp(0.5_wp*vmax*(1.0_wp + xq(j, r)))
+                  phi(n) = pr + sign(1.0_wp, pf - pr)*0.5_wp*(ev - 1.0_wp/ev)/kp
+                  wn(n) = 0.25_wp*vmax*wq(j, r)*(ev + 1.0_wp/ev)/kp
                else
-                  phi = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xq(j, r)
-                  w = 0.5_wp*abs(pf - pr)*wq(j, r)
+                  phi(n) = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xq(j, r)
+                  wn(n) = 0.5_wp*abs(pf - pr)*wq(j, r)
                end if
-               call add_node(phi, w)
             end do
          end associate
       end do
+      ! the strips at the nodes (array operations: the compiler vectorises sin, cos)
+      phi(1:n) = sin(phi(1:n))                             ! now sin(phi) = s / a
+      cphi(1:n) = sqrt((1.0_wp - phi(1:n))*(1.0_wp + phi(1:n)))   ! cos(phi) >= 0 on [-pi/2, pi/2]
+      phi(1:n) = c%alpha + c%a*phi(1:n)/c%rho              ! now the angle alpha + s / rho
+      wn(1:n) = wn(1:n)*c%a*cphi(1:n)                      ! ds = a cos(phi) dphi
+      ct(1:n) = cos(phi(1:n))
+      st(1:n) = sin(phi(1:n))
+      u(1:n) = c%side*c%rho*(c%omega(1) - rs)*ct(1:n) - c%side*c%rho*c%omega(2)*st(1:n) - rs*c%r_b
+      ! the strip traction per unit length f = b cos(phi) x the integral of tau across the
+      ! strip (strip_traction): by the table, S = 2 Z exp(G(A, ln Z)) (array operations: the
+      ! compiler vectorises log and exp), else, or where A is beyond the table, by the rule
+      aa(1:n) = 0.5_wp*rheo%alpha*p0*cphi(1:n)
+      if (ns == EHD_STRIP_TABLE) then
+         if (rheo%beta > 0.0_wp) then
+            zz(1:n) = zeta*abs(u(1:n))
+            lz(1:n) = log(max(zz(1:n), Z_MIN))
+            fac = 2.0_wp*amp*b
+         else
+            ! isothermal: the integral of E**2 across the strip is exp(G) at Z -> 0
+            zz(1:n) = abs(u(1:n))
+            lz(1:n) = STRIP_L_MIN
+            fac = rheo%eta_w/h*b
+         end if
+         do j = 1, n
+            if (aa(j) > STRIP_A_MAX) then
+               g(j) = 0.0_wp
+            else if (lz(j) <= STRIP_L_MAX) then
+               ! G is flat below STRIP_L_MIN
+               g(j) = strip_log_shear(aa(j), max(lz(j), STRIP_L_MIN))
+            else
+               g(j) = log(2.0_wp*(lz(j) + log(2.0_wp) + 0.25_wp*pi*aa(j))) - 2.0_wp*lz(j)
+            end if
+         end do
+         f(1:n) = fac*cphi(1:n)*zz(1:n)*exp(g(1:n))
+      end if
+      if (nq > 0) then
+         do j = 1, n
+            if (ns /= EHD_STRIP_TABLE .or. aa(j) > STRIP_A_MAX) f(j) = b*cphi(j)*strip_rule_integral(aa(j), u(j))
+         end do
+      end if
+      ! force, its moments cos(s / rho) = cos(theta - alpha), sin(s / rho), heat (eq 4), sliding
+      f(1:n) = f(1:n)*wn(1:n)
+      t%force = sum(sign(f(1:n), u(1:n)))
+      t%force_cos = sum(sign(f(1:n), u(1:n))*(ct(1:n)*cos(c%alpha) + st(1:n)*sin(c%alpha)))
+      t%force_sin = sum(sign(f(1:n), u(1:n))*(st(1:n)*cos(c%alpha) - ct(1:n)*sin(c%alpha)))
+      t%power = sum(f(1:n)*abs(u(1:n)))
+      t%sliding = 0.75_wp*c%load/c%a*sum(abs(u(1:n))*cphi(1:n)**2*wn(1:n))    ! Hertz strip load
+      t%max_slip = max(t%max_slip, maxval(abs(u(1:n))))
       call interior_extremum(c, t%max_slip)
       t%coefficient = t%force/c%load
 
@@ -221,41 +285,27 @@ contains
          end if
       end subroutine add_sub
 
-      !> Add the node at phi (rad) with weight w (rad) to the integrals.
-      subroutine add_node(phi, w)
-         real(wp), intent(in) :: phi, w
-         real(wp) :: cphi, sphi, s, wl, ct, st, u, f, fs, e_half, z, sq
+      !> Integral of tau h / h (Pa) over y' in [-1, 1] across a strip with A = alpha p_c / 2
+      !> and slip u (m/s) by the rule (cy, wy) on psi (strip_traction).
+      function strip_rule_integral(aa, u) result(f)
+         real(wp), intent(in) :: aa, u
+         real(wp) :: f
+         real(wp) :: e_half, zq, sq
          integer :: i
-         cphi = cos(phi)
-         sphi = sin(phi)
-         s = c%a*sphi
-         wl = w*c%a*cphi                                 ! ds = a cos(phi) dphi
-         ct = cos(c%alpha + s/c%rho)
-         st = sin(c%alpha + s/c%rho)
-         u = c%side*c%rho*(c%omega(1) - rs)*ct - c%side*c%rho*c%omega(2)*st - rs*c%r_b
-         ! strip traction per unit length: b cos(phi) x the integral of tau over y' in [-1, 1]
          f = 0.0_wp
-         do i = 1, ns
-            e_half = exp(0.5_wp*rheo%alpha*p0*cphi*cy(i))
+         do i = 1, nq
+            e_half = exp(aa*cy(i))
             if (rheo%beta > 0.0_wp) then
-               z = zeta*abs(u)*e_half
-               sq = sqrt(1.0_wp + z*z)
+               zq = zeta*abs(u)*e_half
+               sq = sqrt(1.0_wp + zq*zq)
                ! shear_shape(z) = 2 asinh(z) / sqrt(1 + z**2), asinh by its logarithm: its
                ! absolute error stays ~eps (relative eps / z at small z, where the shear is small)
-               f = f + wy(i)*amp*e_half*(2.0_wp*log(z + sq)/sq)
+               f = f + wy(i)*amp*e_half*(2.0_wp*log(zq + sq)/sq)
             else
                f = f + wy(i)*rheo%eta_w*e_half*e_half*abs(u)/h
             end if
          end do
-         f = b*cphi*f
-         fs = sign(f, u)*wl
-         t%force = t%force + fs
-         t%force_cos = t%force_cos + fs*(ct*cal + st*sal)   ! cos(s / rho)
-         t%force_sin = t%force_sin + fs*(st*cal - ct*sal)   ! sin(s / rho)
-         t%power = t%power + f*abs(u)*wl
-         t%sliding = t%sliding + abs(u)*scale_sl*cphi*cphi*wl
-         t%max_slip = max(t%max_slip, abs(u))
-      end subroutine add_node
+      end function strip_rule_integral
 
    end subroutine ehd_contact_traction_fast
 
