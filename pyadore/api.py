@@ -15,6 +15,10 @@ __all__ = ["Result", "run", "read_traction_table", "STEPS_FROM_DECK", "BALL_STAR
 #: ``steps`` value the engine reads as "as many time steps as the deck asks for".
 STEPS_FROM_DECK = -1
 
+#: First words of the listing line of a print whose time steps come from the opt-in dynamics
+#: (issue #20 in progress; fortran/output/banner.f90 writes it).
+DYNAMICS_MARKER = "DYNAMICS IN PROGRESS (ISSUE #20)"
+
 #: ``ball_start`` names of :func:`run` (report 4.4.7), the engine's default first: the
 #: ball angular velocity of least contact dissipation, or race control at one race.
 BALL_STARTS = ("dissipation", "outer-race-control", "inner-race-control")
@@ -54,8 +58,11 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
         moment_equilibrium: bool = False) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
 
-    steps: ``None`` runs as many time steps as the deck asks for, ``0`` only the
-    quasi-static start, ``n`` stops after ``n`` time steps.
+    steps: ``None`` runs as many time steps as the deck asks for (while the dynamics,
+    issue #20, is in progress: the print ends after step 0, and ``notes`` says so), ``0``
+    only the quasi-static start, ``n`` integrates ``n`` time steps after step 0 - opt-in
+    dynamics of ball decks (no cage contacts, thermal model off; the print's listing says
+    so); a roller deck ends after step 0.
     out: the print file to write; by default a file in a fresh temporary directory.
     traction_table: a traction-slip table file (ADORE's ADRX7, report 4.4.9; format in
     docs/tribology.md) replacing the deck's RE/race traction model; the print lists it
@@ -92,9 +99,20 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
     if not isinstance(moment_equilibrium, bool):
         raise AdoreInputError(f"moment_equilibrium must be True or False, got {moment_equilibrium!r}")
     _core.run_file(deck, out_path, engine_steps, table, ball_start, moment_equilibrium)
-    notes = []
-    if engine_steps != 0 and _core.time_steps_implemented() == 0:
-        notes.append("time integration is not implemented yet; the print file ends after step 0 "
-                     "(the quasi-static start)")
-    return Result(deck_path=deck, print_path=out_path, steps=steps,
-                  text=out_path.read_text(encoding="utf-8", errors="replace"), notes=notes)
+    text = out_path.read_text(encoding="utf-8", errors="replace")
+    return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
+                  notes=_run_notes(engine_steps, DYNAMICS_MARKER in text.split("Listing of input data records", 1)[0]))
+
+
+def _run_notes(engine_steps: int, integrated: bool) -> list[str]:
+    """What a run's print holds when it is not what was asked for (the standalone
+    ``adore`` writes the same notes on stderr)."""
+    if engine_steps == STEPS_FROM_DECK and _core.time_steps_implemented() == 0:
+        return ["time integration is opt-in (--steps N) while [Dynamics] is in progress; "
+                "the print file ends after step 0 (the quasi-static start)"]
+    if engine_steps > 0 and not integrated:
+        return ["time integration of roller bearings is not implemented yet; the print file ends after "
+                "step 0 (the quasi-static start)"]
+    if engine_steps > 0:
+        return ["dynamics in progress (issue #20): no cage contacts, thermal model off"]
+    return []

@@ -40,7 +40,9 @@ def cli() -> None:
 @click.option("-o", "--out", type=click.Path(dir_okay=False, path_type=Path),
               help="print file to write [default: out/<deck name>.prt]")
 @click.option("--steps", type=click.IntRange(min=0),
-              help="time steps to run; 0 = the quasi-static start only [default: as the deck says]")
+              help="time steps to integrate after step 0 (ball decks; opt-in dynamics, issue #20 in "
+                   "progress: no cage contacts, thermal model off); 0 = the quasi-static start only "
+                   "[default: as the deck says, step 0 only while the dynamics is in progress]")
 @click.option("--traction-table", type=click.Path(dir_okay=False, path_type=Path),
               help="traction-slip table (slip m/s, coefficient per line; ADORE's ADRX7) replacing "
                    "the deck's RE/race traction model")

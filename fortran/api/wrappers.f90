@@ -14,7 +14,7 @@ subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start
    implicit none
    character(len=*), intent(in) :: deck_path   !< deck file path
    character(len=*), intent(in) :: out_path    !< print file path to write
-   integer, intent(in) :: steps                !< -1 deck's count, 0 quasi-static only, n steps
+   integer, intent(in) :: steps                !< -1 deck's count, 0 quasi-static only, n steps (ball decks)
    character(len=*), intent(in) :: traction_table  !< traction-slip table file (ADRX7); blank: none
    character(len=*), intent(in) :: ball_start      !< ball start hypothesis name (report 4.4.7); blank: default
    integer, intent(in) :: moment_equilibrium   !< 1: moment equilibrium of the inner race (kFS4 = kFS5 = 0); 0: prescribed
@@ -31,7 +31,8 @@ subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start
    end if
 end subroutine adore_run_file
 
-!> Number of time steps the engine integrates (0: the print ends after step 0).
+!> Time steps a run with the deck's own count integrates (0: such a print ends after step 0
+!> while [Dynamics] is in progress; explicit steps > 0 integrate opt-in on ball decks).
 subroutine adore_time_steps_implemented(n)
    use adore_driver_run, only: TIME_STEPS_IMPLEMENTED
    implicit none

@@ -11,9 +11,10 @@ program adore
 
    type(error_type), allocatable :: error
    character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start
-   integer :: i, nargs, steps, stat, dot
+   integer :: i, nargs, steps, stat, dot, integrated
    logical :: moments
 
+   integrated = 0
    steps = STEPS_FROM_DECK
    deck_path = ""
    table_path = ""
@@ -76,7 +77,7 @@ program adore
             out_path = deck_path//".prt"
          end if
       end if
-      call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments)
+      call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments, integrated)
    end if
 
    if (allocated(error)) then
@@ -84,9 +85,16 @@ program adore
       call exit_with(error%stat)
    end if
    write (output_unit, "(a)") "print file written: "//out_path
-   if (steps /= 0 .and. TIME_STEPS_IMPLEMENTED == 0) write (error_unit, "(a)") &
-      "adore: note: time integration is not implemented yet; the print file ends after step 0 "// &
-      "(the quasi-static start)"
+   ! what the print holds, when it is not what was asked for (pyadore/api.py says the same)
+   if (steps == STEPS_FROM_DECK .and. TIME_STEPS_IMPLEMENTED == 0) then
+      write (error_unit, "(a)") "adore: note: time integration is opt-in (--steps N) while [Dynamics] is in "// &
+         "progress; the print file ends after step 0 (the quasi-static start)"
+   else if (steps > 0 .and. integrated == 0) then
+      write (error_unit, "(a)") "adore: note: time integration of roller bearings is not implemented yet; "// &
+         "the print file ends after step 0 (the quasi-static start)"
+   else if (integrated > 0) then
+      write (error_unit, "(a)") "adore: note: dynamics in progress (issue #20): no cage contacts, thermal model off"
+   end if
    call exit_with(ADORE_OK)
 
 contains
@@ -123,7 +131,10 @@ contains
       write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME]"// &
          " [--moment-equilibrium]"
       write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt)"
-      write (unit, "(a)") "  --steps N                -1 = as the deck says (default), 0 = quasi-static start only"
+      write (unit, "(a)") "  --steps N                N > 0: integrate N time steps after step 0 (ball decks; opt-in"
+      write (unit, "(a)") "                           dynamics, issue #20 in progress: no cage contacts, thermal off);"
+      write (unit, "(a)") "                           0 = quasi-static start only; -1 = as the deck says (default:"
+      write (unit, "(a)") "                           step 0 only while the dynamics is in progress)"
       write (unit, "(a)") "  --traction-table FILE    traction-slip table (slip m/s, coefficient per line; ADRX7)"
       write (unit, "(a)") "                           replacing the deck's RE/race traction model"
       write (unit, "(a)") "  --ball-start NAME        initial ball angular velocity (report 4.4.7): dissipation"

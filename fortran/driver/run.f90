@@ -22,6 +22,8 @@ module adore_driver_run
    use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_output_echo_fill, only: fill_echo
    use adore_output_step_report, only: write_ball_step0, write_roller_step0
+   use adore_geometry_mounted, only: mount_geometry
+   use adore_driver_ball_dynamics, only: run_ball_dynamics
    implicit none
    private
 
@@ -30,17 +32,22 @@ module adore_driver_run
    !> `steps` value meaning "as many steps as the deck asks for".
    integer, parameter :: STEPS_FROM_DECK = -1
 
-   !> Time steps this engine integrates: 0 until the dynamics issue lands (the print file
-   !> ends after step 0, the quasi-static start, whatever `steps` asks for).
+   !> Time steps a run with the deck's own count (STEPS_FROM_DECK) integrates: 0 while the
+   !> dynamics issue (#20) is in progress - such a print ends after step 0, the quasi-static
+   !> start.  Time integration is opt-in meanwhile: an explicit steps > 0 on a ball deck
+   !> integrates that many steps (run_deck's `integrated`); roller decks end after step 0.
    integer, parameter :: TIME_STEPS_IMPLEMENTED = 0
 
 contains
 
    !> Run the deck at `deck_path` and write the print file `out_path`.
    !>
-   !> steps: STEPS_FROM_DECK (-1) for the deck's own count, 0 for the quasi-static
-   !> start only, n > 0 to stop after n time steps.
-   subroutine run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium)
+   !> steps: STEPS_FROM_DECK (-1) for the deck's own count (while [Dynamics] is in
+   !> progress: step 0 only, TIME_STEPS_IMPLEMENTED), 0 for the quasi-static start only,
+   !> n > 0 to integrate n time steps after step 0 (ball decks, opt-in dynamics of issue #20:
+   !> adore_driver_ball_dynamics; roller decks: step 0 only).
+   subroutine run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium, &
+                       integrated)
       character(len=*), intent(in) :: deck_path, out_path
       integer, intent(in) :: steps
       type(error_type), allocatable, intent(out) :: error
@@ -55,6 +62,8 @@ contains
       !> misalignments about y and z solved, ADORE kFS4 = kFS5 = 0) instead of the prescribed
       !> zero misalignment; absent: .false.  Ball decks only (docs/examples.md).
       logical, intent(in), optional :: moment_equilibrium
+      !> time steps the run integrated and printed after step 0 (0: the print ends after step 0)
+      integer, intent(out), optional :: integrated
 
       type(deck_text_t) :: text
       type(deck_t) :: deck
@@ -64,9 +73,10 @@ contains
       type(roller_step0_t) :: roller0
       character(len=:), allocatable :: part_path, table_path, start_title
       character(len=256) :: iomsg
-      integer :: unit, stat, start_method
+      integer :: unit, stat, start_method, n_dynamic
       logical :: ok, table, start_given, moments
 
+      if (present(integrated)) integrated = 0
       if (steps < STEPS_FROM_DECK) then
          call input_error(error, "steps must be -1 (from the deck), 0 (quasi-static start "// &
                           "only) or a positive number of time steps")
@@ -121,6 +131,9 @@ contains
          call solve_roller_step0(bearing, roller0, error)
       end select
       if (allocated(error)) return
+      ! opt-in dynamics (issue #20 in progress): explicit time steps of a ball deck
+      n_dynamic = 0
+      if (steps > 0 .and. bearing%bearing_type == BALL_BEARING) n_dynamic = steps
 
       part_path = trim(out_path)//".part"
       open (newunit=unit, file=part_path, status="replace", action="write", &
@@ -135,14 +148,23 @@ contains
       if (table) table_path = trim(traction_table)
       start_title = ""
       if (start_method /= BALL_START_METHOD) start_title = trim(start_method_title(start_method))
-      call write_listing(unit, text, bearing%race_traction, table_path, start_title, moments)
+      call write_listing(unit, text, bearing%race_traction, table_path, start_title, moments, n_dynamic)
       call write_banner(unit)
       call write_echo(unit, echo)
-      ! Step 0, the quasi-static start.  The time integration of later steps comes with
-      ! its issue; until then the print ends here.
+      ! Step 0, the quasi-static start; then the opt-in time steps of a ball deck.  Without
+      ! them the print ends here.
       select case (bearing%bearing_type)
       case (BALL_BEARING)
          call write_ball_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], bearing, ball0)
+         if (n_dynamic > 0) then
+            call run_ball_dynamics(unit, bearing, mount_geometry(bearing, bearing%temperature), ball0, n_dynamic, &
+                                   error)
+            if (allocated(error)) then
+               close (unit, iostat=stat)
+               call delete_file(part_path)
+               return
+            end if
+         end if
       case (ROLLER_BEARING)
          call write_roller_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], bearing, roller0)
       end select
@@ -159,6 +181,7 @@ contains
          call engine_error(error, trim(out_path)//": cannot move the finished print file into place")
          return
       end if
+      if (present(integrated)) integrated = n_dynamic
    end subroutine run_deck
 
 end module adore_driver_run

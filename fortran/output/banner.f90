@@ -17,8 +17,10 @@ contains
    !> when a run option replaced the default, start_title non-blank; moment equilibrium of
    !> the inner race when the run option asked for it) and the "Listing of
    !> input data records": every deck line, verbatim (ADORE prints the deck before its
-   !> banner, report Appendix C/D).
-   subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium)
+   !> banner, report Appendix C/D).  dynamics_steps > 0: the run integrates that many time
+   !> steps with the dynamics of issue #20 still in progress; the listing says so first, so
+   !> that no such print poses as a validated ADORE run.
+   subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -26,10 +28,20 @@ contains
       character(len=*), intent(in), optional :: start_title
       !> .true. when the run option asked for moment equilibrium of the inner race
       logical, intent(in), optional :: moment_equilibrium
+      !> time steps of an opt-in dynamics run (absent or 0: none)
+      integer, intent(in), optional :: dynamics_steps
       integer :: i
 
       write (unit, "(a)") "Input from optional user subroutines"
       write (unit, "(a)") ""
+      if (present(dynamics_steps)) then
+         if (dynamics_steps > 0) then
+            write (unit, "(a,i0,a)") "DYNAMICS IN PROGRESS (ISSUE #20): NO CAGE CONTACTS, THERMAL MODEL OFF; ", &
+               dynamics_steps, " TIME STEPS"
+            write (unit, "(a)") "  NOT A VALIDATED ADORE RUN (docs/dynamics.md)"
+            write (unit, "(a)") ""
+         end if
+      end if
       if (present(start_title)) then
          if (len_trim(start_title) > 0) then
             write (unit, "(a)") "INITIAL BALL ANGULAR VELOCITY: "//trim(start_title)//","

@@ -20,7 +20,7 @@ module adore_output_step_report
    implicit none
    private
 
-   public :: write_ball_step0, write_roller_step0, cage_tables
+   public :: write_ball_step0, write_roller_step0, cage_tables, race_rows, speed_ratios
 
 
 contains

@@ -68,5 +68,7 @@ def engine_version() -> str:
 
 
 def time_steps_implemented() -> int:
-    """Time steps the engine integrates (0: every print ends after step 0)."""
+    """Time steps a run with the deck's own count integrates (0: such a print ends after
+    step 0 while the dynamics, issue #20, is in progress; explicit steps > 0 on a ball deck
+    integrate opt-in)."""
     return int(_engine().adore_time_steps_implemented())

@@ -1,0 +1,204 @@
+!> The printed tables of one dynamic step of a ball bearing (sections 1-4, ADORE 5.0
+!> layout) assembled from the integrated state, its rates and the force assembly's loads at
+!> that state (no formatting here, no physics): write_ball_step.
+!>
+!> What a dynamic step prints and which columns stay NaN: docs/print-layout.md, "Dynamic
+!> steps (opt-in)".  A value the dynamics does not compute yet (traction table, flash
+!> temperatures, film, wear, lives, cage contacts, angular positions) is IEEE NaN /
+!> INT_NOT_COMPUTED and prints "NaN": the print never shows a made-up number.
+module adore_output_ball_dynamic_report
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi, rad_to_deg, rad_s_to_rpm
+   use adore_core_rotation, only: quat_matrix
+   use adore_model_bearing, only: bearing_t, BODY_OUTER, BODY_INNER, &
+                                   TEMP_CAGE, TEMP_ELEMENT, TEMP_HOUSING, TEMP_INNER, TEMP_OUTER, TEMP_SHAFT
+   use adore_geometry_mounted, only: mounted_geometry_t
+   use adore_state_bearing_state, only: bearing_state_t, body_state_t, body_azimuth, RACE_OUTER, RACE_INNER
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t
+   use adore_tribology_race_contact, only: wall_temperature
+   use adore_cage_step0, only: cage_step0_t
+   use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
+   use adore_output_print_tables, only: write_step
+   use adore_output_step_report, only: race_rows, speed_ratios
+   implicit none
+   private
+
+   public :: write_ball_step, orbital_speed
+
+contains
+
+   !> Orbital angular velocity (rad/s) of a body's mass centre about the bearing axis:
+   !> (r x v)_x / r**2 with r the radial part (0, y, z) of its position; 0 on the axis.
+   pure real(wp) function orbital_speed(body)
+      type(body_state_t), intent(in) :: body
+      real(wp) :: r2
+      r2 = body%position(2)**2 + body%position(3)**2
+      orbital_speed = 0.0_wp
+      if (r2 > 0.0_wp) orbital_speed = (body%position(2)*body%velocity(3) - body%position(3)*body%velocity(2))/r2
+   end function orbital_speed
+
+   !> Write dynamic step `step` of ball bearing b (mounted geometry g) at state s (SI), with
+   !> rates (the state's time derivatives per second: velocities in `position`,
+   !> accelerations in `velocity`, angular accelerations (rad/s**2, body frame) in `omega`)
+   !> and loads at that state; azimuth(k) = ball k's orbital position (rad) unwrapped since
+   !> the start (the caller tracks it); axial_origin (m) = the inner race's axial position
+   !> the print's IRace Axial is measured from (step 0's u(1) - axial displacement).
+   !> header = [tau, time (s), outer and inner race rotations (rev)].
+   subroutine write_ball_step(unit, step, header, b, g, s, rates, loads, azimuth, axial_origin)
+      integer, intent(in) :: unit, step
+      real(wp), intent(in) :: header(4)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: s, rates
+      type(ball_bearing_loads_t), intent(in) :: loads
+      real(wp), intent(in) :: azimuth(:), axial_origin
+
+      real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
+      real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
+      real(wp) :: slices(1, 10, 0), race_cage(max(b%n_lands, 1), 7), bodies(3, 11)
+      real(wp) :: ld(5, 6), acc(3, 7), perf(N_PERFORMANCE), summary(1, 10), nan, w_orb(size(azimuth))
+      integer, allocatable :: re_no(:), cage_code(:), cage_end(:)
+      integer :: land_no(max(b%n_lands, 1)), land_code(max(b%n_lands, 1))
+      integer :: n, k, j
+      type(cage_step0_t) :: cage_speeds
+
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      n = b%n_elements
+      allocate (contact(n, 11), motion(n, 11), traction(n, 11), thermal(n, 11), re_cage(n, 8))
+      allocate (re_no(n), cage_code(n), cage_end(n))
+      re_no = [(k, k=1, n)]
+      motion = nan
+      traction = nan                 ! slip, traction coefficient, film, drag: not printed yet
+      thermal = nan
+      contact(:, 1) = azimuth*deg
+      do k = 1, n
+         w_orb(k) = orbital_speed(s%elements(k))
+         motion(k, 1) = w_orb(k)*rpm
+         motion(k, 2:4) = ball_spin_angles(s%elements(k), w_orb(k))
+         thermal(k, 10) = s%temperature(TEMP_ELEMENT)
+         do j = 1, 2
+            associate (c => loads%contacts(j, k))
+               contact(k, 1 + j) = abs(c%alpha)*deg
+               contact(k, 3 + j) = c%load
+               contact(k, 5 + j) = c%ellipse%max_pressure
+               contact(k, 7 + j) = c%ellipse%semi_major
+               contact(k, 9 + j) = c%ellipse%semi_minor
+               thermal(k, 1 + j) = max(c%delta, 0.0_wp)     ! a separated contact does not deflect
+               if (.not. (c%load > 0.0_wp)) cycle             ! unloaded: no tribology (as step 0)
+               motion(k, 6 + j) = loads%traction(j, k)%spin_roll
+               motion(k, 8 + j) = loads%heat(j, k)
+               thermal(k, 7 + j) = wall_temperature(s%temperature, merge(BODY_OUTER, BODY_INNER, j == 1))
+            end associate
+         end do
+      end do
+      thermal(:, 4:5) = 0.0_wp                                 ! rigid races: no race flexing
+
+      ! section 2: cage contacts are off in the dynamics (ball_system_t%cage): not computed
+      re_cage = nan
+      cage_code = INT_NOT_COMPUTED
+      cage_end = 0
+      race_cage = nan
+      land_code = INT_NOT_COMPUTED
+      land_no = [(k, k=1, size(land_no))]
+      bodies = nan
+      associate (c => s%cage)
+         bodies(1, 1) = c%position(1) - g%groove_centre(1, 1)   ! print frame: outer groove centre plane
+         bodies(1, 2) = hypot(c%position(2), c%position(3))
+         if (bodies(1, 2) > 0.0_wp) bodies(1, 3) = modulo(body_azimuth(c), 2.0_wp*pi)*deg
+         bodies(1, 4) = orbital_speed(c)*rpm
+         bodies(1, 5:7) = axis_angles(matmul(quat_matrix(c%attitude), c%omega))
+      end associate
+      call race_rows(bodies, s%races(RACE_INNER)%position(2:3), s%races(RACE_OUTER)%omega(1), &
+                     s%races(RACE_INNER)%omega(1))
+      bodies(3, 1) = s%races(RACE_INNER)%position(1) - axial_origin
+      bodies(3, 4) = orbital_speed(s%races(RACE_INNER))*rpm   ! the inner race is free in translation
+      bodies(3, 8:9) = race_tilt(s%races(RACE_INNER))
+      bodies(2, 10) = g%mounting%outer_hoop_stress
+      bodies(3, 10) = g%mounting%inner_hoop_stress
+
+      ! section 3: forces of the balls on the races (contact loads = the race's load minus
+      ! its weight and, for the inner race, the applied load) and the reactions
+      ld = nan
+      ld(1, :) = [loads%cage%force - b%mass(2)*b%gravity, loads%cage%moment]   ! cage contacts
+      ld(2, :) = [loads%races(RACE_OUTER)%force - b%mass(3)*b%gravity, loads%races(RACE_OUTER)%moment]
+      ld(3, :) = [loads%races(RACE_INNER)%force - b%mass(4)*b%gravity - b%force, &
+                  loads%races(RACE_INNER)%moment - b%moment]
+      ! the outer race is held fixed: its support carries the contact loads and its weight
+      ld(4, :) = [-(ld(2, 1:3) + b%mass(3)*b%gravity), -ld(2, 4:6)]
+      ! the inner race is free in translation (the applied load) with its rotation held
+      ! (the shaft's moment balances the contacts')
+      ld(5, :) = [b%force, -ld(3, 4:6)]
+      acc = nan
+      acc(1, :) = [rates%cage%velocity, rates%cage%omega*rpm, s%temperature(TEMP_CAGE)]
+      acc(2, :) = [rates%races(RACE_OUTER)%velocity, rates%races(RACE_OUTER)%omega*rpm, s%temperature(TEMP_OUTER)]
+      acc(3, :) = [rates%races(RACE_INNER)%velocity, rates%races(RACE_INNER)%omega*rpm, s%temperature(TEMP_INNER)]
+      perf = nan                                     ! lives, churning, exit fluid: not computed
+      perf(3) = g%mounting%outer_fit
+      perf(4) = g%mounting%inner_fit
+      perf(5) = g%mounting%clearance
+      perf(6) = sum(loads%heat)                      ! race contacts only (no cage contact)
+      perf(9:11) = s%temperature(TEMP_HOUSING)
+      perf(12:14) = s%temperature(TEMP_SHAFT)
+
+      summary = nan
+      summary(1, 1:3) = header(2:4)
+      summary(1, 5) = perf(6)
+      cage_speeds%state%angular_speed = s%cage%omega(1)   ! body x: the cage's axis
+      cage_speeds%state%whirl_speed = orbital_speed(s%cage)
+      summary(1, 6:8) = speed_ratios(b, sum(w_orb)/n, cage_speeds)
+      call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
+                      thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
+                      land_no, land_code, race_cage, bodies, ld, acc, perf, [step], summary)
+   end subroutine write_ball_step
+
+   !> Section 1's angular velocity of a ball relative to its orbiting frame
+   !> (omega - omega_m e_x, omega_m = w_orb its orbital speed, rad/s), in the frame
+   !> (e_x, e_r, e_t) of its azimuth: [amplitude (rpm), theta (deg), phi (deg)].  As step 0:
+   !> omega_rel = -amplitude (cos phi cos theta e_x + cos phi sin theta e_r + sin phi e_t),
+   !> theta = atan2(-w_r, -w_x); phi = atan2(-w_t, hypot(w_x, w_r)), the out-of-plane
+   !> elevation, in [0, 360) as the report prints it (pyadore's reading: small negative
+   !> values print 3.600E+02 in the report's step 2500).
+   pure function ball_spin_angles(ball, w_orb) result(a)
+      type(body_state_t), intent(in) :: ball
+      real(wp), intent(in) :: w_orb
+      real(wp) :: a(3), w(3), phi, e_r(3), e_t(3), wx, wr, wt
+      w = matmul(quat_matrix(ball%attitude), ball%omega)
+      w(1) = w(1) - w_orb
+      phi = body_azimuth(ball)
+      e_r = [0.0_wp, -sin(phi), cos(phi)]
+      e_t = [0.0_wp, -cos(phi), -sin(phi)]
+      wx = w(1)
+      wr = dot_product(w, e_r)
+      wt = dot_product(w, e_t)
+      a(1) = norm2(w)*rad_s_to_rpm
+      a(2) = atan2(-wr, -wx)*rad_to_deg
+      a(3) = modulo(atan2(-wt, hypot(wx, wr))*rad_to_deg, 360.0_wp)
+   end function ball_spin_angles
+
+   !> Section 2's angular velocity of a body from its inertial angular velocity w (rad/s):
+   !> [amplitude (rpm), theta (deg) = angle of w from +x (0 along +x, 180 along -x, as step 0
+   !> prints the races and the cage), phi (deg) = azimuth of w's tilt about the axis, from +z
+   !> towards -y in [0, 360); 0 without tilt] (pyadore's convention).
+   pure function axis_angles(w) result(a)
+      real(wp), intent(in) :: w(3)
+      real(wp) :: a(3), tilt
+      tilt = hypot(w(2), w(3))
+      a(1) = norm2(w)*rad_s_to_rpm
+      a(2) = atan2(tilt, w(1))*rad_to_deg
+      a(3) = 0.0_wp
+      if (tilt > 0.0_wp) a(3) = modulo(atan2(-w(2), w(3)), 2.0_wp*pi)*rad_to_deg
+   end function axis_angles
+
+   !> Misalignment of a race about y and z (deg) from its attitude: the body x axis
+   !> (a_x, a_y, a_z) in inertial components gives atan2(-a_z, a_x) and atan2(a_y, a_x),
+   !> exactly the step-0 angles of a rotation about one axis (quat_from_rotation_vector).
+   pure function race_tilt(race) result(t)
+      type(body_state_t), intent(in) :: race
+      real(wp) :: t(2), r(3, 3), a(3)
+      r = quat_matrix(race%attitude)
+      a = r(:, 1)
+      t = [atan2(-a(3), a(1)), atan2(a(2), a(1))]*rad_to_deg + 0.0_wp   ! + 0: no -0 printed
+   end function race_tilt
+
+end module adore_output_ball_dynamic_report
