@@ -174,39 +174,34 @@ def test_roller_deck_with_steps_ends_after_step_0(tmp_path, roller_deck, adore_e
     assert proc.returncode == 0 and "roller bearings is not implemented" in proc.stderr
 
 
-def _deck_with(tmp_path, ball_deck, name, old, new):
+def _int_method_4(text):
+    line1 = text.splitlines()[0]
+    return text.replace(line1, line1[:-1] + "4", 1)
+
+
+def _fixed_step_5(text):
+    return text.replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01", "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1)
+
+
+@pytest.mark.parametrize("edit, status, error, message", [
+    # INT METHOD 4 is used only by the dynamics: an input error naming the field
+    (_int_method_4, 1, AdoreInputError, "Rec 1 field int_method = 4"),
+    # Rec 2.1 MINIMUM = MAXIMUM = INITIAL = 5 tau (about 1.2 ms, a fifth of a ball's orbit):
+    # the first step drives the contacts out of the model's range
+    (_fixed_step_5, 2, AdoreEngineError, "integration stopped"),
+], ids=["unknown-int-method", "failed-integration"])
+def test_dynamics_error_leaves_no_print(tmp_path, ball_deck, adore_exe, edit, status, error, message):
+    """A dynamic run that cannot start or stops midway: exit status 1 (input) or 2 (engine),
+    the cause in the message, no print file nor its .part; the default run of the same deck
+    (step 0 only) still succeeds."""
     text = ball_deck.read_text()
-    assert old in text
-    path = tmp_path / f"{name}.inp"
-    path.write_text(text.replace(old, new, 1))
-    return path
-
-
-def test_unknown_integration_method_is_an_input_error_without_print(tmp_path, ball_deck, adore_exe):
-    """INT METHOD 4 is used only by the dynamics: the default run is fine, a dynamic run
-    stops with the field named and leaves no print file (nor its .part)."""
-    line1 = ball_deck.read_text().splitlines()[0]
-    deck = _deck_with(tmp_path, ball_deck, "im4", line1, line1[:-1] + "4")
-    proc = _exe(adore_exe, deck, tmp_path / "im4.prt", "--steps", 5)
-    assert proc.returncode == 1
-    assert "Rec 1 field int_method = 4" in proc.stderr
-    assert list(tmp_path.glob("im4.prt*")) == []
-    with pytest.raises(AdoreInputError, match="int_method"):
-        pyadore.run(deck, steps=5, out=tmp_path / "im4py.prt")
-    assert list(tmp_path.glob("im4py.prt*")) == []
-    assert _exe(adore_exe, deck, tmp_path / "im4default.prt").returncode == 0
-
-
-def test_failed_integration_is_an_engine_error_without_print(tmp_path, ball_deck, adore_exe):
-    """Rec 2.1 with MINIMUM = MAXIMUM = INITIAL = 5 tau (about 1.2 ms, a fifth of a ball's
-    orbit): the first step drives the contacts out of the model's range and the
-    integration stops; exit status 2, the cause in the message, no print file."""
-    deck = _deck_with(tmp_path, ball_deck, "h5", "Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01",
-                      "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00")
-    proc = _exe(adore_exe, deck, tmp_path / "h5.prt", "--steps", 5)
-    assert proc.returncode == 2
-    assert "integration stopped" in proc.stderr
-    assert list(tmp_path.glob("h5.prt*")) == []
-    with pytest.raises(AdoreEngineError, match="integration stopped"):
-        pyadore.run(deck, steps=5, out=tmp_path / "h5py.prt")
-    assert list(tmp_path.glob("h5py.prt*")) == []
+    assert edit(text) != text
+    deck = tmp_path / "edited.inp"
+    deck.write_text(edit(text))
+    proc = _exe(adore_exe, deck, tmp_path / "exe.prt", "--steps", 5)
+    assert proc.returncode == status
+    assert message in proc.stderr
+    with pytest.raises(error, match=message):
+        pyadore.run(deck, steps=5, out=tmp_path / "py.prt")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["edited.inp"]
+    assert _exe(adore_exe, deck, tmp_path / "default.prt").returncode == 0
