@@ -10,6 +10,7 @@ module adore_driver_ball_dynamics
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error
+   use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: body_azimuth
@@ -83,13 +84,5 @@ contains
       call write_statistics(unit, [it%stats%h_min_used, it%stats%h_max_used, it%stats%h_last, &
                                    it%stats%max_truncation], it%stats%derivative_calls)
    end subroutine run_ball_dynamics
-
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, "(i0)") i
-      s = trim(buf)
-   end function itoa
 
 end module adore_driver_ball_dynamics
