@@ -60,6 +60,9 @@ module adore_contact_ball_race
       real(wp) :: ball_radius = 0.0_wp      !< distance of the ball centre from the race axis (m)
       real(wp) :: tangent_slip(3) = 0.0_wp  !< slip of ball over race at P, tangent plane (m/s)
       real(wp) :: slip_coeff(3) = 0.0_wp    !< rolling slip u(psi) = c1 + c2 cos psi + c3 sin psi (m/s)
+      !> slip across the rolling direction, along e_m(psi) = d n(psi) / d psi on the major axis:
+      !> u_m(psi) = m1 + m2 cos psi + m3 sin psi (m/s)
+      real(wp) :: transverse_coeff(3) = 0.0_wp
       type(hertz_contact_t) :: ellipse      !< semi-axes, pressure, approach of the load
    end type ball_race_geometry_t
 
@@ -135,6 +138,9 @@ contains
       dw = w_b - w_r
       c%slip_coeff = [dot_product(c%rolling, dv), 0.5_wp*p%d*dot_product(c%rolling, cross(dw, c%normal)), &
                       0.5_wp*p%d*dot_product(c%rolling, cross(dw, c%transverse))]
+      ! e_m(psi) . (dv + dw x D/2 n(psi)) with n(psi) x e_m(psi) = n x e_m for every psi
+      c%transverse_coeff = [0.5_wp*p%d*dot_product(dw, cross(c%normal, c%transverse)), &
+                            dot_product(c%transverse, dv), -dot_product(c%normal, dv)]
    end subroutine ball_race_contact
 
    !> The planar contact (adore_tribology_slip) whose rolling slip along the major axis

@@ -37,9 +37,9 @@ contains
    !> position holds its velocity (m/s), velocity its acceleration (m/s**2), attitude the
    !> quaternion rate (1/s) and omega the body-frame angular acceleration (rad/s**2); the
    !> temperatures' rates are 0.  loads: the force assembly at s (adore_forces_ball_bearing).
-   !> traction, cage and stiffness as ball_bearing_loads.  Input errors of the traction
+   !> traction, cage, stiffness and two_d as ball_bearing_loads.  Input errors of the traction
    !> model come back in error.
-   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness)
+   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -48,9 +48,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: traction, cage
       real(wp), intent(in), optional :: stiffness(:, :)
+      logical, intent(in), optional :: two_d
       integer :: k
 
-      call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness)
+      call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d)
       if (allocated(error)) return
       rates = new_bearing_state(size(s%elements))
       rates%time = 1.0_wp

@@ -42,6 +42,9 @@ module adore_dynamics_ball_system
       !> report's figures 21-22 do not show; [Dynamics] validates them before they are on
       !> (docs/dynamics.md)
       logical :: cage = .false.
+      !> two-dimensional race traction (ball_bearing_loads' two_d): off by default, an
+      !> experiment of [Dynamics] (docs/dynamics.md)
+      logical :: traction_2d = .false.
       !> (2, n): when allocated, every contact's Hertz stiffness frozen at these values
       !> (N/m**1.5) instead of K(alpha): a verification option, the normal loads then derive
       !> from an energy (fortran/tests/test_dynamics.f90)
@@ -85,10 +88,10 @@ contains
       call unpack_state(y, t*self%time_scale, self%state)
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                                 self%traction, self%cage, self%frozen_stiffness)
+                                 self%traction, self%cage, self%frozen_stiffness, self%traction_2d)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                                 self%traction, self%cage)
+                                 self%traction, self%cage, two_d=self%traction_2d)
       end if
       if (allocated(self%failure)) then
          flag = DERIV_FAIL

@@ -54,6 +54,7 @@ program test_forces
    call test_planar_special_case(b, g, s0, st)
    call test_perturbed_state(b, g, st)
    call test_motion_at_step0(b, g, s0, st)
+   call test_two_dimensional_traction(b, g, st)
    call test_free_body_rates()
    call finish("force assembly")
 
@@ -349,6 +350,59 @@ contains
                  "perturbed: ball 1 carries traction and a traction moment")
       call check(norm2(ld%contacts(1, 1)%tangent_slip) > 0.0_wp, "perturbed: ball 1 slips at the outer race")
    end subroutine test_perturbed_state
+
+   !> The two-dimensional traction (ball_bearing_loads' two_d): a spin of ball 1 about its
+   !> outer contact's rolling direction e_t (an out-of-plane tilt of its spin axis) slips
+   !> across the rolling direction; the 2-D traction opposes it (moment along e_t against the
+   !> spin, more heat), which the 1-D traction (along e_t only) cannot: its moment has no e_t
+   !> component.  Contact loads still sum to zero force and moment with it.
+   subroutine test_two_dimensional_traction(b, g, base)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: base
+      type(bearing_state_t) :: st
+      type(ball_bearing_loads_t) :: l1, l2, l0
+      real(wp) :: e_t(3), m1, m2, total_f(3), total_m(3), f(3), m(3)
+      integer :: k, j
+
+      call ball_bearing_loads(b, g, base, l0, error, cage=.false., two_d=.true.)
+      if (allocated(error)) return
+      e_t = l0%contacts(1, 1)%rolling
+      st = base
+      st%elements(1)%omega = st%elements(1)%omega + 200.0_wp*e_t
+      call ball_bearing_loads(b, g, st, l1, error, cage=.false.)
+      call check(.not. allocated(error), "2-D traction: 1-D loads at the tilted spin")
+      if (allocated(error)) return
+      call ball_bearing_loads(b, g, st, l2, error, cage=.false., two_d=.true.)
+      call check(.not. allocated(error), "2-D traction: 2-D loads at the tilted spin")
+      if (allocated(error)) return
+      m1 = dot_product(l1%elements(1)%moment, e_t)
+      m2 = dot_product(l2%elements(1)%moment - l0%elements(1)%moment, e_t)
+      write (*, "(a,3es11.3)") "2-D traction: ball 1 moment along e_t (1-D, 2-D change) and heat change (W) ", &
+         m1, m2, sum(l2%heat(:, 1)) - sum(l0%heat(:, 1))
+      call check(abs(m1) <= 1.0e-9_wp*norm2(l1%elements(1)%moment), "1-D traction: no moment along e_t")
+      call check(m2 < 0.0_wp, "2-D traction: the moment along e_t opposes the out-of-plane spin")
+      call check(sum(l2%heat(:, 1)) > sum(l0%heat(:, 1)), "2-D traction: the cross slip adds heat")
+      total_f = 0.0_wp
+      total_m = 0.0_wp
+      do k = 1, size(st%elements)
+         total_f = total_f + l2%elements(k)%force - b%mass(1)*b%gravity
+         total_m = total_m + l2%elements(k)%moment + cross(st%elements(k)%position, l2%elements(k)%force - &
+                                                           b%mass(1)*b%gravity)
+      end do
+      do j = 1, 2
+         f = l2%races(j)%force - race_weight(b, j)
+         m = l2%races(j)%moment
+         if (j == RACE_INNER) then
+            f = f - b%force
+            m = m - b%moment
+         end if
+         total_f = total_f + f
+         total_m = total_m + m + cross(st%races(j)%position, f)
+      end do
+      call check(norm2(total_f) < 1.0e-9_wp*maxval(l2%contacts%load), "2-D traction: contact forces sum to zero")
+      call check(norm2(total_m) < 1.0e-9_wp*maxval(l2%contacts%load)*b%dm, "2-D traction: contact moments sum to zero")
+   end subroutine test_two_dimensional_traction
 
    !> Equations of motion at the step-0 state without traction: every ball accelerates
    !> towards the axis with its orbit's centripetal acceleration r w_m**2 and the inner
