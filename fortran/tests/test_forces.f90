@@ -323,6 +323,28 @@ contains
       call check(worst_m < 1.0e-5_wp, "perturbed: inner race moment = -d(energy)/d(rotation)")
       ! action = reaction over all contacts (normal and traction): the contact loads alone
       ! sum to zero force and zero moment about the origin
+      call contact_load_sums(b, st, ld, total_f, total_m)
+      ! the cage's pocket and guide-land contacts
+      f = ld%cage%force - b%mass(2)*b%gravity
+      total_f = total_f + f
+      total_m = total_m + ld%cage%moment + cross(st%cage%position, f)
+      call check(norm2(total_f) < 1.0e-9_wp*fscale, "perturbed: contact forces sum to zero (action = reaction)")
+      call check(norm2(total_m) < 1.0e-9_wp*fscale*b%dm, "perturbed: contact moments sum to zero")
+      call check(abs(ld%traction(1, 1)%force) > 0.0_wp .and. norm2(ld%elements(1)%moment) > 0.0_wp, &
+                 "perturbed: ball 1 carries traction and a traction moment")
+      call check(norm2(ld%contacts(1, 1)%tangent_slip) > 0.0_wp, "perturbed: ball 1 slips at the outer race")
+   end subroutine test_perturbed_state
+
+   !> Sums of the race contacts' loads over the balls and races of state st: force (N) and
+   !> moment about the origin (N m), gravity and the applied load taken out (action =
+   !> reaction makes both zero).
+   subroutine contact_load_sums(b, st, ld, total_f, total_m)
+      type(bearing_t), intent(in) :: b
+      type(bearing_state_t), intent(in) :: st
+      type(ball_bearing_loads_t), intent(in) :: ld
+      real(wp), intent(out) :: total_f(3), total_m(3)
+      real(wp) :: f(3), m(3)
+      integer :: k, j
       total_f = 0.0_wp
       total_m = 0.0_wp
       do k = 1, size(st%elements)
@@ -340,16 +362,7 @@ contains
          total_f = total_f + f
          total_m = total_m + m + cross(st%races(j)%position, f)
       end do
-      ! the cage's pocket and guide-land contacts
-      f = ld%cage%force - b%mass(2)*b%gravity
-      total_f = total_f + f
-      total_m = total_m + ld%cage%moment + cross(st%cage%position, f)
-      call check(norm2(total_f) < 1.0e-9_wp*fscale, "perturbed: contact forces sum to zero (action = reaction)")
-      call check(norm2(total_m) < 1.0e-9_wp*fscale*b%dm, "perturbed: contact moments sum to zero")
-      call check(abs(ld%traction(1, 1)%force) > 0.0_wp .and. norm2(ld%elements(1)%moment) > 0.0_wp, &
-                 "perturbed: ball 1 carries traction and a traction moment")
-      call check(norm2(ld%contacts(1, 1)%tangent_slip) > 0.0_wp, "perturbed: ball 1 slips at the outer race")
-   end subroutine test_perturbed_state
+   end subroutine contact_load_sums
 
    !> The two-dimensional traction (ball_bearing_loads' two_d): a spin of ball 1 about its
    !> outer contact's rolling direction e_t (an out-of-plane tilt of its spin axis) slips
@@ -362,8 +375,7 @@ contains
       type(bearing_state_t), intent(in) :: base
       type(bearing_state_t) :: st
       type(ball_bearing_loads_t) :: l1, l2, l0
-      real(wp) :: e_t(3), m1, m2, total_f(3), total_m(3), f(3), m(3)
-      integer :: k, j
+      real(wp) :: e_t(3), m1, m2, total_f(3), total_m(3)
 
       call ball_bearing_loads(b, g, base, l0, error, cage=.false., two_d=.true.)
       if (allocated(error)) return
@@ -383,23 +395,7 @@ contains
       call check(abs(m1) <= 1.0e-9_wp*norm2(l1%elements(1)%moment), "1-D traction: no moment along e_t")
       call check(m2 < 0.0_wp, "2-D traction: the moment along e_t opposes the out-of-plane spin")
       call check(sum(l2%heat(:, 1)) > sum(l0%heat(:, 1)), "2-D traction: the cross slip adds heat")
-      total_f = 0.0_wp
-      total_m = 0.0_wp
-      do k = 1, size(st%elements)
-         total_f = total_f + l2%elements(k)%force - b%mass(1)*b%gravity
-         total_m = total_m + l2%elements(k)%moment + cross(st%elements(k)%position, l2%elements(k)%force - &
-                                                           b%mass(1)*b%gravity)
-      end do
-      do j = 1, 2
-         f = l2%races(j)%force - race_weight(b, j)
-         m = l2%races(j)%moment
-         if (j == RACE_INNER) then
-            f = f - b%force
-            m = m - b%moment
-         end if
-         total_f = total_f + f
-         total_m = total_m + m + cross(st%races(j)%position, f)
-      end do
+      call contact_load_sums(b, st, l2, total_f, total_m)
       call check(norm2(total_f) < 1.0e-9_wp*maxval(l2%contacts%load), "2-D traction: contact forces sum to zero")
       call check(norm2(total_m) < 1.0e-9_wp*maxval(l2%contacts%load)*b%dm, "2-D traction: contact moments sum to zero")
    end subroutine test_two_dimensional_traction
