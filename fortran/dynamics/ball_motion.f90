@@ -25,7 +25,7 @@ module adore_dynamics_ball_motion
    use adore_model_bearing, only: bearing_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, new_bearing_state, RACE_OUTER, RACE_INNER
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t, body_load_t, ball_bearing_loads
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, body_load_t, ball_bearing_loads, add_gyroscopic_restraint
    implicit none
    private
 
@@ -37,9 +37,10 @@ contains
    !> position holds its velocity (m/s), velocity its acceleration (m/s**2), attitude the
    !> quaternion rate (1/s) and omega the body-frame angular acceleration (rad/s**2); the
    !> temperatures' rates are 0.  loads: the force assembly at s (adore_forces_ball_bearing).
-   !> traction, cage, stiffness and two_d as ball_bearing_loads.  Input errors of the traction
-   !> model come back in error.
-   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d)
+   !> traction, cage, stiffness and two_d as ball_bearing_loads; gyro_restraint (default
+   !> .false.): the balls' gyroscopic moments resisted by the races without slip
+   !> (add_gyroscopic_restraint).  Input errors of the traction model come back in error.
+   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -48,11 +49,14 @@ contains
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: traction, cage
       real(wp), intent(in), optional :: stiffness(:, :)
-      logical, intent(in), optional :: two_d
+      logical, intent(in), optional :: two_d, gyro_restraint
       integer :: k
 
       call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d)
       if (allocated(error)) return
+      if (present(gyro_restraint)) then
+         if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, 1), loads)
+      end if
       rates = new_bearing_state(size(s%elements))
       rates%time = 1.0_wp
       rates%temperature = 0.0_wp

@@ -42,9 +42,15 @@ module adore_dynamics_ball_system
       !> report's figures 21-22 do not show; [Dynamics] validates them before they are on
       !> (docs/dynamics.md)
       logical :: cage = .false.
-      !> two-dimensional race traction (ball_bearing_loads' two_d): off by default, an
-      !> experiment of [Dynamics] (docs/dynamics.md)
-      logical :: traction_2d = .false.
+      !> two-dimensional race traction (ball_bearing_loads' two_d; report eqs 2-3: the slip
+      !> vector along and across the rolling direction): on by default, it damps the balls'
+      !> motion across the rolling direction that the 1-D traction leaves free
+      !> (docs/dynamics.md, "Ball gyroscopic moment")
+      logical :: traction_2d = .true.
+      !> the balls' gyroscopic moments resisted by the races without slip (Jones; Harris &
+      !> Kotzalas; add_gyroscopic_restraint): the classical assumption, and what ADORE 5.0's
+      !> Appendix C print shows (docs/dynamics.md, "Ball gyroscopic moment")
+      logical :: gyro_restraint = .true.
       !> (2, n): when allocated, every contact's Hertz stiffness frozen at these values
       !> (N/m**1.5) instead of K(alpha): a verification option, the normal loads then derive
       !> from an energy (fortran/tests/test_dynamics.f90)
@@ -88,10 +94,11 @@ contains
       call unpack_state(y, t*self%time_scale, self%state)
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                                 self%traction, self%cage, self%frozen_stiffness, self%traction_2d)
+                                 self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                                 self%traction, self%cage, two_d=self%traction_2d)
+                                 self%traction, self%cage, two_d=self%traction_2d, &
+                                 gyro_restraint=self%gyro_restraint)
       end if
       if (allocated(self%failure)) then
          flag = DERIV_FAIL

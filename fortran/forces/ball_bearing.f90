@@ -24,7 +24,7 @@ module adore_forces_ball_bearing
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_constants, only: pi
-   use adore_core_rotation, only: cross
+   use adore_core_rotation, only: cross, quat_matrix
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, TEMP_CAGE
    use adore_cage_step0, only: land_contact, land_contact_t, GUIDE_OUTER
    use adore_contact_cage_pocket, only: cage_pocket_pair_t, cage_pocket_geometry_t, cage_pocket_pair, &
@@ -46,7 +46,7 @@ module adore_forces_ball_bearing
    private
 
    public :: body_load_t, ball_bearing_loads_t, ball_race_pairs, ball_bearing_loads, ball_pocket_pair, &
-             guide_land_pairs
+             guide_land_pairs, add_gyroscopic_restraint
 
    !> Force (N) and moment about the mass centre (N m) on one body, inertial components.
    type :: body_load_t
@@ -139,6 +139,42 @@ contains
          end associate
       end do
    end function guide_land_pairs
+
+   !> The balls' gyroscopic moments resisted by friction without sliding (Jones 1960; Harris &
+   !> Kotzalas, Rolling Bearing Analysis, 5th ed., vol. 2, ch. 2, "ball gyroscopic moment"):
+   !> a ball whose angular velocity w (inertial) orbits with it at the orbital rate w_m about
+   !> the bearing axis x needs the moment M_g = J w_m (e_x x w) (J its moment of inertia, N m).
+   !> The classical assumption is that the race contacts supply it by static friction, with
+   !> no slip and so no heat; this adds M_g to every ball touching a race and its reaction -M_g
+   !> to the races it touches, shared in proportion to the normal loads.  M_g is normal to w
+   !> and to the race speeds (along x): it does no work on either body (energy neutral), and
+   !> the contacts' moments still sum to zero (action = reaction).  Without it the 2-D
+   !> traction resists M_g only by sliding across the rolling direction (docs/dynamics.md,
+   !> "Ball gyroscopic moment").  j_ball: the ball's moment of inertia (kg m**2).
+   subroutine add_gyroscopic_restraint(s, j_ball, loads)
+      type(bearing_state_t), intent(in) :: s
+      real(wp), intent(in) :: j_ball
+      type(ball_bearing_loads_t), intent(inout) :: loads
+      real(wp) :: w(3), m_g(3), r2, w_m, q_sum
+      integer :: k, j
+
+      do k = 1, size(s%elements)
+         q_sum = loads%contacts(1, k)%load + loads%contacts(2, k)%load
+         if (.not. (q_sum > 0.0_wp)) cycle
+         associate (e => s%elements(k))
+            r2 = e%position(2)**2 + e%position(3)**2
+            if (.not. (r2 > 0.0_wp)) cycle
+            w_m = (e%position(2)*e%velocity(3) - e%position(3)*e%velocity(2))/r2
+            w = matmul(quat_matrix(e%attitude), e%omega)
+            m_g = j_ball*w_m*[0.0_wp, -w(3), w(2)]
+         end associate
+         loads%elements(k)%moment = loads%elements(k)%moment + m_g
+         do j = 1, 2
+            if (loads%contacts(j, k)%load > 0.0_wp) &
+               loads%races(j)%moment = loads%races(j)%moment - m_g*loads%contacts(j, k)%load/q_sum
+         end do
+      end do
+   end subroutine add_gyroscopic_restraint
 
    !> Loads on every body of ball bearing b (mounted geometry g) at state s (module
    !> header).  traction (default .true.): include the race contacts' traction and heat;

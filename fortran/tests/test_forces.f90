@@ -23,7 +23,8 @@ program test_forces
                                         state_size, pack_state, unpack_state
    use adore_contact_ball_race, only: ball_race_pair_t, ball_race_geometry_t, ball_race_contact, planar_contact, &
                                       contact_energy
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_race_pairs
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_race_pairs, &
+                                        add_gyroscopic_restraint
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, ball_contacts
    use adore_tribology_slip, only: ball_race_contact_t
@@ -55,6 +56,8 @@ program test_forces
    call test_perturbed_state(b, g, st)
    call test_motion_at_step0(b, g, s0, st)
    call test_two_dimensional_traction(b, g, st)
+   call test_traction_power(b, g, st)
+   call test_gyroscopic_restraint(b, g, st)
    call test_free_body_rates()
    call finish("force assembly")
 
@@ -399,6 +402,103 @@ contains
       call check(norm2(total_f) < 1.0e-9_wp*maxval(l2%contacts%load), "2-D traction: contact forces sum to zero")
       call check(norm2(total_m) < 1.0e-9_wp*maxval(l2%contacts%load)*b%dm, "2-D traction: contact moments sum to zero")
    end subroutine test_two_dimensional_traction
+
+   !> Power balance of the race traction: the mechanical power of the traction loads on
+   !> every body (force . velocity + moment . angular velocity, inertial components) is
+   !> minus the heat the contacts generate, at the step-0 state and at a perturbed state
+   !> (ball 1 spinning about a skewed axis), for the 1-D and the 2-D traction.  A moment
+   !> with a wrong lever arm or sign would break it.
+   subroutine test_traction_power(b, g, base)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: base
+      type(bearing_state_t) :: st
+      type(ball_bearing_loads_t) :: l0, l1
+      real(wp) :: p_mech, heat
+      integer :: icase, k, j
+      logical :: two_d
+
+      do icase = 1, 4
+         st = base
+         if (icase > 2) then
+            st%elements(1)%omega = st%elements(1)%omega + [300.0_wp, -800.0_wp, 1200.0_wp]
+            st%elements(1)%velocity = st%elements(1)%velocity + [0.01_wp, -0.02_wp, 0.015_wp]
+         end if
+         two_d = mod(icase, 2) == 0
+         call ball_bearing_loads(b, g, st, l0, error, traction=.false., cage=.false.)
+         if (allocated(error)) return
+         call ball_bearing_loads(b, g, st, l1, error, cage=.false., two_d=two_d)
+         if (allocated(error)) return
+         p_mech = 0.0_wp
+         do k = 1, size(st%elements)
+            p_mech = p_mech + power_of(st%elements(k), l1%elements(k), l0%elements(k))
+         end do
+         do j = 1, 2
+            p_mech = p_mech + power_of(st%races(j), l1%races(j), l0%races(j))
+         end do
+         heat = sum(l1%heat)
+         write (*, "(a,l2,a,2es12.4,es10.2)") "traction power: perturbed, two_d", two_d, &
+            "  mechanical, -heat (W), rel ", p_mech, -heat, abs(p_mech + heat)/heat
+         call check(heat > 0.0_wp .and. abs(p_mech + heat) <= 1.0e-10_wp*heat, &
+                    "traction power: mechanical power of the traction loads = -heat")
+      end do
+   end subroutine test_traction_power
+
+   !> The balls' gyroscopic restraint (add_gyroscopic_restraint): on a ball orbiting at w_m
+   !> with angular velocity w it adds J w_m (e_x x w); the moment does no work on the balls or
+   !> races (power 0 to round-off), the contacts' moments still sum to zero, and it has the
+   !> classical size J w_m w sin(beta) (Harris & Kotzalas) for the pitch beta of w.
+   subroutine test_gyroscopic_restraint(b, g, base)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: base
+      type(bearing_state_t) :: st
+      type(ball_bearing_loads_t) :: l0, l1
+      real(wp) :: p_mech, m_ref, w(3), w_m, r2, total_f(3), total_m(3), worst
+      integer :: k, j
+
+      st = base
+      st%elements(1)%omega = st%elements(1)%omega + [300.0_wp, -800.0_wp, 1200.0_wp]
+      call ball_bearing_loads(b, g, st, l0, error, cage=.false.)
+      if (allocated(error)) return
+      l1 = l0
+      call add_gyroscopic_restraint(st, b%moments(1, 1), l1)
+      p_mech = 0.0_wp
+      worst = 0.0_wp
+      do k = 1, size(st%elements)
+         p_mech = p_mech + power_of(st%elements(k), l1%elements(k), l0%elements(k))
+         associate (e => st%elements(k))
+            r2 = e%position(2)**2 + e%position(3)**2
+            w_m = (e%position(2)*e%velocity(3) - e%position(3)*e%velocity(2))/r2
+            w = matmul(quat_matrix(e%attitude), e%omega)
+            m_ref = b%moments(1, 1)*abs(w_m)*hypot(w(2), w(3))   ! J w_m |w| sin(beta)
+         end associate
+         worst = max(worst, abs(norm2(l1%elements(k)%moment - l0%elements(k)%moment) - m_ref)/m_ref)
+      end do
+      do j = 1, 2
+         p_mech = p_mech + power_of(st%races(j), l1%races(j), l0%races(j))
+      end do
+      m_ref = b%moments(1, 1)*norm2(st%elements(1)%omega)*1000.0_wp
+      write (*, "(a,es10.2,a,es10.2)") "gyroscopic restraint: power (W) ", p_mech, &
+         ", worst |M_g| vs J w_m w sin(beta) ", worst
+      call check(abs(p_mech) <= 1.0e-12_wp*m_ref, "gyroscopic restraint: no work on balls and races")
+      call check(worst <= 1.0e-12_wp, "gyroscopic restraint: M_g = J w_m w sin(beta) on every ball")
+      call contact_load_sums(b, st, l1, total_f, total_m)
+      call check(norm2(total_f) < 1.0e-9_wp*maxval(l1%contacts%load), "gyroscopic restraint: forces sum to zero")
+      call check(norm2(total_m) < 1.0e-9_wp*maxval(l1%contacts%load)*b%dm, &
+                 "gyroscopic restraint: contact moments sum to zero")
+   end subroutine test_gyroscopic_restraint
+
+   !> Mechanical power (W) of the load difference lw - lo on body bs (force . velocity +
+   !> moment . inertial angular velocity).
+   real(wp) function power_of(bs, lw, lo)
+      type(body_state_t), intent(in) :: bs
+      type(body_load_t), intent(in) :: lw, lo
+      real(wp) :: r(3, 3)
+      r = quat_matrix(bs%attitude)
+      power_of = dot_product(lw%force - lo%force, bs%velocity) + &
+                 dot_product(lw%moment - lo%moment, matmul(r, bs%omega))
+   end function power_of
 
    !> Equations of motion at the step-0 state without traction: every ball accelerates
    !> towards the axis with its orbit's centripetal acceleration r w_m**2 and the inner
