@@ -10,6 +10,14 @@ Golden values marked unknown (``?``) are skipped and counted.  A value the run p
 as ``NaN`` (the engine does not compute it yet) is a failure of its own category, "not
 computed by the engine": counted, listed in the summary and failing the comparison, never
 skipped.  The echo is compared exactly to printed precision.
+
+Two rule keys serve the dynamic steps, where a run's rolling elements need not sit where
+the golden file's do (a run that reached another time, or a different integrator):
+``match = "azimuth"`` compares each golden element with the run's value at the golden
+element's orbital position (periodic linear interpolation over the run's elements by
+their printed orbital positions, section 1), and ``deviation = "reason"`` marks the
+values of that rule as a known deviation: outside its tolerance it is counted as
+``deviation`` (listed with the reason, not failing the comparison); within, as usual.
 """
 
 from __future__ import annotations
@@ -41,8 +49,10 @@ class Comparison:
 
     ``name`` is ``step <n> <table> <row> <column>`` (``echo <name>`` for the echo);
     ``status`` is ``within``, ``outside``, ``unknown`` (golden marker, skipped),
-    ``missing`` (the run lacks the value: counted as outside) or ``not_computed`` (the
-    run prints ``NaN``: the engine does not compute it; a failure of its own).
+    ``missing`` (the run lacks the value: counted as outside), ``not_computed`` (the
+    run prints ``NaN``: the engine does not compute it; a failure of its own) or
+    ``deviation`` (outside the tolerance of a rule that documents a known deviation; not a
+    failure; ``reason`` says why).
     """
 
     name: str
@@ -53,6 +63,7 @@ class Comparison:
     status: str
     rel_error: float = float("nan")
     tolerance: str = ""
+    reason: str = ""
 
 
 @dataclass
@@ -70,8 +81,8 @@ class DiffReport:
 
     @property
     def compared(self) -> int:
-        """Values compared (within + outside + missing + not computed)."""
-        return self._count("within", "outside", "missing", "not_computed")
+        """Values compared (within + outside + missing + not computed + known deviations)."""
+        return self._count("within", "outside", "missing", "not_computed", "deviation")
 
     @property
     def within(self) -> int:
@@ -103,6 +114,21 @@ class DiffReport:
         return out
 
     @property
+    def deviations(self) -> int:
+        """Values outside the tolerance of a known-deviation rule (not failures)."""
+        return self._count("deviation")
+
+    def deviation_columns(self) -> dict:
+        """Per ``table.column`` with known deviations: (count, largest relative error, reason)."""
+        out: dict = {}
+        for c in self.comparisons:
+            if c.status == "deviation":
+                key = f"{c.table}.{c.column}"
+                n, worst, _ = out.get(key, (0, 0.0, c.reason))
+                out[key] = (n + 1, max(worst, c.rel_error), c.reason)
+        return out
+
+    @property
     def unknown(self) -> int:
         """Golden values marked unknown (``?``): skipped, not compared."""
         return self._count("unknown")
@@ -122,7 +148,7 @@ class DiffReport:
         """Largest relative error per ``table.column`` over the compared values."""
         out: dict = {}
         for c in self.comparisons:
-            if c.status in ("within", "outside") and not math.isnan(c.rel_error):
+            if c.status in ("within", "outside", "deviation") and not math.isnan(c.rel_error):
                 key = f"{c.table}.{c.column}"
                 out[key] = max(out.get(key, 0.0), c.rel_error)
         return out
@@ -139,7 +165,10 @@ class DiffReport:
                 "compared": self.compared, "within": self.within, "outside": self.outside,
                 "missing": self.missing, "not_computed": self.not_computed,
                 "not_computed_columns": self.not_computed_columns(),
-                "unknown": self.unknown, "exit_code": self.exit_code,
+                "unknown": self.unknown, "deviations": self.deviations,
+                "deviation_columns": {k: {"count": n, "max_rel_error": num(w), "reason": why}
+                                      for k, (n, w, why) in self.deviation_columns().items()},
+                "exit_code": self.exit_code,
                 "offenders": [{"name": c.name, "golden": num(c.golden), "run": num(c.run), "status": c.status,
                                "rel_error": num(c.rel_error), "tolerance": c.tolerance}
                               for c in self.offenders(None)],
@@ -151,7 +180,8 @@ class DiffReport:
                  f"tolerances: {self.tolerances_path}",
                  f"compared {self.compared}  within {self.within}  outside {self.outside}"
                  f" (missing {self.missing})  not computed by the engine {self.not_computed}"
-                 f"  unknown {self.unknown} (golden '?', not compared)"]
+                 f"  unknown {self.unknown} (golden '?', not compared)"
+                 f"  known deviations {self.deviations}"]
         off = self.offenders(20)
         if off:
             lines.append("")
@@ -168,6 +198,13 @@ class DiffReport:
             lines.append(f"not computed by the engine ({self.not_computed} value(s) printed NaN), per column:")
             for key in sorted(nc):
                 lines.append(f"  {key:<52} {nc[key]}")
+        dv = self.deviation_columns()
+        if dv:
+            lines.append("")
+            lines.append(f"known deviations ({self.deviations} value(s) outside tolerance, documented in the tolerance file):")
+            for key in sorted(dv):
+                n, worst, why = dv[key]
+                lines.append(f"  {key:<52} {n:4d}  worst {worst:.3%}  {why}")
         cm = self.column_max()
         if cm:
             lines.append("")
@@ -200,6 +237,8 @@ class _Rule:
     columns: tuple
     rel: float
     abs: float | None
+    match: str = "index"        #: "index" or "azimuth" (rolling-element tables)
+    deviation: str = ""         #: reason of a known deviation ("" for none)
 
     def matches(self, step_kind: set, table: str, column: str) -> bool:
         if self.step != "any" and self.step not in step_kind:
@@ -237,7 +276,14 @@ def load_tolerances(path) -> tuple[float, list]:
             ab = r.get("abs")
             if rel < 0 or (ab is not None and float(ab) < 0):
                 raise ValueError(f"rule {k}: tolerances must not be negative")
-            rules.append(_Rule(step, r.get("table", "*"), tuple(cols), rel, None if ab is None else float(ab)))
+            match = r.get("match", "index")
+            if match not in ("index", "azimuth"):
+                raise ValueError(f"rule {k}: match must be index or azimuth, not {match!r}")
+            deviation = r.get("deviation", "")
+            if not isinstance(deviation, str):
+                raise ValueError(f"rule {k}: deviation must be a text (the reason)")
+            rules.append(_Rule(step, r.get("table", "*"), tuple(cols), rel, None if ab is None else float(ab),
+                               match, deviation.strip()))
     except (KeyError, TypeError, ValueError) as exc:
         raise PrintFormatError(f"{p}: malformed tolerance rule: {exc}") from None
     return default, rules
@@ -268,7 +314,8 @@ def _compare_value(name, table, column, g, gmark, r, rmark, rule: _Rule, scale: 
     diff = abs(r - g)
     rel_err = diff / abs(g) if g != 0 else (0.0 if diff == 0 else math.inf)
     ok = diff <= max(atol, rule.rel * abs(g))
-    return Comparison(name, table, column, g, r, "within" if ok else "outside", rel_err, tol)
+    status = "within" if ok else ("deviation" if rule.deviation else "outside")
+    return Comparison(name, table, column, g, r, status, rel_err, tol, rule.deviation if not ok else "")
 
 
 def _compare_echo(report: DiffReport, golden: PrintRun, run: PrintRun) -> None:
@@ -331,11 +378,16 @@ def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None) -> DiffRepo
                 rule = rule_of(tname, col)
                 known = gdf[col][gm[col] == ""].abs()
                 scale = float(known.max()) if len(known) else 0.0
+                at_azimuth = (_azimuth_values(gstep, rstep, tname, col) if rule.match == "azimuth" and rdf is not None
+                              else None)
                 for idx in gdf.index:
                     label = "/".join(str(x) for x in idx) if isinstance(idx, tuple) else str(idx)
                     name = f"step {n} {tname} {label} {col}"
                     r = rmark = None
-                    if rdf is not None and col in rdf.columns and rdf.index.nlevels == gdf.index.nlevels:
+                    if at_azimuth is not None:
+                        r, rmark = at_azimuth.get(idx, (None, None))
+                        name += " (at its azimuth)"
+                    elif rdf is not None and col in rdf.columns and rdf.index.nlevels == gdf.index.nlevels:
                         try:
                             r = float(rdf.at[idx, col])
                             rmark = rm.at[idx, col]
@@ -349,6 +401,71 @@ def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None) -> DiffRepo
         _compare_scalars(report, table, gvals, gmarks, rvals, rmarks,
                          lambda t, c: _rule_for(default, rules, {"any"}, t, c))
     return report
+
+
+#: tables with one row per rolling element (index "element")
+ELEMENT_TABLES = ("re_contact", "re_motion", "re_traction", "re_thermal", "re_cage")
+
+
+def _azimuth_values(gstep, rstep, table: str, column: str):
+    """{golden element: (run value, run marker)} of ``table.column`` at each golden element's
+    orbital position: periodic linear interpolation over the run's elements by their printed
+    orbital positions (deg, section 1); an element's own value where the positions agree.
+    None when either step lacks the positions or the table is not per element."""
+    if table not in ELEMENT_TABLES:
+        return None
+    try:
+        gpos = gstep.tables["re_contact"]["orbital_position_deg"]
+        gpm = gstep.markers["re_contact"]["orbital_position_deg"]
+        rpos = rstep.tables["re_contact"]["orbital_position_deg"]
+        rpm = rstep.markers["re_contact"]["orbital_position_deg"]
+        rdf = rstep.tables[table]
+        rmk = rstep.markers[table]
+    except (KeyError, AttributeError):
+        return None
+    if column not in rdf.columns:
+        return None
+    pts = []
+    for e in rpos.index:
+        if rpm.at[e] != "" or e not in rdf.index:
+            continue
+        v = float(rdf.at[e, column])
+        pts.append((float(rpos.at[e]) % 360.0, v, rmk.at[e, column]))
+    if len(pts) < 2:
+        return None
+    pts.sort(key=lambda p: p[0])
+    out = {}
+    for e in gpos.index:
+        if gpm.at[e] != "":
+            out[e] = (None, None)
+            continue
+        a = float(gpos.at[e]) % 360.0
+        out[e] = _interpolate_periodic(pts, a)
+    return out
+
+
+def _interpolate_periodic(pts, a):
+    """(value, marker) at angle a (deg) from points (angle, value, marker) sorted by angle in
+    [0, 360): linear between the two neighbours, across 360 -> 0; a marker (NaN, ?) of
+    either neighbour is carried (the value is not known)."""
+    for p in pts:
+        if abs(p[0] - a) <= 1e-9:
+            return p[1], p[2]
+    lo = hi = None
+    for p in pts:
+        if p[0] < a:
+            lo = p
+        elif hi is None:
+            hi = p
+    if lo is None:
+        lo = (pts[-1][0] - 360.0, pts[-1][1], pts[-1][2])
+    if hi is None:
+        hi = (pts[0][0] + 360.0, pts[0][1], pts[0][2])
+    mark = lo[2] or hi[2]
+    if mark:
+        return (float("nan"), mark)
+    w = (a - lo[0]) / (hi[0] - lo[0])
+    return lo[1] + w * (hi[1] - lo[1]), ""
 
 
 def _default_tolerances(golden_path: Path) -> Path:

@@ -154,3 +154,79 @@ def test_assert_matches_golden(tmp_path):
     assert_matches_golden(run, BALL, sections=["re_thermal", "echo"])
     with pytest.raises(AssertionError, match="no value compared"):
         assert_matches_golden(BALL, BALL, sections=["no_such_table"])
+
+
+def _tolerances(tmp_path, extra: str) -> Path:
+    """The repository's tolerance file with ``extra`` rules appended (the last rule wins)."""
+    p = tmp_path / "tolerances.toml"
+    p.write_text(TOL.read_text() + "\n" + extra)
+    return p
+
+
+def _rotated_section1(tmp_path) -> Path:
+    """Appendix C's golden print with the rows of step 0's first table (section 1) moved one
+    element on: element k prints what element k + 1 printed (18 -> 1), its orbital position
+    included - the same physical state with the balls numbered differently."""
+    lines = BALL.read_text().splitlines()
+    first = next(i for i, s in enumerate(lines) if s.startswith("    1  0.000E+00  8.472E+00"))
+    rows = lines[first:first + 18]
+    assert all(r[:5].strip() == str(k + 1) for k, r in enumerate(rows))
+    for k in range(18):
+        lines[first + k] = f"{k + 1:5d}" + rows[(k + 1) % 18][5:]
+    p = tmp_path / "rotated.prt"
+    p.write_text("\n".join(lines) + "\n")
+    return p
+
+
+def test_azimuth_matching_compares_elements_at_the_same_orbital_position(tmp_path):
+    run = _rotated_section1(tmp_path)
+    by_index = diff_prints(run, BALL)
+    assert by_index.exit_code == 1
+    assert any(c.table == "re_contact" and c.status == "outside" for c in by_index.comparisons)
+    tol = _tolerances(tmp_path, '[[rule]]\nstep = "initial"\ntable = "re_contact"\ncolumns = ["*"]\n'
+                                'rel = 0.01\nmatch = "azimuth"\n')
+    by_azimuth = diff_prints(run, BALL, tol)
+    contact = [c for c in by_azimuth.comparisons if c.table == "re_contact"]
+    assert contact and all(c.status in ("within", "unknown") for c in contact)
+    assert sum(c.status == "within" for c in contact) > 150
+    assert all(c.rel_error == 0.0 for c in contact if c.status == "within")
+    assert by_azimuth.exit_code == 0
+    assert any(c.name.endswith("(at its azimuth)") for c in contact)
+
+
+def test_azimuth_matching_interpolates_between_elements():
+    from pyadore.diff import _interpolate_periodic
+    pts = [(10.0, 1.0, ""), (100.0, 10.0, ""), (350.0, 3.0, "")]
+    assert _interpolate_periodic(pts, 55.0) == (5.5, "")
+    assert _interpolate_periodic(pts, 100.0) == (10.0, "")
+    v, m = _interpolate_periodic(pts, 0.0)            # across 360 -> 0: between 350 and 370
+    assert m == "" and v == pytest.approx(3.0 + (1.0 - 3.0) * 0.5)
+    v, m = _interpolate_periodic([(0.0, 1.0, ""), (180.0, 2.0, "NaN")], 90.0)
+    assert m == "NaN"
+
+
+def test_known_deviation_is_reported_with_its_reason_and_does_not_fail(tmp_path):
+    run = perturbed(tmp_path, 1.02)  # outer contact load of ball 3 at step 0, 2 % off
+    tol = _tolerances(tmp_path, '[[rule]]\nstep = "initial"\ntable = "re_contact"\n'
+                                'columns = ["contact_load_outer_N"]\nrel = 0.01\n'
+                                'deviation = "test reason: documented in docs/x.md"\n')
+    report = diff_prints(run, BALL, tol)
+    assert report.exit_code == 0 and report.outside == 0
+    assert report.deviations == 1
+    (c,) = [c for c in report.comparisons if c.status == "deviation"]
+    assert c.name == "step 0 re_contact 3 contact_load_outer_N" and c.reason.startswith("test reason")
+    text = report.render("text")
+    assert "known deviations 1" in text and "test reason: documented in docs/x.md" in text
+    data = json.loads(report.render("json"))
+    assert data["deviations"] == 1
+    assert data["deviation_columns"]["re_contact.contact_load_outer_N"]["count"] == 1
+    # within tolerance, a deviation rule changes nothing
+    assert diff_prints(perturbed(tmp_path, 1.005), BALL, tol).deviations == 0
+
+
+@pytest.mark.parametrize("extra", ['match = "nearest"', "deviation = 3"])
+def test_bad_match_or_deviation_is_a_clear_error(tmp_path, extra):
+    tol = _tolerances(tmp_path, f'[[rule]]\nstep = "final"\ntable = "*"\ncolumns = ["*"]\nrel = 0.1\n{extra}\n')
+    with pytest.raises(PrintFormatError, match="malformed tolerance rule"):
+        diff_prints(BALL, BALL, tol)
+    assert diff_command(BALL, BALL, tol, "text") == 2
