@@ -312,6 +312,8 @@ def _compare_value(name, table, column, g, gmark, r, rmark, rule: _Rule, scale: 
                           "within" if ok else "outside", 0.0 if ok else math.inf, tol)
     atol = rule.abs if rule.abs is not None else rule.rel * scale
     diff = abs(r - g)
+    if column.endswith("_deg") and math.isfinite(diff):
+        diff = abs((r - g + 180.0) % 360.0 - 180.0)   # angles: 360 and 0 are the same direction
     rel_err = diff / abs(g) if g != 0 else (0.0 if diff == 0 else math.inf)
     ok = diff <= max(atol, rule.rel * abs(g))
     status = "within" if ok else ("deviation" if rule.deviation else "outside")
@@ -384,8 +386,8 @@ def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None) -> DiffRepo
                     label = "/".join(str(x) for x in idx) if isinstance(idx, tuple) else str(idx)
                     name = f"step {n} {tname} {label} {col}"
                     r = rmark = None
-                    if at_azimuth is not None:
-                        r, rmark = at_azimuth.get(idx, (None, None))
+                    if at_azimuth is not None and idx in at_azimuth:
+                        r, rmark = at_azimuth[idx]
                         name += " (at its azimuth)"
                     elif rdf is not None and col in rdf.columns and rdf.index.nlevels == gdf.index.nlevels:
                         try:
@@ -409,7 +411,7 @@ ELEMENT_TABLES = ("re_contact", "re_motion", "re_traction", "re_thermal", "re_ca
 
 def _azimuth_values(gstep, rstep, table: str, column: str):
     """{golden element: (run value, run marker)} of ``table.column`` at each golden element's
-    orbital position: periodic linear interpolation over the run's elements by their printed
+    orbital position (elements whose golden position is unknown are left out): periodic linear interpolation over the run's elements by their printed
     orbital positions (deg, section 1); an element's own value where the positions agree.
     None when either step lacks the positions or the table is not per element."""
     if table not in ELEMENT_TABLES:
@@ -423,8 +425,8 @@ def _azimuth_values(gstep, rstep, table: str, column: str):
         rmk = rstep.markers[table]
     except (KeyError, AttributeError):
         return None
-    if column not in rdf.columns:
-        return None
+    if column not in rdf.columns or rdf.index.names != ["element"] or gstep.tables[table].index.names != ["element"]:
+        return None                      # e.g. a roller's re_cage: one row per (element, end)
     pts = []
     for e in rpos.index:
         if rpm.at[e] != "" or e not in rdf.index:
@@ -437,17 +439,17 @@ def _azimuth_values(gstep, rstep, table: str, column: str):
     out = {}
     for e in gpos.index:
         if gpm.at[e] != "":
-            out[e] = (None, None)
-            continue
+            continue                     # golden position unknown: compared row by row
         a = float(gpos.at[e]) % 360.0
-        out[e] = _interpolate_periodic(pts, a)
+        out[e] = _interpolate_periodic(pts, a, angular=column.endswith("_deg"))
     return out
 
 
-def _interpolate_periodic(pts, a):
+def _interpolate_periodic(pts, a, angular: bool = False):
     """(value, marker) at angle a (deg) from points (angle, value, marker) sorted by angle in
     [0, 360): linear between the two neighbours, across 360 -> 0; a marker (NaN, ?) of
-    either neighbour is carried (the value is not known)."""
+    either neighbour is carried (the value is not known).  angular: the values are angles
+    in degrees, interpolated the short way round (359 and 1 give 0, not 180)."""
     for p in pts:
         if abs(p[0] - a) <= 1e-9:
             return p[1], p[2]
@@ -465,7 +467,10 @@ def _interpolate_periodic(pts, a):
     if mark:
         return (float("nan"), mark)
     w = (a - lo[0]) / (hi[0] - lo[0])
-    return lo[1] + w * (hi[1] - lo[1]), ""
+    step = hi[1] - lo[1]
+    if angular:
+        step = (step + 180.0) % 360.0 - 180.0
+    return lo[1] + w * step, ""
 
 
 def _default_tolerances(golden_path: Path) -> Path:

@@ -203,6 +203,19 @@ def test_azimuth_matching_interpolates_between_elements():
     assert m == "" and v == pytest.approx(3.0 + (1.0 - 3.0) * 0.5)
     v, m = _interpolate_periodic([(0.0, 1.0, ""), (180.0, 2.0, "NaN")], 90.0)
     assert m == "NaN"
+    # angles the short way round: 359 deg and 1 deg halfway give 0 (mod 360), not 180
+    v, m = _interpolate_periodic([(0.0, 359.0, ""), (20.0, 1.0, "")], 10.0, angular=True)
+    assert v % 360.0 == pytest.approx(0.0, abs=1e-12)
+
+
+def test_angles_compare_modulo_360(tmp_path):
+    from pyadore.diff import _Rule, _compare_value
+    rule = _Rule("any", "*", ("*",), 0.01, None)
+    assert _compare_value("x", "re_motion", "ang_vel_phi_deg", 360.0, "", 1.0e-4, "", rule, 360.0).status == "within"
+    assert _compare_value("x", "re_motion", "ang_vel_phi_deg", 90.0, "", 120.0, "", rule, 360.0).status == "outside"
+    # not an angle: no wrapping
+    assert _compare_value("x", "re_contact", "contact_load_outer_N", 360.0, "", 0.0, "", rule, 360.0).status == \
+        "outside"
 
 
 def test_known_deviation_is_reported_with_its_reason_and_does_not_fail(tmp_path):
