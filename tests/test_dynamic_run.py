@@ -205,3 +205,22 @@ def test_dynamics_error_leaves_no_print(tmp_path, ball_deck, adore_exe, edit, st
         pyadore.run(deck, steps=5, out=tmp_path / "py.prt")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["edited.inp"]
     assert _exe(adore_exe, deck, tmp_path / "default.prt").returncode == 0
+
+
+def test_basic_life_of_a_dynamic_step_follows_its_printed_loads(runs):
+    """The basic life printed at a dynamic step (section 3) is eqs 73-74 and 102 of the
+    loads, contact angles and orbital speeds printed at that step (to print precision:
+    4 digits, life ~ Q**-3)."""
+    from pyadore._core import ball_bearing_life
+
+    step = read_print(runs["dyn"].print_path).step(N)
+    c, mo = step.table("re_contact"), step.table("re_motion")
+    ones = np.ones(len(c))
+    life = ball_bearing_life(
+        c["contact_load_outer_N"].to_numpy(float), c["contact_load_inner_N"].to_numpy(float),
+        np.radians(c["contact_angle_outer_deg"].to_numpy(float)), np.radians(c["contact_angle_inner_deg"].to_numpy(float)),
+        mo["orbital_velocity_rpm"].to_numpy(float), 1.5e9 * ones, 1.5e9 * ones, d_ball=1.905e-2, d_pitch=0.140,
+        f_outer=0.52, f_inner=0.54, outer_speed=0.0, inner_speed=INNER_RPM)
+    printed = float(step.table("performance")["basic_fatigue_life_hours"].iloc[0])
+    assert math.isfinite(printed)
+    assert printed == pytest.approx(life["basic"], rel=3e-3)

@@ -28,8 +28,8 @@ module adore_driver_ball_step0
                                            printed_slip
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start, is_loaded
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
-   use adore_life_lundberg_palmgren, only: life_params_t, ball_race_lp_life, pass_cycles, bearing_life, &
-                                           life_hours
+   use adore_life_lundberg_palmgren, only: life_params_t, bearing_life, life_hours
+   use adore_life_ball_life, only: ball_basic_life
    use adore_life_tallian, only: ball_race_modified_life
    use adore_tribology_wear, only: archard_wear_rate
    implicit none
@@ -104,8 +104,8 @@ contains
       type(mounted_geometry_t) :: geometry
       type(ball_qs_load_t) :: ld
       type(life_params_t) :: lp
-      real(wp), allocatable :: lives_o(:), lives_i(:), speed_rpm(:), p_max(:), mu(:)
-      real(wp) :: n_o, n_i, m_o, m_i, psi, wi_rpm, wo_rpm, race_centre(3, 2)
+      real(wp), allocatable :: lives_o(:), lives_i(:), p_max(:), mu(:)
+      real(wp) :: n_o, n_i, m_o, m_i, psi, wi_rpm, wo_rpm, race_centre(3, 2), hours(3)
       real(wp), allocatable :: centres(:, :)
 
       if (b%n_elements < 1 .or. b%d <= 0.0_wp .or. b%dm <= b%d) then
@@ -146,16 +146,13 @@ contains
       ! reduction factor) / composite roughness, mu_EHD = the printed traction coefficient,
       ! the races' hoop stress of the mounting (docs/life-model.md, M1-M3); an unloaded or
       ! unlubricated contact counts as no film (M5)
-      allocate (lives_o(b%n_elements), lives_i(b%n_elements), speed_rpm(b%n_elements), p_max(b%n_elements), &
+      allocate (lives_o(b%n_elements), lives_i(b%n_elements), p_max(b%n_elements), &
                 mu(b%n_elements))
-      speed_rpm = s%start%kinematics%orbital_speed*30.0_wp/pi
       wi_rpm = b%speed_inner*30.0_wp/pi
       wo_rpm = b%speed_outer*30.0_wp/pi
       associate (e => s%start%equilibrium)
-         call ball_race_lp_life(lp, e%q_o, e%alpha_o, pass_cycles(speed_rpm, wo_rpm, wi_rpm, wo_rpm), &
-                                b%f_o, b%d, b%dm, .true., .false., lives_o, n_o)
-         call ball_race_lp_life(lp, e%q_i, e%alpha_i, pass_cycles(speed_rpm, wi_rpm, wi_rpm, wo_rpm), &
-                                b%f_i, b%d, b%dm, .false., .true., lives_i, n_i)
+         call ball_basic_life(b, lp, e%q_o, e%alpha_o, e%q_i, e%alpha_i, s%start%kinematics%orbital_speed, &
+                              lives_o, lives_i, n_o, n_i, hours)
          p_max = e%c_o%max_pressure
          mu = no_nan(s%trac_coeff(1, :))
          call ball_race_modified_life(lp, lives_o, n_o, p_max, film_parameter(1), mu, &
@@ -165,9 +162,9 @@ contains
          call ball_race_modified_life(lp, lives_i, n_i, p_max, film_parameter(2), mu, &
                                       s%mounting%inner_hoop_stress, .true., psi, m_i)
       end associate
-      s%basic_life_outer = life_hours(n_o, wi_rpm - wo_rpm)
-      s%basic_life_inner = life_hours(n_i, wi_rpm - wo_rpm)
-      s%basic_life_hours = life_hours(bearing_life(n_o, n_i, lp%weibull_e_point), wi_rpm - wo_rpm)
+      s%basic_life_hours = hours(1)
+      s%basic_life_outer = hours(2)
+      s%basic_life_inner = hours(3)
       s%modified_life_hours = life_hours(bearing_life(m_o, m_i, lp%weibull_e_point), wi_rpm - wo_rpm)
 
       ! cage (section 4.4.4): ball centres and race centres in the print's axial frame

@@ -21,6 +21,8 @@ module adore_output_ball_dynamic_report
    use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
    use adore_output_print_tables, only: write_step
    use adore_output_step_report, only: race_rows, speed_ratios
+   use adore_life_lundberg_palmgren, only: life_params_t
+   use adore_life_ball_life, only: ball_basic_life
    implicit none
    private
 
@@ -58,6 +60,7 @@ contains
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
       real(wp) :: slices(1, 10, 0), race_cage(max(b%n_lands, 1), 7), bodies(3, 11)
       real(wp) :: ld(5, 6), acc(3, 7), perf(N_PERFORMANCE), summary(1, 10), nan, w_orb(size(azimuth))
+      real(wp) :: lives(size(azimuth), 2), n_race(2), hours(3)
       integer, allocatable :: re_no(:), cage_code(:), cage_end(:)
       integer :: land_no(max(b%n_lands, 1)), land_code(max(b%n_lands, 1))
       integer :: n, k, j
@@ -133,7 +136,12 @@ contains
       acc(1, :) = [rates%cage%velocity, rates%cage%omega*rpm, s%temperature(TEMP_CAGE)]
       acc(2, :) = [rates%races(RACE_OUTER)%velocity, rates%races(RACE_OUTER)%omega*rpm, s%temperature(TEMP_OUTER)]
       acc(3, :) = [rates%races(RACE_INNER)%velocity, rates%races(RACE_INNER)%omega*rpm, s%temperature(TEMP_INNER)]
-      perf = nan                                     ! lives, churning, exit fluid: not computed
+      perf = nan                  ! modified life, churning, exit fluid: not computed
+      ! basic life (eqs 73-74, 102) from the contact loads and orbital speeds of this instant
+      call ball_basic_life(b, life_params_t(), loads%contacts(1, :)%load, abs(loads%contacts(1, :)%alpha), &
+                           loads%contacts(2, :)%load, abs(loads%contacts(2, :)%alpha), w_orb, lives(:, 1), &
+                           lives(:, 2), n_race(1), n_race(2), hours)
+      perf(1) = hours(1)
       perf(3) = g%mounting%outer_fit
       perf(4) = g%mounting%inner_fit
       perf(5) = g%mounting%clearance
