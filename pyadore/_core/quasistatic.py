@@ -90,10 +90,19 @@ BALL_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "basic_life_h", "ba
                       "passes", "power_loss", "modified_life_h"]
 
 
-def ball_step0_from_deck(deck_path: str | os.PathLike, nmax: int = 200) -> tuple[dict, dict]:
+def ball_step0_from_deck(deck_path: str | os.PathLike, nmax: int = 200, *, mech_tol: float | None = None,
+                         moment_equilibrium: bool = False) -> tuple[dict, dict]:
     """Step 0 of a ball-bearing deck computed by the engine end to end (SI, angles in rad):
-    per-ball arrays (BALL_STEP0_COLUMNS) and scalars (BALL_STEP0_SUMMARY)."""
-    n, balls, summary, status, message = _engine().adore_ball_step0_deck(os.fspath(deck_path), int(nmax))
+    per-ball arrays (BALL_STEP0_COLUMNS) and scalars (BALL_STEP0_SUMMARY).
+
+    mech_tol: the start's consistency test on the centrifugal forces, a fraction of the load
+    scale (None: the engine's MECH_TOL, 1e-8; fortran/quasistatic/ball_start.f90);
+    moment_equilibrium: solve the inner race's tilts (as the run option)."""
+    tol = 0.0 if mech_tol is None else float(mech_tol)
+    if not tol >= 0.0:
+        raise ValueError(f"mech_tol must be > 0 or None, got {mech_tol!r}")
+    n, balls, summary, status, message = _engine().adore_ball_step0_deck(
+        os.fspath(deck_path), int(nmax), tol, int(bool(moment_equilibrium)))
     check(int(status), message)
     per_ball = {name: balls[: int(n), k].copy() for k, name in enumerate(BALL_STEP0_COLUMNS)}
     return per_ball, {name: float(summary[k]) for k, name in enumerate(BALL_STEP0_SUMMARY)}
