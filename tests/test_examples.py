@@ -22,7 +22,7 @@ import pyadore
 from pyadore.deck import read_deck
 from pyadore.printout import read_print
 
-from ball_reference import Bearing, hertz_approach
+from ball_reference import Bearing, hertz_approach, radial_integral, stribeck_radial, thrust_closed_form
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "decks" / "examples"
@@ -270,3 +270,48 @@ def test_start_tolerance_early_exit_against_a_tighter_one(tmp_path, name, pd, rp
     assert s1["power_loss"] == pytest.approx(s0["power_loss"], rel=5e-3)
     if (name, pd, rpm) == ("radial", 10e-6, 10000):      # the early exit is exercised
         assert s0["passes"] < s1["passes"]
+
+
+def static_start(tmp_path: Path, pd: float, load: tuple) -> tuple[dict, dict]:
+    """The engine's start of the deep-groove bearing at 10 rpm without gravity (static: the
+    centrifugal force is below 1e-4 N), full precision (per-ball arrays, summary)."""
+    from pyadore import _core
+
+    deck = make_deck(tmp_path / "static.inp", 10, pd, load, gravity=False)
+    return _core.ball_step0_from_deck(deck)
+
+
+def test_stribeck_zero_clearance_radial_load(tmp_path):
+    """Zero clearance, 1 kN radial: the engine's largest ball load and radial displacement are
+    Stribeck's closed form for Z = 7 balls (Q_max = F_r / sum cos(psi)**2.5 = 4.337 F_r / Z,
+    the approach of the most loaded ball) within 1e-6 (measured 4e-9 and 6e-9); the balls
+    keep a zero contact angle (no axial displacement)."""
+    b = Bearing(N_BALLS, D, DM, F_O, F_I, 0.0)
+    q_max, radial, constant = stribeck_radial(b, 1000.0)
+    assert constant == pytest.approx(4.3373, abs=1e-4)
+    balls, s = static_start(tmp_path, 0.0, (0.0, 1000.0, 0.0))
+    assert balls["q_i"].max() == pytest.approx(q_max, rel=1e-6)
+    assert s["u_z"] == pytest.approx(radial, rel=1e-6)
+    assert abs(s["u_x"]) < 1e-12
+
+
+def test_stribeck_constant_is_the_radial_integral():
+    """The reference's Sjovall integral J_r(0.5) is Harris & Kotzalas's tabulated 0.2288
+    (point contact), i.e. Stribeck's Z Q_max / F_r = 4.37 for many balls."""
+    assert radial_integral(0.5) == pytest.approx(0.2288, abs=5e-5)
+    assert 1.0 / radial_integral(0.5) == pytest.approx(4.37, abs=5e-3)
+
+
+@pytest.mark.parametrize("pd", CLEARANCES)
+@pytest.mark.parametrize("thrust", [50.0, 1000.0, 5000.0])
+def test_pure_thrust_contact_angle_equation(tmp_path, pd, thrust):
+    """Pure thrust: contact angle, ball load and axial displacement are the solution of
+    Harris's contact angle equation F_a = Z K (A (cos a0 / cos a - 1))**1.5 sin a (one
+    equation in a, solved by bisection) within 1e-5 (measured <= 4.4e-6, from the deck's free
+    contact angle rounded to 1e-4 deg)."""
+    b = Bearing(N_BALLS, D, DM, F_O, F_I, pd)
+    alpha, q, axial = thrust_closed_form(b, thrust)
+    balls, s = static_start(tmp_path, pd, (thrust, 0.0, 0.0))
+    assert np.allclose(balls["q_i"], q, rtol=1e-5)
+    assert np.allclose(balls["alpha_i"], alpha, rtol=1e-5)
+    assert s["u_x"] == pytest.approx(axial, rel=1e-5)
