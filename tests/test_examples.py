@@ -5,9 +5,12 @@ displacements and largest ball load agree with an independent reference
 (tests/ball_reference.py, Hertz with exact elliptic integrals + race equilibrium written
 from Harris's equations; not the engine's code, not a published number).
 
-The full grid (6 speeds x 3 clearances x 4 loads, 72 starts) takes ~40 s on one core; it
+The full grid (6 speeds x 3 clearances x 4 loads, 72 starts) takes ~7 s on one core; it
 includes the speeds where the start used to fail (10 rpm: unloaded balls stalled the
-stiffness update; 300 rpm: the orbital speeds never settled).
+stiffness update; 300 rpm: the orbital speeds never settled).  Also: the static start
+against closed forms (Stribeck's radial distribution, Harris's thrust contact angle
+equation), the start's consistency tolerance against a tighter one, and the cylindrical
+roller example under a prescribed inner race misalignment.
 """
 
 from __future__ import annotations
