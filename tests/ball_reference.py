@@ -154,3 +154,52 @@ class Bearing:
         u = unpack(sol.x)
         _, _, q, alpha = self.race_forces(u)
         return u, q, alpha, max(abs(np.array(res(sol.x))))
+
+
+# --- closed forms of the textbook load distribution (no 3-D equilibrium solver) ------------
+
+def ball_stiffness(b: Bearing, alpha: float) -> float:
+    """K (N/m**1.5) of one ball in series with both race contacts at contact angle alpha:
+    Q = K delta**1.5, delta the total approach (Harris: K = (K_o**(-2/3) + K_i**(-2/3))**(-3/2));
+    from the Hertz approach of a 1 N load (delta is proportional to Q**(2/3))."""
+    delta_1n = (hertz_approach(1.0, b.curvatures(alpha, True), b.e_prime)
+                + hertz_approach(1.0, b.curvatures(alpha, False), b.e_prime))
+    return delta_1n ** -1.5
+
+
+def stribeck_radial(b: Bearing, f_r: float) -> tuple[float, float, float]:
+    """Zero clearance, pure radial load f_r (N) on Z balls at psi_j = 2 pi j / Z (Stribeck's
+    analysis, Harris & Kotzalas ch. "Distribution of internal loading"): the ball at psi
+    carries Q_max cos(psi)**1.5 where cos(psi) > 0, so f_r = Q_max sum cos(psi_j)**2.5 and the
+    radial displacement is the approach of the most loaded ball, (Q_max / K)**(2/3).
+    Returns (Q_max (N), radial displacement (m), Z Q_max / f_r); Z -> infinity gives
+    1 / J_r(0.5) = 4.37 (Stribeck's constant, before his allowance for clearance: 5)."""
+    c = np.cos(b.psi)
+    s = float(np.sum(c[c > 0.0] ** 2.5))
+    q_max = f_r / s
+    return q_max, (q_max / ball_stiffness(b, 0.0)) ** (2.0 / 3.0), b.n * q_max / f_r
+
+
+def radial_integral(eps: float = 0.5, n: int = 200001) -> float:
+    """Sjovall's radial integral J_r(eps) = 1/(2 pi) int (1 - (1 - cos psi)/(2 eps))**1.5 cos psi
+    over the loaded zone (point contact), by the trapezoidal rule on n points."""
+    psi = np.linspace(-math.pi, math.pi, n)
+    load = np.clip(1.0 - (1.0 - np.cos(psi)) / (2.0 * eps), 0.0, None) ** 1.5
+    return float(np.trapezoid(load * np.cos(psi), psi) / (2.0 * math.pi))
+
+
+def thrust_closed_form(b: Bearing, f_a: float) -> tuple[float, float, float]:
+    """Pure thrust f_a (N) on Z equal balls (Harris's contact angle equation, solved for alpha):
+    the groove centres keep their radial distance A cos(alpha0), so the total approach is
+    A (cos(alpha0)/cos(alpha) - 1) and f_a = Z Q(alpha) sin(alpha) with Q = K(alpha) *
+    approach**1.5 (K with the curvatures at alpha, not Harris's constant).  Returns
+    (alpha (rad), Q (N), axial displacement (m) = A sin(alpha - alpha0) / cos(alpha))."""
+    a, a0 = b.a, b.alpha0
+
+    def g(alpha):
+        approach = a * (math.cos(a0) / math.cos(alpha) - 1.0)
+        return b.n * ball_stiffness(b, alpha) * approach ** 1.5 * math.sin(alpha) - f_a
+
+    alpha = brentq(g, max(a0, 1e-9) + 1e-12, 1.4, xtol=1e-15, rtol=1e-15)
+    q = f_a / (b.n * math.sin(alpha))
+    return alpha, q, a * math.sin(alpha - a0) / math.cos(alpha)

@@ -1,6 +1,7 @@
 """The deck's cross-field checks have one implementation, the engine's (fortran/model/checks.f90):
 pyadore validate calls it through the extension, on the deck in memory, and reports each
-problem at its field; the engine-only limit (no applied force) is left to the run."""
+problem at its field, so validate accepts exactly the decks whose values the engine accepts
+(also the engine's own limit, a deck without applied force)."""
 
 from __future__ import annotations
 
@@ -22,7 +23,8 @@ def test_engine_names_the_fields_and_rules():
     assert fields[:5] == ("shaft_inner_diameter", "shaft_outer_diameter", "bearing_outer_diameter",
                           "housing_outer_diameter", "pitch_diameter")
     rules = _core.cross_field_rules()
-    assert len(rules) == 11 and rules[-1].startswith("max_traction >= traction_at_zero_slip")
+    assert len(rules) == 12 and rules[-2].startswith("max_traction > traction_at_zero_slip")
+    assert rules[-1].startswith("applied_force_x, applied_force_y, applied_force_z not all 0")
 
 
 def test_appendix_deck_values_pass_and_a_changed_value_fails():
@@ -47,15 +49,36 @@ def test_validate_checks_the_deck_in_memory_at_the_field():
     assert problems[0].line == fv.line and problems[0].message.startswith("expected between step_min = ")
 
 
-def test_unloaded_bearing_is_valid_deck_but_refused_by_the_run(tmp_path):
+@pytest.mark.parametrize("changes", [
+    # no applied force: the echo's load scale is undefined (this engine's limit)
+    {("9.1.1", "applied_force_x"): 0.0, ("9.1.1", "applied_force_y"): 0.0, ("9.1.1", "applied_force_z"): 0.0},
+    # a traction curve whose maximum is its zero-slip value: no curve of the fit has it
+    {("10.1C", "traction_at_zero_slip"): 0.02},
+])
+def test_validate_and_the_run_refuse_the_same_deck_at_the_same_field(tmp_path, run_exe, changes):
+    """A deck the engine refuses is not valid for `pyadore validate` either: both report the
+    same problem at the same field (these two passed validate and failed the run)."""
+    import subprocess
+    import sys
+
     deck = read_deck(BALL)
-    for c in "xyz":
-        deck.set("9.1.1", f"applied_force_{c}", 0.0)
-    assert deck.validate() == []
-    path = tmp_path / "unloaded.inp"
+    for (rec, field), value in changes.items():
+        deck.set(rec, field, value)
+    problems = deck.validate()
+    assert len(problems) == 1 and problems[0].kind == "cross_field"
+    path = tmp_path / "refused.inp"
     deck.save(path)
-    with pytest.raises(pyadore.AdoreInputError, match="expected a non-zero applied force"):
+    cli = subprocess.run([sys.executable, "-m", "pyadore", "validate", str(path)], capture_output=True,
+                         text=True, timeout=120)
+    assert cli.returncode == 1
+    with pytest.raises(pyadore.AdoreInputError) as info:
         pyadore.run(path, steps=0, out=tmp_path / "x.prt")
+    exe = run_exe(path, tmp_path / "y.prt", "--steps", "0")
+    assert exe.returncode == 1
+    line = cli.stderr.splitlines()[0]
+    assert line.startswith(f"{path}:") and problems[0].message in line
+    assert line in str(info.value) and line in exe.stderr
+    assert not (tmp_path / "x.prt").exists() and not (tmp_path / "y.prt").exists()
 
 
 def test_wrong_number_of_values_is_an_engine_error():

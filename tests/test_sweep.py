@@ -136,28 +136,40 @@ def test_plot_sweep(ball_sweep, tmp_path):
 
 
 def test_invalid_and_refused_cases_are_reported(tmp_path):
-    """An out-of-range value is reported with validate's message, a deck the engine refuses
-    with the engine's; the other cases run."""
+    """A deck validate refuses (an out-of-range value, no applied force) is reported with
+    validate's message, which for the unloaded deck is also the engine's; a deck the engine
+    refuses for its run options with the engine's; the other cases run."""
     folder = tmp_path / "s"
     proc = _cli("sweep", ROLLER, "--vary", "applied_force_z=0,1000", "--vary", "constraining_load_fraction=0.5,2",
                 "--steps", "0", "-o", folder, "--workers", "2")
     assert proc.returncode == 1, proc.stderr
     assert "Traceback" not in proc.stderr
     frame = pd.read_csv(folder / "summary.csv")
-    assert list(frame["status"]) == ["input-error", "invalid", "ok", "invalid"]
+    assert list(frame["status"]) == ["invalid", "invalid", "ok", "invalid"]
     manifest = {e["case"]: e for e in json.loads((folder / "manifest.json").read_text())["cases"]}
-    for case in ("case_0002", "case_0004"):
+    for case in ("case_0001", "case_0002", "case_0004"):
         deck = folder / "cases" / case / "deck.inp"
         validate = _cli("validate", deck)
         assert validate.returncode == 1
         assert manifest[case]["error"].strip() == validate.stderr.strip()
-        assert "constraining_load_fraction = 2: expected [0, 1]" in manifest[case]["error"]
         assert not (folder / "cases" / case / "case.prt").exists()
-    refused = manifest["case_0001"]["error"]
-    assert "expected a non-zero applied force" in refused
-    assert str(folder / "cases" / "case_0001" / "deck.inp") in refused  # the case's deck, not the worker's copy
+    for case in ("case_0002", "case_0004"):
+        assert "constraining_load_fraction = 2: expected [0, 1]" in manifest[case]["error"]
+    unloaded = manifest["case_0001"]["error"]
+    assert "expected a non-zero applied force" in unloaded
+    engine = _cli("run", folder / "cases" / "case_0001" / "deck.inp", "-o", tmp_path / "x.prt", "--steps", "0")
+    assert engine.returncode == 1 and unloaded.splitlines()[0] in engine.stderr
     assert manifest["case_0003"]["status"] == "ok" and frame.loc[2, "basic_life_h"] > 0
     assert "case_0002: " in proc.stderr and "4 cases: 1 finished" in proc.stdout
+    # a valid deck the engine refuses (the ball start option on a roller deck): the engine's message
+    refused_folder = tmp_path / "r"
+    proc = _cli("sweep", ROLLER, "--vary", "applied_force_z=1000", "--steps", "0", "-o", refused_folder,
+                "--workers", "1", "--ball-start", "dissipation")
+    assert proc.returncode == 1 and "Traceback" not in proc.stderr
+    (entry,) = json.loads((refused_folder / "manifest.json").read_text())["cases"]
+    assert entry["status"] == "input-error"
+    assert "the ball start option applies to ball bearings" in entry["error"]
+    assert str(refused_folder / "cases" / "case_0001" / "deck.inp") in entry["error"]  # not the worker's copy
 
 
 def _roller_speeds(n: int) -> str:

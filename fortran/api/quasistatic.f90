@@ -185,7 +185,7 @@ end subroutine adore_mount_races
 !> summary(19) = bearing power loss (W), summary(20) = modified (Tallian) life (h)
 !> summary(20): [inner fit, outer fit, clearance (m), basic life, basic life outer, inner (h),
 !>   inner race u(5), inner force(3), inner moment(3), passes]
-subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, message)
+subroutine adore_ball_step0_deck(deck_path, nmax, mech_tol, moments, n, balls, summary, status, message)
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
@@ -195,6 +195,8 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
    implicit none
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: nmax
+   real(wp), intent(in) :: mech_tol                   !< start consistency test; <= 0: the default
+   integer, intent(in) :: moments                     !< /= 0: moment equilibrium (kFS4 = kFS5 = 0)
    integer, intent(out) :: n
    real(wp), intent(out) :: balls(nmax, 37), summary(20)
    integer, intent(out) :: status
@@ -221,7 +223,11 @@ subroutine adore_ball_step0_deck(deck_path, nmax, n, balls, summary, status, mes
          message = "ball step 0: more balls than rows given (nmax)"
          return
       end if
-      call solve_ball_step0(b, s, error)
+      if (mech_tol > 0.0_wp) then
+         call solve_ball_step0(b, s, error, moment_equilibrium=moments /= 0, centrifugal_tol=mech_tol)
+      else
+         call solve_ball_step0(b, s, error, moment_equilibrium=moments /= 0)
+      end if
    end if
    if (allocated(error)) then
       call set_error(error, status, message)

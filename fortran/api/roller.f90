@@ -65,7 +65,8 @@ end subroutine adore_line_contact
 !>   largest roller residual (N), race iterations, inner raceway growth, outer raceway
 !>   shrink (m), K_L outer, K_L inner, basic life outer race, inner race, bearing (h;
 !>   eqs 73, 75, 76, 102; huge = never fails)].
-subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, slices, summary, status, message)
+subroutine adore_roller_step0_deck(deck_path, growth_count, misalignment, nmax, n, rollers, slices, summary, &
+                                   status, message)
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
@@ -75,6 +76,7 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
    implicit none
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: growth_count, nmax
+   real(wp), intent(in) :: misalignment(2)            !< inner race's prescribed misalignment about y, z (rad)
    integer, intent(out) :: n
    real(wp), intent(out) :: rollers(nmax, 18), slices(nmax, 12, 8), summary(23)
    integer, intent(out) :: status
@@ -91,7 +93,7 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, nmax, n, rollers, sl
    summary = 0.0_wp
    status = ADORE_OK
    message = ""
-   call roller_start_from_deck(deck_path, nmax, growth_count, b, s, error)
+   call roller_start_from_deck(deck_path, nmax, growth_count, b, s, error, misalignment=misalignment)
    if (allocated(error)) then
       call set_error(error, status, message)
       return

@@ -51,13 +51,14 @@ contains
 
    !> Read a roller deck and solve its step 0 for the roller wrappers: input errors for a
    !> non-roller deck, more rollers than nmax rows, growth_count outside 1..2.
-   subroutine roller_start_from_deck(deck_path, nmax, growth_count, b, s, error, spin_method)
+   subroutine roller_start_from_deck(deck_path, nmax, growth_count, b, s, error, spin_method, misalignment)
       character(len=*), intent(in) :: deck_path
       integer, intent(in) :: nmax, growth_count
       type(bearing_t), intent(out) :: b
       type(roller_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: spin_method
+      real(wp), intent(in), optional :: misalignment(2)   !< inner race about y, z (rad)
 
       if (growth_count < 1 .or. growth_count > 2) then
          call input_error(error, "roller step 0: growth_count must be 1 or 2")
@@ -70,7 +71,7 @@ contains
       else if (b%n_elements > nmax) then
          call input_error(error, "roller step 0: more rollers than rows given (nmax)")
       else
-         call solve_roller_step0(b, s, error, growth_count, spin_method)
+         call solve_roller_step0(b, s, error, growth_count, spin_method, misalignment)
       end if
    end subroutine roller_start_from_deck
 

@@ -89,7 +89,7 @@ contains
    !> identified; both appendix echoes show prescribed misalignment) unless moment_equilibrium
    !> asks for them to be solved (docs/examples.md), ball speeds from the
    !> start hypothesis (default: minimum contact dissipation).
-   subroutine solve_ball_step0(b, s, error, start_method, moment_equilibrium)
+   subroutine solve_ball_step0(b, s, error, start_method, moment_equilibrium, centrifugal_tol)
       type(bearing_t), intent(in) :: b
       type(ball_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
@@ -99,6 +99,9 @@ contains
       !> .true.: the inner race's misalignments about y and z are solved for moment
       !> equilibrium (ADORE kFS4 = kFS5 = 0) instead of prescribed (zero)
       logical, intent(in), optional :: moment_equilibrium
+      !> the start's consistency test on the centrifugal forces (adore_quasistatic_ball_start
+      !> MECH_TOL by default; tests use a tighter one)
+      real(wp), intent(in), optional :: centrifugal_tol
 
       type(ball_qs_bearing_t) :: qb
       type(mounted_geometry_t) :: geometry
@@ -131,7 +134,7 @@ contains
       s%outer_weight = b%mass(3)*b%gravity
 
       call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, s%start_method, s%start, error, &
-                            b%race_traction)
+                            b%race_traction, centrifugal_tol=centrifugal_tol)
       if (allocated(error)) return
       if (ehd_traction_model(b) .and. s%start_method == MIN_DISSIPATION) then
          call ehd_start(error)
@@ -215,7 +218,7 @@ contains
          do iter = 1, 10
             previous = s%start
             call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, s%start_method, s%start, error, &
-                                  b%race_traction, films, previous)
+                                  b%race_traction, films, previous, centrifugal_tol)
             if (allocated(error)) return
             call current_films(next, error)
             if (allocated(error)) return

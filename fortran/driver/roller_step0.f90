@@ -104,11 +104,15 @@ contains
    !> growth_count: 2 reproduces the report (default), 1 the consistent clearance.
    !> spin_method: SPIN_ROLLING (default, the report) or SPIN_EQUILIBRIUM (traction moment
    !> balance per roller, adore_tribology_roller_traction).
-   subroutine solve_roller_step0(b, s, error, growth_count, spin_method)
+   !> misalignment: the inner race's prescribed misalignment about y and z (rad; default 0):
+   !> the report runs roller bearings with prescribed misalignment, not moment equilibrium
+   !> (section 4.4.1; its moment equilibrium is for ball bearings only).
+   subroutine solve_roller_step0(b, s, error, growth_count, spin_method, misalignment)
       type(bearing_t), intent(in) :: b
       type(roller_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: growth_count, spin_method
+      real(wp), intent(in), optional :: misalignment(2)
 
       type(roller_qs_load_t) :: ld
       type(life_params_t) :: lp
@@ -143,6 +147,7 @@ contains
       ! with the weight (0.23 N) it would print -9.998e2
       ld%gravity = 0.0_wp
       ld%misalignment = 0.0_wp
+      if (present(misalignment)) ld%misalignment = misalignment
       ld%skew = 0.0_wp
       allocate (w(b%n_elements))
       w = s%orbital_speed

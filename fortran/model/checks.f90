@@ -1,10 +1,11 @@
 !> The relations between deck values that the bearing model needs: the one implementation
 !> of the deck's cross-field checks (cross_field_checks).  The engine applies them when it
 !> builds the bearing model (check_values: an input error listing every violated relation
-!> at once, each at its deck field with a caret, followed by engine_limit_checks: what a
-!> consistent deck asks and this engine cannot run); `pyadore validate` calls the same
-!> rules through the f2py wrapper adore_deck_cross_checks (fortran/api/deck.f90) and
-!> reports them with its reading, range and record problems.
+!> at once, each at its deck field with a caret); `pyadore validate` calls the same rules
+!> through the f2py wrapper adore_deck_cross_checks (fortran/api/deck.f90) and reports
+!> them with its reading, range and record problems, so validate accepts exactly the decks
+!> whose values the engine accepts.  Besides inconsistent values the rules hold what a
+!> consistent deck asks and this engine cannot run: a bearing without applied force.
 !>
 !> The rules read the first field of each name in CHECK_FIELDS anywhere in the deck (as the
 !> schema's record conditions see the values) and skip a relation one of whose values is
@@ -39,7 +40,7 @@ module adore_model_checks
                          K_ZERO = 18, K_MAX = 19, K_INFINITE = 20, FORCE_X = 21, FORCE_Y = 22, FORCE_Z = 23
 
    !> What each rule requires, in the order the rules are applied.
-   integer, parameter :: N_CHECK_RULES = 11
+   integer, parameter :: N_CHECK_RULES = 12
    character(len=*), parameter :: CHECK_RULES(N_CHECK_RULES) = [character(len=190) :: &
       "shaft_inner_diameter < shaft_outer_diameter: a hollow shaft's bore is inside its OD", &
       "shaft_outer_diameter < bearing_outer_diameter: bore inside the bearing OD", &
@@ -52,7 +53,10 @@ module adore_model_checks
       "inner raceway diameter > shaft_outer_diameter and outer raceway diameter < bearing_outer_diameter: "// &
       "both races have a wall (once bore < pitch < OD and the element fits radially).", &
       "step_min <= step_initial <= step_max.", &
-      "max_traction >= traction_at_zero_slip and >= traction_at_infinite_slip."]
+      "max_traction > traction_at_zero_slip and > traction_at_infinite_slip (the traction-slip curve "// &
+      "has its maximum at a positive slip).", &
+      "applied_force_x, applied_force_y, applied_force_z not all 0: the echo's load scale (the largest "// &
+      "applied load) is undefined for an unloaded bearing; ADORE's rule for one is not known."]
 
    !> One violated relation: the field it is reported at (index into CHECK_FIELDS) and why.
    type :: check_problem_t
@@ -118,8 +122,15 @@ contains
          worst = -huge(1.0_wp)
          if (have(K_ZERO)) worst = v(K_ZERO)
          if (have(K_INFINITE)) worst = max(worst, v(K_INFINITE))
-         if (worst > v(K_MAX)) &
-            call add(K_MAX, "expected >= "//show_real(worst)//" (the maximum of the traction-slip curve)")
+         if (.not. v(K_MAX) > worst) &
+            call add(K_MAX, "expected > "//show_real(worst)//" (the maximum of the traction-slip curve, "// &
+                     "at a positive slip)")
+      end if
+      if (all(have([FORCE_X, FORCE_Y, FORCE_Z]))) then
+         if (.not. load_scale(v([FORCE_X, FORCE_Y, FORCE_Z])) > 0.0_wp) &
+            call add(FORCE_X, "expected a non-zero applied force (applied_force_x, applied_force_y and "// &
+                     "applied_force_z are all 0): the echo's LOAD scale factor, the largest applied load, is "// &
+                     "undefined for an unloaded bearing (ADORE's rule for one is not known)")
       end if
 
    contains
@@ -163,22 +174,6 @@ contains
 
    end subroutine cross_field_checks
 
-   !> What this engine cannot run although the deck is consistent, appended to problems
-   !> (values as for cross_field_checks): a bearing without any applied force, whose load
-   !> scale (the largest applied load, printed in the echo) is undefined; ADORE's rule for
-   !> one is not known.  Applied by check_values only: `pyadore validate` checks the deck.
-   subroutine engine_limit_checks(v, have, problems)
-      real(wp), intent(in) :: v(N_CHECK_FIELDS)
-      logical, intent(in) :: have(N_CHECK_FIELDS)
-      type(check_problem_t), allocatable, intent(inout) :: problems(:)
-
-      if (.not. all(have([FORCE_X, FORCE_Y, FORCE_Z]))) return
-      if (.not. load_scale(v([FORCE_X, FORCE_Y, FORCE_Z])) > 0.0_wp) &
-         call append(problems, FORCE_X, "expected a non-zero applied force (applied_force_x, applied_force_y and "// &
-                     "applied_force_z are all 0): the echo's LOAD scale factor, the largest applied load, is "// &
-                     "undefined for an unloaded bearing (ADORE's rule for one is not known)")
-   end subroutine engine_limit_checks
-
    !> Append the problem (field, message) to problems.
    subroutine append(problems, field, message)
       type(check_problem_t), allocatable, intent(inout) :: problems(:)
@@ -214,7 +209,6 @@ contains
          end associate
       end do
       call cross_field_checks(v, have, problems)
-      call engine_limit_checks(v, have, problems)
       if (size(problems) == 0) return
       msg = ""
       do k = 1, size(problems)

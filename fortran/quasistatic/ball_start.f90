@@ -93,8 +93,10 @@ contains
    !> MIN_DISSIPATION (report 4.4.7; needs law, the RE/race traction law: the deck's curve or
    !> a traction-slip table).
    !> ehd(k): ball k's EHD films - minimum dissipation of the EHD traction (model 3)
-   !> instead of the curve; guess: a previous start, whose speeds and pitches seed this one.
-   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error, law, ehd, guess)
+   !> instead of the curve; guess: a previous start, whose speeds and pitches seed this one;
+   !> centrifugal_tol: the consistency test on the centrifugal forces (default MECH_TOL; a tighter
+   !> value checks the early exit, tests/test_examples.py).
+   subroutine solve_ball_start(b, ld, w_outer, w_inner, control, start, error, law, ehd, guess, centrifugal_tol)
       type(ball_qs_bearing_t), intent(in) :: b
       type(ball_qs_load_t), intent(in) :: ld
       real(wp), intent(in) :: w_outer, w_inner
@@ -104,9 +106,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(ehd_films_t), intent(in), optional :: ehd(:)
       type(ball_start_t), intent(in), optional :: guess
+      real(wp), intent(in), optional :: centrifugal_tol
 
       real(wp), allocatable :: speed(:), new_speed(:)
-      real(wp) :: d_i(2), d_o(2), change, previous, previous_speed, tol, fscale, mech
+      real(wp) :: d_i(2), d_o(2), change, previous, previous_speed, tol, fscale, mech, mtol
       integer :: pass, k
       logical :: first
       logical, allocatable :: loaded(:)
@@ -117,6 +120,8 @@ contains
       end if
       ! a minimum is located to ~sqrt(epsilon) of its argument: looser consistency test
       tol = merge(1.0e-7_wp, 1.0e-12_wp, control == MIN_DISSIPATION)
+      mtol = MECH_TOL
+      if (present(centrifugal_tol)) mtol = centrifugal_tol
       allocate (speed(b%n_balls), new_speed(b%n_balls), start%kinematics(b%n_balls))
       ! first guess: the epicyclic speed of a ball at the pitch diameter and zero angles
       speed = 0.5_wp*(w_inner*(1.0_wp - b%d/b%dm) + w_outer*(1.0_wp + b%d/b%dm))
@@ -183,9 +188,9 @@ contains
             mech = maxval(b%ball_mass*start%equilibrium%r*abs(new_speed**2 - speed**2))/fscale
          speed = new_speed
          start%passes = pass
-         if (change <= tol .or. mech <= MECH_TOL) exit
+         if (change <= tol .or. mech <= mtol) exit
       end do
-      if (change > tol .and. mech > MECH_TOL) then
+      if (change > tol .and. mech > mtol) then
          call engine_error(error, "ball start: orbital speeds and equilibrium did not become consistent")
          return
       end if

@@ -221,12 +221,8 @@ contains
       do it = 1, 200
          s%iterations = it
          if (maxval(abs(res)) <= 1.0e-13_wp*load_scale) exit
-         call solve_dense(2, jac, -res, step, solved)
+         call race_step(jac, res, gap_step, step, solved)
          if (solved .and. maxval(abs(step)) <= 4.0_wp*spacing(b%r_o)) exit   ! round-off floor
-         if (.not. solved) then
-            ! no inner race contact yet: move the race along the unbalanced load
-            step = res/max(norm2(res), tiny(1.0_wp))*gap_step
-         end if
          t = 1.0_wp
          r0 = s%r
          g0 = s%tilt
@@ -249,6 +245,54 @@ contains
       end if
 
    contains
+
+      !> Newton step of the race for residual res (N) and Jacobian jac (N/m, symmetric,
+      !> negative semi-definite), both y, z.  solved = .false. when no roller touches the
+      !> inner race (jac = 0): then a step of gap (m) along the unbalanced load.  When the
+      !> rollers in contact all lie on one diameter (e.g. one roller under a light load
+      !> along it) jac is singular: no stiffness across that diameter.  The step is then
+      !> split along jac's eigenvectors: the stiff direction gets its Newton step, the free
+      !> one a step of gap along its unbalanced load, none when that is converged (so the
+      !> iteration cannot cycle through the clearance on round-off).
+      subroutine race_step(jac, res, gap, step, solved)
+         real(wp), intent(in) :: jac(2, 2), res(2), gap
+         real(wp), intent(out) :: step(2)
+         logical, intent(out) :: solved
+         real(wp) :: stiff, lam(2), v(2, 2), half, mean, root, r_k
+         integer :: k
+
+         call solve_dense(2, jac, -res, step, solved)
+         if (solved) return
+         stiff = maxval(abs(jac))
+         if (.not. stiff > 0.0_wp) then
+            ! no inner race contact yet: move the race along the unbalanced load
+            step = res/max(norm2(res), tiny(1.0_wp))*gap
+            return
+         end if
+         ! eigenpairs of the symmetric 2 x 2 jac
+         mean = 0.5_wp*(jac(1, 1) + jac(2, 2))
+         half = 0.5_wp*(jac(1, 1) - jac(2, 2))
+         root = hypot(half, 0.5_wp*(jac(1, 2) + jac(2, 1)))
+         lam = [mean + root, mean - root]
+         if (root > 0.0_wp) then
+            v(:, 1) = [half + root, 0.5_wp*(jac(1, 2) + jac(2, 1))]
+            if (norm2(v(:, 1)) <= 1.0e-12_wp*root) v(:, 1) = [0.5_wp*(jac(1, 2) + jac(2, 1)), root - half]
+            v(:, 1) = v(:, 1)/norm2(v(:, 1))
+         else
+            v(:, 1) = [1.0_wp, 0.0_wp]
+         end if
+         v(:, 2) = [-v(2, 1), v(1, 1)]
+         step = 0.0_wp
+         do k = 1, 2
+            r_k = dot_product(v(:, k), res)
+            if (abs(lam(k)) > 1.0e-9_wp*stiff) then
+               step = step - r_k/lam(k)*v(:, k)
+            else if (abs(r_k) > 1.0e-13_wp*load_scale) then
+               step = step + sign(gap, r_k)*v(:, k)
+            end if
+         end do
+         solved = .true.
+      end subroutine race_step
 
       !> Solve all rollers for race position u; race residual res and Jacobian jac.
       subroutine evaluate(u, res, jac, ok)

@@ -90,10 +90,19 @@ BALL_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "basic_life_h", "ba
                       "passes", "power_loss", "modified_life_h"]
 
 
-def ball_step0_from_deck(deck_path: str | os.PathLike, nmax: int = 200) -> tuple[dict, dict]:
+def ball_step0_from_deck(deck_path: str | os.PathLike, nmax: int = 200, *, mech_tol: float | None = None,
+                         moment_equilibrium: bool = False) -> tuple[dict, dict]:
     """Step 0 of a ball-bearing deck computed by the engine end to end (SI, angles in rad):
-    per-ball arrays (BALL_STEP0_COLUMNS) and scalars (BALL_STEP0_SUMMARY)."""
-    n, balls, summary, status, message = _engine().adore_ball_step0_deck(os.fspath(deck_path), int(nmax))
+    per-ball arrays (BALL_STEP0_COLUMNS) and scalars (BALL_STEP0_SUMMARY).
+
+    mech_tol: the start's consistency test on the centrifugal forces, a fraction of the load
+    scale (None: the engine's MECH_TOL, 1e-8; fortran/quasistatic/ball_start.f90);
+    moment_equilibrium: solve the inner race's tilts (as the run option)."""
+    tol = 0.0 if mech_tol is None else float(mech_tol)
+    if not tol >= 0.0:
+        raise ValueError(f"mech_tol must be > 0 or None, got {mech_tol!r}")
+    n, balls, summary, status, message = _engine().adore_ball_step0_deck(
+        os.fspath(deck_path), int(nmax), tol, int(bool(moment_equilibrium)))
     check(int(status), message)
     per_ball = {name: balls[: int(n), k].copy() for k, name in enumerate(BALL_STEP0_COLUMNS)}
     return per_ball, {name: float(summary[k]) for k, name in enumerate(BALL_STEP0_SUMMARY)}
@@ -115,16 +124,20 @@ ROLLER_STEP0_SUMMARY = ["inner_fit", "outer_fit", "clearance", "contact_clearanc
 
 
 def roller_step0_from_deck(deck_path: str | os.PathLike, *, growth_count: int = 2,
+                           misalignment: tuple[float, float] = (0.0, 0.0),
                            nmax: int = 200) -> tuple[dict, dict, dict]:
     """Step 0 of a roller-bearing deck computed by the engine end to end (SI, rad, rad/s).
 
     growth_count 2 reproduces ADORE 5.0 (raceway growth applied twice in the contact
     geometry, see fortran/driver/roller_step0.f90), 1 is the consistent clearance.
+    misalignment: the inner race's prescribed misalignment about y and z (rad; the report
+    runs roller bearings with prescribed misalignment, section 4.4.1).  No deck field is
+    identified for it (docs/examples.md), so it is given here.
     Returns (per-roller arrays ROLLER_STEP0_COLUMNS, per-roller slice arrays (n, 12)
     ROLLER_STEP0_SLICES, scalars ROLLER_STEP0_SUMMARY).
     """
     n, rollers, slices, summary, status, message = _engine().adore_roller_step0_deck(
-        os.fspath(deck_path), int(growth_count), int(nmax))
+        os.fspath(deck_path), int(growth_count), [float(m) for m in misalignment], int(nmax))
     check(int(status), message)
     n = int(n)
     per_roller = {name: rollers[:n, k].copy() for k, name in enumerate(ROLLER_STEP0_COLUMNS)}

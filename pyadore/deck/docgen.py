@@ -149,10 +149,9 @@ def _validation() -> list[str]:
             "so `adore` and `pyadore run` refuse such a deck with exit status 1 and no print file, "
             "and `pyadore validate` calls the same checks through the extension "
             "(`pyadore._core.cross_field_problems`) and reports them, in the same lines, with the "
-            "reading, range and record problems.  The engine also refuses, in the same form, a deck "
-            "without any applied force (Rec 9.1.1), a limit of this engine rather than an inconsistent "
-            "deck (validate does not report it): the echo's load scale is the largest applied load, and "
-            "ADORE's rule for an unloaded bearing is not known.", "",
+            "reading, range and record problems: validate accepts exactly the decks whose values the "
+            "engine accepts.  The last rule is a limit of this engine rather than an inconsistency "
+            "(a deck without any applied force, Rec 9.1.1).", "",
             "The malformed decks in `tests/data/bad_decks/` and their expectations "
             "(`expected.json`: file -> record id, field, problem class, line) are shared by the "
             "Python reader's tests and the Fortran reader's.", ""]
