@@ -10,7 +10,10 @@
 !>   the contact loads (normal and traction) obey action = reaction in force and moment;
 !> * the equations of motion (adore_dynamics_ball_motion): at the step-0 state the balls
 !>   accelerate centripetally and the inner race not at all; a free asymmetric body keeps
-!>   its inertial angular momentum and its attitude rate is R [omega]x.
+!>   its inertial angular momentum and its attitude rate is R [omega]x;
+!> * the two-dimensional traction (two_d): it opposes a spin about e_t, keeps action =
+!>   reaction, and its fast quadrature agrees with the reference one within 1e-4 at every
+!>   race contact at the step-0 state and at states slipping across the rolling direction.
 !> Run by `meson test` with the decks/ directory as argument.
 program test_forces
    use adore_core_kinds, only: wp
@@ -55,6 +58,7 @@ program test_forces
    call test_perturbed_state(b, g, st)
    call test_motion_at_step0(b, g, s0, st)
    call test_two_dimensional_traction(b, g, st)
+   call test_fast_two_dimensional_traction(b, g, st)
    call test_free_body_rates()
    call finish("force assembly")
 
@@ -399,6 +403,71 @@ contains
       call check(norm2(total_f) < 1.0e-9_wp*maxval(l2%contacts%load), "2-D traction: contact forces sum to zero")
       call check(norm2(total_m) < 1.0e-9_wp*maxval(l2%contacts%load)*b%dm, "2-D traction: contact moments sum to zero")
    end subroutine test_two_dimensional_traction
+
+   !> The fast two-dimensional traction (the default of two_d) against its reference (the
+   !> EHD strip quadrature of EHD_GAUSS x EHD_STRIP points at every node, reference =
+   !> .true.) at every race contact of Appendix C: at the step-0 state and at three states
+   !> whose balls slip across the rolling direction (each ball's spin tilted out of its
+   !> orbital plane, from 3 to 3000 rad/s over the balls, alternating in sign; the balls
+   !> also moving axially and radially; all together with a spin about each ball's outer
+   !> normal).  Each of the six sums (along the rolling direction: force, its cos and sin
+   !> moments; across it: the same) and the power, relative to the larger of the
+   !> reference value and the contact's gross traction power / max slip (a tenth of it for
+   !> the sin moments, whose arm is small), within the 1e-4 that the fast one-dimensional
+   !> traction keeps from its reference (tests/test_ehd_fast.py).
+   subroutine test_fast_two_dimensional_traction(b, g, base)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: base
+      type(bearing_state_t) :: st
+      type(ball_bearing_loads_t) :: lf, lr, l0
+      real(wp) :: worst(4), e, wk, sf(7), sr(7), gross, cross_max(4)
+      integer :: s, k, j, n, i
+      character(len=*), parameter :: label(4) = [character(len=24) :: "step 0", "tilted spin", &
+                                                 "tilted spin, moving", "tilted, moving, spun"]
+
+      n = size(base%elements)
+      call ball_bearing_loads(b, g, base, l0, error, cage=.false.)
+      if (allocated(error)) return
+      worst = 0.0_wp
+      cross_max = 0.0_wp
+      do s = 1, 4
+         st = base
+         do k = 1, n
+            wk = merge(1.0_wp, -1.0_wp, mod(k, 2) == 0)*3.0_wp*1000.0_wp**(real(k - 1, wp)/real(n - 1, wp))
+            if (s >= 2) st%elements(k)%omega = st%elements(k)%omega + wk*l0%contacts(1, k)%rolling
+            if (s >= 3) st%elements(k)%velocity = st%elements(k)%velocity + 1.0e-3_wp*wk*[1.0_wp, 0.0_wp, 0.0_wp] + &
+                                                  1.0e-4_wp*wk*l0%contacts(1, k)%normal
+            if (s >= 4) st%elements(k)%omega = st%elements(k)%omega + 300.0_wp*l0%contacts(1, k)%normal
+         end do
+         call ball_bearing_loads(b, g, st, lf, error, cage=.false., two_d=.true.)
+         call check(.not. allocated(error), "fast 2-D traction: "//trim(label(s)))
+         if (allocated(error)) return
+         call ball_bearing_loads(b, g, st, lr, error, cage=.false., two_d=.true., reference=.true.)
+         call check(.not. allocated(error), "reference 2-D traction: "//trim(label(s)))
+         if (allocated(error)) return
+         do k = 1, n
+            do j = 1, 2
+               if (.not. (lr%contacts(j, k)%load > 0.0_wp)) cycle
+               associate (tf => lf%traction(j, k), tr => lr%traction(j, k))
+                  sf = [tf%force, tf%force_cos, tf%force_sin, tf%cross_force, tf%power]
+                  sr = [tr%force, tr%force_cos, tr%force_sin, tr%cross_force, tr%power]
+                  gross = tr%power/tr%max_slip
+                  cross_max(s) = max(cross_max(s), abs(tr%cross_force(1))/gross)
+               end associate
+               do i = 1, 6
+                  e = abs(sf(i) - sr(i))/max(abs(sr(i)), merge(0.1_wp, 1.0_wp, i == 3 .or. i == 6)*gross)
+                  worst(s) = max(worst(s), e)
+               end do
+               worst(s) = max(worst(s), abs(sf(7)/sr(7) - 1.0_wp))
+            end do
+         end do
+      end do
+      write (*, "(a,4es10.2)") "fast 2-D traction vs reference, worst per state (step 0, tilted, moving, spun): ", worst
+      write (*, "(a,4es10.2)") "  largest cross traction / gross traction per state: ", cross_max
+      call check(all(cross_max(2:) > 0.1_wp), "fast 2-D traction: the perturbed states slip across the rolling direction")
+      call check(all(worst <= 1.0e-4_wp), "fast 2-D traction: six sums and power within 1e-4 of the reference")
+   end subroutine test_fast_two_dimensional_traction
 
    !> Equations of motion at the step-0 state without traction: every ball accelerates
    !> towards the axis with its orbit's centripetal acceleration r w_m**2 and the inner
