@@ -71,13 +71,20 @@ contains
    !>
    !> Solves F(kappa) = F(rho) by bisection on log(kappa) (F is monotonic in kappa),
    !> to relative accuracy 1e-14.  A circular contact (F = 0) gives kappa = 1.
+   !> The bisection evaluates F only where its midpoint lies within BISECT_WINDOW of the
+   !> root found first by the secant method (ellipticity_root): farther out the comparison's
+   !> outcome is known from the monotonicity, so kappa is the plain bisection's bit for bit
+   !> at about a third of the evaluations (the window's ends are checked to be clear of
+   !> F's rounding; otherwise every midpoint is evaluated, as before).  exhaustive =
+   !> .true.: every midpoint evaluated (the test of that identity).
    !> ok is .false. when sum rho <= 0 (no convex contact) or F(rho) >= 1.
-   pure subroutine hertz_geometry(rho, e1, nu1, e2, nu2, geo, ok)
+   pure subroutine hertz_geometry(rho, e1, nu1, e2, nu2, geo, ok, exhaustive)
       real(wp), intent(in) :: rho(4), e1, nu1, e2, nu2
       type(hertz_geometry_t), intent(out) :: geo
       logical, intent(out) :: ok
+      logical, intent(in), optional :: exhaustive
 
-      real(wp) :: f, lo, hi, mid, k, e, k2
+      real(wp) :: f, lo, hi, mid, k, e, k2, root, window
       integer :: iter
 
       ok = .false.
@@ -91,11 +98,22 @@ contains
       if (f <= 1.0e-14_wp) then
          geo%kappa = 1.0_wp
       else
+         root = 0.0_wp
+         window = huge(1.0_wp)
+         if (.not. present(exhaustive)) then
+            call ellipticity_root(f, root, window)
+         else if (.not. exhaustive) then
+            call ellipticity_root(f, root, window)
+         end if
          lo = 0.0_wp              ! log(kappa) bracket
          hi = log(1.0e6_wp)
          do iter = 1, 200
             mid = 0.5_wp*(lo + hi)
-            if (f_of_kappa(exp(mid)) > f) then
+            if (mid > root + window) then
+               hi = mid             ! F(exp(mid)) > f: mid beyond the root
+            else if (mid < root - window) then
+               lo = mid
+            else if (f_of_kappa(exp(mid)) > f) then
                hi = mid
             else
                lo = mid
@@ -115,6 +133,43 @@ contains
                       *(2.0_wp/(geo%delta_star*geo%curvature_sum))**1.5_wp
       ok = .true.
    end subroutine hertz_geometry
+
+   !> The root x = log(kappa) of F(kappa) = f (0 < f < 1) by the secant method from the
+   !> Hamrock-Brewe estimate kappa = 1.0339 (R_y/R_x)**0.636, R_y/R_x = (1 + f)/(1 - f),
+   !> and the window (log units) around it outside which the sign of F(exp(x)) - f is
+   !> certain: BISECT_WINDOW when F at both of its ends differs from f by more than 100
+   !> times F's rounding (eps / (kappa**2 - 1) near a circle, where F's numerator cancels
+   !> to O(m**2); eps otherwise), else huge() (no shortcut).
+   pure subroutine ellipticity_root(f, root, window)
+      real(wp), intent(in) :: f
+      real(wp), intent(out) :: root, window
+      real(wp), parameter :: BISECT_WINDOW = 1.0e-12_wp
+      real(wp) :: x0, x1, g0, g1, dx, clear
+      integer :: iter
+
+      root = 0.0_wp
+      window = huge(1.0_wp)
+      x0 = log(1.0339_wp) + 0.636_wp*log((1.0_wp + f)/(1.0_wp - f))
+      x1 = x0 + 1.0e-3_wp
+      if (.not. (x0 > 0.0_wp .and. x1 < log(1.0e6_wp))) return
+      g0 = f_of_kappa(exp(x0)) - f
+      g1 = f_of_kappa(exp(x1)) - f
+      do iter = 1, 30
+         if (g1 == g0) exit
+         dx = -g1*(x1 - x0)/(g1 - g0)
+         x0 = x1
+         g0 = g1
+         x1 = x1 + dx
+         if (.not. (x1 > 0.0_wp .and. x1 < log(1.0e6_wp))) return
+         if (abs(dx) <= 1.0e-14_wp) exit
+         g1 = f_of_kappa(exp(x1)) - f
+      end do
+      clear = 100.0_wp*epsilon(1.0_wp)*max(1.0_wp, 1.0_wp/(exp(2.0_wp*x1) - 1.0_wp))
+      if (.not. (f_of_kappa(exp(x1 - BISECT_WINDOW)) < f - clear .and. &
+                 f_of_kappa(exp(x1 + BISECT_WINDOW)) > f + clear)) return
+      root = x1
+      window = BISECT_WINDOW
+   end subroutine ellipticity_root
 
    !> Loaded contact for normal load q (N) on a contact of geometry geo.
    pure function hertz_contact(geo, q) result(c)

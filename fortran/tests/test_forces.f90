@@ -14,6 +14,8 @@
 !> * the two-dimensional traction (two_d): it opposes a spin about e_t, keeps action =
 !>   reaction, and its fast quadrature agrees with the reference one within 1e-4 at every
 !>   race contact at the step-0 state and at states slipping across the rolling direction.
+!> * the Hertz ellipse (adore_contact_hertz): the bisection with its secant shortcut gives
+!>   the exhaustive bisection's ellipse bit for bit (the force assembly's cost).
 !> Run by `meson test` with the decks/ directory as argument.
 program test_forces
    use adore_core_kinds, only: wp
@@ -35,6 +37,7 @@ program test_forces
    use adore_state_bearing_state, only: body_state_t
    use adore_core_rotation, only: quat_matrix
    use adore_test_support, only: check, finish, get_decks_dir
+   use adore_contact_hertz, only: hertz_geometry_t, hertz_geometry
    implicit none
 
    character(len=:), allocatable :: decks
@@ -60,6 +63,7 @@ program test_forces
    call test_two_dimensional_traction(b, g, st)
    call test_fast_two_dimensional_traction(b, g, st)
    call test_free_body_rates()
+   call test_hertz_bisection_shortcut()
    call finish("force assembly")
 
 contains
@@ -538,5 +542,53 @@ contains
       call check(maxval(abs(rdot - matmul(quat_matrix(body%attitude), skew))) < 1.0e-6_wp*norm2(w), &
                  "free body: attitude rate dR/dt = R [omega]x")
    end subroutine test_free_body_rates
+
+   !> hertz_geometry's bisection, which evaluates F only near the secant method's root,
+   !> gives the exhaustive bisection's ellipse bit for bit: ball/race curvatures of
+   !> Appendix C's ball (D = 19.05 mm, dm = 125 mm) at contact angles 0 .. 60 deg and groove
+   !> factors 0.501 .. 0.6 (ellipticities 2 .. 40), and curvature ratios R_y/R_x from
+   !> 1 + 1e-9 to 1e5.
+   subroutine test_hertz_bisection_shortcut()
+      real(wp) :: rho(4), gam, d, ff, alpha, ratio
+      logical :: same
+      integer :: i, j, n
+
+      same = .true.
+      n = 0
+      d = 0.01905_wp
+      do i = 0, 60
+         alpha = real(i, wp)*acos(-1.0_wp)/180.0_wp
+         gam = d*cos(alpha)/0.125_wp
+         do j = 0, 20
+            ff = 0.501_wp + 0.099_wp*real(j, wp)/20.0_wp
+            rho = [2.0_wp/d, 2.0_wp/d, 2.0_wp*gam/(d*(1.0_wp - gam)), -1.0_wp/(ff*d)]
+            call compare(rho, same, n)
+            rho(3) = -2.0_wp*gam/(d*(1.0_wp + gam))
+            call compare(rho, same, n)
+         end do
+      end do
+      do i = 0, 1400
+         ratio = 1.0_wp + 10.0_wp**(-9.0_wp + real(i, wp)/100.0_wp)
+         rho = [1.0_wp, 1.0_wp, ratio - 1.0_wp, 0.0_wp]
+         call compare(rho, same, n)
+      end do
+      write (*, "(a,i0,a)") "Hertz ellipse, shortcut vs exhaustive bisection: ", n, " contacts compared"
+      call check(same, "Hertz ellipse: the bisection's shortcut gives the exhaustive result bit for bit")
+   end subroutine test_hertz_bisection_shortcut
+
+   !> Count one more comparison in n; same stays true while the ellipse of curvatures rho
+   !> (1/m, steel on steel) is the same with and without the bisection's shortcut.
+   subroutine compare(rho, same, n)
+      real(wp), intent(in) :: rho(4)
+      logical, intent(inout) :: same
+      integer, intent(inout) :: n
+      type(hertz_geometry_t) :: fast, full
+      logical :: ok1, ok2
+      call hertz_geometry(rho, 2.0e11_wp, 0.3_wp, 2.0e11_wp, 0.3_wp, fast, ok1)
+      call hertz_geometry(rho, 2.0e11_wp, 0.3_wp, 2.0e11_wp, 0.3_wp, full, ok2, exhaustive=.true.)
+      n = n + 1
+      same = same .and. (ok1 .eqv. ok2) .and. fast%kappa == full%kappa .and. fast%a_star == full%a_star .and. &
+             fast%stiffness == full%stiffness
+   end subroutine compare
 
 end program test_forces
