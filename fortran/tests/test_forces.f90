@@ -14,7 +14,7 @@
 !> * the two-dimensional traction (two_d): it opposes a spin about e_t, keeps action =
 !>   reaction, and its fast quadrature agrees with the reference one within 1e-4 at every
 !>   race contact at the step-0 state and at states slipping across the rolling direction.
-!> * the Hertz ellipse (adore_contact_hertz): the bisection with its secant shortcut gives
+!> * the Hertz ellipse (adore_contact_hertz): the bisection with its Newton shortcut gives
 !>   the exhaustive bisection's ellipse bit for bit (the force assembly's cost).
 !> Run by `meson test` with the decks/ directory as argument.
 program test_forces
@@ -543,7 +543,7 @@ contains
                  "free body: attitude rate dR/dt = R [omega]x")
    end subroutine test_free_body_rates
 
-   !> hertz_geometry's bisection, which evaluates F only near the secant method's root,
+   !> hertz_geometry's bisection, which evaluates F only near Newton's root,
    !> gives the exhaustive bisection's ellipse bit for bit: ball/race curvatures of
    !> Appendix C's ball (D = 19.05 mm, dm = 125 mm) at contact angles 0 .. 60 deg and groove
    !> factors 0.501 .. 0.6 (ellipticities 2 .. 40), and curvature ratios R_y/R_x from
