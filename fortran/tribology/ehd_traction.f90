@@ -162,7 +162,10 @@ contains
    !> transverse (m/s), when given: the two-dimensional traction as ehd_contact_traction's
    !> (each strip's integral at the slip vector's |u|, its traction along (u, u_m) / |u|,
    !> t%cross_force), on the same nodes: the zones and their grading follow the pure-rolling
-   !> points of the rolling slip u(s), where the traction turns fastest.
+   !> points of the rolling slip u(s), where the traction turns fastest.  A contact without
+   !> pure-rolling point whose |u| dips inside (two rolling points merged or just apart, as
+   !> under race control) is split and graded at the dip (slip_minimum): plain Gauss in phi
+   !> missed that layer by up to 4e-3 of the force (docs/dynamics.md).
    subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
@@ -227,9 +230,9 @@ contains
             call add_sub(hi, lo, edges(z), 1)
          else if (z < nz) then
             call add_sub(lo, hi, edges(z + 1), 1)
-         else if (present(transverse) .and. slip_minimum(pe, kp)) then
-            ! two-dimensional: no pure-rolling point, but |u| dips inside (rolling points
-            ! merged or just apart, e.g. race control): split and graded at the dip
+         else if (slip_minimum(pe, kp)) then
+            ! no pure-rolling point, but |u| dips inside (the two rolling points merged or
+            ! just apart, e.g. race control): split and graded at the dip
             call add_graded(lo, pe, kp, 1)
             call add_graded(hi, pe, kp, 1)
          else
@@ -386,7 +389,11 @@ contains
             s_e = (th - c%alpha)*c%rho
             if (abs(s_e) >= c%a) cycle
             pe = asin(s_e/c%a)
-            ue = hypot(contact_slip(c, s_e), cross_slip(transverse, s_e/c%rho))
+            if (present(transverse)) then
+               ue = hypot(contact_slip(c, s_e), cross_slip(transverse, s_e/c%rho))
+            else
+               ue = abs(contact_slip(c, s_e))
+            end if
             d2u = abs(aa*cos(th) + bb*sin(th))/c%rho**2
             e_max = exp(0.5_wp*rheo%alpha*p0*cos(pe))
             if (.not. (d2u > 0.0_wp)) return
