@@ -395,7 +395,8 @@ subroutine adore_tribo_ehd_temperature(geom, rheo, h, b, n_gauss, ny, u1, u2, th
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_temperature_rise
+   use adore_tribology_ehd_traction, only: ehd_rheology_t
+   use adore_tribology_ehd_flash, only: ehd_temperature_rise
    use adore_api_unpack, only: contact_from_geom
    implicit none
    real(wp), intent(in) :: geom(9), rheo(4), h, b, u1, u2, th1(3), th2(3)

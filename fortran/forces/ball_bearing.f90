@@ -11,6 +11,9 @@
 !> dF e_t at Q(psi) = B + D/2 (cos psi n + sin psi e_m), on the ball the opposite, so the
 !> ball feels the moment -D/2 (F_cos n + F_sin e_m) x e_t about its centre (F_cos, F_sin:
 !> the sums of dF cos psi and dF sin psi; the second is the spin moment about the normal).
+!> With the two-dimensional traction (two_d; report eq 5) the traction also has a part
+!> dF_m along e_m(psi) across the rolling direction (contact_traction_t%cross_force): on the
+!> race along e_m(psi) at Q(psi), on the ball the opposite with the moment -D/2 F_m (n x e_m).
 !> Gravity (Rec 11) acts on every body; the applied force and moment of Rec 9.1.1 on the
 !> inner race.  Inertial forces are not loads here: the equations of motion carry them.
 !> Cage contacts (the `cage` flag, default on): every ball against its cylindrical pocket

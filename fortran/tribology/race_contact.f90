@@ -17,8 +17,9 @@ module adore_tribology_race_contact
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise, &
-                                           ehd_strip_traction, ehd_contact_traction_fast
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_strip_traction, &
+                                           ehd_contact_traction_fast
+   use adore_tribology_ehd_flash, only: ehd_temperature_rise
    use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
    use adore_contact_line_slices, only: line_contact_t
    use adore_tribology_roller_traction, only: line_traction_t
