@@ -309,14 +309,10 @@ contains
       ! force, its moments cos(s / rho) = cos(theta - alpha), sin(s / rho), heat (eq 4), sliding
       f(1:n) = f(1:n)*wn(1:n)
       if (present(transverse)) then
-         ! the traction along the slip vector: its rolling (u / |u|) and transverse parts
-         where (us(1:n) > 0.0_wp)
-            zz(1:n) = f(1:n)*u(1:n)/us(1:n)
-            lz(1:n) = f(1:n)*um(1:n)/us(1:n)
-         elsewhere
-            zz(1:n) = 0.0_wp
-            lz(1:n) = 0.0_wp
-         end where
+         ! the traction along the slip vector: its rolling (u / |u|) and transverse parts (no
+         ! division by 0 where the slip vanishes: |u|, |u_m| <= |u| there)
+         zz(1:n) = f(1:n)*u(1:n)/max(us(1:n), tiny(1.0_wp))
+         lz(1:n) = f(1:n)*um(1:n)/max(us(1:n), tiny(1.0_wp))
          t%force = sum(zz(1:n))
          t%force_cos = sum(zz(1:n)*cps(1:n))
          t%force_sin = sum(zz(1:n)*sps(1:n))
