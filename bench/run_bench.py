@@ -9,14 +9,23 @@ race contact of the Appendix C step 0, by the fast and the reference quadrature,
 fast one over those contacts with slide/roll, spin/roll x 0.5 .. x 2 and loads x 0.5, x 2
 (tests/test_ehd_fast.py's range of the 1e-4 accuracy test): its rows give the mean over the
 contacts (best_s) and the slowest contact (median_s column: the largest), in seconds, and
-us_per_contact.  Results are printed, and written to
-bench/results/latest.json.
+us_per_contact.  The dynamics (`dynamics`): the full Appendix C run, DYNAMIC_STEPS time steps
+after step 0 (the deck's 2500), standalone and f2py, with the default one-dimensional race
+traction and with the two-dimensional one (`--traction-2d`, `traction_2d=True`;
+docs/dynamics.md): best and median wall time of DYNAMIC_REPEAT runs, the least CPU time
+(the process's own, or the child's for the executable: steadier than wall time on a shared
+machine), the print's "Total Derivative Calls" and final tau, and microseconds per
+derivative call (the whole run, start and print included, over the calls; of the best wall
+time and of the least CPU time).  Issue #20's budget: at most 10 s for
+the full run (goal 2 s).  Results are printed, and written to bench/results/latest.json.
 """
 
 from __future__ import annotations
 
 import json
 import os
+import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -30,6 +39,8 @@ from pyadore import _core
 ROOT = Path(__file__).resolve().parent.parent
 DECKS = [ROOT / "decks" / "appendix_c_ball.inp", ROOT / "decks" / "appendix_d_roller.inp"]
 REPEAT = 5
+DYNAMIC_STEPS = 2500        # Appendix C's last step
+DYNAMIC_REPEAT = 3
 
 
 def _time(fn, repeat=REPEAT):
@@ -76,9 +87,47 @@ def _ehd_contact_rows(deck):
     return rows
 
 
+def _cpu_time():
+    """CPU time (s) of this process and its finished children."""
+    own = resource.getrusage(resource.RUSAGE_SELF)
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
+
+
+def _dynamic_rows(exe):
+    """The full Appendix C dynamic run (module docstring): one row per traction and path."""
+    deck = DECKS[0]
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "dynamics.prt"
+        for traction, two_d in (("1-D traction", False), ("2-D traction", True)):
+            flag = ["--traction-2d"] if two_d else []
+            for label, fn in [
+                ("f2py", lambda: pyadore.run(deck, steps=DYNAMIC_STEPS, out=out, traction_2d=two_d)),
+                ("executable", lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(DYNAMIC_STEPS)] + flag,
+                                                      check=True, capture_output=True)),
+            ]:
+                cpu = []
+
+                def timed():
+                    start = _cpu_time()
+                    fn()
+                    cpu.append(_cpu_time() - start)
+
+                best, median = _time(timed, repeat=DYNAMIC_REPEAT)
+                text = out.read_text()
+                calls = int(re.search(r"Total Derivative Calls\s*=\s*(\d+)", text).group(1))
+                tau = float(re.search(r"Final Time\s*=\s*(\S+)", text).group(1))
+                rows.append({"deck": deck.name, "case": f"{DYNAMIC_STEPS} steps, {traction}, {label}", "best_s": best,
+                             "median_s": median, "cpu_s": min(cpu), "derivative_calls": calls, "final_tau": tau,
+                             "us_per_call": best / calls * 1e6, "cpu_us_per_call": min(cpu) / calls * 1e6})
+    return rows
+
+
 def main() -> int:
-    """`run_bench.py [runs] [sweep]`: the runs of the appendix decks and/or the sweep bench [default: both]."""
-    names = sys.argv[1:] or ["runs", "sweep"]
+    """`run_bench.py [runs] [sweep] [dynamics]`: the runs of the appendix decks, the sweep bench
+    and/or the full dynamic run of Appendix C [default: all]."""
+    names = sys.argv[1:] or ["runs", "sweep", "dynamics"]
     exe = os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore"))
     rows = []
     decks = DECKS if "runs" in names else []
@@ -102,8 +151,15 @@ def main() -> int:
         from sweep_bench import bench_sweep
 
         rows += bench_sweep()
+    if "dynamics" in names:
+        rows += _dynamic_rows(exe)
     print(f"{'deck':28s} {'case':30s} {'best (s)':>10s} {'median (s)':>11s}")
     for row in rows:
+        if "us_per_call" in row:
+            print(f"{row['deck']:28s} {row['case']:40s} {row['best_s']:6.3f} s best, {row['median_s']:6.3f} s median, "
+                  f"{row['cpu_s']:6.3f} s CPU, {row['derivative_calls']} calls, {row['us_per_call']:.1f} us/call "
+                  f"({row['cpu_us_per_call']:.1f} CPU), tau = {row['final_tau']:.4g}")
+            continue
         if "us_per_contact" in row:
             print(f"{row['deck']:28s} {row['case']:30s} {row['us_per_contact']:7.2f} us mean, "
                   f"{row['median_s'] * 1e6:.2f} us slowest contact")

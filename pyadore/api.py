@@ -55,7 +55,7 @@ def read_traction_table(path):
 
 
 def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball_start=None,
-        moment_equilibrium: bool = False) -> Result:
+        moment_equilibrium: bool = False, traction_2d: bool = True) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
 
     steps: ``None`` runs as many time steps as the deck asks for (while the dynamics,
@@ -75,6 +75,10 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
     prescribing them zero (the default; the deck's Rec 3.3 flags are not identified, see
     docs/examples.md).  Listed in the print's first section; the tilts are printed in
     section 2 (IRace Ang Position Theta, Phi).  Ball decks only.
+    traction_2d: ``True`` (default): the dynamics' race traction acts along the slip vector
+    along and across the rolling direction (report eqs 2-3); ``False`` is a developer option,
+    the one-dimensional traction along the rolling direction only (eq 1), listed in the print
+    (docs/dynamics.md, "Ball gyroscopic moment and the 2-D traction").
     Raises :class:`~pyadore.errors.AdoreInputError` for bad input and
     :class:`~pyadore.errors.AdoreEngineError` when the engine fails.
     """
@@ -98,7 +102,9 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
             raise AdoreInputError("traction table: the file name is blank")
     if not isinstance(moment_equilibrium, bool):
         raise AdoreInputError(f"moment_equilibrium must be True or False, got {moment_equilibrium!r}")
-    _core.run_file(deck, out_path, engine_steps, table, ball_start, moment_equilibrium)
+    if not isinstance(traction_2d, bool):
+        raise AdoreInputError(f"traction_2d must be True or False, got {traction_2d!r}")
+    _core.run_file(deck, out_path, engine_steps, table, ball_start, moment_equilibrium, traction_2d)
     text = out_path.read_text(encoding="utf-8", errors="replace")
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
                   notes=_run_notes(engine_steps, DYNAMICS_MARKER in text.split("Listing of input data records", 1)[0]))

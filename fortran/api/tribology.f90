@@ -245,9 +245,13 @@ end subroutine adore_tribo_ehd_contact
 !> EHD contact traction by the reference quadrature (method 0: ehd_contact_traction with
 !> n_major Gauss points per slip zone and n_strip across each strip) or the fast one
 !> (method 1: ehd_contact_traction_fast with n_major, n_strip; 0 takes its defaults).
-!> geom, rheo, h, b as adore_tribo_ehd_contact.  result = [force (N), force_cos (N),
-!> force_sin (N), power (W), sliding (N m/s), max slip (m/s), coefficient, n rolling points].
-subroutine adore_tribo_ehd_contact_method(geom, rheo, h, b, method, n_major, n_strip, result, status, message)
+!> geom, rheo, h, b as adore_tribo_ehd_contact.  two_d = 1: the two-dimensional traction with
+!> the transverse slip coefficients transverse (m/s; ehd_contact_traction's transverse);
+!> 0: one-dimensional (transverse unused).  result = [force (N), force_cos (N), force_sin
+!> (N), power (W), sliding (N m/s), max slip (m/s), coefficient, n rolling points,
+!> cross_force(1:3) (N, 0 in one dimension)].
+subroutine adore_tribo_ehd_contact_method(geom, rheo, h, b, method, n_major, n_strip, two_d, transverse, result, &
+                                          status, message)
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK, input_error
@@ -256,9 +260,9 @@ subroutine adore_tribo_ehd_contact_method(geom, rheo, h, b, method, n_major, n_s
                                            EHD_FAST_MAJOR, EHD_FAST_STRIP
    use adore_api_unpack, only: contact_from_geom
    implicit none
-   real(wp), intent(in) :: geom(9), rheo(4), h, b
-   integer, intent(in) :: method, n_major, n_strip
-   real(wp), intent(out) :: result(8)
+   real(wp), intent(in) :: geom(9), rheo(4), h, b, transverse(3)
+   integer, intent(in) :: method, n_major, n_strip, two_d
+   real(wp), intent(out) :: result(11)
    integer, intent(out) :: status
    character(len=2048), intent(out) :: message
    type(error_type), allocatable :: error
@@ -273,7 +277,8 @@ subroutine adore_tribo_ehd_contact_method(geom, rheo, h, b, method, n_major, n_s
       call set_error(error, status, message)
       return
    end if
-   result = [t%force, t%force_cos, t%force_sin, t%power, t%sliding, t%max_slip, t%coefficient, real(t%n_rolling, wp)]
+   result = [t%force, t%force_cos, t%force_sin, t%power, t%sliding, t%max_slip, t%coefficient, real(t%n_rolling, wp), &
+             t%cross_force]
 
 contains
 
@@ -286,12 +291,17 @@ contains
       integer, intent(in) :: method, n_major, n_strip
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
-      select case (method)
+      select case (method*2 + merge(1, 0, two_d /= 0))
       case (0)
          call ehd_contact_traction(c, rh, h, b, n_major, n_strip, t, error)
       case (1)
+         call ehd_contact_traction(c, rh, h, b, n_major, n_strip, t, error, transverse)
+      case (2)
          call ehd_contact_traction_fast(c, rh, h, b, t, error, merge(n_major, EHD_FAST_MAJOR, n_major > 0), &
                                         merge(n_strip, EHD_FAST_STRIP, n_strip > 0))
+      case (3)
+         call ehd_contact_traction_fast(c, rh, h, b, t, error, merge(n_major, EHD_FAST_MAJOR, n_major > 0), &
+                                        merge(n_strip, EHD_FAST_STRIP, n_strip > 0), transverse)
       case default
          call input_error(error, "EHD contact: method must be 0 (reference) or 1 (fast)")
       end select
@@ -385,7 +395,8 @@ subroutine adore_tribo_ehd_temperature(geom, rheo, h, b, n_gauss, ny, u1, u2, th
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_temperature_rise
+   use adore_tribology_ehd_traction, only: ehd_rheology_t
+   use adore_tribology_ehd_flash, only: ehd_temperature_rise
    use adore_api_unpack, only: contact_from_geom
    implicit none
    real(wp), intent(in) :: geom(9), rheo(4), h, b, u1, u2, th1(3), th2(3)

@@ -6,8 +6,8 @@
 !> process.  The interface seen by Python is declared in _engine.pyf.
 
 !> Run a deck and write its print file (see adore_driver_run::run_deck).
-subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, status, &
-                          message)
+subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, traction_2d, &
+                          status, message)
    use adore_core_error, only: error_type, ADORE_OK
    use adore_api_status, only: set_error
    use adore_driver_run, only: run_deck
@@ -18,12 +18,14 @@ subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start
    character(len=*), intent(in) :: traction_table  !< traction-slip table file (ADRX7); blank: none
    character(len=*), intent(in) :: ball_start      !< ball start hypothesis name (report 4.4.7); blank: default
    integer, intent(in) :: moment_equilibrium   !< 1: moment equilibrium of the inner race (kFS4 = kFS5 = 0); 0: prescribed
+   integer, intent(in) :: traction_2d          !< 1: two-dimensional race traction (the default); 0: the 1-D developer option
    integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
    character(len=16384), intent(out) :: message !< error message, blank on success
 
    type(error_type), allocatable :: error
 
-   call run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium /= 0)
+   call run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium /= 0, &
+                 traction_2d=traction_2d /= 0)
    status = ADORE_OK
    message = ""
    if (allocated(error)) then

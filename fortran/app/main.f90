@@ -1,5 +1,6 @@
 !> The standalone `adore` program:
-!> `adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME] [--moment-equilibrium]`.
+!> `adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME] [--moment-equilibrium]
+!> [--traction-1d]`.
 !>
 !> The only place that ends the process: exit code 0 ok, 1 bad input, 2 engine failure.
 program adore
@@ -12,7 +13,7 @@ program adore
    type(error_type), allocatable :: error
    character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start
    integer :: i, nargs, steps, stat, dot, integrated
-   logical :: moments
+   logical :: moments, two_d
 
    integrated = 0
    steps = STEPS_FROM_DECK
@@ -20,6 +21,7 @@ program adore
    table_path = ""
    ball_start = ""
    moments = .false.
+   two_d = .true.
    out_path = ""
    nargs = command_argument_count()
    i = 1
@@ -45,6 +47,8 @@ program adore
          if (allocated(error)) exit
       case ("--moment-equilibrium")
          moments = .true.
+      case ("--traction-1d")
+         two_d = .false.
       case ("--ball-start")
          call option_value(i, "--ball-start", "a start hypothesis name", ball_start, error)
          if (allocated(error)) exit
@@ -77,7 +81,7 @@ program adore
             out_path = deck_path//".prt"
          end if
       end if
-      call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments, integrated)
+      call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments, integrated, two_d)
    end if
 
    if (allocated(error)) then
@@ -129,7 +133,7 @@ contains
    subroutine usage(unit)
       integer, intent(in) :: unit
       write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME]"// &
-         " [--moment-equilibrium]"
+         " [--moment-equilibrium] [--traction-1d]"
       write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt)"
       write (unit, "(a)") "  --steps N                N > 0: integrate N time steps after step 0 (ball decks; opt-in"
       write (unit, "(a)") "                           dynamics, issue #20 in progress: no cage contacts, thermal off);"
@@ -142,6 +146,9 @@ contains
       write (unit, "(a)") "                           or inner-race-control (ball decks only)"
       write (unit, "(a)") "  --moment-equilibrium     solve the inner race's misalignment for moment equilibrium"
       write (unit, "(a)") "                           (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks)"
+      write (unit, "(a)") "  --traction-1d            developer option of the dynamics: one-dimensional race traction"
+      write (unit, "(a)") "                           (slip along the rolling direction only, report eq 1) instead of"
+      write (unit, "(a)") "                           the two-dimensional default (docs/dynamics.md)"
    end subroutine usage
 
    !> End the process with exit status `code` and nothing printed by the runtime.

@@ -33,14 +33,16 @@ contains
    !> and the integrator's statistics (steps in tau).  Each ball's orbital position is
    !> unwrapped from step to step (a step moves a ball far less than half a revolution).
    !> Errors (integrator settings of Rec 1/2.1, a failed integration) come back in error;
-   !> the caller discards the partial print.
-   subroutine run_ball_dynamics(unit, b, g, s0, n_steps, error)
+   !> the caller discards the partial print.  two_d (default .true.): the two-dimensional
+   !> race traction (start_ball_dynamics).
+   subroutine run_ball_dynamics(unit, b, g, s0, n_steps, error, two_d)
       integer, intent(in) :: unit
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_step0_t), intent(in) :: s0
       integer, intent(in) :: n_steps
       type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: two_d
 
       type(ball_system_t) :: sys
       type(integrator_t) :: it
@@ -49,7 +51,7 @@ contains
       integer :: i, k, flag
       logical :: print_now
 
-      call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error)
+      call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error, two_d=two_d)
       if (allocated(error)) return
       allocate (dydt(size(y)))
       azimuth = s0%start%equilibrium%azimuth

@@ -47,7 +47,7 @@ contains
    !> n > 0 to integrate n time steps after step 0 (ball decks, opt-in dynamics of issue #20:
    !> adore_driver_ball_dynamics; roller decks: step 0 only).
    subroutine run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium, &
-                       integrated)
+                       integrated, traction_2d)
       character(len=*), intent(in) :: deck_path, out_path
       integer, intent(in) :: steps
       type(error_type), allocatable, intent(out) :: error
@@ -64,6 +64,10 @@ contains
       logical, intent(in), optional :: moment_equilibrium
       !> time steps the run integrated and printed after step 0 (0: the print ends after step 0)
       integer, intent(out), optional :: integrated
+      !> .false.: the dynamics uses the one-dimensional race traction (slip along the rolling
+      !> direction only, report eq 1), a developer option listed in the print; absent or
+      !> .true.: the two-dimensional traction (eqs 2-3; ball_system_t%traction_2d, the default)
+      logical, intent(in), optional :: traction_2d
 
       type(deck_text_t) :: text
       type(deck_t) :: deck
@@ -74,7 +78,7 @@ contains
       character(len=:), allocatable :: part_path, table_path, start_title
       character(len=256) :: iomsg
       integer :: unit, stat, start_method, n_dynamic
-      logical :: ok, table, start_given, moments
+      logical :: ok, table, start_given, moments, two_d
 
       if (present(integrated)) integrated = 0
       if (steps < STEPS_FROM_DECK) then
@@ -111,6 +115,8 @@ contains
       end if
       moments = .false.
       if (present(moment_equilibrium)) moments = moment_equilibrium
+      two_d = .true.
+      if (present(traction_2d)) two_d = traction_2d
       if (moments .and. bearing%bearing_type /= BALL_BEARING) then
          call input_error(error, trim(deck_path)//": the moment equilibrium option applies to ball "// &
                           "bearings; this deck is a cylindrical roller bearing (Rec 3.2)")
@@ -148,7 +154,7 @@ contains
       if (table) table_path = trim(traction_table)
       start_title = ""
       if (start_method /= BALL_START_METHOD) start_title = trim(start_method_title(start_method))
-      call write_listing(unit, text, bearing%race_traction, table_path, start_title, moments, n_dynamic)
+      call write_listing(unit, text, bearing%race_traction, table_path, start_title, moments, n_dynamic, two_d)
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start; then the opt-in time steps of a ball deck.  Without
@@ -158,7 +164,7 @@ contains
          call write_ball_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], bearing, ball0)
          if (n_dynamic > 0) then
             call run_ball_dynamics(unit, bearing, mount_geometry(bearing, bearing%temperature), ball0, n_dynamic, &
-                                   error)
+                                   error, two_d)
             if (allocated(error)) then
                close (unit, iostat=stat)
                call delete_file(part_path)

@@ -179,8 +179,9 @@ contains
    !> for a bearing without applied load, whose scales are undefined), the integrator with the
    !> deck's Rec 1 int_method and Rec 2.1 steps and error limit (in tau; the minimum step is
    !> accepted when the error test still fails there, as ADORE's Appendix C statistics
-   !> show: docs/dynamics.md), the packed initial state y at tau = 0.
-   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction)
+   !> show: docs/dynamics.md), the packed initial state y at tau = 0.  traction: race
+   !> traction on (default); two_d: the two-dimensional race traction (default .true.).
+   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_start_t), intent(in) :: start
@@ -189,7 +190,7 @@ contains
       type(integrator_t), intent(out) :: it
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      logical, intent(in), optional :: traction
+      logical, intent(in), optional :: traction, two_d
       real(wp) :: scales(3), l, tt
 
       call scale_factors(b%d, b%mass(1), b%force, scales, error)
@@ -197,6 +198,7 @@ contains
       l = scales(1)
       tt = scales(3)
       sys = new_ball_system(b, g, tt, traction)
+      if (present(two_d)) sys%traction_2d = two_d
       allocate (y(state_size(b%n_elements)))
       call pack_state(initial_ball_state(b, g, start, cage), y)
       call it%init(size(y), integrator_settings_t(int_method=b%int_method, h_initial=b%step_initial, &

@@ -11,6 +11,9 @@
 !> dF e_t at Q(psi) = B + D/2 (cos psi n + sin psi e_m), on the ball the opposite, so the
 !> ball feels the moment -D/2 (F_cos n + F_sin e_m) x e_t about its centre (F_cos, F_sin:
 !> the sums of dF cos psi and dF sin psi; the second is the spin moment about the normal).
+!> With the two-dimensional traction (two_d; report eq 5) the traction also has a part
+!> dF_m along e_m(psi) across the rolling direction (contact_traction_t%cross_force): on the
+!> race along e_m(psi) at Q(psi), on the ball the opposite with the moment -D/2 F_m (n x e_m).
 !> Gravity (Rec 11) acts on every body; the applied force and moment of Rec 9.1.1 on the
 !> inner race.  Inertial forces are not loads here: the equations of motion carry them.
 !> Cage contacts (the `cage` flag, default on): every ball against its cylindrical pocket
@@ -36,12 +39,9 @@ module adore_forces_ball_bearing
    use adore_state_bearing_state, only: bearing_state_t, RACE_OUTER, RACE_INNER
    use adore_contact_ball_race, only: ball_race_pair_t, ball_race_geometry_t, ball_race_contact, planar_contact
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_OUTER, SIDE_INNER, &
-                                   major_axis_nodes, contact_slip
-   use adore_tribology_traction_law, only: law_kappa
-   use adore_tribology_ehd_traction, only: ehd_strip_traction
-   use adore_tribology_race_contact, only: wall_rheology
-   use adore_tribology_race_contact, only: PRINT_GAUSS, ehd_traction_model, lubricant_film, check_ehd_film, &
-                                           ehd_traction
+                                   contact_kinematics
+   use adore_tribology_race_contact, only: PRINT_GAUSS, EHD_GAUSS, ehd_traction_model, lubricant_film, &
+                                           check_ehd_film, ehd_traction
    implicit none
    private
 
@@ -182,11 +182,15 @@ contains
    !> stiffness(2, n), when given, replaces each contact's Hertz K(alpha) (N/m**1.5; a
    !> verification option: with K frozen the normal loads derive from an energy).
    !> two_d (default .false.): the traction of the slip vector along AND across the rolling
-   !> direction (report eq 5's two-dimensional slip; traction_2d) instead of the one-
-   !> dimensional model along the rolling direction (eq 1) - an experiment of [Dynamics]
-   !> (docs/dynamics.md), slower (the reference strip quadrature at every node).
+   !> direction (report eq 5's two-dimensional slip) instead of the one-dimensional model
+   !> along the rolling direction (eq 1): at every node of the major axis the traction of
+   !> the run's model at the slip vector's length acts along it (the contact_traction and
+   !> ehd_traction procedures with the contact's transverse_coeff; docs/dynamics.md).
+   !> reference (default .false.): the EHD traction by its reference quadrature
+   !> (EHD_GAUSS x EHD_STRIP points, ehd_contact_traction) instead of the fast one - for
+   !> tests; the law's traction has one quadrature.
    !> Input errors of the traction model (e.g. no EHD film) come back in error.
-   subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d)
+   subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -194,18 +198,20 @@ contains
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: traction, cage
       real(wp), intent(in), optional :: stiffness(:, :)
-      logical, intent(in), optional :: two_d
+      logical, intent(in), optional :: two_d, reference
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: t
-      real(wp) :: rho, f_n(3), f_t(3), m_t(3), h_eff, sums(6), power
+      real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6)
       integer :: n, k, j
-      logical :: with_traction, with_2d
+      logical :: with_traction, with_2d, with_reference
 
       with_traction = .true.
       if (present(traction)) with_traction = traction
       with_2d = .false.
       if (present(two_d)) with_2d = two_d
+      with_reference = .false.
+      if (present(reference)) with_reference = reference
       n = size(s%elements)
       pairs = ball_race_pairs(b, g)
       rho = 0.5_wp*g%element_diameter
@@ -234,18 +240,11 @@ contains
                loads%races(j)%moment = loads%races(j)%moment + cross(c%point - race, f_n)
                if (.not. with_traction) cycle
                cj = planar_contact(pairs(j), c)
-               call race_traction(k, j, cj, c%ellipse%semi_minor, c%ellipse%max_pressure, t, error, h_eff)
+               call race_traction(k, j, cj, c%transverse_coeff, c%ellipse%semi_minor, c%ellipse%max_pressure, t, &
+                                  error)
                if (allocated(error)) return
-               if (with_2d) then
-                  ! two-dimensional traction: slip along and across the rolling direction
-                  call traction_2d(j, cj, c%transverse_coeff, c%ellipse%semi_minor, h_eff, sums, power)
-                  t%force = sums(1)
-                  t%force_cos = sums(2)
-                  t%force_sin = sums(3)
-                  t%power = power
-               else
-                  sums = [t%force, t%force_cos, t%force_sin, 0.0_wp, 0.0_wp, 0.0_wp]
-               end if
+               ! the traction along the rolling direction and (two-dimensional only) across it
+               sums = [t%force, t%force_cos, t%force_sin, t%cross_force]
                loads%traction(j, k) = t
                loads%heat(j, k) = t%power
                ! on the race: along e_t at the nodes, and along e_m(psi) = -sin(psi) n + cos(psi) e_m;
@@ -300,76 +299,43 @@ contains
          end do
       end subroutine add_cage_contacts
 
-      !> Traction of race contact j of ball k (planar form cj; semi-minor axis b_minor, m;
-      !> Hertz pressure p_h, Pa) by the run's model: the law, or the EHD film traction with
-      !> the film of the current state (report 2.6) at the bulk temperatures of s.
-      subroutine race_traction(k, j, cj, b_minor, p_h, t, error, h_eff)
+      !> Traction of race contact j of ball k (planar form cj, transverse slip coefficients
+      !> tc, m/s; semi-minor axis b_minor, m; Hertz pressure p_h, Pa) by the run's model: the
+      !> law, or the EHD film traction with the film of the current state (report 2.6) at
+      !> the bulk temperatures of s; one- or two-dimensional (with_2d: tc used), by the fast
+      !> or (with_reference) the reference EHD quadrature.  The film needs only the
+      !> contact's centre kinematics (entraining speed, R_x, centre slip).
+      subroutine race_traction(k, j, cj, tc, b_minor, p_h, t, error)
          integer, intent(in) :: k, j
          type(ball_race_contact_t), intent(in) :: cj
-         real(wp), intent(in) :: b_minor, p_h
+         real(wp), intent(in) :: tc(3), b_minor, p_h
          type(contact_traction_t), intent(out) :: t
          type(error_type), allocatable, intent(out) :: error
-         real(wp), intent(out) :: h_eff
-         type(contact_traction_t) :: t_law
+         type(contact_traction_t) :: tk
          real(wp) :: h, phi
          integer :: race
 
-         h_eff = 0.0_wp
-         call contact_traction(cj, b%race_traction, 1.0_wp, PRINT_GAUSS, t_law, error)
-         if (allocated(error)) return
          if (.not. ehd_traction_model(b)) then
-            t = t_law
+            if (with_2d) then
+               ! the slip vector turns across the contact: the EHD traction's nodes per zone
+               call contact_traction(cj, b%race_traction, 1.0_wp, EHD_GAUSS, t, error, transverse=tc)
+            else
+               call contact_traction(cj, b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
+            end if
             return
          end if
          race = merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER)
-         call lubricant_film(b, s%temperature, t_law, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
+         call contact_kinematics(cj, tk)
+         call lubricant_film(b, s%temperature, tk, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
          if (allocated(error)) return
          call check_ehd_film(b, s%temperature, k, j, h, phi, error)
          if (allocated(error)) return
-         h_eff = h*phi
-         call ehd_traction(b, s%temperature, cj, b_minor, race, h*phi, t, error)
+         if (with_2d) then
+            call ehd_traction(b, s%temperature, cj, b_minor, race, h*phi, t, error, with_reference, tc)
+         else
+            call ehd_traction(b, s%temperature, cj, b_minor, race, h*phi, t, error, with_reference)
+         end if
       end subroutine race_traction
-
-      !> Two-dimensional traction of race contact j (planar form cj, transverse slip
-      !> coefficients tc, semi-minor axis b_minor, EHD film h_eff or 0 for the law): at each
-      !> node of the major axis the slip vector (u_r along e_t, u_m along e_m(psi)) meets the
-      !> traction f(|u|) u/|u| of the run's model; sums = [sum dF_t, sum dF_t cos psi,
-      !> sum dF_t sin psi, sum dF_m, sum dF_m cos psi, sum dF_m sin psi] (N), power (W).
-      subroutine traction_2d(j, cj, tc, b_minor, h_eff, sums, power)
-         integer, intent(in) :: j
-         type(ball_race_contact_t), intent(in) :: cj
-         real(wp), intent(in) :: tc(3), b_minor, h_eff
-         real(wp), intent(out) :: sums(6), power
-         type(contact_traction_t) :: tn
-         real(wp), allocatable :: x(:), w(:)
-         real(wp) :: psi, ur, um, us, f, q, df, cs, sn
-         integer :: i
-         logical :: ehd
-
-         sums = 0.0_wp
-         power = 0.0_wp
-         ehd = h_eff > 0.0_wp
-         call major_axis_nodes(cj, 16, tn, x, w)
-         do i = 1, size(x)
-            psi = x(i)/cj%rho
-            cs = cos(psi)
-            sn = sin(psi)
-            ur = contact_slip(cj, x(i))
-            um = tc(1) + tc(2)*cs + tc(3)*sn
-            us = hypot(ur, um)
-            if (ehd) then
-               call ehd_strip_traction(cj, wall_rheology(b, s%temperature, merge(BODY_OUTER, BODY_INNER, &
-                                       j == RACE_OUTER)), h_eff, b_minor, 24, x(i), us, f, q)
-               df = f*w(i)
-            else
-               df = law_kappa(b%race_traction, us)*0.75_wp*cj%load/cj%a*(1.0_wp - (x(i)/cj%a)**2)*w(i)
-            end if
-            power = power + df*us
-            if (us <= 0.0_wp) cycle
-            sums(1:3) = sums(1:3) + df*ur/us*[1.0_wp, cs, sn]
-            sums(4:6) = sums(4:6) + df*um/us*[1.0_wp, cs, sn]
-         end do
-      end subroutine traction_2d
 
    end subroutine ball_bearing_loads
 

@@ -20,7 +20,8 @@ contains
    !> banner, report Appendix C/D).  dynamics_steps > 0: the run integrates that many time
    !> steps with the dynamics of issue #20 still in progress; the listing says so first, so
    !> that no such print poses as a validated ADORE run.
-   subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps)
+   subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps, &
+                            traction_2d)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -30,6 +31,8 @@ contains
       logical, intent(in), optional :: moment_equilibrium
       !> time steps of an opt-in dynamics run (absent or 0: none)
       integer, intent(in), optional :: dynamics_steps
+      !> .true. when that run uses the two-dimensional race traction (developer option)
+      logical, intent(in), optional :: traction_2d
       integer :: i
 
       write (unit, "(a)") "Input from optional user subroutines"
@@ -39,6 +42,10 @@ contains
             write (unit, "(a,i0,a)") "DYNAMICS IN PROGRESS (ISSUE #20): NO CAGE CONTACTS, THERMAL MODEL OFF; ", &
                dynamics_steps, " TIME STEPS"
             write (unit, "(a)") "  NOT A VALIDATED ADORE RUN (docs/dynamics.md)"
+            if (present(traction_2d)) then
+               if (.not. traction_2d) write (unit, "(a)") "  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE "// &
+                  "ROLLING DIRECTION ONLY, REPORT EQ 1): DEVELOPER OPTION"
+            end if
             write (unit, "(a)") ""
          end if
       end if

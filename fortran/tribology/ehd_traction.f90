@@ -26,14 +26,13 @@ module adore_tribology_ehd_traction
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
    use adore_core_quadrature, only: gauss_legendre
-   use adore_tribology_flash, only: strip_temperature_rise, flash_trapezoid_weights
    use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
-                                   interior_extremum, contact_kinematics, rolling_zones, axis_nodes
+                                   interior_extremum, contact_kinematics, rolling_zones, axis_nodes, cross_slip
    implicit none
    private
 
-   public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_temperature_rise, ehd_strip_traction
+   public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_strip_traction
    public :: ehd_contact_traction_fast, ehd_contact_power
 
    !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
@@ -89,21 +88,51 @@ contains
    !> rheology rheo; b: semi-minor axis (m); n_gauss points per slip zone along the major
    !> axis, n_strip across each strip.  t%coefficient = net traction / load, t%power (W) =
    !> integral of f |u| ds (eq 4).  Input error for bad data.
-   subroutine ehd_contact_traction(c, rheo, h, b, n_gauss, n_strip, t, error)
+   !> transverse (m/s), when given: the two-dimensional traction (report eq 5; the slip
+   !> across the rolling direction u_m(psi) = m1 + m2 cos psi + m3 sin psi, psi = s / rho,
+   !> of adore_contact_ball_race's transverse_coeff): each strip is sheared at the slip
+   !> vector's |u| = |(u(s), u_m)| and its traction f(|u|) acts along (u, u_m) / |u|; force,
+   !> force_cos, force_sin from the rolling part, t%cross_force from the transverse part,
+   !> power and sliding from |u| (adore_tribology_slip's contact_traction).
+   subroutine ehd_contact_traction(c, rheo, h, b, n_gauss, n_strip, t, error, transverse)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
       real(wp), intent(in) :: h, b
       integer, intent(in) :: n_gauss, n_strip
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
+      real(wp), intent(in), optional :: transverse(3)
       real(wp), allocatable :: x(:), w(:)
-      real(wp) :: u, f, q, y(n_strip), wy(n_strip)
+      real(wp) :: u, f, q, y(n_strip), wy(n_strip), um, us, cs, sn
       integer :: j, m
 
       call check_ehd_inputs(c, rheo, h, b, n_gauss, n_strip, error)
       if (allocated(error)) return
       call major_axis_nodes(c, n_gauss, t, x, w)
       call strip_rule(n_strip, y, wy, m)
+      if (present(transverse)) then
+         t%max_slip = max(hypot(contact_slip(c, -c%a), cross_slip(transverse, -c%a/c%rho)), &
+                          hypot(contact_slip(c, c%a), cross_slip(transverse, c%a/c%rho)))
+         do j = 1, size(x)
+            u = contact_slip(c, x(j))
+            cs = cos(x(j)/c%rho)
+            sn = sin(x(j)/c%rho)
+            um = transverse(1) + transverse(2)*cs + transverse(3)*sn
+            us = hypot(u, um)
+            call strip_traction(c, rheo, h, b, y(1:m), wy(1:m), x(j), us, f, q)
+            t%power = t%power + f*us*w(j)
+            t%sliding = t%sliding + us*0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)
+            t%max_slip = max(t%max_slip, us)
+            if (us <= 0.0_wp) cycle
+            t%force = t%force + f*w(j)*u/us
+            t%force_cos = t%force_cos + f*w(j)*u/us*cs
+            t%force_sin = t%force_sin + f*w(j)*u/us*sn
+            t%cross_force = t%cross_force + f*w(j)*um/us*[1.0_wp, cs, sn]
+         end do
+         call interior_extremum(c, t%max_slip)     ! |u| >= |u_r| there
+         t%coefficient = t%force/c%load
+         return
+      end if
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
       do j = 1, size(x)
          u = contact_slip(c, x(j))
@@ -129,20 +158,28 @@ contains
    !> points for A beyond the table); n_strip >= 1: Gauss on psi in [0, pi/2] of
    !> y = b' sin(psi) with n_strip points.  Same outputs as ehd_contact_traction (force,
    !> force_cos, force_sin, power, sliding, max_slip, kinematics); input error for bad data.
-   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip)
+   !> transverse (m/s), when given: the two-dimensional traction as ehd_contact_traction's
+   !> (each strip's integral at the slip vector's |u|, its traction along (u, u_m) / |u|,
+   !> t%cross_force), on the same nodes: the zones and their grading follow the pure-rolling
+   !> points of the rolling slip u(s), where the traction turns fastest.  A contact without
+   !> pure-rolling point whose |u| dips inside (two rolling points merged or just apart, as
+   !> under race control) is split and graded at the dip (slip_minimum): plain Gauss in phi
+   !> missed that layer by up to 4e-3 of the force (docs/dynamics.md).
+   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
       real(wp), intent(in) :: h, b
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: n_major, n_strip
+      real(wp), intent(in), optional :: transverse(3)
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
       integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
       real(wp), parameter :: Z_MIN = exp(STRIP_L_MIN)
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST)
-      real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(4, 8), vmax, ev, fac
+      real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(4, 8), vmax, ev, fac, pe, kp
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n
 
       nm = EHD_FAST_MAJOR
@@ -172,7 +209,12 @@ contains
          cy(1:nq) = cos(0.25_wp*pi*(1.0_wp + yg(1:nq)))
          wy(1:nq) = 2.0_wp*0.25_wp*pi*wy(1:nq)*cy(1:nq)
       end if
-      t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
+      if (present(transverse)) then
+         t%max_slip = max(hypot(contact_slip(c, -c%a), cross_slip(transverse, -c%a/c%rho)), &
+                          hypot(contact_slip(c, c%a), cross_slip(transverse, c%a/c%rho)))
+      else
+         t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
+      end if
       ! sub-zones in phi: a zone that ends at a pure-rolling point is graded there (the
       ! film's shear saturates within |u| ~ 1 / (zeta E) of it); one between two rolling
       ! points is halved first
@@ -187,6 +229,11 @@ contains
             call add_sub(hi, lo, edges(z), 1)
          else if (z < nz) then
             call add_sub(lo, hi, edges(z + 1), 1)
+         else if (slip_minimum(pe, kp)) then
+            ! no pure-rolling point, but |u| dips inside (the two rolling points merged or
+            ! just apart, e.g. race control): split and graded at the dip
+            call add_graded(lo, pe, kp, 1)
+            call add_graded(hi, pe, kp, 1)
          else
             call add_sub(lo, hi, huge(1.0_wp), 1)
          end if
@@ -218,18 +265,27 @@ contains
       ct(1:n) = cos(phi(1:n))
       st(1:n) = sin(phi(1:n))
       u(1:n) = c%side*c%rho*(c%omega(1) - rs)*ct(1:n) - c%side*c%rho*c%omega(2)*st(1:n) - rs*c%r_b
+      if (present(transverse)) then
+         ! the slip vector's length; cos, sin of psi = s / rho = theta - alpha
+         cps(1:n) = ct(1:n)*cos(c%alpha) + st(1:n)*sin(c%alpha)
+         sps(1:n) = st(1:n)*cos(c%alpha) - ct(1:n)*sin(c%alpha)
+         um(1:n) = transverse(1) + transverse(2)*cps(1:n) + transverse(3)*sps(1:n)
+         us(1:n) = hypot(u(1:n), um(1:n))
+      else
+         us(1:n) = abs(u(1:n))
+      end if
       ! the strip traction per unit length f = b cos(phi) x the integral of tau across the
       ! strip (strip_traction): by the table, S = 2 Z exp(G(A, ln Z)) (array operations: the
       ! compiler vectorises log and exp), else, or where A is beyond the table, by the rule
       aa(1:n) = 0.5_wp*rheo%alpha*p0*cphi(1:n)
       if (ns == EHD_STRIP_TABLE) then
          if (rheo%beta > 0.0_wp) then
-            zz(1:n) = zeta*abs(u(1:n))
+            zz(1:n) = zeta*us(1:n)
             lz(1:n) = log(max(zz(1:n), Z_MIN))
             fac = 2.0_wp*amp*b
          else
             ! isothermal: the integral of E**2 across the strip is exp(G) at Z -> 0
-            zz(1:n) = abs(u(1:n))
+            zz(1:n) = us(1:n)
             lz(1:n) = STRIP_L_MIN
             fac = rheo%eta_w/h*b
          end if
@@ -247,17 +303,28 @@ contains
       end if
       if (nq > 0) then
          do j = 1, n
-            if (ns /= EHD_STRIP_TABLE .or. aa(j) > STRIP_A_MAX) f(j) = b*cphi(j)*strip_rule_integral(aa(j), u(j))
+            if (ns /= EHD_STRIP_TABLE .or. aa(j) > STRIP_A_MAX) f(j) = b*cphi(j)*strip_rule_integral(aa(j), us(j))
          end do
       end if
       ! force, its moments cos(s / rho) = cos(theta - alpha), sin(s / rho), heat (eq 4), sliding
       f(1:n) = f(1:n)*wn(1:n)
-      t%force = sum(sign(f(1:n), u(1:n)))
-      t%force_cos = sum(sign(f(1:n), u(1:n))*(ct(1:n)*cos(c%alpha) + st(1:n)*sin(c%alpha)))
-      t%force_sin = sum(sign(f(1:n), u(1:n))*(st(1:n)*cos(c%alpha) - ct(1:n)*sin(c%alpha)))
-      t%power = sum(f(1:n)*abs(u(1:n)))
-      t%sliding = 0.75_wp*c%load/c%a*sum(abs(u(1:n))*cphi(1:n)**2*wn(1:n))    ! Hertz strip load
-      t%max_slip = max(t%max_slip, maxval(abs(u(1:n))))
+      if (present(transverse)) then
+         ! the traction along the slip vector: its rolling (u / |u|) and transverse parts (no
+         ! division by 0 where the slip vanishes: |u|, |u_m| <= |u| there)
+         zz(1:n) = f(1:n)*u(1:n)/max(us(1:n), tiny(1.0_wp))
+         lz(1:n) = f(1:n)*um(1:n)/max(us(1:n), tiny(1.0_wp))
+         t%force = sum(zz(1:n))
+         t%force_cos = sum(zz(1:n)*cps(1:n))
+         t%force_sin = sum(zz(1:n)*sps(1:n))
+         t%cross_force = [sum(lz(1:n)), sum(lz(1:n)*cps(1:n)), sum(lz(1:n)*sps(1:n))]
+      else
+         t%force = sum(sign(f(1:n), u(1:n)))
+         t%force_cos = sum(sign(f(1:n), u(1:n))*(ct(1:n)*cos(c%alpha) + st(1:n)*sin(c%alpha)))
+         t%force_sin = sum(sign(f(1:n), u(1:n))*(st(1:n)*cos(c%alpha) - ct(1:n)*sin(c%alpha)))
+      end if
+      t%power = sum(f(1:n)*us(1:n))
+      t%sliding = 0.75_wp*c%load/c%a*sum(us(1:n)*cphi(1:n)**2*wn(1:n))    ! Hertz strip load
+      t%max_slip = max(t%max_slip, maxval(us(1:n)))
       call interior_extremum(c, t%max_slip)
       t%coefficient = t%force/c%load
 
@@ -271,19 +338,66 @@ contains
          real(wp), intent(in) :: pf, pr, s_r
          integer, intent(in) :: rule
          real(wp) :: th, dudx
-         nsub = nsub + 1
-         sub(:, nsub) = [pf, pr, 0.0_wp, real(rule, wp)]
-         if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) return
+         if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) then
+            call add_graded(pf, pr, 0.0_wp, rule)
+            return
+         end if
          th = c%alpha + s_r/c%rho
          dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
-         sub(3, nsub) = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr)
-         if (sub(3, nsub)*abs(pf - pr) > 2.0_wp*LAYER) then
+         call add_graded(pf, pr, zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr), rule)
+      end subroutine add_sub
+
+      !> A sub-zone of phi from pf (free end) to pr, graded at pr with the inverse layer
+      !> width k (1/rad; 0: not graded), rule as add_sub; a layer much thinner than the
+      !> zone is graded up to LAYER / k from pr and the rest of the zone is plain.
+      subroutine add_graded(pf, pr, k, rule)
+         real(wp), intent(in) :: pf, pr, k
+         integer, intent(in) :: rule
+         nsub = nsub + 1
+         sub(:, nsub) = [pf, pr, k, real(rule, wp)]
+         if (k*abs(pf - pr) > 2.0_wp*LAYER) then
             ! the layer graded up to LAYER / K from pr, the rest of the zone plain
-            sub(1, nsub) = pr + sign(LAYER/sub(3, nsub), pf - pr)
+            sub(1, nsub) = pr + sign(LAYER/k, pf - pr)
             nsub = nsub + 1
             sub(:, nsub) = [pf, sub(1, nsub - 1), 0.0_wp, real(rule, wp)]
          end if
-      end subroutine add_sub
+      end subroutine add_graded
+
+      !> The interior minimum of the slip vector's length (a zone without pure-rolling
+      !> point whose rolling slip u(s) has its extremum inside the contact, thermal film
+      !> only): its position pe (phi, rad) and the inverse width k (1/rad) of the layer
+      !> where the shear changes, |u - u_e| <= max(|u_e|, 1 / (zeta E)) with u - u_e =
+      !> u'' (s - s_e)**2 / 2 (E at the strip's centre).  False when there is none.
+      logical function slip_minimum(pe, k)
+         real(wp), intent(out) :: pe, k
+         real(wp) :: aa, bb, th, s_e, ue, d2u, e_max, width
+         integer :: m
+         slip_minimum = .false.
+         pe = 0.0_wp
+         k = 0.0_wp
+         if (rheo%beta <= 0.0_wp) return
+         aa = c%side*c%rho*(c%omega(1) - rs)
+         bb = -c%side*c%rho*c%omega(2)
+         if (hypot(aa, bb) <= 0.0_wp) return
+         do m = -3, 3
+            th = atan2(bb, aa) + pi*m            ! u'(s) = 0
+            s_e = (th - c%alpha)*c%rho
+            if (abs(s_e) >= c%a) cycle
+            pe = asin(s_e/c%a)
+            if (present(transverse)) then
+               ue = hypot(contact_slip(c, s_e), cross_slip(transverse, s_e/c%rho))
+            else
+               ue = abs(contact_slip(c, s_e))
+            end if
+            d2u = abs(aa*cos(th) + bb*sin(th))/c%rho**2
+            e_max = exp(0.5_wp*rheo%alpha*p0*cos(pe))
+            if (.not. (d2u > 0.0_wp)) return
+            width = sqrt(2.0_wp*max(ue, 1.0_wp/(zeta*e_max))/d2u)     ! in s (m)
+            k = c%a*cos(pe)/width
+            slip_minimum = .true.
+            return
+         end do
+      end function slip_minimum
 
       !> Integral of tau h / h (Pa) over y' in [-1, 1] across a strip with A = alpha p_c / 2
       !> and slip u (m/s) by the rule (cy, wy) on psi (strip_traction).
@@ -435,68 +549,5 @@ contains
          q = q + half*wy(i)*p
       end do
    end subroutine strip_traction
-
-   !> Average (eq 36) and largest flash temperature rise (K) of contact c with the heat of
-   !> its EHD film: flux q = tau(p, u) |u| (W/m**2) on strips across the minor axis at the
-   !> n_gauss Gauss points per slip zone of the major axis, ny >= 2 uniform points per
-   !> strip, each strip by eq 35 (adore_tribology_flash); rheo, h, b as ehd_contact_traction;
-   !> u1, u2 surface speeds (m/s) and th1, th2 = [density, heat capacity, conductivity] of
-   !> the two bodies.  Without dt_max the average alone, by the trapezoid weights of
-   !> adore_tribology_flash's flash_trapezoid_weights (O(ny) per strip, the same sum).
-   subroutine ehd_temperature_rise(c, rheo, h, b, n_gauss, ny, u1, u2, th1, th2, dt_avg, dt_max, error)
-      type(ball_race_contact_t), intent(in) :: c
-      type(ehd_rheology_t), intent(in) :: rheo
-      real(wp), intent(in) :: h, b, u1, u2, th1(3), th2(3)
-      integer, intent(in) :: n_gauss, ny
-      real(wp), intent(out) :: dt_avg
-      real(wp), intent(out), optional :: dt_max
-      type(error_type), allocatable, intent(out) :: error
-      type(contact_traction_t) :: t
-      real(wp), allocatable :: x(:), w(:), eta(:), q(:), dt(:), p(:), cw(:)
-      real(wp) :: u, ek, bk, p0, strip, denom
-      integer :: j, i, half_ny
-
-      dt_avg = 0.0_wp
-      if (present(dt_max)) dt_max = 0.0_wp
-      call ehd_contact_traction(c, rheo, h, b, 1, 1, t, error)      ! validates the inputs
-      if (allocated(error)) return
-      if (ny < 2 .or. n_gauss < 1 .or. .not. (minval(th1) > 0.0_wp .and. minval(th2) > 0.0_wp .and. &
-                                               abs(u1) + abs(u2) > 0.0_wp)) then
-         call input_error(error, "EHD temperature: need n_gauss >= 1, ny >= 2, positive thermal properties "// &
-                          "and a moving surface")
-         return
-      end if
-      call major_axis_nodes(c, n_gauss, t, x, w)
-      allocate (eta(ny), q(ny), dt(ny), p(ny), cw(ny))
-      eta = [(-1.0_wp + 2.0_wp*real(i - 1, wp)/real(ny - 1, wp), i=1, ny)]
-      if (.not. present(dt_max)) call flash_trapezoid_weights(ny, cw)
-      half_ny = (ny + 1)/2
-      denom = sqrt(pi*th1(1)*th1(2)*th1(3)*abs(u1)) + sqrt(pi*th2(1)*th2(2)*th2(3)*abs(u2))
-      p0 = 1.5_wp*c%load/(pi*c%a*b)
-      do j = 1, size(x)
-         ek = 1.0_wp - (x(j)/c%a)**2
-         if (ek <= 0.0_wp) cycle
-         u = contact_slip(c, x(j))
-         bk = b*sqrt(ek)
-         p = p0*sqrt(ek)*sqrt(max(1.0_wp - eta**2, 0.0_wp))
-         if (present(dt_max)) then
-            q = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)*abs(u)
-         else
-            ! the flux is even across the strip: half of it, mirrored
-            q(1:half_ny) = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p(1:half_ny)), rheo%beta, rheo%conductivity, &
-                                             u, h)*abs(u)
-            q(ny:half_ny + 1:-1) = q(1:ny - half_ny)
-         end if
-         if (present(dt_max)) then
-            call strip_temperature_rise(bk, eta, q, u1, u2, th1, th2, dt)
-            strip = bk*(sum(dt) - 0.5_wp*(dt(1) + dt(ny)))*(eta(2) - eta(1))    ! trapezoid over y
-            dt_max = max(dt_max, maxval(dt))
-         else
-            strip = bk*sqrt(bk)*dot_product(cw, q)/denom*(eta(2) - eta(1))
-         end if
-         dt_avg = dt_avg + w(j)*strip
-      end do
-      dt_avg = dt_avg/(pi*c%a*b)
-   end subroutine ehd_temperature_rise
 
 end module adore_tribology_ehd_traction

@@ -17,8 +17,9 @@ module adore_tribology_race_contact
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_temperature_rise, &
-                                           ehd_strip_traction, ehd_contact_traction_fast
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_strip_traction, &
+                                           ehd_contact_traction_fast
+   use adore_tribology_ehd_flash, only: ehd_temperature_rise
    use adore_tribology_flash, only: FLASH_POINTS, contact_temperature_rise
    use adore_contact_line_slices, only: line_contact_t
    use adore_tribology_roller_traction, only: line_traction_t
@@ -136,8 +137,10 @@ contains
    !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
    !> lubricant's traction rheology at the wall temperature; by the fast quadrature
    !> (ehd_contact_traction_fast, default) or, with reference = .true., by the reference
-   !> quadrature of EHD_GAUSS x EHD_STRIP points (the step-0 print's).
-   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, reference)
+   !> quadrature of EHD_GAUSS x EHD_STRIP points (the step-0 print's).  transverse (m/s),
+   !> when given: the two-dimensional traction of the slip along and across the rolling
+   !> direction (u_m(psi) = m1 + m2 cos psi + m3 sin psi; report eq 5), t%cross_force.
+   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, reference, transverse)
       type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: temperature(:)
       type(ball_race_contact_t), intent(in) :: cj
@@ -146,13 +149,16 @@ contains
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: reference
+      real(wp), intent(in), optional :: transverse(3)
       logical :: ref
       ref = .false.
       if (present(reference)) ref = reference
       if (ref) then
-         call ehd_contact_traction(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, EHD_STRIP, t, error)
+         call ehd_contact_traction(cj, wall_rheology(b, temperature, race), h, b_minor, EHD_GAUSS, EHD_STRIP, t, error, &
+                                   transverse)
       else
-         call ehd_contact_traction_fast(cj, wall_rheology(b, temperature, race), h, b_minor, t, error)
+         call ehd_contact_traction_fast(cj, wall_rheology(b, temperature, race), h, b_minor, t, error, &
+                                        transverse=transverse)
       end if
    end subroutine ehd_traction
 

@@ -27,7 +27,7 @@ module adore_tribology_slip
 
    public :: ball_race_contact_t, contact_traction_t
    public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
-             major_axis_nodes, print_slip_node, contact_power, rolling_zones, axis_nodes
+             major_axis_nodes, print_slip_node, contact_power, rolling_zones, axis_nodes, cross_slip
 
    integer, parameter, public :: SIDE_OUTER = 1   !< contact with the outer race
    integer, parameter, public :: SIDE_INNER = -1  !< contact with the inner race
@@ -51,6 +51,10 @@ module adore_tribology_slip
       !> with psi = s / rho (N): the moment of the traction about the ball centre
       !> (adore_forces_ball_bearing)
       real(wp) :: force_cos = 0.0_wp, force_sin = 0.0_wp
+      !> two-dimensional traction only (a transverse slip given): the traction across the
+      !> rolling direction, along e_m(psi) = d n(psi) / d psi, on the race: sums of dF_m,
+      !> dF_m cos(psi), dF_m sin(psi) (N; adore_forces_ball_bearing); 0 in one dimension
+      real(wp) :: cross_force(3) = 0.0_wp
       real(wp) :: coefficient = 0.0_wp  !< force / load (-)
       real(wp) :: power = 0.0_wp        !< heat generated, integral of kappa |u| dQ (W)
       real(wp) :: sliding = 0.0_wp      !< integral of |u| dQ (N m/s): the Archard wear's load x slip
@@ -140,22 +144,55 @@ contains
    !> law (the deck's curve or a traction-slip table, `adore_tribology_traction_law`), each zone between pure-rolling points
    !> integrated with an n_gauss-point Gauss-Legendre rule; kappa is multiplied by
    !> kappa_scale (1 for the bare curve).  Input error for a bad contact or n_gauss < 1.
-   subroutine contact_traction(c, law, kappa_scale, n_gauss, t, error)
+   !> transverse (m/s), when given: the two-dimensional traction of report eq 5 - the slip
+   !> across the rolling direction u_m(psi) = m1 + m2 cos psi + m3 sin psi (psi = s / rho;
+   !> adore_contact_ball_race's transverse_coeff) joins u(s) at every node, the traction
+   !> kappa(|u|) dQ acts along the slip vector (u, u_m)/|u| (force, force_cos, force_sin
+   !> from its rolling part, t%cross_force from its transverse part), power and sliding
+   !> take |u|, max_slip the largest |u| at the ends and nodes.
+   subroutine contact_traction(c, law, kappa_scale, n_gauss, t, error, transverse)
       type(ball_race_contact_t), intent(in) :: c
       type(traction_law_t), intent(in) :: law
       real(wp), intent(in) :: kappa_scale
       integer, intent(in) :: n_gauss
       type(contact_traction_t), intent(out) :: t
       type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: x(:), w(:)
-      real(wp) :: u, kap, dq
-      integer :: j
+      real(wp), intent(in), optional :: transverse(3)
+      real(wp) :: x(3*max(n_gauss, 1)), w(3*max(n_gauss, 1))
+      real(wp) :: u, kap, dq, um, us, cs, sn
+      integer :: j, n
 
       call check_law_contact(c, n_gauss, error)
       if (allocated(error)) return
-      call major_axis_nodes(c, n_gauss, t, x, w)
+      call contact_kinematics(c, t)
+      call pure_rolling_points(c, t%n_rolling, t%rolling_points)
+      call axis_nodes(c, n_gauss, x, w, n)
+      if (present(transverse)) then
+         t%max_slip = max(hypot(contact_slip(c, -c%a), cross_slip(transverse, -c%a/c%rho)), &
+                          hypot(contact_slip(c, c%a), cross_slip(transverse, c%a/c%rho)))
+         do j = 1, n
+            u = contact_slip(c, x(j))
+            cs = cos(x(j)/c%rho)
+            sn = sin(x(j)/c%rho)
+            um = transverse(1) + transverse(2)*cs + transverse(3)*sn
+            us = hypot(u, um)
+            kap = kappa_scale*law_kappa(law, us)
+            dq = 0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)
+            t%power = t%power + kap*us*dq
+            t%sliding = t%sliding + us*dq
+            t%max_slip = max(t%max_slip, us)
+            if (us <= 0.0_wp) cycle
+            t%force = t%force + kap*dq*u/us
+            t%force_cos = t%force_cos + kap*dq*u/us*cs
+            t%force_sin = t%force_sin + kap*dq*u/us*sn
+            t%cross_force = t%cross_force + kap*dq*um/us*[1.0_wp, cs, sn]
+         end do
+         call interior_extremum(c, t%max_slip)      ! |u| >= |u_r| there
+         if (c%load > 0.0_wp) t%coefficient = t%force/c%load
+         return
+      end if
       t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
-      do j = 1, size(x)
+      do j = 1, n
          u = contact_slip(c, x(j))
          kap = kappa_scale*law_kappa(law, u)
          dq = 0.75_wp*c%load/c%a*(1.0_wp - (x(j)/c%a)**2)*w(j)
@@ -170,6 +207,13 @@ contains
       call interior_extremum(c, t%max_slip)
       if (c%load > 0.0_wp) t%coefficient = t%force/c%load
    end subroutine contact_traction
+
+   !> Slip (m/s) across the rolling direction at psi (rad) on the major axis from the
+   !> coefficients m = [m1, m2, m3] of u_m(psi) = m1 + m2 cos psi + m3 sin psi.
+   pure real(wp) function cross_slip(m, psi)
+      real(wp), intent(in) :: m(3), psi
+      cross_slip = m(1) + m(2)*cos(psi) + m(3)*sin(psi)
+   end function cross_slip
 
    !> Power (W) of contact c with the traction law: contact_traction's t%power, the same
    !> nodes and sums bit for bit, without the other integrals (the minimum-dissipation

@@ -45,7 +45,7 @@ def check(status: int, message) -> None:
 
 def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: int,
              traction_table: str | os.PathLike | None = None, ball_start: str | None = None,
-             moment_equilibrium: bool = False) -> None:
+             moment_equilibrium: bool = False, traction_2d: bool = False) -> None:
     """Run the engine on a deck file and write the print file (status checked).
 
     traction_table: a traction-slip table file (ADRX7) replacing the deck's RE/race
@@ -54,11 +54,14 @@ def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: i
     ``None`` for the default, minimum dissipation.
     moment_equilibrium: solve the inner race's misalignment for moment equilibrium
     (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks only).
+    traction_2d: the opt-in dynamics with the two-dimensional race traction (developer
+    option, docs/dynamics.md).
     """
     table = "" if traction_table is None else os.fspath(traction_table)
     start = "" if ball_start is None else str(ball_start)
     status, message = _engine().adore_run_file(os.fspath(deck_path), os.fspath(out_path), int(steps), table,
-                                               start, int(bool(moment_equilibrium)))
+                                               start, int(bool(moment_equilibrium)),
+                                               int(bool(traction_2d)))
     check(int(status), message)
 
 

@@ -140,25 +140,31 @@ def ehd_contact_traction(side: int, alpha: float, rho: float, r_b: float, omega,
 
 EHD_METHOD_KEYS = ["force", "force_cos", "force_sin", "power", "sliding", "max_slip", "coefficient", "n_rolling"]
 EHD_METHODS = {"reference": 0, "fast": 1}
+EHD_CROSS_KEYS = ["cross_force", "cross_force_cos", "cross_force_sin"]
 
 
 def ehd_contact_method(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float,
                        load: float, rheology, film: float, b: float, method: str = "fast", n_major: int = 0,
-                       n_strip: int = 0) -> dict:
+                       n_strip: int = 0, transverse=None) -> dict:
     """EHD contact traction (model 3) by the reference quadrature (method "reference":
     n_major Gauss points per slip zone x n_strip across each strip, as ehd_contact_traction)
     or the fast one (method "fast": ehd_contact_traction_fast, 0 = its default orders);
     arguments as ehd_contact_traction.  Keys: EHD_METHOD_KEYS (force, its moments
-    force_cos / force_sin in N, power W, sliding N m/s, max_slip m/s, coefficient, n_rolling)."""
+    force_cos / force_sin in N, power W, sliding N m/s, max_slip m/s, coefficient, n_rolling).
+    transverse: the two-dimensional traction with the slip across the rolling direction
+    u_m(psi) = m1 + m2 cos psi + m3 sin psi (m/s; report eq 5), and the keys
+    EHD_CROSS_KEYS (the traction across the rolling direction and its cos, sin moments, N)."""
     import numpy as np
 
     if method not in EHD_METHODS:
         raise ValueError(f"EHD contact: method must be one of {sorted(EHD_METHODS)}, got {method!r}")
+    cross = np.zeros(3) if transverse is None else np.asarray(transverse, float)
     values, status, message = _engine().adore_tribo_ehd_contact_method(
         _contact_geom(side, alpha, rho, r_b, omega, race_speed, a, load), np.asarray(rheology, float),
-        float(film), float(b), EHD_METHODS[method], int(n_major), int(n_strip))
+        float(film), float(b), EHD_METHODS[method], int(n_major), int(n_strip), int(transverse is not None), cross)
     check(int(status), message)
-    return dict(zip(EHD_METHOD_KEYS, map(float, values)))
+    keys = EHD_METHOD_KEYS + (EHD_CROSS_KEYS if transverse is not None else [])
+    return dict(zip(keys, map(float, values)))
 
 
 def ehd_contact_microseconds(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float,
