@@ -277,7 +277,8 @@ def test_scale_factors_reject_zero_load():
 @pytest.mark.parametrize("label, field", [("Rec 10.5.1B", "re_cage_coeff_a"), ("Rec 10.5.2B", "race_cage_coeff_a")])
 def test_negative_cage_friction_is_an_input_error(root, tmp_path, label, field):
     """The cage contacts' friction is coefficient A of Rec 10.5.1B (RE/cage) and 10.5.2B
-    (race/cage): the model reads it, and a negative value is an input error naming the field."""
+    (race/cage) (bearing_t%cage_friction): a negative value is an input error of the deck
+    reader naming record and field."""
     import pyadore
 
     text = (root / "decks" / "appendix_c_ball.inp").read_text().splitlines()
@@ -286,7 +287,7 @@ def test_negative_cage_friction_is_an_input_error(root, tmp_path, label, field):
     text[hits[0]] = text[hits[0]].replace("5.0000E-02", "-5.000E-02")
     deck = tmp_path / "friction.inp"
     deck.write_text("\n".join(text) + "\n")
-    with pytest.raises(AdoreInputError, match=f"{label} field {field}"):
+    with pytest.raises(AdoreInputError, match=rf"{label}\s+field {field} = -0.05: expected >= 0"):
         pyadore.run(deck, steps=0, out=tmp_path / "friction.prt")
 
 

@@ -197,14 +197,6 @@ contains
       call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_a", b%cage_friction(1), error, if_present=.true.)
       call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_a", b%cage_friction(2), error, if_present=.true.)
       if (allocated(error)) return
-      if (b%cage_friction(1) < 0.0_wp) then
-         call input_error(error, "Rec 10.5.1B field re_cage_coeff_a: the RE/cage friction coefficient must be >= 0")
-         return
-      end if
-      if (b%cage_friction(2) < 0.0_wp) then
-         call input_error(error, "Rec 10.5.2B field race_cage_coeff_a: the race/cage friction coefficient must be >= 0")
-         return
-      end if
       if (b%lubricant_code /= 0) then
          call lubricant_from_code(b%lubricant_code, b%lubricant, error)
          if (allocated(error)) then
