@@ -274,6 +274,23 @@ def test_scale_factors_reject_zero_load():
         _core.scale_factors(0.01, 0.1, [0.0, 0.0, 0.0])
 
 
+@pytest.mark.parametrize("label, field", [("Rec 10.5.1B", "re_cage_coeff_a"), ("Rec 10.5.2B", "race_cage_coeff_a")])
+def test_negative_cage_friction_is_an_input_error(root, tmp_path, label, field):
+    """The cage contacts' friction is coefficient A of Rec 10.5.1B (RE/cage) and 10.5.2B
+    (race/cage) (bearing_t%cage_friction): a negative value is an input error of the deck
+    reader naming record and field."""
+    import pyadore
+
+    text = (root / "decks" / "appendix_c_ball.inp").read_text().splitlines()
+    hits = [i for i, line in enumerate(text) if line.startswith(label)]
+    assert len(hits) == 1 and text[hits[0]].count("5.0000E-02") == 1
+    text[hits[0]] = text[hits[0]].replace("5.0000E-02", "-5.000E-02")
+    deck = tmp_path / "friction.inp"
+    deck.write_text("\n".join(text) + "\n")
+    with pytest.raises(AdoreInputError, match=rf"{label}\s+field {field} = -0.05: expected >= 0"):
+        pyadore.run(deck, steps=0, out=tmp_path / "friction.prt")
+
+
 def test_hypothetical_models_column_echoes_its_deck_fields(root, tmp_path):
     """LUBRICATION PARAMETERS, first column: RE/RACE rows echo Rec 10.3 field 1 (0 when the
     record is absent, as the roller print shows), RE/CAGE and RACE/CAGE field 5 of

@@ -276,7 +276,7 @@ module adore_deck_schema
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .true., .true., .false., .false., .true., .false., .false., .false., .false., .true., &
       .false., .false., .false., .false., .false., .false., .false. &
       ]
    real(wp), parameter :: FLD_LO(N_FIELDS) = [&
@@ -457,8 +457,8 @@ module adore_deck_schema
       ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "any", "any", "any", "any", "any", &
       "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", ">= 0", "any", &
       "any", "any", "any", "any", "any", "any", "any", "2, 3", "0, 1", "any", "any", "any", &
-      ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", "any", "any", "any", "any", &
-      "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any" &
+      ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", "any", "any", ">= 0", "any", &
+      "any", "any", "any", ">= 0", "any", "any", "any", "any", "any", "any", "any" &
       ]
    character(len=MEANING_LEN), parameter :: FLD_MEANING(N_FIELDS) = [character(len=MEANING_LEN) :: &
       "program mode MODE (1 in both decks", "unknown", "unknown", "unknown", "unknown", &

@@ -37,10 +37,11 @@ module adore_dynamics_ball_system
       real(wp) :: time_scale = 1.0_wp        !< T (s) of one unit of tau
       logical :: traction = .true.           !< race contact traction on (off: normal loads only)
       !> pocket and guide-land contacts on.  Off by default: the contacts are built and
-      !> unit-tested (fortran/tests/test_cage_contacts.f90), but a trial run of Appendix C
-      !> with them drives the cage onto its guide land with ~900 N of film force, which the
-      !> report's figures 21-22 do not show; [Dynamics] validates them before they are on
-      !> (docs/dynamics.md)
+      !> unit-tested (fortran/tests/test_cage_contacts.f90, test_cage_whirl.f90), but with an
+      !> inertial cage the Appendix C start whirl (4.4.4) lacks its centripetal force and the
+      !> cage ends in the land film's half-frequency whirl (oil whip, ~700 N of film force on
+      !> average), which the report's figures 21-22 and step-2500 print do not show
+      !> (docs/dynamics.md, "Cage dynamics: why the cage contacts stay off")
       logical :: cage = .false.
       !> two-dimensional race traction (ball_bearing_loads' two_d; report eqs 2-3: the slip
       !> vector along and across the rolling direction): on by default, it damps the balls'

@@ -20,7 +20,8 @@
 !> (adore_contact_cage_pocket; pocket k at cage-frame azimuth 2 pi (k-1)/n, as the balls of
 !> the start) and the cage against each guide land of Rec 7.0/7.2 (adore_contact_cage_land),
 !> with the lubricant's viscosity at the cage temperature when the deck has a lubricant and
-!> the friction 0.05 of Rec 10.5.1B/10.5.2B (docs/dynamics.md); an abnormal cage contact
+!> the friction coefficients of Rec 10.5.1B/10.5.2B (bearing_t%cage_friction, 0.05 in both
+!> decks; docs/dynamics.md); an abnormal cage contact
 !> (report 4.4.12) sets `abnormal` for the integrator to reject the step.
 !> Moments are about each body's mass centre, inertial components.  Units SI.
 module adore_forces_ball_bearing
@@ -96,7 +97,7 @@ contains
 
    !> The ball/pocket pair of ball bearing b (mounted geometry g) at bulk temperatures
    !> temperature (K): ball diameter, Rec 7.1 pocket clearance, pocket radius (OD + ID)/4,
-   !> ball and cage materials, lubricant at the cage temperature.
+   !> ball and cage materials, lubricant at the cage temperature, friction of Rec 10.5.1B.
    pure function ball_pocket_pair(b, g, temperature) result(p)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
@@ -105,12 +106,13 @@ contains
       p = cage_pocket_pair(g%element_diameter, b%pocket_clearance(1), 0.25_wp*(b%cage_od + b%cage_id), &
                            b%material(BODY_ELEMENT)%modulus, b%material(BODY_ELEMENT)%poisson, &
                            b%material(BODY_CAGE)%modulus, b%material(BODY_CAGE)%poisson, &
-                           cage_viscosity(b, temperature), 0.05_wp)
+                           cage_viscosity(b, temperature), b%cage_friction(1))
    end function ball_pocket_pair
 
    !> The guide-land pairs of bearing b (Rec 7.0/7.2.n) in mounted geometry g: radial
    !> clearance = half the effective play of adore_cage_step0 with the guiding race's
-   !> raceway growth (mounting plus thermal), lubricant at the cage temperature.
+   !> raceway growth (mounting plus thermal), lubricant at the cage temperature, friction of
+   !> Rec 10.5.2B.
    pure function guide_land_pairs(b, g, temperature) result(p)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
@@ -135,7 +137,7 @@ contains
             p(k)%e_star = contact_modulus(b%material(BODY_CAGE)%modulus, b%material(BODY_CAGE)%poisson, &
                                           b%material(race_body)%modulus, b%material(race_body)%poisson)
             p(k)%viscosity = cage_viscosity(b, temperature)
-            p(k)%friction = 0.05_wp
+            p(k)%friction = b%cage_friction(2)
          end associate
       end do
    end function guide_land_pairs

@@ -92,6 +92,12 @@ module adore_model_bearing
       !> lubricant of the library (Rec 10.0 lubricant_code; 0: none, lubricant unset)
       integer :: lubricant_code = 0
       type(lubricant_t) :: lubricant
+      !> cage friction coefficients, RE/cage pocket (Rec 10.5.1B coefficient A) and race/cage
+      !> guide land (Rec 10.5.2B coefficient A): the constant Coulomb friction of the cage
+      !> contacts (0.05 in both decks, report Table 5 "Cage Friction Coefficient"; the default
+      !> for a model not read from a deck).  Coefficients B, C, D of those records (0 in both
+      !> decks) are not used.
+      real(wp) :: cage_friction(2) = 0.05_wp
       ! operating conditions, Rec 2.7, 9.0, 9.1.x, 11
       !> initial temperatures (K), indexed by TEMP_ROOM ... TEMP_INNER: room, housing, shaft,
       !> element, cage, outer race, inner race

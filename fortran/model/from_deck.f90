@@ -194,6 +194,9 @@ contains
       call deck_collect_int(deck, "10.0", "traction_model", b%traction_model, error, if_present=.true.)
       call deck_collect_int(deck, "10.0", "lubricant_code", b%lubricant_code, error, if_present=.true.)
       if (allocated(error)) return
+      call deck_collect_real(deck, "10.5.1B", "re_cage_coeff_a", b%cage_friction(1), error, if_present=.true.)
+      call deck_collect_real(deck, "10.5.2B", "race_cage_coeff_a", b%cage_friction(2), error, if_present=.true.)
+      if (allocated(error)) return
       if (b%lubricant_code /= 0) then
          call lubricant_from_code(b%lubricant_code, b%lubricant, error)
          if (allocated(error)) then

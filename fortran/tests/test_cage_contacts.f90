@@ -55,6 +55,7 @@ program test_cage_contacts
    call check(.not. allocated(error), "step 0 of Appendix C with race control")
    if (allocated(error)) call finish("cage contacts")
    call test_step0_geometry()
+   call test_friction_from_deck()
    call test_centred_cage()
    call test_reject_step()
    call finish("cage contacts")
@@ -339,6 +340,21 @@ contains
       call check(worst_l < 1.0e-12_wp, "step 0: land interactions = cage_step0 Geo Int")
       call check(.not. ld%abnormal, "step 0: no abnormal cage contact")
    end subroutine test_step0_geometry
+
+   !> The cage contacts' friction coefficients come from the deck: Rec 10.5.1B / 10.5.2B
+   !> coefficient A (0.05 in Appendix C), and a changed model value reaches both pairs.
+   subroutine test_friction_from_deck()
+      type(bearing_t) :: b2
+      type(cage_land_pair_t), allocatable :: lp(:)
+      type(cage_pocket_pair_t) :: pp
+      call check(all(b%cage_friction == [0.05_wp, 0.05_wp]), "friction: Rec 10.5.1B/2B coefficient A read (0.05)")
+      b2 = b
+      b2%cage_friction = [0.11_wp, 0.07_wp]
+      lp = guide_land_pairs(b2, g, b2%temperature)
+      pp = ball_pocket_pair(b2, g, b2%temperature)
+      call check(pp%friction == 0.11_wp .and. all(lp%friction == 0.07_wp), &
+                 "friction: the pocket and land pairs carry the model's coefficients")
+   end subroutine test_friction_from_deck
 
    !> Cage centred on the guiding (inner) race, spinning at its initial angular speed
    !> without whirl, every ball on its pocket axis moving with the cage: no cage force; the

@@ -298,7 +298,8 @@ RECORDS: tuple[RecordSpec, ...] = (
     ), when="lubricant_code != 0", section="echo: LUBRICATION PARAMETERS"),
     *(RecordSpec(rid, f"{who} friction", (
         _real(f"{tag}_coeff_a", "-", f"{who} traction coefficient A (constant friction 0.05 in both decks; "
-              "Tables 5/6 cage friction coefficient)", evidence="listing; echo; table"),
+              "Tables 5/6 cage friction coefficient; the friction of the dynamics' cage contacts)",
+              evidence="listing; echo; table", lo=0.0),
         _real(f"{tag}_coeff_b", "s/m", "coefficient B (echo)", evidence="listing; echo"),
         _real(f"{tag}_coeff_c", "s/m", "coefficient C (echo)", evidence="listing; echo"),
         _real(f"{tag}_coeff_d", "-", "coefficient D (echo)", evidence="listing; echo"),
