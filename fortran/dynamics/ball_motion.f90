@@ -39,8 +39,10 @@ contains
    !> temperatures' rates are 0.  loads: the force assembly at s (adore_forces_ball_bearing).
    !> traction, cage, stiffness and two_d as ball_bearing_loads; gyro_restraint (default
    !> .false.): the balls' gyroscopic moments resisted by the races without slip
-   !> (add_gyroscopic_restraint).  Input errors of the traction model come back in error.
-   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint)
+   !> (add_gyroscopic_restraint); damping, land_film as ball_bearing_loads.  Input errors of
+   !> the traction model come back in error.
+   subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
+                                 damping, land_film)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -50,9 +52,12 @@ contains
       logical, intent(in), optional :: traction, cage
       real(wp), intent(in), optional :: stiffness(:, :)
       logical, intent(in), optional :: two_d, gyro_restraint
+      real(wp), intent(in), optional :: damping
+      logical, intent(in), optional :: land_film
       integer :: k
 
-      call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d)
+      call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
+                              land_film=land_film)
       if (allocated(error)) return
       if (present(gyro_restraint)) then
          if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, 1), loads)

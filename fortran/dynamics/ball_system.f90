@@ -36,13 +36,20 @@ module adore_dynamics_ball_system
       type(mounted_geometry_t) :: geometry
       real(wp) :: time_scale = 1.0_wp        !< T (s) of one unit of tau
       logical :: traction = .true.           !< race contact traction on (off: normal loads only)
-      !> pocket and guide-land contacts on.  Off by default: the contacts are built and
-      !> unit-tested (fortran/tests/test_cage_contacts.f90, test_cage_whirl.f90), but with an
-      !> inertial cage the Appendix C start whirl (4.4.4) lacks its centripetal force and the
-      !> cage ends in the land film's half-frequency whirl (oil whip, ~700 N of film force on
-      !> average), which the report's figures 21-22 and step-2500 print do not show
-      !> (docs/dynamics.md, "Cage dynamics: why the cage contacts stay off")
-      logical :: cage = .false.
+      !> pocket and guide-land contacts on (default): the pockets keep the balls' spacing
+      !> (without them the balls bunch and the ball set's rotating unbalance distorts the
+      !> load distribution); the guide lands' metallic contact is on, their short-bearing film
+      !> only with land_film (docs/dynamics.md, "Cage dynamics")
+      logical :: cage = .true.
+      !> the guide lands' hydrodynamic (Ocvirk) film.  Off by default: with it the Appendix C
+      !> cage ends in the film's half-frequency whirl (oil whip, ~700 N of film force on the
+      !> inner race), which the report's figures 21-22 and step-2500 print do not show
+      !> (docs/dynamics.md, "Cage dynamics")
+      logical :: land_film = .false.
+      !> normal damping of the ball/race contacts, beta (s) of ball_bearing_loads' damping:
+      !> Kraemer's stiffness-proportional rolling-bearing damping at its lower end (docs/
+      !> dynamics.md, "Contact damping"); 0 for a conservative model (energy tests)
+      real(wp) :: contact_damping = 2.5e-6_wp
       !> two-dimensional race traction (ball_bearing_loads' two_d; report eqs 2-3: the slip
       !> vector along and across the rolling direction): on by default, it damps the balls'
       !> motion across the rolling direction that the 1-D traction leaves free
@@ -95,11 +102,13 @@ contains
       call unpack_state(y, t*self%time_scale, self%state)
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
-                                 self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint)
+                                 self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
+                                 self%contact_damping, self%land_film)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
-                                 gyro_restraint=self%gyro_restraint)
+                                 gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
+                                 land_film=self%land_film)
       end if
       if (allocated(self%failure)) then
          flag = DERIV_FAIL

@@ -191,8 +191,18 @@ contains
    !> reference (default .false.): the EHD traction by its reference quadrature
    !> (EHD_GAUSS x EHD_STRIP points, ehd_contact_traction) instead of the fast one - for
    !> tests; the law's traction has one quadrature.
+   !> damping (s, default 0): normal contact damping of the ball/race contacts, a viscous
+   !> force beta k delta_dot along the normal with k = dQ/d(delta) = 1.5 Q / delta the
+   !> contact's tangent stiffness and delta_dot the approach rate of ball and race; the normal
+   !> force Q + beta k delta_dot never pulls (>= 0).  Stiffness-proportional damping with
+   !> beta = 2.5e-6 s is the lower end of Kraemer's rolling-bearing damping d = (0.25 ...
+   !> 2.5)e-5 k (E. Kraemer, Dynamics of Rotors and Foundations, Springer 1993, ch. 6);
+   !> docs/dynamics.md, "Contact damping".
+   !> land_film (default .true.): the guide lands' short-bearing film (adore_contact_cage_land);
+   !> .false. keeps only their metallic contact (docs/dynamics.md, "Cage dynamics").
    !> Input errors of the traction model (e.g. no EHD film) come back in error.
-   subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference)
+   subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference, damping, &
+                                 land_film)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -201,10 +211,12 @@ contains
       logical, intent(in), optional :: traction, cage
       real(wp), intent(in), optional :: stiffness(:, :)
       logical, intent(in), optional :: two_d, reference
+      real(wp), intent(in), optional :: damping
+      logical, intent(in), optional :: land_film
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: t
-      real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6)
+      real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6), beta
       integer :: n, k, j
       logical :: with_traction, with_2d, with_reference
 
@@ -214,6 +226,8 @@ contains
       if (present(two_d)) with_2d = two_d
       with_reference = .false.
       if (present(reference)) with_reference = reference
+      beta = 0.0_wp
+      if (present(damping)) beta = damping
       n = size(s%elements)
       pairs = ball_race_pairs(b, g)
       rho = 0.5_wp*g%element_diameter
@@ -236,7 +250,7 @@ contains
             end if
             associate (c => loads%contacts(j, k), ball => s%elements(k)%position, race => s%races(j)%position)
                if (.not. (c%load > 0.0_wp)) cycle
-               f_n = c%load*c%normal
+               f_n = normal_force(c, j, k)*c%normal
                loads%elements(k)%force = loads%elements(k)%force - f_n
                loads%races(j)%force = loads%races(j)%force + f_n
                loads%races(j)%moment = loads%races(j)%moment + cross(c%point - race, f_n)
@@ -268,6 +282,21 @@ contains
 
    contains
 
+      !> Normal force (N) of race contact c (race j, ball k): the Hertz load plus the contact
+      !> damping beta (1.5 Q / delta) d(delta)/dt, never negative.
+      real(wp) function normal_force(c, j, k)
+         type(ball_race_geometry_t), intent(in) :: c
+         integer, intent(in) :: j, k
+         real(wp) :: v_rel(3)
+         normal_force = c%load
+         if (beta <= 0.0_wp .or. .not. (c%delta > 0.0_wp)) return
+         associate (race => s%races(j), ball => s%elements(k))
+            v_rel = ball%velocity - race%velocity - &
+                    cross(matmul(quat_matrix(race%attitude), race%omega), ball%position - race%position)
+         end associate
+         normal_force = max(c%load + beta*1.5_wp*c%load/c%delta*dot_product(v_rel, c%normal), 0.0_wp)
+      end function normal_force
+
       !> The pocket and guide-land contacts' loads (module header).
       subroutine add_cage_contacts()
          type(cage_pocket_pair_t) :: pp
@@ -287,6 +316,9 @@ contains
             end associate
          end do
          lp = guide_land_pairs(b, g, s%temperature)
+         if (present(land_film)) then
+            if (.not. land_film) lp%viscosity = 0.0_wp       ! metallic contact only
+         end if
          allocate (loads%lands(size(lp)))
          do k = 1, size(lp)
             j = b%lands(k)%guide        ! GUIDE_OUTER/INNER = RACE_OUTER/INNER

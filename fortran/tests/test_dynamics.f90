@@ -166,6 +166,7 @@ contains
       l = length_scale(b%d)
       tt = time_scale(b%mass(1), l, load_scale(b%force))
       sys = new_ball_system(b, g, tt, traction=.false., cage=.false.)   ! cage friction dissipates
+      sys%contact_damping = 0.0_wp                                       ! so does contact damping
       s = initial_ball_state(b, g, s0%start, s0%cage)
       n = b%n_elements
       allocate (y(state_size(n)))
