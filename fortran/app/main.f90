@@ -91,7 +91,7 @@ program adore
 
    type(error_type), allocatable :: error
    character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start, note, hist_path
-   integer :: i, nargs, steps, stat, dot, integrated, element
+   integer :: i, nargs, steps, dot, integrated, element
    logical :: moments
 
    integrated = 0
@@ -114,21 +114,11 @@ program adore
          write (output_unit, "(a)") "adore (pyadore) "//adore_version_string
          call exit_with(ADORE_OK)
       case ("--steps")
-         call option_value(i, "--steps", "a value", arg, error)
+         call integer_option(i, "--steps", "a value", steps, error)
          if (allocated(error)) exit
-         read (arg, *, iostat=stat) steps
-         if (stat /= 0) then
-            call input_error(error, "--steps: expected an integer, got '"//arg//"'")
-            exit
-         end if
       case ("--history-element")
-         call option_value(i, "--history-element", "a rolling element number", arg, error)
+         call integer_option(i, "--history-element", "a rolling element number", element, error)
          if (allocated(error)) exit
-         read (arg, *, iostat=stat) element
-         if (stat /= 0) then
-            call input_error(error, "--history-element: expected an integer, got '"//arg//"'")
-            exit
-         end if
       case ("--traction-table")
          call option_value(i, "--traction-table", "a file", table_path, error)
          if (allocated(error)) exit
@@ -205,6 +195,22 @@ contains
       call get_arg(i, value)
       if (len_trim(value) == 0) call input_error(error, name//": expected "//what//", got a blank argument")
    end subroutine option_value
+
+   !> The integer value after option `name` at argument i (option_value, then read as I0);
+   !> input error naming the option when it is missing or not an integer.
+   subroutine integer_option(i, name, what, value, error)
+      integer, intent(inout) :: i
+      character(len=*), intent(in) :: name, what
+      integer, intent(inout) :: value
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      integer :: stat
+
+      call option_value(i, name, what, text, error)
+      if (allocated(error)) return
+      read (text, *, iostat=stat) value
+      if (stat /= 0) call input_error(error, name//": expected an integer, got '"//text//"'")
+   end subroutine integer_option
 
    subroutine get_arg(n, value)
       integer, intent(in) :: n
