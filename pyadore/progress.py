@@ -4,7 +4,8 @@ The engine calls a Python function after every accepted time step (the f2py call
 ``_core.run_file``); its return value asks the run to stop.  :class:`RunProgress` makes
 that function: it draws a tqdm progress bar (step, simulated time, time left) and stops the
 run after Ctrl-C, which it catches while the run lasts (main thread only: Python delivers
-signals there).  The callback never raises into the engine (an exception inside it would
+signals there; a process that ignores SIGINT, such as a sweep worker, keeps ignoring it).
+The callback never raises into the engine (an exception inside it would
 unwind through Fortran frames): anything that goes wrong stops the run and is raised
 afterwards.
 
@@ -53,7 +54,8 @@ class RunProgress:
         return self._on_step
 
     def __enter__(self):
-        if self.main_thread:
+        # a process that ignores Ctrl-C (a sweep worker: its client ends it) keeps ignoring it
+        if self.main_thread and signal.getsignal(signal.SIGINT) is not signal.SIG_IGN:
             try:
                 self._previous = signal.signal(signal.SIGINT, self._on_sigint)
             except (ValueError, OSError):  # not allowed here (an embedded interpreter)
