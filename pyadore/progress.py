@@ -27,7 +27,7 @@ class RunProgress:
     progress: ``None`` - a bar on stderr when it is a terminal; ``True`` - always a bar;
     ``False`` - no bar; a function ``f(step, n_steps, time_s)`` - called after every step.
     ``callback`` is the function to give the engine, or None when nothing needs it (no bar,
-    no function, not the main thread): the engine then runs without holding the GIL.
+    no function, no Ctrl-C to catch): the engine then runs without holding the GIL.
     """
 
     def __init__(self, progress=None, label: str = ""):
@@ -39,7 +39,10 @@ class RunProgress:
         self.bar_wanted = bool(progress) if isinstance(progress, bool) else (
             progress is None and sys.stderr is not None and sys.stderr.isatty())
         self.label = label
-        self.main_thread = threading.current_thread() is threading.main_thread()
+        # Ctrl-C is caught in the main thread (where Python delivers signals), unless the
+        # process ignores it (a sweep worker: its client ends it)
+        self.catch_sigint = (threading.current_thread() is threading.main_thread()
+                             and signal.getsignal(signal.SIGINT) is not signal.SIG_IGN)
         self.interrupted = False
         self.stopped = False
         self.error: BaseException | None = None
@@ -49,13 +52,12 @@ class RunProgress:
     @property
     def callback(self):
         """The engine's progress function, or None when the run needs none."""
-        if self.function is None and not self.bar_wanted and not self.main_thread:
+        if self.function is None and not self.bar_wanted and not self.catch_sigint:
             return None
         return self._on_step
 
     def __enter__(self):
-        # a process that ignores Ctrl-C (a sweep worker: its client ends it) keeps ignoring it
-        if self.main_thread and signal.getsignal(signal.SIGINT) is not signal.SIG_IGN:
+        if self.catch_sigint:
             try:
                 self._previous = signal.signal(signal.SIGINT, self._on_sigint)
             except (ValueError, OSError):  # not allowed here (an embedded interpreter)

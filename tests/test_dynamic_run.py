@@ -474,6 +474,29 @@ def test_progress_bar_only_on_request_or_a_terminal(tmp_path, short_ball_deck, c
         pyadore.run(short_ball_deck, steps=5, out=tmp_path / "d.prt", progress="yes")
 
 
+def test_engine_callback_only_where_needed():
+    """The main thread gets a callback (Ctrl-C); another thread without a bar, or a process
+    that ignores SIGINT (a sweep worker), runs the engine without one (the GIL released)."""
+    import threading
+
+    from pyadore.progress import RunProgress
+
+    assert RunProgress(False).callback is not None
+    found = []
+    thread = threading.Thread(target=lambda: found.append((RunProgress(False).callback,
+                                                           RunProgress(lambda *a: None).callback)))
+    thread.start()
+    thread.join()
+    assert found[0][0] is None and found[0][1] is not None
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        watch = RunProgress(False)
+        with watch:
+            assert watch.callback is None and signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
 def test_cli_run_reports_the_plot_data_file(tmp_path, short_ball_deck):
     out = tmp_path / "cli.prt"
     result = CliRunner().invoke(cli, ["run", str(short_ball_deck), "-o", str(out), "--steps", "3"])
