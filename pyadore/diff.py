@@ -140,11 +140,11 @@ class DiffReport:
                 return v if isinstance(v, (int, float, str)) or v is None else repr(v)
             return json.dumps({
                 "run": self.run_path, "golden": self.golden_path, "tolerances": self.tolerances_path,
+                "run_incomplete": self.run_incomplete,
                 "compared": self.compared, "within": self.within, "outside": self.outside,
                 "missing": self.missing, "not_computed": self.not_computed,
                 "not_computed_columns": self.not_computed_columns(),
                 "unknown": self.unknown, "exit_code": self.exit_code,
-                "run_incomplete": self.run_incomplete,
                 "offenders": [{"name": c.name, "golden": num(c.golden), "run": num(c.run), "status": c.status,
                                "rel_error": num(c.rel_error), "tolerance": c.tolerance}
                               for c in self.offenders(None)],
@@ -157,8 +157,6 @@ class DiffReport:
                  f"compared {self.compared}  within {self.within}  outside {self.outside}"
                  f" (missing {self.missing})  not computed by the engine {self.not_computed}"
                  f"  unknown {self.unknown} (golden '?', not compared)"]
-        if self.run_incomplete:
-            lines.insert(0, f"INCOMPLETE RUN: {self.run_path}: {self.run_incomplete}; the steps after it are missing")
         off = self.offenders(20)
         if off:
             lines.append("")
@@ -191,6 +189,8 @@ class DiffReport:
                 parts.append(f"{self.not_computed} value(s) not computed by the engine")
             result = ", ".join(parts)
         lines.append("result: " + result)
+        if self.run_incomplete:
+            lines.insert(0, f"INCOMPLETE RUN: {self.run_path}: {self.run_incomplete}; the steps after it are missing")
         return "\n".join(lines)
 
 
