@@ -428,7 +428,10 @@ def test_progress_function_and_interrupt_keep_an_incomplete_print(tmp_path, shor
     frame, incomplete = read_history_csv(history_path(out))
     assert incomplete.startswith("RUN INCOMPLETE after step 7")
     pd.testing.assert_frame_equal(frame, exc.time_history, check_exact=True)
-    # pyadore diff: an incomplete run never matches
+    # plots say so; pyadore diff: an incomplete run never matches
+    from pyadore.plots.sources import load
+
+    assert any("incomplete print" in n for n in load(out).notes)
     report = diff_prints(out, pyadore.run(short_ball_deck, steps=0, out=tmp_path / "z.prt").print_path)
     assert report.run_incomplete and report.exit_code == 1
     assert report.render().startswith(f"INCOMPLETE RUN: {out}: RUN INCOMPLETE after step 7")
