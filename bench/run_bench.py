@@ -9,10 +9,7 @@ race contact of the Appendix C step 0, by the fast and the reference quadrature,
 fast one over those contacts with slide/roll, spin/roll x 0.5 .. x 2 and loads x 0.5, x 2
 (tests/test_ehd_fast.py's range of the 1e-4 accuracy test): its rows give the mean over the
 contacts (best_s) and the slowest contact (median_s column: the largest), in seconds, and
-us_per_contact.  The full run of Appendix C as the deck says (2500 time steps, issue #20) is
-timed once per front end (standalone, f2py without a progress bar), with its derivative calls
-from the print's statistics and the wall time per derivative call (full_run rows: best_s =
-the wall time, calls, us_per_call).  Results are printed, and written to
+us_per_contact.  Results are printed, and written to
 bench/results/latest.json.
 """
 
@@ -42,26 +39,6 @@ def _time(fn, repeat=REPEAT):
         fn()
         times.append(time.perf_counter() - start)
     return min(times), statistics.median(times)
-
-
-def _full_run_rows(deck, exe, tmp):
-    """Wall time of one whole run of `deck` as it says (its Rec 1 time steps) by `adore` and
-    by pyadore.run, with the derivative calls its print reports."""
-    from pyadore.printout import read_print
-
-    rows = []
-    for label, out, fn in (
-            ("full run, executable", Path(tmp) / "full_exe.prt",
-             lambda out: subprocess.run([exe, str(deck), str(out)], check=True, capture_output=True)),
-            ("full run, f2py", Path(tmp) / "full_py.prt", lambda out: pyadore.run(deck, out=out, progress=False))):
-        start = time.perf_counter()
-        fn(out)
-        wall = time.perf_counter() - start
-        run = read_print(out)
-        calls = int(run.statistics["total_derivative_calls"])
-        rows.append({"deck": deck.name, "case": label, "best_s": wall, "median_s": wall, "full_run": True,
-                     "steps": run.termination["last_step_number"], "calls": calls, "us_per_call": wall / calls * 1e6})
-    return rows
 
 
 def _ehd_contact_rows(deck):
@@ -120,7 +97,6 @@ def main() -> int:
             best, median = _time(lambda: _core.ball_step0_from_deck(deck), repeat=20)
             rows.append({"deck": deck.name, "case": "step-0 solve (ball)", "best_s": best, "median_s": median})
             rows += _ehd_contact_rows(deck)
-            rows += _full_run_rows(deck, exe, tmp)
     if "sweep" in names:
         sys.path.insert(0, str(Path(__file__).resolve().parent))
         from sweep_bench import bench_sweep
@@ -128,10 +104,6 @@ def main() -> int:
         rows += bench_sweep()
     print(f"{'deck':28s} {'case':30s} {'best (s)':>10s} {'median (s)':>11s}")
     for row in rows:
-        if row.get("full_run"):
-            print(f"{row['deck']:28s} {row['case']:30s} {row['best_s']:10.4f} s, {row['steps']} steps, "
-                  f"{row['calls']} derivative calls, {row['us_per_call']:.1f} us per call")
-            continue
         if "us_per_contact" in row:
             print(f"{row['deck']:28s} {row['case']:30s} {row['us_per_contact']:7.2f} us mean, "
                   f"{row['median_s'] * 1e6:.2f} us slowest contact")
