@@ -16,6 +16,8 @@ OUT    := out/appendix_c_ball.prt
 ENGINE_TESTS := test_deck_text test_deck_reader test_model test_life test_print test_tribology test_roller test_cage test_roller_traction test_traction_law test_forces test_integrator test_dynamics test_cage_contacts test_cage_whirl
 # Build tools (meson, ninja, f2py) are taken from the venv, never from the system.
 VPATH_ENV := PATH="$(CURDIR)/$(VENV)/bin:$$PATH"
+# the run loop's bookkeeping (time averages, time history rows; issue #20)
+ENGINE_TESTS += test_run_loop
 
 .PHONY: help setup gfortran run test bench debug clean distclean exe
 

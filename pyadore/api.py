@@ -6,18 +6,18 @@ import os
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from . import _core
-from .errors import AdoreInputError
+from .errors import AdoreEngineError, AdoreInputError
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 __all__ = ["Result", "run", "read_traction_table", "STEPS_FROM_DECK", "BALL_STARTS"]
 
 #: ``steps`` value the engine reads as "as many time steps as the deck asks for".
 STEPS_FROM_DECK = -1
-
-#: First words of the listing line of a print whose time steps come from the opt-in dynamics
-#: (issue #20 in progress; fortran/output/banner.f90 writes it).
-DYNAMICS_MARKER = "DYNAMICS IN PROGRESS (ISSUE #20)"
 
 #: ``ball_start`` names of :func:`run` (report 4.4.7), the engine's default first: the
 #: ball angular velocity of least contact dissipation, or race control at one race.
@@ -26,15 +26,30 @@ BALL_STARTS = ("dissipation", "outer-race-control", "inner-race-control")
 
 @dataclass
 class Result:
-    """The outcome of one run: where the print file is and its text."""
+    """The outcome of one run: where the print file is, its text and its time history."""
 
     deck_path: Path
     print_path: Path
     steps: int | None
     text: str = field(repr=False)
-    #: what the run did not do that was asked for (e.g. time steps the engine does not
-    #: integrate yet); empty for a complete run
+    #: what the run does not do that a user may expect (the thermal model is off, a roller
+    #: deck's time steps are not integrated, ...); empty when there is nothing to say
     notes: list[str] = field(default_factory=list)
+    #: time steps integrated after step 0 (0: the print ends after step 0)
+    steps_integrated: int = 0
+    #: the time history the run recorded (docs/plots.md: index ``time_s``, column ``step``,
+    #: SI columns), the same as its plot-data file :attr:`history_path`; None without time steps
+    time_history: "pd.DataFrame | None" = field(default=None, repr=False)
+
+    @property
+    def history_path(self) -> Path | None:
+        """The plot-data file beside the print (``<print stem>.hist.csv``); None without
+        time steps."""
+        if self.time_history is None:
+            return None
+        from .timehistory import history_path
+
+        return history_path(self.print_path)
 
     def print_run(self):
         """The print file parsed by :func:`pyadore.printout.read_print`."""
@@ -55,14 +70,17 @@ def read_traction_table(path):
 
 
 def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball_start=None,
-        moment_equilibrium: bool = False, traction_2d: bool = True) -> Result:
+        moment_equilibrium: bool = False, history_element: int = 1, progress=None,
+        traction_2d: bool = True) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
 
-    steps: ``None`` runs as many time steps as the deck asks for (while the dynamics,
-    issue #20, is in progress: the print ends after step 0, and ``notes`` says so), ``0``
-    only the quasi-static start, ``n`` integrates ``n`` time steps after step 0 - opt-in
-    dynamics of ball decks (no cage contacts, thermal model off; the print's listing says
-    so); a roller deck ends after step 0.
+    steps: ``None`` runs as many time steps as the deck asks for (Rec 1; Appendix C: 2500),
+    ``0`` only the quasi-static start, ``n`` integrates ``n`` time steps after step 0.
+    Time steps are integrated for ball decks (thermal model off: the bulk temperatures stay
+    at the initial ones; ``notes`` says what the run leaves out); a roller deck's print
+    ends after step 0 (``notes`` says so).  A run with time steps also writes its plot-data
+    file beside the print (:attr:`Result.history_path`) and returns the same table as
+    :attr:`Result.time_history`.
     out: the print file to write; by default a file in a fresh temporary directory.
     traction_table: a traction-slip table file (ADORE's ADRX7, report 4.4.9; format in
     docs/tribology.md) replacing the deck's RE/race traction model; the print lists it
@@ -75,12 +93,22 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
     prescribing them zero (the default; the deck's Rec 3.3 flags are not identified, see
     docs/examples.md).  Listed in the print's first section; the tilts are printed in
     section 2 (IRace Ang Position Theta, Phi).  Ball decks only.
+    history_element: the rolling element whose race contacts and pocket force the time
+    history records (default 1).
     traction_2d: ``True`` (default): the dynamics' race traction acts along the slip vector
     along and across the rolling direction (report eqs 2-3); ``False`` is a developer option,
     the one-dimensional traction along the rolling direction only (eq 1), listed in the print
     (docs/dynamics.md, "Ball gyroscopic moment and the 2-D traction").
+    progress: ``None`` shows a progress bar (tqdm: step, simulated time, time left) on
+    stderr when it is a terminal; ``True`` always, ``False`` never; or a function
+    ``progress(step, n_steps, time_s)`` called after every time step.
+    Ctrl-C during the time steps (main thread) stops the run after its current step.
     Raises :class:`~pyadore.errors.AdoreInputError` for bad input and
-    :class:`~pyadore.errors.AdoreEngineError` when the engine fails.
+    :class:`~pyadore.errors.AdoreEngineError` when the engine fails.  A time integration
+    that stops early (Ctrl-C, a failed integration, a non-finite state) raises
+    AdoreEngineError naming the step and time; its print is kept and ends with the line
+    ``*** RUN INCOMPLETE ...`` (the error's ``print_path``; ``time_history``: the steps
+    done).
     """
     if steps is None:
         engine_steps = STEPS_FROM_DECK
@@ -88,6 +116,8 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
         if isinstance(steps, bool) or not isinstance(steps, int) or steps < 0:
             raise AdoreInputError(f"steps must be None or an integer >= 0, got {steps!r}")
         engine_steps = steps
+    if isinstance(history_element, bool) or not isinstance(history_element, int) or history_element < 1:
+        raise AdoreInputError(f"history_element must be a rolling element number >= 1, got {history_element!r}")
     deck = Path(os.fspath(deck_path))
     if out is None:
         out_path = Path(tempfile.mkdtemp(prefix="pyadore-")) / (deck.stem + ".prt")
@@ -104,21 +134,22 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
         raise AdoreInputError(f"moment_equilibrium must be True or False, got {moment_equilibrium!r}")
     if not isinstance(traction_2d, bool):
         raise AdoreInputError(f"traction_2d must be True or False, got {traction_2d!r}")
-    _core.run_file(deck, out_path, engine_steps, table, ball_start, moment_equilibrium, traction_2d)
+    from .progress import RunProgress
+    from .timehistory import history_frame
+
+    watch = RunProgress(progress, label=deck.name)
+    try:
+        with watch:
+            output = _core.run_file(deck, out_path, engine_steps, table, ball_start, moment_equilibrium,
+                                    history_element, watch.callback, traction_2d)
+    except AdoreEngineError as exc:
+        done = getattr(exc, "output", None)
+        exc.print_path = out_path if out_path.exists() else None
+        exc.time_history = history_frame(done.history, done.columns) if done is not None and done.columns else None
+        raise
+    watch.raise_pending_interrupt()
     text = out_path.read_text(encoding="utf-8", errors="replace")
+    history = history_frame(output.history, output.columns) if output.columns else None
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
-                  notes=_run_notes(engine_steps, DYNAMICS_MARKER in text.split("Listing of input data records", 1)[0]))
-
-
-def _run_notes(engine_steps: int, integrated: bool) -> list[str]:
-    """What a run's print holds when it is not what was asked for (the standalone
-    ``adore`` writes the same notes on stderr)."""
-    if engine_steps == STEPS_FROM_DECK and _core.time_steps_implemented() == 0:
-        return ["time integration is opt-in (--steps N) while [Dynamics] is in progress; "
-                "the print file ends after step 0 (the quasi-static start)"]
-    if engine_steps > 0 and not integrated:
-        return ["time integration of roller bearings is not implemented yet; the print file ends after "
-                "step 0 (the quasi-static start)"]
-    if engine_steps > 0:
-        return ["dynamics in progress (issue #20): no cage contacts, thermal model off"]
-    return []
+                  notes=[output.note] if output.note else [], steps_integrated=output.integrated,
+                  time_history=history)

@@ -40,9 +40,10 @@ def cli() -> None:
 @click.option("-o", "--out", type=click.Path(dir_okay=False, path_type=Path),
               help="print file to write [default: out/<deck name>.prt]")
 @click.option("--steps", type=click.IntRange(min=0),
-              help="time steps to integrate after step 0 (ball decks; opt-in dynamics, issue #20 in "
-                   "progress: no cage contacts, thermal model off); 0 = the quasi-static start only "
-                   "[default: as the deck says, step 0 only while the dynamics is in progress]")
+              help="time steps to integrate after step 0 (ball decks; thermal model off); 0 = the "
+                   "quasi-static start only [default: as the deck says, Rec 1]")
+@click.option("--history-element", type=click.IntRange(min=1), default=1, show_default=True,
+              help="rolling element whose race contacts and pocket force the time history records")
 @click.option("--traction-table", type=click.Path(dir_okay=False, path_type=Path),
               help="traction-slip table (slip m/s, coefficient per line; ADORE's ADRX7) replacing "
                    "the deck's RE/race traction model")
@@ -52,9 +53,14 @@ def cli() -> None:
 @click.option("--moment-equilibrium", is_flag=True, default=False,
               help="solve the inner race's misalignment for moment equilibrium (ADORE kFS4 = kFS5 = 0) "
                    "instead of prescribing it zero (ball decks only)")
-def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | None,
+def run(deck: Path, out: Path | None, steps: int | None, history_element: int, traction_table: Path | None,
         ball_start: str | None, moment_equilibrium: bool) -> None:
-    """Run DECK through the engine and write its print file."""
+    """Run DECK through the engine and write its print file.
+
+    A run with time steps also writes its plot-data file (time histories) beside the print,
+    <print stem>.hist.csv, and shows a progress bar when stderr is a terminal.  Ctrl-C stops
+    the time integration after its current step: the print is kept, marked incomplete on
+    its last line, and the exit status is 2."""
     from .api import run as run_deck
 
     if out is None:
@@ -66,10 +72,15 @@ def run(deck: Path, out: Path | None, steps: int | None, traction_table: Path | 
         sys.exit(1)
     try:
         result = run_deck(deck, steps=steps, out=out, traction_table=traction_table, ball_start=ball_start,
-                            moment_equilibrium=moment_equilibrium)
+                          moment_equilibrium=moment_equilibrium, history_element=history_element)
     except AdoreError as exc:
         _fail(exc)
+    except KeyboardInterrupt:
+        click.echo("pyadore: interrupted", err=True)
+        sys.exit(130)
     click.echo(f"print file written: {result.print_path}")
+    if result.history_path is not None:
+        click.echo(f"plot-data file written: {result.history_path}")
     for note in result.notes:
         click.echo(f"pyadore: note: {note}", err=True)
 

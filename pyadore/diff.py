@@ -75,6 +75,9 @@ class DiffReport:
     golden_path: str
     tolerances_path: str
     comparisons: list = field(default_factory=list)
+    #: "" when the run's print is complete; else why not (PrintRun.incomplete): its time
+    #: integration stopped early, so its later steps are missing - never a match
+    run_incomplete: str = ""
 
     def _count(self, *status: str) -> int:
         return sum(1 for c in self.comparisons if c.status in status)
@@ -135,8 +138,9 @@ class DiffReport:
 
     @property
     def exit_code(self) -> int:
-        """0 when every compared value is within tolerance, 1 otherwise (outside, missing, not computed)."""
-        return 0 if self.outside == 0 and self.not_computed == 0 else 1
+        """0 when every compared value is within tolerance, 1 otherwise (outside, missing, not
+        computed, or an incomplete run print)."""
+        return 0 if self.outside == 0 and self.not_computed == 0 and not self.run_incomplete else 1
 
     def offenders(self, limit: int | None = 10) -> list:
         """Values outside tolerance, worst relative error first (missing ones last)."""
@@ -162,6 +166,7 @@ class DiffReport:
                 return v if isinstance(v, (int, float, str)) or v is None else repr(v)
             return json.dumps({
                 "run": self.run_path, "golden": self.golden_path, "tolerances": self.tolerances_path,
+                "run_incomplete": self.run_incomplete,
                 "compared": self.compared, "within": self.within, "outside": self.outside,
                 "missing": self.missing, "not_computed": self.not_computed,
                 "not_computed_columns": self.not_computed_columns(),
@@ -215,11 +220,14 @@ class DiffReport:
         if self.exit_code == 0:
             result = "all compared values within tolerance"
         else:
-            parts = [f"{self.outside} value(s) outside tolerance"] if self.outside else []
+            parts = ["the run's print is incomplete"] if self.run_incomplete else []
+            parts += [f"{self.outside} value(s) outside tolerance"] if self.outside else []
             if self.not_computed:
                 parts.append(f"{self.not_computed} value(s) not computed by the engine")
             result = ", ".join(parts)
         lines.append("result: " + result)
+        if self.run_incomplete:
+            lines.insert(0, f"INCOMPLETE RUN: {self.run_path}: {self.run_incomplete}; the steps after it are missing")
         return "\n".join(lines)
 
 
@@ -358,7 +366,7 @@ def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None) -> DiffRepo
     """Compare two parsed print files; see :func:`diff_prints`."""
     tpath = Path(tolerances_path) if tolerances_path else _default_tolerances(Path(golden.path))
     default, rules = load_tolerances(tpath)
-    report = DiffReport(run.path, golden.path, str(tpath))
+    report = DiffReport(run.path, golden.path, str(tpath), run_incomplete=run.incomplete)
     _compare_echo(report, golden, run)
     numbers = golden.step_numbers
     for n in numbers:

@@ -11,11 +11,14 @@ def assert_matches_golden(run_path, golden_path, tolerances_path=None, sections=
     ``tolerances_path`` defaults as in :func:`pyadore.diff.diff_prints`.  ``sections``
     optionally restricts the check to some tables (names such as ``"re_contact"``,
     ``"echo"``, ``"header"``, ``"termination"``, ``"statistics"``); values of other tables
-    are ignored.  Unknown golden values are never compared; values the run prints as
+    are ignored (without ``sections``, an incomplete run print fails).  Unknown golden
+    values are never compared; values the run prints as
     ``NaN`` (not computed by the engine) fail.  Raises AssertionError also when nothing at
     all was compared (a vacuous match is a failure).
     """
     report = diff_prints(run_path, golden_path, tolerances_path)
+    if report.run_incomplete and sections is None:
+        raise AssertionError(f"{run_path} is an incomplete print: {report.run_incomplete}")
     comps = report.comparisons
     if sections is not None:
         wanted = set(sections)

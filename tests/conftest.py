@@ -55,3 +55,36 @@ def run_exe(adore_exe):
                               cwd=cwd, timeout=600)
 
     return _run
+
+
+def deck_with_steps(text: str, n_steps: int, print_interval: int) -> str:
+    """Appendix C's deck text with Rec 1 n_steps (2500) and data_control_2 (the print
+    interval, 500) replaced: the fields keep their I6 columns."""
+    line1 = text.splitlines(keepends=True)[0]
+    assert line1.startswith("Rec 1") and line1[48:54] == "   500" and line1[78:84] == "  2500", line1
+    new = line1[:48] + f"{print_interval:6d}" + line1[54:78] + f"{n_steps:6d}" + line1[84:]
+    return new + text[len(line1):]
+
+
+#: Time steps and print interval of the short ball deck (`short_ball_deck`).
+SHORT_STEPS, SHORT_INTERVAL = 60, 20
+
+
+@pytest.fixture(scope="session")
+def short_ball_deck(tmp_path_factory) -> Path:
+    """Appendix C with its own step count cut to SHORT_STEPS (printed every SHORT_INTERVAL):
+    a deck-count run of it integrates and prints like the full deck in a fraction of a
+    second, for the tests that need a complete time integration but not 2500 steps."""
+    path = tmp_path_factory.mktemp("short_deck") / "appendix_c_short.inp"
+    path.write_text(deck_with_steps((ROOT / "decks" / "appendix_c_ball.inp").read_text(), SHORT_STEPS,
+                                    SHORT_INTERVAL))
+    return path
+
+
+@pytest.fixture(scope="session")
+def full_ball_run(tmp_path_factory, ball_deck):
+    """The one full run of the suite: Appendix C as the deck says (2500 steps, about 5 s in
+    the release build), through pyadore.run (what `make run` does)."""
+    import pyadore
+
+    return pyadore.run(ball_deck, out=tmp_path_factory.mktemp("full_run") / "appendix_c_ball.prt")

@@ -1,79 +1,147 @@
-"""The opt-in time loop of ball bearings (issue #20 [Dynamics], items 5 and 7).
+"""The time integration run of ball bearings (issue #20 [Dynamics], items 5, 6 and 7).
 
-`adore DECK --steps N`, `pyadore run DECK --steps N` and `pyadore.run(deck, steps=N)`
-integrate N time steps of a ball deck after step 0 and print them (ADORE 5.0 layout,
-termination line, "Statistics of this Run"); the default run keeps ending after step 0.
-Runs are short (30 steps of Appendix C take about 0.1 s).
+A run integrates the deck's own step count (Rec 1; `--steps N` overrides it), prints every
+Rec 1 data_control_2-th step with the time averages since the start, ends with the
+termination line and "Statistics of this Run", and writes its time histories beside the
+print (`<stem>.hist.csv`; `pyadore.Result.time_history`).  A run that stops early keeps its
+print, marked "*** RUN INCOMPLETE" on its last line.
+
+One full Appendix C run (2500 steps, `full_ball_run`, about 5 s) is shared by the suite;
+the other runs use Appendix C with its step count cut to 60 (`short_ball_deck`) or an
+explicit `steps=N`.
 """
 
 from __future__ import annotations
 
 import math
+import signal
 import subprocess
+import sys
+import time
 
 import numpy as np
+import pandas as pd
 import pytest
 from click.testing import CliRunner
 
 import pyadore
+from conftest import SHORT_INTERVAL, SHORT_STEPS
 from pyadore.cli import cli
+from pyadore.diff import diff_prints
 from pyadore.errors import AdoreEngineError, AdoreInputError
 from pyadore.printout import read_print
+from pyadore.timehistory import history_beside, history_path, read_history_csv
 
 N = 30
 #: Appendix C echo: TIME scale (s) and the inner race speed (rpm); Rec 2.1 MINIMUM, MAXIMUM
 TIME_SCALE = 2.43679e-4
 INNER_RPM = 20000.0
 STEP_MIN, STEP_MAX = 5.0e-3, 3.0e-1
-MARKER = "DYNAMICS IN PROGRESS (ISSUE #20)"
+LABEL = "TIME INTEGRATION:"
+#: a printed value (ES10.3: 4 significant digits) against the value it was printed from
+PRINTED = 5.001e-4
 
 
 def _exe(adore_exe, *args):
     return subprocess.run([str(adore_exe), *map(str, args)], capture_output=True, text=True, timeout=600)
 
 
+def _step0_part(text: str) -> str:
+    """From the banner to the end of step 0 (the first header of another step, or the
+    termination line)."""
+    lines = text.splitlines(keepends=True)
+    start = next(k for k, s in enumerate(lines) if s.strip() == "ADVANCED DYNAMICS OF ROLLING ELEMENTS")
+    end = len(lines)
+    for k in range(start, len(lines)):
+        s = lines[k]
+        if s.lstrip().startswith("step") and "(ADORE 5.0)" in s and lines[k + 2].split()[0] != "0":
+            end = k
+            break
+        if s.lstrip().startswith(("Normal termination", "*** RUN INCOMPLETE")):
+            end = k
+            break
+    return "".join(lines[start:end])
+
+
 @pytest.fixture(scope="module")
-def runs(tmp_path_factory, ball_deck, adore_exe):
-    """Appendix C: default run, step-0 run, N steps through f2py and through `adore`."""
+def runs(tmp_path_factory, ball_deck, short_ball_deck, adore_exe):
+    """Short deck as the deck says through f2py and `adore`; Appendix C at step 0 only and
+    with N explicit steps."""
     out = tmp_path_factory.mktemp("dynrun")
     res = {
-        "default": pyadore.run(ball_deck, out=out / "default.prt"),
+        "short": pyadore.run(short_ball_deck, out=out / "short.prt"),
         "zero": pyadore.run(ball_deck, steps=0, out=out / "zero.prt"),
         "dyn": pyadore.run(ball_deck, steps=N, out=out / "dyn.prt"),
     }
-    res["exe"] = _exe(adore_exe, ball_deck, out / "exe.prt", "--steps", N)
+    res["exe"] = _exe(adore_exe, short_ball_deck, out / "exe.prt")
     res["exe_path"] = out / "exe.prt"
     return res
 
 
-def test_default_run_is_step_0_only_and_says_dynamics_is_opt_in(runs):
-    default, zero = runs["default"], runs["zero"]
-    assert default.print_path.read_bytes() == zero.print_path.read_bytes()
-    assert MARKER not in default.text
-    assert list(read_print(default.print_path).steps) == [0]
-    assert default.notes and "opt-in (--steps N)" in default.notes[0] and "ends after step 0" in default.notes[0]
-    assert zero.notes == []
+# --- deck-count runs, termination, the step-0 part ------------------------------------------
+
+def test_deck_count_run_integrates_the_decks_steps(runs):
+    short = runs["short"]
+    run = read_print(short.print_path)
+    assert list(run.steps) == list(range(0, SHORT_STEPS + 1, SHORT_INTERVAL))
+    assert run.termination["last_step_number"] == SHORT_STEPS
+    assert set(run.statistics) >= {"minimum_step_size", "maximum_step_size", "total_derivative_calls"}
+    assert run.incomplete == ""
+    assert short.steps_integrated == SHORT_STEPS
+    lines = short.text.splitlines()
+    assert lines[2] == f"{LABEL} {SHORT_STEPS} TIME STEPS"
+    assert lines[3] == "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"
+    assert "NOT VALIDATED" not in short.text
+    assert short.notes and short.notes[0].startswith("thermal model off: bulk temperatures fixed at the initial")
 
 
-def test_dynamic_print_starts_with_the_default_print(runs):
-    """The dynamic print is the default print plus the listing's dynamics lines and the
-    time steps: step 0 and everything before it are byte-identical."""
+def test_full_appendix_c_run_ends_in_normal_termination(full_ball_run, runs):
+    """`make run`'s run: Appendix C to its step 2500, printed every 500 steps, the
+    termination line and statistics; its step-0 part is byte for byte the step-0 print."""
+    run = read_print(full_ball_run.print_path)
+    assert list(run.steps) == [0, 500, 1000, 1500, 2000, 2500]
+    assert "     Normal termination: Last Step Number =    2500     Final Time = " in full_ball_run.text
+    assert run.termination["last_step_number"] == 2500
+    assert run.termination["final_time"] == pytest.approx(run.steps[2500].header["tau"], rel=PRINTED)
+    st = run.statistics
+    assert STEP_MIN <= st["minimum_step_size"] <= st["maximum_step_size"] <= STEP_MAX
+    assert st["total_derivative_calls"] > 6 * 2500
+    assert run.incomplete == ""
+    assert _step0_part(full_ball_run.text) == _step0_part(runs["zero"].text)
+    assert full_ball_run.steps_integrated == 2500
+
+
+def test_dynamic_print_starts_with_the_step_0_print(runs):
+    """A run with time steps is the step-0 print plus the listing's time-integration lines
+    and the time steps: step 0 and everything before it are byte-identical."""
     dyn = runs["dyn"].text.splitlines(keepends=True)
-    default = runs["default"].text.splitlines(keepends=True)
-    assert dyn[2].startswith(MARKER) and f"; {N} TIME STEPS" in dyn[2]
-    assert "NOT A VALIDATED ADORE RUN" in dyn[3] and dyn[4] == "\n"
-    assert dyn[:2] + dyn[5:5 + len(default) - 2] == default
-    assert runs["dyn"].notes == ["dynamics in progress (issue #20): no cage contacts, thermal model off"]
+    zero = runs["zero"].text.splitlines(keepends=True)
+    assert dyn[2] == f"{LABEL} {N} TIME STEPS\n"
+    extra = 3 if dyn[4].startswith("  CAGE CONTACTS OFF") else 2   # the cage default may change
+    assert dyn[2 + extra] == "\n"
+    assert dyn[:2] + dyn[3 + extra:3 + extra + len(zero) - 2] == zero
+    assert _step0_part(runs["dyn"].text) == _step0_part(runs["zero"].text)
 
 
-def test_f2py_and_standalone_prints_are_identical(runs):
+def test_step_0_run_says_nothing_and_writes_no_history(runs):
+    zero = runs["zero"]
+    assert zero.notes == [] and zero.steps_integrated == 0
+    assert zero.time_history is None and zero.history_path is None
+    assert not history_path(zero.print_path).exists()
+    assert LABEL not in zero.text
+
+
+def test_f2py_and_standalone_write_identical_files(runs):
     proc = runs["exe"]
     assert proc.returncode == 0, proc.stderr
-    assert "dynamics in progress (issue #20)" in proc.stderr
-    assert runs["exe_path"].read_bytes() == runs["dyn"].print_path.read_bytes()
+    assert "thermal model off" in proc.stderr
+    exe_path = runs["exe_path"]
+    assert f"plot-data file written: {history_path(exe_path)}" in proc.stdout
+    assert exe_path.read_bytes() == runs["short"].print_path.read_bytes()
+    assert history_path(exe_path).read_bytes() == runs["short"].history_path.read_bytes()
 
 
-def test_step_n_has_sections_1_to_4_termination_and_statistics(runs):
+def test_explicit_steps_override_the_deck(runs):
     run = read_print(runs["dyn"].print_path)
     assert list(run.steps) == [0, N]       # Rec 1 data_control_2 = 500: only the last step
     step = run.steps[N]
@@ -103,7 +171,7 @@ def test_step_n_has_sections_1_to_4_termination_and_statistics(runs):
 
 
 def test_step_n_stays_near_step_0(runs):
-    """Early in the run the bearing hardly moves: every ball's contact loads within 5 % of
+    """Early in the run the bearing hardly moves: every ball's contact loads within 6 % of
     step 0's load distribution at the azimuth the ball has reached, the mean orbital
     velocity within 2 %, the balls advanced by their orbital speed, the power loss and the
     orbital velocity ratio near step 0's.
@@ -111,7 +179,11 @@ def test_step_n_stays_near_step_0(runs):
     The balls move about 27 deg in N = 30 steps, more than the 20 deg between two balls, and
     Appendix C's combined load makes a ball's load depend on its azimuth (the inner contact
     by up to 19 % over those 27 deg): the step-0 loads are interpolated (periodically,
-    linearly over the 18 balls) at each ball's step-N azimuth (measured: within 2.6 %)."""
+    linearly over the 18 balls) at each ball's step-N azimuth.  Measured: within 2.6 %
+    without cage contacts; 5.1 % with them (the default since the cage pockets keep the
+    balls' spacing): the start's orbital speeds differ by 3.4 % between balls (8999-9306
+    rpm), and the pockets bring them to one speed within these steps by impacts that move
+    a ball's loads (docs/dynamics.md, "Cage dynamics")."""
     run = read_print(runs["dyn"].print_path)
     s0, sn = run.steps[0], run.steps[N]
     c0, cn = s0.table("re_contact"), sn.table("re_contact")
@@ -121,7 +193,7 @@ def test_step_n_stays_near_step_0(runs):
         q0 = c0[col].to_numpy()
         expected = np.interp(az, np.r_[az0, 360.0], np.r_[q0, q0[0]])
         ratio = cn[col].to_numpy() / expected
-        assert np.all(np.abs(ratio - 1) < 0.05), (col, ratio)
+        assert np.all(np.abs(ratio - 1) < 0.06), (col, ratio)
     w0 = s0.table("re_motion")["orbital_velocity_rpm"].to_numpy()
     wn = sn.table("re_motion")["orbital_velocity_rpm"].to_numpy()
     assert abs(wn.mean() / w0.mean() - 1) < 0.02
@@ -132,14 +204,10 @@ def test_step_n_stays_near_step_0(runs):
     # every loaded contact has its loss and spin/roll; no made-up columns
     mot = sn.table("re_motion")
     assert np.all(np.isfinite(mot["contact_loss_outer_W"])) and np.all(mot["contact_loss_outer_W"] > 0)
-    assert np.all(np.isnan(mot["wear_rate_m3_s"]))
     assert np.all(np.isnan(sn.table("re_traction").to_numpy()))
     summary_0, summary_n = s0.table("summary").iloc[0], sn.table("summary").iloc[0]
-    assert summary_n["power_loss_W"] == pytest.approx(sn.table("performance").iloc[0]["total_power_loss_W"])
     assert summary_n["power_loss_W"] == pytest.approx(summary_0["power_loss_W"], rel=0.10)
-    ratio_col = "re_orbital_vel_ratio"
-    assert summary_n[ratio_col] == pytest.approx(wn.mean() / INNER_RPM, rel=2e-3)
-    assert summary_n[ratio_col] == pytest.approx(summary_0[ratio_col], rel=0.02)
+    assert summary_n["re_orbital_vel_ratio"] == pytest.approx(summary_0["re_orbital_vel_ratio"], rel=0.02)
     assert math.isnan(summary_n["fatigue_life_hours"])
     # section 3: the outer race's support carries the balls' load and its weight
     loads = sn.table("loads")
@@ -157,21 +225,292 @@ def test_print_interval_of_rec_1(tmp_path, ball_deck):
     assert run.termination["last_step_number"] == 25
 
 
-def test_cli_steps_runs_the_dynamics(tmp_path, ball_deck):
+def test_roller_deck_ends_after_step_0_with_a_note(tmp_path, roller_deck, adore_exe):
+    """Appendix D asks for 4000 steps; roller dynamics is a later issue: its print is the
+    step-0 print, and every front end says so."""
+    res = pyadore.run(roller_deck, out=tmp_path / "r.prt")
+    five = pyadore.run(roller_deck, steps=5, out=tmp_path / "r5.prt")
+    zero = pyadore.run(roller_deck, steps=0, out=tmp_path / "r0.prt")
+    assert res.print_path.read_bytes() == zero.print_path.read_bytes() == five.print_path.read_bytes()
+    for r in (res, five):
+        assert r.notes and "roller bearings is not implemented" in r.notes[0] and r.time_history is None
+    assert zero.notes == []
+    proc = _exe(adore_exe, roller_deck, tmp_path / "rexe.prt")
+    assert proc.returncode == 0 and "roller bearings is not implemented" in proc.stderr
+
+
+# --- time averages (item 5) -------------------------------------------------------------------
+
+def test_time_averages_are_time_weighted_since_the_start(runs):
+    """Section 4's power loss and speed ratios and the "Time Ave Wear Rate" columns are
+    averages over the time since the start: the printed power loss at each printed step is
+    the trapezoidal time integral of the recorded instantaneous power over the time (every
+    step is recorded in a short run), not the instantaneous power of section 3."""
+    short = runs["short"]
+    hist, run = short.time_history, read_print(short.print_path)
+    assert (hist["step"].to_numpy() == np.arange(SHORT_STEPS + 1)).all()   # every step a row
+    t = hist.index.to_numpy()
+    power = hist["total_power_loss_W"].to_numpy()
+    differs = 0
+    for n in (20, 40, 60):
+        k = n + 1
+        mean = np.sum(0.5 * (power[1:k] + power[:k - 1]) * np.diff(t[:k])) / t[k - 1]
+        summary = run.steps[n].table("summary").iloc[0]
+        assert summary["power_loss_W"] == pytest.approx(mean, rel=PRINTED)
+        instant = run.steps[n].table("performance").iloc[0]["total_power_loss_W"]
+        assert instant == pytest.approx(power[k - 1], rel=PRINTED)
+        differs += abs(instant / summary["power_loss_W"] - 1) > 2e-3
+    assert differs, "the time average never differed from the instantaneous power: nothing was tested"
+
+
+def test_wear_rates_start_at_the_step_0_wear_and_are_printed_as_averages(runs):
+    """At tau = 0 the time-averaged wear is the instantaneous Archard wear of the initial
+    state, which the step-0 print computes on its own (quasi-static loads, reference
+    traction quadrature): within 0.2 %.  At the printed steps the print shows the recorded
+    averages."""
+    short = runs["short"]
+    hist, run = short.time_history, read_print(short.print_path)
+    bodies0 = run.steps[0].table("bodies")
+    first = hist.iloc[0]
+    assert first["wear_rate_outer_race_m3_s"] == pytest.approx(bodies0.loc["ORace", "wear_rate_m3_s"], rel=2e-3)
+    assert first["wear_rate_inner_race_m3_s"] == pytest.approx(bodies0.loc["IRace", "wear_rate_m3_s"], rel=2e-3)
+    assert first["wear_rate_re_m3_s"] == pytest.approx(
+        run.steps[0].table("re_motion")["wear_rate_m3_s"].mean(), rel=2e-3)
+    for n in (20, 40, 60):
+        row = hist[hist["step"] == n].iloc[0]
+        bodies = run.steps[n].table("bodies")
+        assert bodies.loc["ORace", "wear_rate_m3_s"] == pytest.approx(row["wear_rate_outer_race_m3_s"], rel=PRINTED)
+        assert bodies.loc["IRace", "wear_rate_m3_s"] == pytest.approx(row["wear_rate_inner_race_m3_s"], rel=PRINTED)
+        wear = run.steps[n].table("re_motion")["wear_rate_m3_s"]
+        assert wear.notna().all() and wear.mean() == pytest.approx(row["wear_rate_re_m3_s"], rel=PRINTED)
+        assert math.isnan(bodies.loc["Cage", "wear_rate_m3_s"])   # no cage wear is computed
+
+
+# --- time histories (item 6) ------------------------------------------------------------------
+
+def _check_history_against_print(result, steps):
+    """The history's row at each printed step holds the printed values (4 digits)."""
+    hist, run = result.time_history, read_print(result.print_path)
+    assert hist.index.name == "time_s" and hist["step"].dtype.kind == "i"
+    assert np.all(np.diff(hist.index.to_numpy()) > 0)
+    for n in steps:
+        row = hist[hist["step"] == n].iloc[0]
+        step = run.steps[n]
+        assert row.name == pytest.approx(step.header["time_s"], rel=PRINTED)
+        perf = step.table("performance").iloc[0]
+        acc = step.table("accelerations")
+        assert row["total_power_loss_W"] == pytest.approx(perf["total_power_loss_W"], rel=PRINTED)
+        assert row["bulk_temp_housing_K"] == pytest.approx(perf["hsng_bulk_temp_K"], rel=PRINTED)
+        assert row["bulk_temp_shaft_K"] == pytest.approx(perf["shft_bulk_temp_K"], rel=PRINTED)
+        for body, label in (("cage", "Cage"), ("outer_race", "ORace"), ("inner_race", "IRace")):
+            assert row[f"bulk_temp_{body}_K"] == pytest.approx(acc.loc[label, "bulk_temp_K"], rel=PRINTED)
+        assert row["bulk_temp_re_K"] == pytest.approx(step.table("re_thermal")["bulk_temp_K"].mean(), rel=PRINTED)
+        contact, motion, thermal = step.table("re_contact"), step.table("re_motion"), step.table("re_thermal")
+        for race in ("outer", "inner"):
+            assert row[f"re1_contact_load_{race}_N"] == pytest.approx(contact.loc[1, f"contact_load_{race}_N"],
+                                                                      rel=PRINTED)
+            assert row[f"re1_contact_loss_{race}_W"] == pytest.approx(motion.loc[1, f"contact_loss_{race}_W"],
+                                                                      rel=PRINTED)
+            assert row[f"re1_contact_temp_{race}_K"] == pytest.approx(thermal.loc[1, f"contact_temp_{race}_K"],
+                                                                      rel=PRINTED)
+        cage = step.table("bodies").loc["Cage"]
+        r, theta = cage["mc_pos_radial_m"], math.radians(cage["mc_pos_orbital_deg"])
+        assert math.hypot(row["cage_y_m"], row["cage_z_m"]) == pytest.approx(r, rel=PRINTED)
+        assert row["cage_y_m"] == pytest.approx(-r * math.sin(theta), rel=2e-3, abs=2e-3 * r)
+        assert row["cage_z_m"] == pytest.approx(r * math.cos(theta), rel=2e-3, abs=2e-3 * r)
+        whirl = r * cage["orbital_velocity_rpm"] * 2 * math.pi / 60
+        assert row["cage_whirl_velocity_m_s"] == pytest.approx(whirl, rel=2e-3)
+    return hist, run
+
+
+def test_time_history_holds_the_printed_values_at_printed_steps(runs):
+    hist, run = _check_history_against_print(runs["short"], (20, 40, 60))
+    # the guide clearance: the lands' effective diametral play that step 0 prints
+    play = run.steps[0].table("race_cage")["effective_dia_play_m"].min()
+    assert (hist["guide_clearance_m"] == hist["guide_clearance_m"].iloc[0]).all()   # thermal model off
+    assert hist["guide_clearance_m"].iloc[0] == pytest.approx(play, rel=PRINTED)
+    # cage contacts: the forces the run computed (zero while they are off)
+    listing = runs["short"].text.split("Listing of input data records")[0]
+    for col in ("land1_force_N", "land2_force_N", "pocket1_force_N"):
+        assert np.isfinite(hist[col]).all()
+        if "CAGE CONTACTS OFF" in listing:
+            assert (hist[col] == 0).all()
+    # the columns docs/plots.md names, nothing it does not
+    assert not any(c.startswith(("exit_fluid", "wear_rate_cage")) or "temp_rise" in c for c in hist.columns)
+
+
+def test_full_run_history_holds_every_step_and_the_printed_values(full_ball_run):
+    hist = full_ball_run.time_history
+    assert (hist["step"].to_numpy() == np.arange(2501)).all()
+    _check_history_against_print(full_ball_run, (500, 1000, 1500, 2000, 2500))
+    frame, incomplete = read_history_csv(full_ball_run.history_path)
+    assert incomplete == ""
+    pd.testing.assert_frame_equal(frame, hist, check_exact=True)
+
+
+def test_plot_data_file_round_trip(runs, tmp_path):
+    """The file beside the print gives back the engine's doubles exactly; a print finds its
+    own file, and not one of another run."""
+    short = runs["short"]
+    frame, incomplete = read_history_csv(short.history_path)
+    assert incomplete == ""
+    pd.testing.assert_frame_equal(frame, short.time_history, check_exact=True)
+    header = short.history_path.read_text().splitlines()[0]
+    assert header.startswith("time_s,step,total_power_loss_W,") and header.endswith("pocket1_force_N")
+    found, note = history_beside(read_print(short.print_path))
+    assert note == "" and found is not None and len(found) == SHORT_STEPS + 1
+    # a plot-data file of another run beside a print is not used (the 30-step run's file
+    # lacks the short run's printed steps 40 and 60)
+    other = tmp_path / "other.prt"
+    other.write_bytes(short.print_path.read_bytes())
+    history_path(other).write_bytes(runs["dyn"].history_path.read_bytes())
+    found, note = history_beside(read_print(other))
+    assert found is None and "not used" in note
+    # a file that is not a plot-data file: a clear message naming it
+    bad = tmp_path / "bad.hist.csv"
+    bad.write_text("hello\n")
+    with pytest.raises(AdoreInputError, match="bad.hist.csv: line 1: not a plot-data file"):
+        read_history_csv(bad)
+
+
+def test_history_element_option(tmp_path, short_ball_deck):
+    res = pyadore.run(short_ball_deck, steps=3, out=tmp_path / "e.prt", history_element=5)
+    assert "re5_contact_load_outer_N" in res.time_history and "pocket5_force_N" in res.time_history
+    contact = res.print_run().steps[3].table("re_contact")
+    assert res.time_history["re5_contact_load_inner_N"].iloc[-1] == pytest.approx(
+        contact.loc[5, "contact_load_inner_N"], rel=PRINTED)
+    with pytest.raises(AdoreInputError, match="time history element 19: the bearing has rolling elements 1 to 18"):
+        pyadore.run(short_ball_deck, steps=3, out=tmp_path / "f.prt", history_element=19)
+    assert not (tmp_path / "f.prt").exists()
+
+
+def test_plots_of_the_run_use_its_time_history(runs):
+    """Figure types 2-9 are made from the recorded history (every step), from the Result
+    and from the print file alone (the plot-data file beside it)."""
+    from pyadore.plots import make_set
+    from pyadore.plots.sources import load
+
+    for source in (runs["short"], runs["short"].print_path):
+        src = load(source)
+        assert src.history is not None and len(src.history) == SHORT_STEPS + 1
+        made = make_set(source)
+        numbers = {t.number for t, _fig in made.figures}
+        assert numbers >= set(range(2, 10)), made.skipped
+        import matplotlib.pyplot as plt
+
+        for _t, fig in made.figures:
+            plt.close(fig)
+
+
+# --- progress, interrupts and failures (item 7) -----------------------------------------------
+
+def test_progress_function_and_interrupt_keep_an_incomplete_print(tmp_path, short_ball_deck):
+    """Ctrl-C (a KeyboardInterrupt in the progress callback, as Python delivers it) stops
+    the run after the step: AdoreEngineError naming the step, the print kept with its last
+    line saying it is incomplete, the history up to that step in the file and the error."""
+    seen = []
+
+    def progress(step, n_steps, time_s):
+        seen.append((step, n_steps, time_s))
+        if step == 7:
+            raise KeyboardInterrupt
+
+    out = tmp_path / "int.prt"
+    with pytest.raises(AdoreEngineError, match=r"run incomplete after step 7 \(tau = .*\): interrupted") as info:
+        pyadore.run(short_ball_deck, out=out, progress=progress)
+    assert [s[0] for s in seen] == list(range(1, 8)) and seen[0][1] == SHORT_STEPS
+    assert all(b[2] > a[2] for a, b in zip(seen, seen[1:]))
+    exc = info.value
+    assert exc.print_path == out and "(its last line says '*** RUN INCOMPLETE')" in str(exc)
+    lines = out.read_text().splitlines()
+    assert lines[-1].startswith("*** RUN INCOMPLETE after step 7 (tau = ") and lines[-1].endswith(": interrupted ***")
+    assert not (tmp_path / "int.prt.part").exists()
+    run = read_print(out)
+    assert run.incomplete.startswith("RUN INCOMPLETE after step 7") and not run.termination
+    assert list(run.steps) == [0, 7]        # the last accepted step is printed
+    assert list(exc.time_history["step"]) == list(range(8))
+    frame, incomplete = read_history_csv(history_path(out))
+    assert incomplete.startswith("RUN INCOMPLETE after step 7")
+    pd.testing.assert_frame_equal(frame, exc.time_history, check_exact=True)
+    # plots say so; pyadore diff: an incomplete run never matches
+    from pyadore.plots.sources import load
+
+    assert any("incomplete print" in n for n in load(out).notes)
+    report = diff_prints(out, pyadore.run(short_ball_deck, steps=0, out=tmp_path / "z.prt").print_path)
+    assert report.run_incomplete and report.exit_code == 1
+    assert report.render().startswith(f"INCOMPLETE RUN: {out}: RUN INCOMPLETE after step 7")
+
+
+def _interrupt(cmd, part, tmp_path):
+    """Start cmd, send SIGINT once its print (.part) exists, return the CompletedProcess-like
+    (returncode, stdout, stderr)."""
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120
+    while not part.exists() and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.02)
+    time.sleep(0.2)
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=120)
+    return proc.returncode, out, err
+
+
+@pytest.mark.parametrize("front_end", ["adore", "pyadore"])
+def test_ctrl_c_stops_the_run_with_exit_2_and_an_incomplete_print(tmp_path, ball_deck, adore_exe, front_end):
+    """A real SIGINT during a run of Appendix C (2500 steps): exit status 2, one message
+    without traceback, the print kept and marked incomplete."""
+    out = tmp_path / "c.prt"
+    cmd = ([str(adore_exe), str(ball_deck), str(out)] if front_end == "adore" else
+           [sys.executable, "-m", "pyadore", "run", str(ball_deck), "-o", str(out)])
+    code, _stdout, stderr = _interrupt(cmd, tmp_path / "c.prt.part", tmp_path)
+    assert code == 2, stderr
+    assert "Traceback" not in stderr and ": interrupted; kept: the print file" in stderr
+    assert out.read_text().splitlines()[-1].endswith(": interrupted ***")
+    assert read_print(out).incomplete
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["c.hist.csv", "c.prt"]
+
+
+def test_progress_bar_only_on_request_or_a_terminal(tmp_path, short_ball_deck, capsys):
+    pyadore.run(short_ball_deck, steps=5, out=tmp_path / "a.prt", progress=True)
+    assert "5/5" in capsys.readouterr().err
+    pyadore.run(short_ball_deck, steps=5, out=tmp_path / "b.prt")     # stderr is not a terminal here
+    assert capsys.readouterr().err == ""
+    proc = subprocess.run([sys.executable, "-m", "pyadore", "run", str(short_ball_deck), "-o", str(tmp_path / "c.prt"),
+                           "--steps", "5"], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0 and "%|" not in proc.stderr and "step/s" not in proc.stderr
+    with pytest.raises(AdoreInputError, match="progress must be"):
+        pyadore.run(short_ball_deck, steps=5, out=tmp_path / "d.prt", progress="yes")
+
+
+def test_engine_callback_only_where_needed():
+    """The main thread gets a callback (Ctrl-C); another thread without a bar, or a process
+    that ignores SIGINT (a sweep worker), runs the engine without one (the GIL released)."""
+    import threading
+
+    from pyadore.progress import RunProgress
+
+    assert RunProgress(False).callback is not None
+    found = []
+    thread = threading.Thread(target=lambda: found.append((RunProgress(False).callback,
+                                                           RunProgress(lambda *a: None).callback)))
+    thread.start()
+    thread.join()
+    assert found[0][0] is None and found[0][1] is not None
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        watch = RunProgress(False)
+        with watch:
+            assert watch.callback is None and signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+def test_cli_run_reports_the_plot_data_file(tmp_path, short_ball_deck):
     out = tmp_path / "cli.prt"
-    result = CliRunner().invoke(cli, ["run", str(ball_deck), "-o", str(out), "--steps", "3"])
+    result = CliRunner().invoke(cli, ["run", str(short_ball_deck), "-o", str(out), "--steps", "3"])
     assert result.exit_code == 0, result.output
     assert list(read_print(out).steps) == [0, 3]
-    assert "dynamics in progress" in result.output
-
-
-def test_roller_deck_with_steps_ends_after_step_0(tmp_path, roller_deck, adore_exe):
-    res = pyadore.run(roller_deck, steps=5, out=tmp_path / "r5.prt")
-    zero = pyadore.run(roller_deck, steps=0, out=tmp_path / "r0.prt")
-    assert res.print_path.read_bytes() == zero.print_path.read_bytes()
-    assert res.notes and "roller bearings is not implemented" in res.notes[0]
-    proc = _exe(adore_exe, roller_deck, tmp_path / "r5exe.prt", "--steps", 5)
-    assert proc.returncode == 0 and "roller bearings is not implemented" in proc.stderr
+    assert f"plot-data file written: {history_path(out)}" in result.output
+    assert "thermal model off" in result.output
 
 
 def _int_method_4(text):
@@ -183,28 +522,42 @@ def _fixed_step_5(text):
     return text.replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01", "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1)
 
 
-@pytest.mark.parametrize("edit, status, error, message", [
-    # INT METHOD 4 is used only by the dynamics: an input error naming the field
-    (_int_method_4, 1, AdoreInputError, "Rec 1 field int_method = 4"),
-    # Rec 2.1 MINIMUM = MAXIMUM = INITIAL = 5 tau (about 1.2 ms, a fifth of a ball's orbit):
-    # the first step drives the contacts out of the model's range
-    (_fixed_step_5, 2, AdoreEngineError, "integration stopped"),
-], ids=["unknown-int-method", "failed-integration"])
-def test_dynamics_error_leaves_no_print(tmp_path, ball_deck, adore_exe, edit, status, error, message):
-    """A dynamic run that cannot start or stops midway: exit status 1 (input) or 2 (engine),
-    the cause in the message, no print file nor its .part; the default run of the same deck
-    (step 0 only) still succeeds."""
-    text = ball_deck.read_text()
-    assert edit(text) != text
+def test_unknown_int_method_leaves_no_print(tmp_path, ball_deck, adore_exe):
+    """INT METHOD 4 is used only by the time integration: an input error naming the field
+    before any print is written; the step-0 run of the same deck still succeeds."""
     deck = tmp_path / "edited.inp"
-    deck.write_text(edit(text))
+    deck.write_text(_int_method_4(ball_deck.read_text()))
     proc = _exe(adore_exe, deck, tmp_path / "exe.prt", "--steps", 5)
-    assert proc.returncode == status
-    assert message in proc.stderr
-    with pytest.raises(error, match=message):
+    assert proc.returncode == 1 and "Rec 1 field int_method = 4" in proc.stderr
+    with pytest.raises(AdoreInputError, match="Rec 1 field int_method = 4"):
         pyadore.run(deck, steps=5, out=tmp_path / "py.prt")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["edited.inp"]
-    assert _exe(adore_exe, deck, tmp_path / "default.prt").returncode == 0
+    assert _exe(adore_exe, deck, tmp_path / "s0.prt", "--steps", 0).returncode == 0
+
+
+def test_failed_integration_gives_exit_2_and_an_incomplete_print(tmp_path, ball_deck, adore_exe):
+    """Rec 2.1 MINIMUM = MAXIMUM = INITIAL = 5 tau (about 1.2 ms, a fifth of a ball's orbit):
+    the first step drives the contacts out of the model's range.  Exit status 2 (Python:
+    AdoreEngineError) with the integrator's message; the print is kept (step 0) and ends
+    with the incomplete line; no .part is left."""
+    text = ball_deck.read_text()
+    assert _fixed_step_5(text) != text
+    deck = tmp_path / "edited.inp"
+    deck.write_text(_fixed_step_5(text))
+    proc = _exe(adore_exe, deck, tmp_path / "exe.prt", "--steps", 5)
+    assert proc.returncode == 2
+    assert "adore: error: run incomplete after step 0 (tau = 0.0000E+00): integration stopped" in proc.stderr
+    last = (tmp_path / "exe.prt").read_text().splitlines()[-1]
+    assert last.startswith("*** RUN INCOMPLETE after step 0 (tau = 0.0000E+00): integration stopped")
+    with pytest.raises(AdoreEngineError, match="integration stopped") as info:
+        pyadore.run(deck, steps=5, out=tmp_path / "py.prt")
+    assert info.value.print_path == tmp_path / "py.prt"
+    assert (tmp_path / "py.prt").read_bytes() == (tmp_path / "exe.prt").read_bytes()
+    assert list(read_print(tmp_path / "py.prt").steps) == [0]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["edited.inp", "exe.hist.csv", "exe.prt", "py.hist.csv",
+                                                          "py.prt"]
+    res = CliRunner().invoke(cli, ["diff", str(tmp_path / "py.prt"), str(tmp_path / "exe.prt")])
+    assert res.exit_code == 1 and "INCOMPLETE RUN" in res.output
 
 
 def test_basic_life_of_a_dynamic_step_follows_its_printed_loads(runs):

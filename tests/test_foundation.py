@@ -57,15 +57,19 @@ def test_bad_steps_argument(tmp_path, ball_deck, steps):
         pyadore.run(ball_deck, steps=steps, out=tmp_path / "x.prt")
 
 
-def test_two_runs_in_one_process_are_identical(tmp_path, ball_deck):
-    first = pyadore.run(ball_deck, out=tmp_path / "a.prt")
-    second = pyadore.run(ball_deck, out=tmp_path / "b.prt")
+def test_two_runs_in_one_process_are_identical(tmp_path, short_ball_deck):
+    """Appendix C as the deck says, its step count cut to 60: the time integration too."""
+    first = pyadore.run(short_ball_deck, out=tmp_path / "a.prt")
+    second = pyadore.run(short_ball_deck, out=tmp_path / "b.prt")
     assert first.print_path.read_bytes() == second.print_path.read_bytes()
-    assert first.text  # something was written
+    assert first.history_path.read_bytes() == second.history_path.read_bytes()
+    assert first.steps_integrated == 60
 
 
-def test_runs_in_threads_are_identical(tmp_path, ball_deck, roller_deck):
-    decks = [ball_deck, roller_deck] * 3
+def test_runs_in_threads_are_identical(tmp_path, short_ball_deck, roller_deck):
+    """Runs in threads other than the main one go through the engine without a progress
+    callback, releasing the GIL: they run at once."""
+    decks = [short_ball_deck, roller_deck] * 3
     with ThreadPoolExecutor(max_workers=4) as pool:
         results = list(pool.map(lambda ij: pyadore.run(ij[1], out=tmp_path / f"t{ij[0]}.prt"),
                                 enumerate(decks)))
@@ -76,15 +80,16 @@ def test_runs_in_threads_are_identical(tmp_path, ball_deck, roller_deck):
 
 @pytest.mark.parametrize("deck_name", ["appendix_c_ball.inp", "appendix_d_roller.inp"])
 def test_executable_and_f2py_write_identical_print_files(tmp_path, root, run_exe, deck_name):
+    """Step 0 of both decks; the time integration's prints: tests/test_dynamic_run.py."""
     deck = root / "decks" / deck_name
-    via_python = pyadore.run(deck, out=tmp_path / "python.prt").print_path
-    proc = run_exe(deck, tmp_path / "exe.prt")
+    via_python = pyadore.run(deck, steps=0, out=tmp_path / "python.prt").print_path
+    proc = run_exe(deck, tmp_path / "exe.prt", "--steps", "0")
     assert proc.returncode == 0, proc.stderr
     assert (tmp_path / "exe.prt").read_bytes() == via_python.read_bytes()
 
 
 def test_print_file_lists_the_deck_verbatim_and_the_banner(tmp_path, ball_deck):
-    text = pyadore.run(ball_deck, out=tmp_path / "b.prt").text
+    text = pyadore.run(ball_deck, steps=0, out=tmp_path / "b.prt").text
     lines = text.splitlines()
     start = lines.index("Listing of input data records") + 2
     deck_lines = ball_deck.read_text().splitlines()
@@ -94,7 +99,7 @@ def test_print_file_lists_the_deck_verbatim_and_the_banner(tmp_path, ball_deck):
 
 
 def test_executable_exit_codes(tmp_path, run_exe, ball_deck):
-    ok = run_exe(ball_deck, tmp_path / "ok.prt")
+    ok = run_exe(ball_deck, tmp_path / "ok.prt", "--steps", "0")
     assert ok.returncode == 0 and "print file written" in ok.stdout
     missing = run_exe(tmp_path / "missing.inp", tmp_path / "m.prt")
     assert missing.returncode == 1
@@ -106,12 +111,12 @@ def test_executable_exit_codes(tmp_path, run_exe, ball_deck):
     assert unwritable.returncode == 1 and "cannot write print file" in unwritable.stderr
 
 
-def test_executable_default_output_next_to_deck(tmp_path, run_exe, ball_deck):
+def test_executable_default_output_next_to_deck(tmp_path, run_exe, short_ball_deck):
     deck = tmp_path / "case.inp"
-    deck.write_bytes(ball_deck.read_bytes())
+    deck.write_bytes(short_ball_deck.read_bytes())
     proc = run_exe(deck)
     assert proc.returncode == 0, proc.stderr
-    assert (tmp_path / "case.prt").exists()
+    assert (tmp_path / "case.prt").exists() and (tmp_path / "case.hist.csv").exists()
 
 
 def test_failed_run_keeps_no_partial_file(tmp_path, run_exe):
@@ -154,13 +159,18 @@ def test_cli_rejects_negative_steps(tmp_path, ball_deck):
     assert "Traceback" not in result.output
 
 
-def test_run_says_when_time_steps_were_asked_for_but_not_integrated(tmp_path, ball_deck, run_exe):
-    """The engine does not integrate time steps yet: a run asking for them says so (Python
-    notes, CLI and executable on stderr); a step-0 run has nothing to say."""
-    full = pyadore.run(ball_deck, out=tmp_path / "full.prt")
-    assert full.notes and "ends after step 0" in full.notes[0]
-    assert pyadore.run(ball_deck, steps=0, out=tmp_path / "s0.prt").notes == []
-    proc = run_exe(ball_deck, tmp_path / "exe.prt")
+def test_run_says_what_it_leaves_out(tmp_path, short_ball_deck, roller_deck, run_exe):
+    """A run with time steps says that the thermal model is off; a roller deck's steps are
+    not integrated and it says so (Python notes, executable on stderr); a step-0 run has
+    nothing to say."""
+    ball = pyadore.run(short_ball_deck, out=tmp_path / "ball.prt")
+    assert ball.notes and ball.notes[0].startswith("thermal model off")
+    roller = pyadore.run(roller_deck, out=tmp_path / "roller.prt")
+    assert roller.notes and "ends after step 0" in roller.notes[0]
+    assert pyadore.run(short_ball_deck, steps=0, out=tmp_path / "s0.prt").notes == []
+    proc = run_exe(short_ball_deck, tmp_path / "exe.prt")
+    assert proc.returncode == 0 and "adore: note: thermal model off" in proc.stderr
+    proc = run_exe(roller_deck, tmp_path / "rexe.prt")
     assert proc.returncode == 0 and "ends after step 0" in proc.stderr
-    proc = run_exe(ball_deck, tmp_path / "exe0.prt", "--steps", "0")
+    proc = run_exe(short_ball_deck, tmp_path / "exe0.prt", "--steps", "0")
     assert proc.returncode == 0 and proc.stderr == ""

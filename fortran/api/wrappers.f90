@@ -5,12 +5,96 @@
 !> (0 ok, 1 input error, 2 engine failure) and a message.  Nothing here stops the
 !> process.  The interface seen by Python is declared in _engine.pyf.
 
-!> Run a deck and write its print file (see adore_driver_run::run_deck).
-subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, traction_2d, &
-                          status, message)
+!> The run of a deck behind adore_run_file and adore_run_file_progress: run_deck, then its
+!> time history copied into the caller's arrays.
+module adore_api_run
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, engine_error, ADORE_OK
+   use adore_api_status, only: set_error
+   use adore_driver_run, only: run_deck, run_progress
+   use adore_driver_run_history, only: run_history_t, history_columns_text
+   implicit none
+   private
+
+   public :: run_into_arrays
+
+contains
+
+   !> run_deck(deck_path, out_path, steps, ...) with the time history in hist(1:n_rows,
+   !> 1:n_cols) (rows x cols from adore_run_plan), its column names joined by commas in
+   !> columns, the steps integrated, the run's note, status and message.  On an early stop
+   !> (status 2) the arrays hold the history up to the last accepted step.
+   subroutine run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
+                              traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, &
+                              message, progress)
+      character(len=*), intent(in) :: deck_path, out_path, traction_table, ball_start
+      integer, intent(in) :: steps, moment_equilibrium, element, traction_2d, rows, cols
+      real(wp), intent(out) :: hist(rows, cols)
+      integer, intent(out) :: n_rows, n_cols, integrated, status
+      character(len=*), intent(out) :: columns, note, message
+      procedure(run_progress), optional :: progress
+      type(error_type), allocatable :: error
+      type(run_history_t) :: history
+      character(len=:), allocatable :: text, run_note
+
+      call run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium /= 0, &
+                    integrated, history, run_note, progress, element, traction_2d /= 0)
+      status = ADORE_OK
+      message = ""
+      note = ""
+      if (allocated(run_note)) note = run_note
+      hist = 0.0_wp
+      n_rows = 0
+      n_cols = 0
+      columns = ""
+      if (allocated(history%values)) then
+         n_rows = history%rows
+         n_cols = size(history%values, 2)
+         call history_columns_text(history, text)
+         if (n_rows > rows .or. n_cols > cols .or. len(text) > len(columns)) then
+            if (.not. allocated(error)) call engine_error(error, "time history: larger than its plan ("// &
+                                                          "adore_run_plan); the history is not returned")
+            n_rows = 0
+            n_cols = 0
+         else
+            hist(1:n_rows, 1:n_cols) = history%values(1:n_rows, :)
+            columns = text
+         end if
+      end if
+      if (allocated(error)) call set_error(error, status, message)
+   end subroutine run_into_arrays
+
+end module adore_api_run
+
+!> What a run of the deck will do (see adore_driver_run::run_plan): time steps after step
+!> 0 and the shape (rows, cols) of its time history, for the arrays of adore_run_file.
+subroutine adore_run_plan(deck_path, steps, n_steps, rows, cols, status, message)
    use adore_core_error, only: error_type, ADORE_OK
    use adore_api_status, only: set_error
-   use adore_driver_run, only: run_deck
+   use adore_driver_run, only: run_plan
+   implicit none
+   character(len=*), intent(in) :: deck_path   !< deck file path
+   integer, intent(in) :: steps                !< -1 deck's count, 0 quasi-static only, n steps (ball decks)
+   integer, intent(out) :: n_steps             !< time steps the run integrates after step 0
+   integer, intent(out) :: rows, cols          !< time history capacity (0, 0 without time steps)
+   integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
+   character(len=16384), intent(out) :: message !< error message, blank on success
+   type(error_type), allocatable :: error
+
+   call run_plan(deck_path, steps, n_steps, rows, cols, error)
+   status = ADORE_OK
+   message = ""
+   if (allocated(error)) call set_error(error, status, message)
+end subroutine adore_run_plan
+
+!> Run a deck and write its print file (see adore_driver_run::run_deck) and return its time
+!> history: hist(rows, cols) as planned by adore_run_plan, n_rows x n_cols of it filled,
+!> columns = the column names joined by commas, integrated = steps after step 0, note =
+!> what the run does not do (blank: nothing).  No progress callback (thread-safe).
+subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
+                          traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, message)
+   use adore_core_kinds, only: wp
+   use adore_api_run, only: run_into_arrays
    implicit none
    character(len=*), intent(in) :: deck_path   !< deck file path
    character(len=*), intent(in) :: out_path    !< print file path to write
@@ -18,30 +102,44 @@ subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start
    character(len=*), intent(in) :: traction_table  !< traction-slip table file (ADRX7); blank: none
    character(len=*), intent(in) :: ball_start      !< ball start hypothesis name (report 4.4.7); blank: default
    integer, intent(in) :: moment_equilibrium   !< 1: moment equilibrium of the inner race (kFS4 = kFS5 = 0); 0: prescribed
+   integer, intent(in) :: element              !< rolling element of the history's contact columns
    integer, intent(in) :: traction_2d          !< 1: two-dimensional race traction (the default); 0: the 1-D developer option
+   integer, intent(in) :: rows, cols           !< history capacity (adore_run_plan)
+   real(wp), intent(out) :: hist(rows, cols)   !< the time history (SI units, docs/plots.md)
+   integer, intent(out) :: n_rows, n_cols      !< its filled part
+   character(len=8192), intent(out) :: columns !< column names, comma-separated
+   integer, intent(out) :: integrated          !< time steps after step 0
+   character(len=1024), intent(out) :: note    !< what the run does not do; blank: nothing
    integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
    character(len=16384), intent(out) :: message !< error message, blank on success
 
-   type(error_type), allocatable :: error
-
-   call run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium /= 0, &
-                 traction_2d=traction_2d /= 0)
-   status = ADORE_OK
-   message = ""
-   if (allocated(error)) then
-      call set_error(error, status, message)
-   end if
+   call run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
+                        traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, message)
 end subroutine adore_run_file
 
-!> Time steps a run with the deck's own count integrates (0: such a print ends after step 0
-!> while [Dynamics] is in progress; explicit steps > 0 integrate opt-in on ball decks).
-subroutine adore_time_steps_implemented(n)
-   use adore_driver_run, only: TIME_STEPS_IMPLEMENTED
+!> adore_run_file with a progress callback: progress(step, n_steps, tau, time, stop) after
+!> every accepted time step (adore_driver_ball_dynamics' run_progress); stop /= 0 ends the
+!> run there, incomplete ("interrupted", status 2).  Not thread-safe (the callback is Python).
+subroutine adore_run_file_progress(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, &
+                                   element, traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, &
+                                   status, message, progress)
+   use adore_core_kinds, only: wp
+   use adore_api_run, only: run_into_arrays
+   use adore_driver_run, only: run_progress
    implicit none
-   integer, intent(out) :: n
+   character(len=*), intent(in) :: deck_path, out_path, traction_table, ball_start
+   integer, intent(in) :: steps, moment_equilibrium, element, traction_2d, rows, cols
+   real(wp), intent(out) :: hist(rows, cols)
+   integer, intent(out) :: n_rows, n_cols, integrated, status
+   character(len=8192), intent(out) :: columns
+   character(len=1024), intent(out) :: note
+   character(len=16384), intent(out) :: message
+   procedure(run_progress) :: progress
 
-   n = TIME_STEPS_IMPLEMENTED
-end subroutine adore_time_steps_implemented
+   call run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
+                        traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, message, &
+                        progress)
+end subroutine adore_run_file_progress
 
 !> The engine's version string.
 subroutine adore_version(version)

@@ -1,21 +1,101 @@
 !> The standalone `adore` program:
-!> `adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME] [--moment-equilibrium]
-!> [--traction-1d]`.
+!> `adore DECK [OUT.prt] [--steps N] [--history-element N] [--traction-table FILE] [--ball-start NAME]
+!> [--moment-equilibrium] [--traction-1d]`.
 !>
-!> The only place that ends the process: exit code 0 ok, 1 bad input, 2 engine failure.
+!> The only place that ends the process: exit code 0 ok, 1 bad input, 2 engine failure
+!> (including a time integration that stopped early or was interrupted: its print is kept
+!> and ends with "*** RUN INCOMPLETE").
+
+!> The program's progress line and Ctrl-C (process state of the standalone program only,
+!> never of the engine): during a time integration a line "step n/N, simulated time, ETA"
+!> on stderr,
+!> rewritten in place at most twice a second, when stderr is a terminal; Ctrl-C
+!> (fortran/app/sigint.c) makes the progress callback ask the run to stop.
+module adore_app_progress
+   use, intrinsic :: iso_c_binding, only: c_int
+   use, intrinsic :: iso_fortran_env, only: error_unit, int64, real64
+   implicit none
+   private
+
+   public :: show_progress, install_interrupt, end_progress_line
+
+   interface
+      subroutine adore_sigint_install() bind(c, name="adore_sigint_install")
+      end subroutine adore_sigint_install
+      function adore_sigint_received() result(flag) bind(c, name="adore_sigint_received")
+         import :: c_int
+         integer(c_int) :: flag
+      end function adore_sigint_received
+   end interface
+
+   logical :: tty = .false.               !< stderr is a terminal
+   integer(int64) :: started = -1         !< clock count at the first step
+   integer(int64) :: shown = -1           !< clock count of the last line written
+   logical :: line_open = .false.         !< a progress line waits for its newline
+
+contains
+
+   !> Catch Ctrl-C (sigint.c) and find out whether stderr is a terminal (gfortran's ISATTY).
+   subroutine install_interrupt()
+      call adore_sigint_install()
+      tty = isatty(unit=error_unit)
+   end subroutine install_interrupt
+
+   !> The time loop's callback (adore_driver_ball_dynamics' run_progress): the progress line
+   !> on a terminal; stop = 1 after Ctrl-C.
+   subroutine show_progress(step, n_steps, tau, time, stop)
+      integer, intent(in) :: step, n_steps
+      real(real64), intent(in) :: tau, time
+      integer, intent(out) :: stop
+      integer(int64) :: now, rate
+      real(real64) :: elapsed
+      character(len=160) :: text
+
+      stop = 0
+      if (adore_sigint_received() /= 0) stop = 1
+      if (.not. tty) return
+      call system_clock(now, rate)
+      if (started < 0) started = now
+      if (stop == 0 .and. step < n_steps .and. shown >= 0 .and. now - shown < rate/2) return
+      shown = now
+      elapsed = real(now - started, real64)/real(rate, real64)
+      write (text, "(a,i0,a,i0,a,es10.4,a,es10.4,a)") "adore: step ", step, "/", n_steps, ", simulated time ", &
+         time, " s (tau ", tau, ")"
+      if (step > 1 .and. step < n_steps) write (text, "(a,a,i0,a)") trim(text), ", ETA ", &
+         nint(elapsed*real(n_steps - step, real64)/real(step - 1, real64)), " s"
+      write (error_unit, "(a,a,a)", advance="no") achar(13), trim(text), "   "
+      line_open = .true.
+      if (stop /= 0 .or. step == n_steps) then
+         write (error_unit, "(a)") ""
+         line_open = .false.
+      end if
+      flush (error_unit)
+   end subroutine show_progress
+
+   !> End a progress line still open (a run that stopped by an error) with its newline.
+   subroutine end_progress_line()
+      if (line_open) write (error_unit, "(a)") ""
+      line_open = .false.
+   end subroutine end_progress_line
+
+end module adore_app_progress
+
 program adore
    use adore_core_error, only: error_type, input_error, ADORE_OK
    use adore_core_version, only: adore_version_string
-   use adore_driver_run, only: run_deck, STEPS_FROM_DECK, TIME_STEPS_IMPLEMENTED
+   use adore_driver_run, only: run_deck, STEPS_FROM_DECK
+   use adore_driver_run_history, only: history_file_name
+   use adore_app_progress, only: show_progress, install_interrupt, end_progress_line
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    implicit none
 
    type(error_type), allocatable :: error
-   character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start
-   integer :: i, nargs, steps, stat, dot, integrated
+   character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start, note, hist_path
+   integer :: i, nargs, steps, dot, integrated, element
    logical :: moments, two_d
 
    integrated = 0
+   element = 1
    steps = STEPS_FROM_DECK
    deck_path = ""
    table_path = ""
@@ -35,13 +115,11 @@ program adore
          write (output_unit, "(a)") "adore (pyadore) "//adore_version_string
          call exit_with(ADORE_OK)
       case ("--steps")
-         call option_value(i, "--steps", "a value", arg, error)
+         call integer_option(i, "--steps", "a value", steps, error)
          if (allocated(error)) exit
-         read (arg, *, iostat=stat) steps
-         if (stat /= 0) then
-            call input_error(error, "--steps: expected an integer, got '"//arg//"'")
-            exit
-         end if
+      case ("--history-element")
+         call integer_option(i, "--history-element", "a rolling element number", element, error)
+         if (allocated(error)) exit
       case ("--traction-table")
          call option_value(i, "--traction-table", "a file", table_path, error)
          if (allocated(error)) exit
@@ -81,7 +159,10 @@ program adore
             out_path = deck_path//".prt"
          end if
       end if
-      call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments, integrated, two_d)
+      call install_interrupt()
+      call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments, integrated, note=note, &
+                    progress=show_progress, history_element=element, traction_2d=two_d)
+      call end_progress_line()
    end if
 
    if (allocated(error)) then
@@ -89,15 +170,13 @@ program adore
       call exit_with(error%stat)
    end if
    write (output_unit, "(a)") "print file written: "//out_path
-   ! what the print holds, when it is not what was asked for (pyadore/api.py says the same)
-   if (steps == STEPS_FROM_DECK .and. TIME_STEPS_IMPLEMENTED == 0) then
-      write (error_unit, "(a)") "adore: note: time integration is opt-in (--steps N) while [Dynamics] is in "// &
-         "progress; the print file ends after step 0 (the quasi-static start)"
-   else if (steps > 0 .and. integrated == 0) then
-      write (error_unit, "(a)") "adore: note: time integration of roller bearings is not implemented yet; "// &
-         "the print file ends after step 0 (the quasi-static start)"
-   else if (integrated > 0) then
-      write (error_unit, "(a)") "adore: note: dynamics in progress (issue #20): no cage contacts, thermal model off"
+   if (integrated > 0) then
+      call history_file_name(out_path, hist_path)
+      write (output_unit, "(a)") "plot-data file written: "//hist_path
+   end if
+   ! what the run does not do that a user may expect (pyadore's Result.notes say the same)
+   if (allocated(note)) then
+      if (len_trim(note) > 0) write (error_unit, "(a)") "adore: note: "//note
    end if
    call exit_with(ADORE_OK)
 
@@ -120,6 +199,22 @@ contains
       if (len_trim(value) == 0) call input_error(error, name//": expected "//what//", got a blank argument")
    end subroutine option_value
 
+   !> The integer value after option `name` at argument i (option_value, then read as I0);
+   !> input error naming the option when it is missing or not an integer.
+   subroutine integer_option(i, name, what, value, error)
+      integer, intent(inout) :: i
+      character(len=*), intent(in) :: name, what
+      integer, intent(inout) :: value
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
+      integer :: stat
+
+      call option_value(i, name, what, text, error)
+      if (allocated(error)) return
+      read (text, *, iostat=stat) value
+      if (stat /= 0) call input_error(error, name//": expected an integer, got '"//text//"'")
+   end subroutine integer_option
+
    subroutine get_arg(n, value)
       integer, intent(in) :: n
       character(len=:), allocatable, intent(out) :: value
@@ -132,13 +227,15 @@ contains
 
    subroutine usage(unit)
       integer, intent(in) :: unit
-      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--traction-table FILE] [--ball-start NAME]"// &
-         " [--moment-equilibrium] [--traction-1d]"
-      write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt)"
-      write (unit, "(a)") "  --steps N                N > 0: integrate N time steps after step 0 (ball decks; opt-in"
-      write (unit, "(a)") "                           dynamics, issue #20 in progress: no cage contacts, thermal off);"
-      write (unit, "(a)") "                           0 = quasi-static start only; -1 = as the deck says (default:"
-      write (unit, "(a)") "                           step 0 only while the dynamics is in progress)"
+      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--history-element N] [--traction-table FILE]"// &
+         " [--ball-start NAME] [--moment-equilibrium] [--traction-1d]"
+      write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt) and, when it"
+      write (unit, "(a)") "  integrates time steps, its plot-data file beside it (OUT.hist.csv; docs/plots.md)"
+      write (unit, "(a)") "  --steps N                time steps to integrate after step 0 (ball decks; thermal model"
+      write (unit, "(a)") "                           off): N > 0, 0 = quasi-static start only, -1 = as the deck"
+      write (unit, "(a)") "                           says (default, Rec 1); roller decks end after step 0"
+      write (unit, "(a)") "  --history-element N      rolling element of the plot-data file's contact columns"
+      write (unit, "(a)") "                           (default 1)"
       write (unit, "(a)") "  --traction-table FILE    traction-slip table (slip m/s, coefficient per line; ADRX7)"
       write (unit, "(a)") "                           replacing the deck's RE/race traction model"
       write (unit, "(a)") "  --ball-start NAME        initial ball angular velocity (report 4.4.7): dissipation"
@@ -152,6 +249,8 @@ contains
    end subroutine usage
 
    !> End the process with exit status `code` and nothing printed by the runtime.
+   !> Ctrl-C during a time integration (fortran/app/sigint.c) stops the run after its step:
+   !> exit status 2, the print kept with its "*** RUN INCOMPLETE" line.
    subroutine exit_with(code)
       integer, intent(in) :: code
       stop code, quiet=.true.

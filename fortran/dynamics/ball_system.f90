@@ -122,12 +122,30 @@ contains
       ! an abnormal cage contact (report 4.4.12): the integrator retries with a smaller step
       if (self%loads%abnormal) flag = DERIV_REJECT_STEP
       if (.not. all(ieee_is_finite(dydt))) then
-         call engine_error(self%failure, "equations of motion: non-finite rates (a body or contact state is "// &
-                           "outside the model's range)")
+         call engine_error(self%failure, "equations of motion: non-finite rates of "// &
+                           trim(body_name(size(self%state%elements), findloc(ieee_is_finite(dydt), .false., 1)))// &
+                           " (a body or contact state is outside the model's range)")
          self%failure_reason = self%failure%message
          flag = DERIV_FAIL
       end if
    end subroutine ball_system_eval
+
+   !> The body of unknown i of a packed state of n balls (adore_state_bearing_state's order):
+   !> "ball k", "the cage", "the outer race", "the inner race" or "the temperatures".
+   pure function body_name(n, i) result(name)
+      integer, intent(in) :: n, i
+      character(len=32) :: name
+      select case ((i - 1)/BODY_SIZE + 1)
+      case (:0)
+         name = "the state"
+      case default
+         write (name, "(a,i0)") "ball ", (i - 1)/BODY_SIZE + 1
+         if ((i - 1)/BODY_SIZE + 1 == n + 1) name = "the cage"
+         if ((i - 1)/BODY_SIZE + 1 == n + 2) name = "the outer race"
+         if ((i - 1)/BODY_SIZE + 1 == n + 3) name = "the inner race"
+         if ((i - 1)/BODY_SIZE + 1 > n + 3) name = "the temperatures"
+      end select
+   end function body_name
 
    !> The state of ball bearing b (mounted geometry g) at the start of the dynamics: its
    !> step-0 start (equilibrium and ball speeds) and cage state (module header).  Positions

@@ -1,10 +1,10 @@
 !> The printed tables of one dynamic step of a ball bearing (sections 1-4, ADORE 5.0
 !> layout) assembled from the integrated state, its rates and the force assembly's loads at
-!> that state (no formatting here, no physics): write_ball_step.
+!> that state and the run's time averages (no formatting here, no physics): write_ball_step.
 !>
 !> What a dynamic step prints and which columns stay NaN: docs/print-layout.md, "Dynamic
-!> steps (opt-in)".  A value the dynamics does not compute yet (traction table, flash
-!> temperatures, film, wear, lives, cage contacts, angular positions) is IEEE NaN /
+!> steps".  A value the dynamics does not compute yet (traction table, flash temperatures,
+!> film, lives, cage contacts and cage wear, angular positions) is IEEE NaN /
 !> INT_NOT_COMPUTED and prints "NaN": the print never shows a made-up number.
 module adore_output_ball_dynamic_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -26,7 +26,7 @@ module adore_output_ball_dynamic_report
    implicit none
    private
 
-   public :: write_ball_step, orbital_speed
+   public :: write_ball_step, orbital_speed, dynamic_speed_ratios
 
 contains
 
@@ -47,7 +47,12 @@ contains
    !> the start (the caller tracks it); axial_origin (m) = the inner race's axial position
    !> the print's IRace Axial is measured from (step 0's u(1) - axial displacement).
    !> header = [tau, time (s), outer and inner race rotations (rev)].
-   subroutine write_ball_step(unit, step, header, b, g, s, rates, loads, azimuth, axial_origin)
+   !> The time averages since the start (adore_driver_time_average) of the "Time Ave" columns:
+   !> wear(n) of each ball and race_wear(2) of the outer and inner race (m**3/s), and section
+   !> 4's summary_avg = [power loss (W), RE orbital velocity, cage omega and cage whirl
+   !> ratios (dynamic_speed_ratios)].
+   subroutine write_ball_step(unit, step, header, b, g, s, rates, loads, azimuth, axial_origin, wear, race_wear, &
+                              summary_avg)
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
@@ -55,6 +60,7 @@ contains
       type(bearing_state_t), intent(in) :: s, rates
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(in) :: azimuth(:), axial_origin
+      real(wp), intent(in) :: wear(:), race_wear(2), summary_avg(4)
 
       real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
@@ -64,7 +70,6 @@ contains
       integer, allocatable :: re_no(:), cage_code(:), cage_end(:)
       integer :: land_no(max(b%n_lands, 1)), land_code(max(b%n_lands, 1))
       integer :: n, k, j
-      type(cage_step0_t) :: cage_speeds
 
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
       n = b%n_elements
@@ -75,6 +80,7 @@ contains
       traction = nan                 ! slip, traction coefficient, film, drag: not printed yet
       thermal = nan
       contact(:, 1) = azimuth*deg
+      motion(:, 11) = wear                                     ! time averages since the start
       do k = 1, n
          w_orb(k) = orbital_speed(s%elements(k))
          motion(k, 1) = w_orb(k)*rpm
@@ -117,6 +123,7 @@ contains
       bodies(3, 1) = s%races(RACE_INNER)%position(1) - axial_origin
       bodies(3, 4) = orbital_speed(s%races(RACE_INNER))*rpm   ! the inner race is free in translation
       bodies(3, 8:9) = race_tilt(s%races(RACE_INNER))
+      bodies(2:3, 11) = race_wear
       bodies(2, 10) = g%mounting%outer_hoop_stress
       bodies(3, 10) = g%mounting%inner_hoop_stress
 
@@ -149,16 +156,32 @@ contains
       perf(9:11) = s%temperature(TEMP_HOUSING)
       perf(12:14) = s%temperature(TEMP_SHAFT)
 
-      summary = nan
+      summary = nan                                  ! fatigue life, cage wear, RE excursion
       summary(1, 1:3) = header(2:4)
-      summary(1, 5) = perf(6)
-      cage_speeds%state%angular_speed = s%cage%omega(1)   ! body x: the cage's axis
-      cage_speeds%state%whirl_speed = orbital_speed(s%cage)
-      summary(1, 6:8) = speed_ratios(b, sum(w_orb)/n, cage_speeds)
+      summary(1, 5:8) = summary_avg                  ! time averages since the start
       call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, ld, acc, perf, [step], summary)
    end subroutine write_ball_step
+
+   !> Section 4's speed ratios at state s of ball bearing b (step 0's speed_ratios): the mean
+   !> ball orbital speed (orbital_speed), the cage's angular speed about its axis (body x)
+   !> and its whirl speed, each relative to the outer race over the inner race's speed
+   !> relative to the outer race.
+   function dynamic_speed_ratios(b, s) result(r)
+      type(bearing_t), intent(in) :: b
+      type(bearing_state_t), intent(in) :: s
+      real(wp) :: r(3), w
+      type(cage_step0_t) :: cage_speeds
+      integer :: k
+      w = 0.0_wp
+      do k = 1, size(s%elements)
+         w = w + orbital_speed(s%elements(k))
+      end do
+      cage_speeds%state%angular_speed = s%cage%omega(1)   ! body x: the cage's axis
+      cage_speeds%state%whirl_speed = orbital_speed(s%cage)
+      r = speed_ratios(b, w/size(s%elements), cage_speeds)
+   end function dynamic_speed_ratios
 
    !> Section 1's angular velocity of a ball relative to its orbiting frame
    !> (omega - omega_m e_x, omega_m = w_orb its orbital speed, rad/s), in the frame

@@ -18,10 +18,10 @@ contains
    !> the inner race when the run option asked for it) and the "Listing of
    !> input data records": every deck line, verbatim (ADORE prints the deck before its
    !> banner, report Appendix C/D).  dynamics_steps > 0: the run integrates that many time
-   !> steps with the dynamics of issue #20 still in progress; the listing says so first, so
-   !> that no such print poses as a validated ADORE run.
+   !> steps; the listing says so first, with what the time integration does not do yet (the
+   !> thermal model is off; the cage contacts when cage_contacts is .false.).
    subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps, &
-                            traction_2d)
+                            cage_contacts, land_film, traction_2d)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -29,19 +29,31 @@ contains
       character(len=*), intent(in), optional :: start_title
       !> .true. when the run option asked for moment equilibrium of the inner race
       logical, intent(in), optional :: moment_equilibrium
-      !> time steps of an opt-in dynamics run (absent or 0: none)
+      !> time steps of the run (absent or 0: none)
       integer, intent(in), optional :: dynamics_steps
-      !> .true. when that run uses the two-dimensional race traction (developer option)
+      !> whether the time integration has the pocket and guide-land contacts (absent: .true.)
+      logical, intent(in), optional :: cage_contacts
+      !> whether the guide lands carry their hydrodynamic film (absent: .true.)
+      logical, intent(in), optional :: land_film
+      !> whether the race traction is two-dimensional (absent: .true.; .false. is the
+      !> developer option of the one-dimensional traction, report eq 1)
       logical, intent(in), optional :: traction_2d
       integer :: i
+      logical :: cage
 
       write (unit, "(a)") "Input from optional user subroutines"
       write (unit, "(a)") ""
       if (present(dynamics_steps)) then
          if (dynamics_steps > 0) then
-            write (unit, "(a,i0,a)") "DYNAMICS IN PROGRESS (ISSUE #20): NO CAGE CONTACTS, THERMAL MODEL OFF; ", &
-               dynamics_steps, " TIME STEPS"
-            write (unit, "(a)") "  NOT A VALIDATED ADORE RUN (docs/dynamics.md)"
+            cage = .true.
+            if (present(cage_contacts)) cage = cage_contacts
+            write (unit, "(a,i0,a)") "TIME INTEGRATION: ", dynamics_steps, " TIME STEPS"
+            write (unit, "(a)") "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"
+            if (.not. cage) write (unit, "(a)") "  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"
+            if (cage .and. present(land_film)) then
+               if (.not. land_film) write (unit, "(a)") "  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT ONLY "// &
+                  "(docs/dynamics.md, Cage dynamics)"
+            end if
             if (present(traction_2d)) then
                if (.not. traction_2d) write (unit, "(a)") "  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE "// &
                   "ROLLING DIRECTION ONLY, REPORT EQ 1): DEVELOPER OPTION"

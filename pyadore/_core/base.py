@@ -43,10 +43,36 @@ def check(status: int, message) -> None:
     raise AdoreError(f"{text} (unknown engine status {status})")
 
 
+def run_plan(deck_path: str | os.PathLike, steps: int) -> tuple[int, int, int]:
+    """(time steps after step 0, history rows, history columns) of a run of the deck with
+    ``steps`` (-1: the deck's count): what :func:`run_file` will integrate and the shape of
+    the arrays holding its time history (0, 0 without time steps).  Status checked."""
+    n_steps, rows, cols, status, message = _engine().adore_run_plan(os.fspath(deck_path), int(steps))
+    check(int(status), message)
+    return int(n_steps), int(rows), int(cols)
+
+
+class RunOutput:
+    """What :func:`run_file` returns: ``integrated`` time steps after step 0, the engine's
+    ``note`` ("" when it has nothing to say), and the time history as a 2-D float array
+    ``history`` (rows x columns, SI units) with its ``columns`` names (docs/plots.md); an
+    empty array and no names for a run without time steps."""
+
+    def __init__(self, integrated: int, note: str, history, columns: list[str]):
+        self.integrated = integrated
+        self.note = note
+        self.history = history
+        self.columns = columns
+
+
 def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: int,
              traction_table: str | os.PathLike | None = None, ball_start: str | None = None,
-             moment_equilibrium: bool = False, traction_2d: bool = False) -> None:
-    """Run the engine on a deck file and write the print file (status checked).
+             moment_equilibrium: bool = False, history_element: int = 1, progress=None,
+             traction_2d: bool = True) -> RunOutput:
+    """Run the engine on a deck file and write the print file (and, with time steps, the
+    plot-data file beside it); return a :class:`RunOutput`.  Status checked: an engine
+    failure raises :class:`~pyadore.errors.AdoreEngineError`, whose ``output`` attribute
+    then holds the RunOutput of the steps done (a time integration that stopped early).
 
     traction_table: a traction-slip table file (ADRX7) replacing the deck's RE/race
     traction model; ``None`` for the deck's model.
@@ -54,24 +80,34 @@ def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: i
     ``None`` for the default, minimum dissipation.
     moment_equilibrium: solve the inner race's misalignment for moment equilibrium
     (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks only).
-    traction_2d: the opt-in dynamics with the two-dimensional race traction (developer
-    option, docs/dynamics.md).
+    history_element: the rolling element of the time history's contact columns.
+    traction_2d: ``False`` selects the one-dimensional race traction (developer option).
+    progress: ``None``, or a function ``progress(step, n_steps, tau, time_s) -> int`` the
+    engine calls after every accepted time step; a non-zero return stops the run there
+    (incomplete).  It must not raise.  With a progress function the call holds the GIL
+    (the function is Python); without one it releases it (threads run at once).
     """
+    engine = _engine()
     table = "" if traction_table is None else os.fspath(traction_table)
     start = "" if ball_start is None else str(ball_start)
-    status, message = _engine().adore_run_file(os.fspath(deck_path), os.fspath(out_path), int(steps), table,
-                                               start, int(bool(moment_equilibrium)),
-                                               int(bool(traction_2d)))
-    check(int(status), message)
+    _n_steps, rows, cols = run_plan(deck_path, steps)
+    args = (os.fspath(deck_path), os.fspath(out_path), int(steps), table, start, int(bool(moment_equilibrium)),
+            int(history_element), int(bool(traction_2d)), max(rows, 1), max(cols, 1))
+    if progress is None:
+        out = engine.adore_run_file(*args)
+    else:
+        out = engine.adore_run_file_progress(*args, progress)
+    hist, n_rows, n_cols, columns, integrated, note, status, message = out
+    names = [c for c in _text(columns).split(",") if c] if n_cols > 0 else []
+    output = RunOutput(int(integrated), _text(note), hist[:int(n_rows), :int(n_cols)].copy(), names)
+    try:
+        check(int(status), message)
+    except AdoreEngineError as exc:
+        exc.output = output
+        raise
+    return output
 
 
 def engine_version() -> str:
     """Version string compiled into the engine."""
     return _text(_engine().adore_version())
-
-
-def time_steps_implemented() -> int:
-    """Time steps a run with the deck's own count integrates (0: such a print ends after
-    step 0 while the dynamics, issue #20, is in progress; explicit steps > 0 on a ball deck
-    integrate opt-in)."""
-    return int(_engine().adore_time_steps_implemented())

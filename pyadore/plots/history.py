@@ -18,13 +18,15 @@ ascending), one row per recorded instant, float columns in SI units named
 * ``guide_clearance_m`` - diametral clearance of the cage guide land (m).
 
 Per rolling element ``n`` (1-based) and race ``outer``/``inner``:
-``re<n>_contact_loss_<race>_W`` (W), ``re<n>_contact_temp_rise_<race>_K`` (K),
+``re<n>_contact_load_<race>_N`` (N), ``re<n>_contact_loss_<race>_W`` (W),
+``re<n>_contact_temp_rise_<race>_K`` (K),
 ``re<n>_contact_temp_<race>_K`` (K); ``pocket<n>_force_N`` - ball (roller: both ends
 summed)/cage pocket contact force (N).  Per guide land ``k``: ``land<k>_force_N`` -
 cage/race contact force (N).
 
-:func:`history_from_print` fills the table from every printed step (the dynamics will
-record the same columns at every time step).  Printed values map one to one, except:
+:func:`history_from_print` fills the table from every printed step; a run with time steps
+records the table at every step itself (:attr:`pyadore.Result.time_history`, and the
+plot-data file beside its print: :mod:`pyadore.timehistory`).  Printed values map one to one, except:
 the cage position (y, z) = r (-sin theta, cos theta) from the printed radial position r
 and orbital angle theta (measured from +z towards -y); the whirl velocity = r times the
 printed cage orbital velocity; the radial velocity is not printed; a printed temperature

@@ -78,6 +78,7 @@ def make_set(source, set_name: str = "report", *, compare=None, step: int | None
     run = load(source, label)
     other = load(compare, compare_label) if compare is not None else None
     out = FigureSet()
+    out.notes.extend(run.notes + (other.notes if other is not None else []))
     options = {1: {"step": step}, 5: {"element": element}, 9: {"element": element}, 10: {"table": table}}
     for ftype in (t for t in FIGURE_TYPES if t.number in SETS[set_name]):
         with warnings.catch_warnings(record=True) as caught:

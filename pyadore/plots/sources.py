@@ -111,6 +111,22 @@ def _pre_banner(path: Path) -> tuple[str, pd.DataFrame | None]:
     return listing, table
 
 
+def _with_history(source: Source) -> Source:
+    """The source with the time history of the plot-data file beside its print
+    (:func:`pyadore.timehistory.history_beside`) when there is one that belongs to it; a note
+    when a file there was not used, or when the print is incomplete."""
+    from ..timehistory import history_beside
+
+    history, note = history_beside(source.run)
+    if history is not None:
+        source.history = history
+    if note:
+        source.notes.append(note)
+    if source.run.incomplete:
+        source.notes.append(f"{source.label} is an incomplete print: {source.run.incomplete}")
+    return source
+
+
 def load(source, label: str | None = None) -> Source:
     """A :class:`Source` from a print-file path (str or Path), a PrintRun, a
     :class:`pyadore.Result`, a time-history DataFrame or a Source.  ``label`` names the run
@@ -127,16 +143,18 @@ def load(source, label: str | None = None) -> Source:
         src = load(source.print_path, label)
         if isinstance(history, pd.DataFrame):
             src.history = history
+            src.notes = [n for n in src.notes if "not used:" not in n]   # the Result's own history
         return src
     if isinstance(source, PrintRun):
         path = Path(source.path)
         listing, table = _pre_banner(path) if path.exists() else ("", None)
-        return Source(label=label or str(source.path), run=source, listing=listing, traction_table=table,
-                      path=str(source.path))
+        return _with_history(Source(label=label or str(source.path), run=source, listing=listing,
+                                    traction_table=table, path=str(source.path)))
     if isinstance(source, (str, os.PathLike)):
         path = Path(os.fspath(source))
         run = read_print(path)
         listing, table = _pre_banner(path)
-        return Source(label=label or str(path), run=run, listing=listing, traction_table=table, path=str(path))
+        return _with_history(Source(label=label or str(path), run=run, listing=listing, traction_table=table,
+                                    path=str(path)))
     raise TypeError(f"cannot plot a {type(source).__name__}: expected a print file path, a PrintRun, "
                     "a pyadore.Result or a time-history DataFrame")

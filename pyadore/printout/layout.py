@@ -48,6 +48,12 @@ SECTION_TITLES = {
     "4": "4. Time Step Summary",
 }
 TERMINATION_PREFIX = "Normal termination:"
+#: First words of the last line of a print whose time integration stopped early (engine:
+#: fortran/driver/ball_dynamics.f90, INCOMPLETE_MARK).
+INCOMPLETE_PREFIX = "*** RUN INCOMPLETE"
+#: First words of the listing line of a print that integrates time steps (engine:
+#: fortran/output/banner.f90); such a print is complete only with its termination line.
+TIME_INTEGRATION_PREFIX = "TIME INTEGRATION:"
 #: ``(5X,A,I8,5X,A,1X,ES10.4)`` with these two texts.
 TERMINATION_STEP_TEXT = "Normal termination: Last Step Number ="
 TERMINATION_TIME_TEXT = "Final Time ="

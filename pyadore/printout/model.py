@@ -140,6 +140,7 @@ class PrintRun:
     ``termination`` has ``last_step_number`` and ``final_time`` (dimensionless tau);
     ``statistics`` has the step sizes and truncation (dimensionless) and the derivative calls;
     ``termination_markers`` / ``statistics_markers`` flag unknown, overflowed or not computed entries.
+    ``incomplete`` says why a print is incomplete ("" when it is not).
     """
 
     path: str
@@ -152,6 +153,10 @@ class PrintRun:
     statistics: dict = field(default_factory=dict)
     termination_markers: dict = field(default_factory=dict)
     statistics_markers: dict = field(default_factory=dict)
+    #: "" for a complete print; else why it is incomplete: the text of its last line
+    #: ``*** RUN INCOMPLETE ...`` (a time integration that stopped early), or a note that a
+    #: print announcing time steps has no termination line
+    incomplete: str = ""
 
     @property
     def step_numbers(self) -> list[int]:

@@ -203,6 +203,10 @@ class _Reader:
             if not text:
                 i += 1
                 continue
+            if text.startswith(L.INCOMPLETE_PREFIX):
+                run.incomplete = text.strip("* ").strip()
+                i += 1
+                continue
             if text.startswith(L.TERMINATION_PREFIX):
                 m = _TERMINATION.search(text)
                 last = parse_number(m.group(1)) if m else None
@@ -243,6 +247,10 @@ class _Reader:
             else:
                 step.tables[name] = values
                 step.markers[name] = markers
+        if not run.incomplete and not run.termination and any(
+                s.startswith(L.TIME_INTEGRATION_PREFIX) for s in self.lines[:start]):
+            run.incomplete = ("its listing announces time steps but it has no termination line "
+                              "(the run did not end)")
         return run
 
     def _is_step(self, k: int) -> bool:

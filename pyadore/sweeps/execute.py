@@ -46,7 +46,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, ball_start: str | 
             deck.write_text(deck_text, encoding="utf-8")
             prt = Path(tmp) / "case.prt"
             try:
-                result = run(deck, steps=steps, out=prt, ball_start=ball_start)
+                result = run(deck, steps=steps, out=prt, ball_start=ball_start, progress=False)  # the sweep has its bar
                 out["notes"] = list(result.notes)
                 out["results"] = key_results(read_print(prt))
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
