@@ -19,7 +19,9 @@ TIED = {"shaft_inner_diameter", "shaft_outer_diameter", "bearing_outer_diameter"
         "n_rolling_elements", "step_min", "step_initial", "step_max", "max_traction",
         "traction_at_zero_slip", "traction_at_infinite_slip", "bearing_type",
         # the raceway diameters (race walls): ball curvature factors and free angle, roller play
-        "outer_curvature_factor", "inner_curvature_factor", "free_contact_angle", "diametral_play"}
+        "outer_curvature_factor", "inner_curvature_factor", "free_contact_angle", "diametral_play",
+        # the applied load (not all zero: an unloaded bearing is a cross-field error, Rec 9.1.1)
+        "applied_force_x", "applied_force_y", "applied_force_z"}
 
 
 def _template_value(tpl: Deck, name: str):
