@@ -26,9 +26,10 @@
 !> centre: the net hydrodynamic force on the ball is (W(near gap) - W(far gap)) along -n,
 !> zero for a centred ball.  Not modelled: the squeeze film (approach velocity) term.
 !> Friction: the deck's RE/cage coefficient (Rec 10.5.1B A, 0.05 in both decks; the report's
-!> roller pocket loss is mu F_n x sliding speed, docs/tribology.md) on the total normal
-!> force, opposite to the slip u of the ball surface over the cage at P, regularised below
-!> slip_reg: F = -mu W u/sqrt(u**2 + slip_reg**2).
+!> roller pocket loss is mu F_n x sliding speed, docs/tribology.md) on the metallic load
+!> only (a full film carries its load without Coulomb friction; its viscous drag is not
+!> modelled), opposite to the slip u of the ball surface over the cage at P, regularised
+!> below slip_reg: F = -mu Q u/sqrt(u**2 + slip_reg**2).
 !> Abnormal contact (report 4.4.12): delta beyond abnormal_fraction of the radial clearance
 !> c/2 - a step whose stage lands there is rejected by the integrator.  Units SI.
 module adore_contact_cage_pocket
@@ -150,7 +151,9 @@ contains
          c%hydro_load = ir_point_load(p, h_near, 0.5_wp*norm2(c%slip)) - ir_point_load(p, h_far, 0.5_wp*norm2(u_far))
       end if
       w_total = c%metallic_load + c%hydro_load
-      c%friction_force = -p%friction*abs(w_total)*c%slip/sqrt(dot_product(c%slip, c%slip) + p%slip_reg**2)
+      ! Coulomb friction of the metallic contact only: a full film carries its load without
+      ! it (Gupta 1979: hydrodynamic or metallic); the film's viscous drag is not modelled
+      c%friction_force = -p%friction*c%metallic_load*c%slip/sqrt(dot_product(c%slip, c%slip) + p%slip_reg**2)
       c%power = -dot_product(c%friction_force, c%slip)
 
       c%force_ball = -w_total*c%normal + c%friction_force

@@ -18,7 +18,7 @@ module adore_driver_ball_dynamics
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
    use adore_tribology_wear, only: archard_wear_rate
    use adore_dynamics_integrator, only: integrator_t, DERIV_FAIL
    use adore_dynamics_ball_system, only: ball_system_t
@@ -66,7 +66,7 @@ contains
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(out) :: v(:)
       integer :: k
-      v(AVG_POWER) = sum(loads%heat)
+      v(AVG_POWER) = total_power_loss(loads)
       v(AVG_RATIOS:AVG_RATIOS + 2) = dynamic_speed_ratios(b, s)
       v(AVG_RACE_WEAR) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
                                            sum(loads%traction(1, :)%sliding))

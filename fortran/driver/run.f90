@@ -224,6 +224,8 @@ contains
          if (allocated(error)) return
          run_note = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
          if (.not. sys%cage) run_note = run_note//"; cage contacts off (no pocket or guide-land forces)"
+         if (sys%cage .and. sys%cage_spin_only) run_note = run_note//"; cage centred, turning about its axis only "// &
+                                                         "(translation and tilt constrained, report 4.4.6)"
          if (sys%cage .and. .not. sys%land_film) run_note = run_note//"; guide-land film off (metallic land contact only)"
       else if (bearing%bearing_type == ROLLER_BEARING .and. &
                (steps > 0 .or. (steps == STEPS_FROM_DECK .and. bearing%n_steps > 0))) then
@@ -245,7 +247,7 @@ contains
       start_title = ""
       if (start_method /= BALL_START_METHOD) start_title = trim(start_method_title(start_method))
       call write_listing(unit, text, bearing%race_traction, table_path, start_title, moments, n_dynamic, sys%cage, &
-                         sys%land_film, sys%traction_2d)
+                         sys%land_film, sys%traction_2d, sys%cage_spin_only)
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start; then the time steps of a ball deck.

@@ -23,7 +23,7 @@ module adore_driver_run_history
    use adore_model_bearing, only: bearing_t, BODY_OUTER, BODY_INNER, TEMP_ELEMENT, TEMP_CAGE, TEMP_OUTER, &
                                    TEMP_INNER, TEMP_HOUSING, TEMP_SHAFT
    use adore_state_bearing_state, only: bearing_state_t
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, total_power_loss
    use adore_tribology_race_contact, only: wall_temperature
    implicit none
    private
@@ -140,7 +140,7 @@ contains
       associate (v => h%values)
          v(row, C_TIME) = time
          v(row, C_STEP) = real(step, wp)
-         v(row, C_POWER) = sum(loads%heat)
+         v(row, C_POWER) = total_power_loss(loads)
          v(row, C_BULK:C_BULK + 5) = s%temperature([TEMP_ELEMENT, TEMP_CAGE, TEMP_OUTER, TEMP_INNER, TEMP_HOUSING, &
                                                      TEMP_SHAFT])
          v(row, C_WEAR) = sum(wear)/size(wear)

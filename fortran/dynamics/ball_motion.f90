@@ -39,10 +39,11 @@ contains
    !> temperatures' rates are 0.  loads: the force assembly at s (adore_forces_ball_bearing).
    !> traction, cage, stiffness and two_d as ball_bearing_loads; gyro_restraint (default
    !> .false.): the balls' gyroscopic moments resisted by the races without slip
-   !> (add_gyroscopic_restraint); damping, land_film as ball_bearing_loads.  Input errors of
+   !> (add_gyroscopic_restraint); damping, land_film as ball_bearing_loads; cage_spin_only:
+   !> the cage's translation and tilt constrained (report 4.4.6).  Input errors of
    !> the traction model come back in error.
    subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
-                                 damping, land_film)
+                                 damping, land_film, cage_spin_only)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -54,6 +55,9 @@ contains
       logical, intent(in), optional :: two_d, gyro_restraint
       real(wp), intent(in), optional :: damping
       logical, intent(in), optional :: land_film
+      !> .true.: the cage's translation and tilt are constrained (report 4.4.6's DOF
+      !> constraints): it keeps its position and turns about its own axis only
+      logical, intent(in), optional :: cage_spin_only
       integer :: k
 
       call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
@@ -69,6 +73,13 @@ contains
          rates%elements(k) = body_rates(s%elements(k), loads%elements(k), b%mass(1), b%moments(:, 1))
       end do
       rates%cage = body_rates(s%cage, loads%cage, b%mass(2), b%moments(:, 2))
+      if (present(cage_spin_only)) then
+         if (cage_spin_only) then
+            rates%cage%position = 0.0_wp
+            rates%cage%velocity = 0.0_wp
+            rates%cage%omega(2:3) = 0.0_wp
+         end if
+      end if
       ! outer race fixed, turning at its speed: only its attitude moves
       rates%races(RACE_OUTER) = body_state_t(0.0_wp, 0.0_wp, quat_rate(s%races(RACE_OUTER)%attitude, &
                                              s%races(RACE_OUTER)%omega), 0.0_wp)

@@ -50,6 +50,11 @@ module adore_dynamics_ball_system
       !> Kraemer's stiffness-proportional rolling-bearing damping at its lower end (docs/
       !> dynamics.md, "Contact damping"); 0 for a conservative model (energy tests)
       real(wp) :: contact_damping = 2.5e-6_wp
+      !> the cage's degrees of freedom (report 4.4.6): .true. (default) constrains its
+      !> translation and tilt - it stays centred on the bearing axis and turns about its own
+      !> axis, driven by its pockets; .false. frees all six (docs/dynamics.md, "Cage dynamics":
+      !> the free cage of Appendix C either whips on its land films or rides its lands)
+      logical :: cage_spin_only = .true.
       !> two-dimensional race traction (ball_bearing_loads' two_d; report eqs 2-3: the slip
       !> vector along and across the rolling direction): on by default, it damps the balls'
       !> motion across the rolling direction that the 1-D traction leaves free
@@ -103,12 +108,12 @@ contains
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
-                                 self%contact_damping, self%land_film)
+                                 self%contact_damping, self%land_film, self%cage_spin_only)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
-                                 land_film=self%land_film)
+                                 land_film=self%land_film, cage_spin_only=self%cage_spin_only)
       end if
       if (allocated(self%failure)) then
          flag = DERIV_FAIL
@@ -220,6 +225,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: traction, two_d
       real(wp) :: scales(3), l, tt
+      type(bearing_state_t) :: st
 
       call scale_factors(b%d, b%mass(1), b%force, scales, error)
       if (allocated(error)) return
@@ -228,7 +234,15 @@ contains
       sys = new_ball_system(b, g, tt, traction)
       if (present(two_d)) sys%traction_2d = two_d
       allocate (y(state_size(b%n_elements)))
-      call pack_state(initial_ball_state(b, g, start, cage), y)
+      st = initial_ball_state(b, g, start, cage)
+      if (sys%cage_spin_only) then
+         ! the constrained cage (report 4.4.6): centred on the bearing axis, untilted, turning
+         ! at its start speed (the 4.4.4 whirl needs its free translation)
+         st%cage%position(2:3) = 0.0_wp
+         st%cage%velocity = 0.0_wp
+         st%cage%attitude = quat_from_rotation_vector([0.0_wp, 0.0_wp, 0.0_wp])
+      end if
+      call pack_state(st, y)
       call it%init(size(y), integrator_settings_t(int_method=b%int_method, h_initial=b%step_initial, &
                                                   h_min=b%step_min, h_max=b%step_max, error_limit=b%error_limit, &
                                                   rel_weight=0.0_wp, accept_at_h_min=.true.), error, &

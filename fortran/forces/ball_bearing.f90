@@ -47,7 +47,7 @@ module adore_forces_ball_bearing
    private
 
    public :: body_load_t, ball_bearing_loads_t, ball_race_pairs, ball_bearing_loads, ball_pocket_pair, &
-             guide_land_pairs, add_gyroscopic_restraint
+             guide_land_pairs, add_gyroscopic_restraint, total_power_loss
 
    !> Force (N) and moment about the mass centre (N m) on one body, inertial components.
    type :: body_load_t
@@ -141,6 +141,15 @@ contains
          end associate
       end do
    end function guide_land_pairs
+
+   !> Total power loss (W) of the loads of one evaluation: the race contacts' heat plus the
+   !> friction power of the pocket and guide-land contacts when the cage contacts are on.
+   pure real(wp) function total_power_loss(loads)
+      type(ball_bearing_loads_t), intent(in) :: loads
+      total_power_loss = sum(loads%heat)
+      if (allocated(loads%pockets)) total_power_loss = total_power_loss + sum(loads%pockets%power)
+      if (allocated(loads%lands)) total_power_loss = total_power_loss + sum(loads%lands%power)
+   end function total_power_loss
 
    !> The balls' gyroscopic moments resisted by friction without sliding (Jones 1960; Harris &
    !> Kotzalas, Rolling Bearing Analysis, 5th ed., vol. 2, ch. 2, "ball gyroscopic moment"):

@@ -15,7 +15,8 @@ module adore_output_ball_dynamic_report
                                    TEMP_CAGE, TEMP_ELEMENT, TEMP_HOUSING, TEMP_INNER, TEMP_OUTER, TEMP_SHAFT
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, body_azimuth, RACE_OUTER, RACE_INNER
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, total_power_loss, guide_land_pairs
+   use adore_contact_cage_land, only: cage_land_pair_t
    use adore_tribology_race_contact, only: wall_temperature
    use adore_cage_step0, only: cage_step0_t
    use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
@@ -103,13 +104,11 @@ contains
       end do
       thermal(:, 4:5) = 0.0_wp                                 ! rigid races: no race flexing
 
-      ! section 2: cage contacts are off in the dynamics (ball_system_t%cage): not computed
-      re_cage = nan
-      cage_code = INT_NOT_COMPUTED
+      ! section 2: the pocket and guide-land contacts of this state (cage_contact_tables);
+      ! not computed (NaN) when the run has no cage contacts
       cage_end = 0
-      race_cage = nan
-      land_code = INT_NOT_COMPUTED
       land_no = [(k, k=1, size(land_no))]
+      call cage_contact_tables(b, g, s, loads, cage_code, re_cage, land_code, race_cage)
       bodies = nan
       associate (c => s%cage)
          bodies(1, 1) = c%position(1) - g%groove_centre(1, 1)   ! print frame: outer groove centre plane
@@ -152,7 +151,7 @@ contains
       perf(3) = g%mounting%outer_fit
       perf(4) = g%mounting%inner_fit
       perf(5) = g%mounting%clearance
-      perf(6) = sum(loads%heat)                      ! race contacts only (no cage contact)
+      perf(6) = total_power_loss(loads)              ! race contacts and cage contacts
       perf(9:11) = s%temperature(TEMP_HOUSING)
       perf(12:14) = s%temperature(TEMP_SHAFT)
 
@@ -163,6 +162,62 @@ contains
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, ld, acc, perf, [step], summary)
    end subroutine write_ball_step
+
+   !> Section 2's cage contact tables at state s (loads of that state): per pocket Geo Int =
+   !> the pocket gap (m, the step-0 definition), Contact Force = the metallic (Hertz) load
+   !> (N; the hydrodynamic film force is not in it), Con Ang THETA / PHI and Contact Pos X /
+   !> Z as adore_cage_step0 defines them from the ball centre in the pocket frame, Contact
+   !> Loss = the friction power (W), code 1 with metallic contact, 0 without; per guide land
+   !> Geo Int = gap (m), Force = metallic load (N), Effective Dia Play = twice the land's
+   !> radial clearance (m), Contact Loss (W).  Wear rates and the land's contact and
+   !> attitude angles are not computed (NaN).  Everything NaN / not computed when the loads
+   !> have no cage contacts.
+   subroutine cage_contact_tables(b, g, s, loads, code, re_cage, land_code, race_cage)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: s
+      type(ball_bearing_loads_t), intent(in) :: loads
+      integer, intent(out) :: code(:), land_code(:)
+      real(wp), intent(out) :: re_cage(:, :), race_cage(:, :)
+      type(cage_land_pair_t), allocatable :: lp(:)
+      real(wp) :: nan, n_p(2), r
+      integer :: k
+
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      code = INT_NOT_COMPUTED
+      re_cage = nan
+      land_code = INT_NOT_COMPUTED
+      race_cage = nan
+      if (allocated(loads%pockets)) then
+         do k = 1, min(size(loads%pockets), size(re_cage, 1))
+            associate (p => loads%pockets(k))
+               re_cage(k, 1) = p%gap
+               re_cage(k, 2) = p%metallic_load
+               r = hypot(p%q(1), p%q(2))
+               n_p = [1.0_wp, 0.0_wp]
+               if (r > 0.0_wp) n_p = p%q(1:2)/r
+               re_cage(k, 3) = modulo(atan2(-n_p(1), n_p(2)), 2.0_wp*pi)*rad_to_deg
+               re_cage(k, 4) = 0.0_wp
+               re_cage(k, 5) = p%q(1) + 0.5_wp*g%element_diameter*n_p(1)
+               re_cage(k, 6) = p%q(3)
+               re_cage(k, 7) = p%power
+               code(k) = merge(1, 0, p%metallic_load > 0.0_wp)
+            end associate
+         end do
+      end if
+      if (allocated(loads%lands)) then
+         lp = guide_land_pairs(b, g, s%temperature)
+         do k = 1, min(size(loads%lands), size(race_cage, 1))
+            associate (c => loads%lands(k))
+               race_cage(k, 1) = c%gap
+               race_cage(k, 2) = c%metallic_load
+               race_cage(k, 5) = 2.0_wp*lp(k)%clearance
+               race_cage(k, 6) = c%power
+               land_code(k) = merge(1, 0, c%metallic_load > 0.0_wp)
+            end associate
+         end do
+      end if
+   end subroutine cage_contact_tables
 
    !> Section 4's speed ratios at state s of ball bearing b (step 0's speed_ratios): the mean
    !> ball orbital speed (orbital_speed), the cage's angular speed about its axis (body x)

@@ -21,7 +21,7 @@ contains
    !> steps; the listing says so first, with what the time integration does not do yet (the
    !> thermal model is off; the cage contacts when cage_contacts is .false.).
    subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps, &
-                            cage_contacts, land_film, traction_2d)
+                            cage_contacts, land_film, traction_2d, cage_constrained)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -38,6 +38,8 @@ contains
       !> whether the race traction is two-dimensional (absent: .true.; .false. is the
       !> developer option of the one-dimensional traction, report eq 1)
       logical, intent(in), optional :: traction_2d
+      !> whether the cage's translation and tilt are constrained (absent: .false.)
+      logical, intent(in), optional :: cage_constrained
       integer :: i
       logical :: cage
 
@@ -50,6 +52,10 @@ contains
             write (unit, "(a,i0,a)") "TIME INTEGRATION: ", dynamics_steps, " TIME STEPS"
             write (unit, "(a)") "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"
             if (.not. cage) write (unit, "(a)") "  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"
+            if (cage .and. present(cage_constrained)) then
+               if (cage_constrained) write (unit, "(a)") "  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY "// &
+                  "(DOF CONSTRAINT, REPORT 4.4.6)"
+            end if
             if (cage .and. present(land_film)) then
                if (.not. land_film) write (unit, "(a)") "  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT ONLY "// &
                   "(docs/dynamics.md, Cage dynamics)"
