@@ -104,6 +104,7 @@ contains
       integer, intent(out) :: flag
 
       self%calls = self%calls + 1
+      if (allocated(self%failure_reason)) deallocate (self%failure_reason)   ! only the last eval's reason
       call unpack_state(y, t*self%time_scale, self%state)
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
@@ -116,7 +117,10 @@ contains
                                  land_film=self%land_film, cage_spin_only=self%cage_spin_only)
       end if
       if (allocated(self%failure)) then
-         flag = DERIV_FAIL
+         ! a state outside the contact models' range (e.g. a stage of a too long step that
+         ! drove a ball deep into a race): the integrator retries smaller (report 4.4.12);
+         ! at the start of a step or at the minimum step the run stops with this reason
+         flag = DERIV_REJECT_STEP
          self%failure_reason = self%failure%message
          dydt = 0.0_wp
          return

@@ -291,7 +291,7 @@ contains
          rejected_before = .true.
          if (h <= h_min) then
             call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min)", &
-                            t, h, ": "//why)
+                            t, h, ": "//why, deriv=deriv)
             return
          end if
          h = max(fac*h, h_min)
@@ -375,7 +375,7 @@ contains
          call stop_error(self, error, "the derivative failed", t, self%h_next, deriv=deriv)
       else if (flag == DERIV_REJECT_STEP) then
          call stop_error(self, error, "the derivative flags the state at the start of a step (abnormal "// &
-                         "contact, report 4.4.12), which no smaller step can avoid", t, self%h_next)
+                         "contact, report 4.4.12), which no smaller step can avoid", t, self%h_next, deriv=deriv)
       else if (.not. all(ieee_is_finite(self%k(:, 1)))) then
          msg = " (non-finite derivatives: "
          call put_bad(msg, self%k(:, 1))

@@ -25,6 +25,7 @@
 !> (report 4.4.12) sets `abnormal` for the integrator to reject the step.
 !> Moments are about each body's mass centre, inertial components.  Units SI.
 module adore_forces_ball_bearing
+   use adore_core_strings, only: itoa
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_constants, only: pi
@@ -267,7 +268,11 @@ contains
                cj = planar_contact(pairs(j), c)
                call race_traction(k, j, cj, c%transverse_coeff, c%ellipse%semi_minor, c%ellipse%max_pressure, t, &
                                   error)
-               if (allocated(error)) return
+               if (allocated(error)) then   ! name the contact (the integrator adds time and step)
+                  error%message = "ball "//itoa(k)//", "//trim(merge("outer", "inner", j == RACE_OUTER))// &
+                                  " race contact: "//error%message
+                  return
+               end if
                ! the traction along the rolling direction and (two-dimensional only) across it
                sums = [t%force, t%force_cos, t%force_sin, t%cross_force]
                loads%traction(j, k) = t
