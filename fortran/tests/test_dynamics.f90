@@ -59,6 +59,8 @@ program test_dynamics
                                          state_error_scale
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
    use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_quasistatic_ball_equilibrium, only: ball_qs_load_t, ball_qs_solution_t, solve_ball_equilibrium
+   use adore_quasistatic_models, only: ball_qs_model
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
    use adore_test_support, only: check, finish, get_decks_dir
    use test_dynamics_free_body, only: free_body_t
@@ -71,6 +73,7 @@ program test_dynamics
    call test_free_body("cage", [3.1e-5_wp, 1.7e-5_wp, 1.7e-5_wp]*[1.0_wp, 1.1_wp, 0.9_wp], [900.0_wp, 40.0_wp, -25.0_wp])
    call test_energy_without_traction()
    call test_run_balances_the_applied_load()
+   call test_orbit_averages_match_the_quasi_static_equilibrium()
    call finish("dynamics")
 
 contains
@@ -269,5 +272,78 @@ contains
       call check(abs(w_mean/w_start - 1.0_wp) <= 0.02_wp, "run: mean orbital speed within 2 % of the start's")
       call check(all(sys%loads%contacts%load > 0.0_wp), "run: every ball loaded at both races")
    end subroutine test_run_balances_the_applied_load
+
+   !> Issue #20's check of the dynamics against the statics: Appendix C with the run's
+   !> defaults, settled for two inner-race revolutions, then averaged (time-weighted) over
+   !> one orbit of the balls: each ball visits every azimuth, so its mean outer and inner
+   !> contact loads and angles must equal the azimuthal means of the quasi-static
+   !> equilibrium (adore_quasistatic_ball_equilibrium: no traction, no cage) at the same
+   !> orbital speed within 2 %.
+   subroutine test_orbit_averages_match_the_quasi_static_equilibrium()
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(ball_system_t) :: sys
+      type(integrator_t) :: it
+      type(bearing_state_t) :: s
+      type(error_type), allocatable :: error
+      type(ball_qs_load_t) :: ld
+      type(ball_qs_solution_t) :: qs
+      real(wp), allocatable :: y(:), mean(:, :), w(:)
+      real(wp) :: t, t_prev, t0, t1, dt, qs_mean(4), worst(4), w_orbit
+      integer :: k, n, i
+
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      if (allocated(error)) return
+      g = mount_geometry(b, b%temperature)
+      call solve_ball_step0(b, s0, error)
+      if (allocated(error)) return
+      call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error)
+      if (allocated(error)) return
+      n = b%n_elements
+      s = new_bearing_state(n)
+      allocate (mean(4, n), source=0.0_wp)
+      allocate (w(n), source=0.0_wp)
+      w_orbit = sum(s0%start%kinematics%orbital_speed)/n
+      t0 = 2.0_wp*2.0_wp*acos(-1.0_wp)/b%speed_inner/sys%time_scale          ! two inner-race revolutions
+      t1 = t0 + 2.0_wp*acos(-1.0_wp)/w_orbit/sys%time_scale                  ! plus one ball orbit
+      t = 0.0_wp
+      do while (t < t1)
+         t_prev = t
+         call it%step(sys, t, y, error, t_limit=t1)
+         if (allocated(error)) exit
+         if (t <= t0) cycle
+         dt = t - max(t_prev, t0)
+         call unpack_state(y, t*sys%time_scale, s)
+         do k = 1, n
+            associate (c => sys%loads%contacts)
+               mean(:, k) = mean(:, k) + dt*[c(1, k)%load, c(2, k)%load, abs(c(1, k)%alpha), abs(c(2, k)%alpha)]
+            end associate
+            w(k) = w(k) + dt*(s%elements(k)%position(2)*s%elements(k)%velocity(3) - &
+                              s%elements(k)%position(3)*s%elements(k)%velocity(2))/sum(s%elements(k)%position(2:3)**2)
+         end do
+      end do
+      call check(.not. allocated(error), "orbit averages: the run reaches one orbit after two revolutions")
+      if (allocated(error)) then
+         write (*, "(a)") error%message
+         return
+      end if
+      mean = mean/(t1 - t0)
+      w = w/(t1 - t0)
+      ! the quasi-static equilibrium at the run's mean orbital speed, every ball
+      ld%force = b%force
+      ld%moment = b%moment
+      ld%gravity = b%gravity
+      call solve_ball_equilibrium(ball_qs_model(b, g), ld, spread(sum(w)/n, 1, n), qs, error)
+      call check(.not. allocated(error), "orbit averages: quasi-static equilibrium at the run's orbital speed")
+      if (allocated(error)) return
+      qs_mean = [sum(qs%q_o), sum(qs%q_i), sum(abs(qs%alpha_o)), sum(abs(qs%alpha_i))]/n
+      do i = 1, 4
+         worst(i) = maxval(abs(mean(i, :)/qs_mean(i) - 1.0_wp))
+      end do
+      write (*, "(a,f9.3,a,4es10.2)") "orbit averages (mean orbital speed ", sum(w)/n, &
+         " rad/s): worst |ball mean / static mean - 1| of Q_o, Q_i, alpha_o, alpha_i ", worst
+      call check(all(worst <= 0.02_wp), "orbit averages: every ball's mean loads and angles within 2 % of the statics")
+   end subroutine test_orbit_averages_match_the_quasi_static_equilibrium
 
 end program test_dynamics
