@@ -246,3 +246,36 @@ def test_section4_ratios_are_the_runs_own_speeds_over_the_inner_race(tmp_path, d
         step.table("re_motion")["orbital_velocity_rpm"].mean() / inner_rpm, rel=2e-3)   # 4 printed digits
     assert summary["cage_omega_ratio"] == pytest.approx(cage["ang_vel_amplitude_rpm"] / inner_rpm, rel=2e-3)
     assert summary["cage_whirl_ratio"] == pytest.approx(cage["orbital_velocity_rpm"] / inner_rpm, rel=2e-3)
+
+
+#: Issue #20's acceptance columns at the last step of the full Appendix C run (compared at
+#: the golden ball's orbital position, golden/tolerances.toml): contact loads and angles 3 %
+#: (the light-zone inner load and outer angle are documented known deviations there),
+#: orbital speeds 1 %, total power loss and basic life 10 %.
+BALL_FINAL_GATED = [
+    ("re_contact", "contact_angle_outer_deg"),
+    ("re_contact", "contact_angle_inner_deg"),
+    ("re_contact", "contact_load_outer_N"),
+    ("re_contact", "contact_load_inner_N"),
+    ("re_motion", "orbital_velocity_rpm"),
+    ("performance", "total_power_loss_W"),
+    ("performance", "basic_fatigue_life_hours"),
+]
+
+
+def test_ball_final_step_within_the_dynamics_tolerances(full_ball_run):
+    """The full run's step 2500 against the report's (issue #20): every gated value within
+    its tolerance or a documented known deviation, and the deviations only where the
+    tolerance file documents them."""
+    report = diff_prints(full_ball_run.print_path, ROOT / "golden" / "appendix_c_ball.prt")
+    comps = _selected(report, "step 2500 ", BALL_FINAL_GATED)
+    compared = [c for c in comps if c.status != "unknown"]
+    assert len(compared) >= 80, "the step-2500 columns were not found in the run"
+    bad = [f"{c.name}: golden {c.golden} run {c.run} ({c.rel_error:.2%}, {c.tolerance})"
+           for c in compared if c.status not in ("within", "deviation")]
+    assert bad == []
+    deviating = {c.column for c in compared if c.status == "deviation"}
+    assert deviating <= {"contact_angle_outer_deg", "contact_load_inner_N"}
+    # the documented sizes: the known deviations stay below their measured worst
+    worst = max((c.rel_error for c in compared if c.status == "deviation"), default=0.0)
+    assert worst < 0.20
