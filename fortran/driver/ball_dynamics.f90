@@ -144,13 +144,8 @@ contains
             call stop_run(i - 1, reason, .true.)
             return
          end if
-         ! the state, rates and loads at the accepted state (one evaluation outside the
-         ! integrator's count; it does not disturb its first-same-as-last reuse)
-         call sys%eval(t, y, dydt, flag)
-         if (flag == DERIV_FAIL) then
-            call stop_run(i - 1, "step "//itoa(i)//": "//sys%failure_reason, .true.)
-            return
-         end if
+         ! sys%state, rates and loads belong to the accepted state: the integrator's pairs are
+         ! first-same-as-last, their last stage is evaluated at (t, y) of the accepted step
          do k = 1, b%n_elements
             associate (phi => body_azimuth(sys%state%elements(k)))
                azimuth(k) = azimuth(k) + (modulo(phi - last(k) + pi, 2.0_wp*pi) - pi)
