@@ -71,7 +71,7 @@ def read_traction_table(path):
 
 def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball_start=None,
         moment_equilibrium: bool = False, history_element: int = 1, progress=None,
-        traction_2d: bool = True) -> Result:
+        traction_2d: bool = True, substeps: int = 1) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
 
     steps: ``None`` runs as many time steps as the deck asks for (Rec 1; Appendix C: 2500),
@@ -95,6 +95,9 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
     section 2 (IRace Ang Position Theta, Phi).  Ball decks only.
     history_element: the rolling element whose race contacts and pocket force the time
     history records (default 1).
+    substeps: integrator steps in each time step (report 4.4.5): the deck's step count and
+    print interval count time steps of ``substeps`` integrator steps each; output is neither
+    printed nor recorded over the substeps (default 1).
     traction_2d: ``True`` (default): the dynamics' race traction acts along the slip vector
     along and across the rolling direction (report eqs 2-3); ``False`` is a developer option,
     the one-dimensional traction along the rolling direction only (eq 1), listed in the print
@@ -134,6 +137,9 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
         raise AdoreInputError(f"moment_equilibrium must be True or False, got {moment_equilibrium!r}")
     if not isinstance(traction_2d, bool):
         raise AdoreInputError(f"traction_2d must be True or False, got {traction_2d!r}")
+    if isinstance(substeps, bool) or not isinstance(substeps, int) or substeps < 1:
+        raise AdoreInputError(f"substeps must be an integer >= 1 (integrator steps per printed time step), "
+                              f"got {substeps!r}")
     from .progress import RunProgress
     from .timehistory import history_frame
 
@@ -141,7 +147,7 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
     try:
         with watch:
             output = _core.run_file(deck, out_path, engine_steps, table, ball_start, moment_equilibrium,
-                                    history_element, watch.callback, traction_2d)
+                                    history_element, watch.callback, traction_2d, substeps)
     except AdoreEngineError as exc:
         done = getattr(exc, "output", None)
         exc.print_path = out_path if out_path.exists() else None

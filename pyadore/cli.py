@@ -50,11 +50,13 @@ def cli() -> None:
 @click.option("--ball-start", type=click.Choice(BALL_STARTS),
               help="initial ball angular velocity (report 4.4.7): minimum contact dissipation "
                    "[default] or race control at one race (ball decks only)")
+@click.option("--substeps", type=click.IntRange(min=1), default=1, show_default=True,
+              help="integrator steps in each printed time step (report 4.4.5)")
 @click.option("--moment-equilibrium", is_flag=True, default=False,
               help="solve the inner race's misalignment for moment equilibrium (ADORE kFS4 = kFS5 = 0) "
                    "instead of prescribing it zero (ball decks only)")
 def run(deck: Path, out: Path | None, steps: int | None, history_element: int, traction_table: Path | None,
-        ball_start: str | None, moment_equilibrium: bool) -> None:
+        ball_start: str | None, substeps: int, moment_equilibrium: bool) -> None:
     """Run DECK through the engine and write its print file.
 
     A run with time steps also writes its plot-data file (time histories) beside the print,
@@ -72,7 +74,8 @@ def run(deck: Path, out: Path | None, steps: int | None, history_element: int, t
         sys.exit(1)
     try:
         result = run_deck(deck, steps=steps, out=out, traction_table=traction_table, ball_start=ball_start,
-                          moment_equilibrium=moment_equilibrium, history_element=history_element)
+                          moment_equilibrium=moment_equilibrium, history_element=history_element,
+                          substeps=substeps)
     except AdoreError as exc:
         _fail(exc)
     except KeyboardInterrupt:

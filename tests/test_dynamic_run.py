@@ -602,3 +602,22 @@ def test_example_ball_decks_run_their_time_steps(tmp_path, name):
     assert n >= 1 and n in run.steps
     perf = run.steps[n].table("performance").iloc[0]
     assert math.isfinite(perf["total_power_loss_W"]) and perf["total_power_loss_W"] > 0
+
+
+def test_substeps_integrate_the_same_motion_and_print_only_the_nominal_steps(tmp_path, ball_deck):
+    """Report 4.4.5: 20 time steps of 5 substeps each are 100 integrator steps - the same
+    state as 100 plain steps (identical numbers at the last step) - with 20 printed and
+    counted steps; the listing says so; substeps < 1 is an input error."""
+    sub = pyadore.run(ball_deck, steps=20, substeps=5, out=tmp_path / "sub.prt", progress=False)
+    plain = pyadore.run(ball_deck, steps=100, out=tmp_path / "plain.prt", progress=False)
+    assert "  5 SUBSTEPS IN EACH TIME STEP (REPORT 4.4.5)" in sub.text.split("Listing of input data records")[0]
+    rs, rp = read_print(sub.print_path), read_print(plain.print_path)
+    assert rs.termination["last_step_number"] == 20 and rp.termination["last_step_number"] == 100
+    assert rs.termination["final_time"] == rp.termination["final_time"]
+    for table in ("re_contact", "re_motion", "loads"):
+        a, b = rs.steps[20].table(table), rp.steps[100].table(table)
+        np.testing.assert_array_equal(a.to_numpy(), b.to_numpy())
+    assert rs.statistics["total_derivative_calls"] == rp.statistics["total_derivative_calls"]
+    assert list(sub.time_history["step"]) == list(range(0, 21))
+    with pytest.raises(AdoreInputError, match="substeps"):
+        pyadore.run(ball_deck, steps=2, substeps=0, out=tmp_path / "bad.prt")

@@ -25,10 +25,10 @@ contains
    !> columns, the steps integrated, the run's note, status and message.  On an early stop
    !> (status 2) the arrays hold the history up to the last accepted step.
    subroutine run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
-                              traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, &
-                              message, progress)
+                              traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, integrated, note, &
+                              status, message, progress)
       character(len=*), intent(in) :: deck_path, out_path, traction_table, ball_start
-      integer, intent(in) :: steps, moment_equilibrium, element, traction_2d, rows, cols
+      integer, intent(in) :: steps, moment_equilibrium, element, traction_2d, substeps, rows, cols
       real(wp), intent(out) :: hist(rows, cols)
       integer, intent(out) :: n_rows, n_cols, integrated, status
       character(len=*), intent(out) :: columns, note, message
@@ -38,7 +38,7 @@ contains
       character(len=:), allocatable :: text, run_note
 
       call run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium /= 0, &
-                    integrated, history, run_note, progress, element, traction_2d /= 0)
+                    integrated, history, run_note, progress, element, traction_2d /= 0, substeps)
       status = ADORE_OK
       message = ""
       note = ""
@@ -92,7 +92,7 @@ end subroutine adore_run_plan
 !> columns = the column names joined by commas, integrated = steps after step 0, note =
 !> what the run does not do (blank: nothing).  No progress callback (thread-safe).
 subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
-                          traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, message)
+                          traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, message)
    use adore_core_kinds, only: wp
    use adore_api_run, only: run_into_arrays
    implicit none
@@ -104,6 +104,7 @@ subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start
    integer, intent(in) :: moment_equilibrium   !< 1: moment equilibrium of the inner race (kFS4 = kFS5 = 0); 0: prescribed
    integer, intent(in) :: element              !< rolling element of the history's contact columns
    integer, intent(in) :: traction_2d          !< 1: two-dimensional race traction (the default); 0: the 1-D developer option
+   integer, intent(in) :: substeps             !< integrator steps per printed time step (report 4.4.5; >= 1)
    integer, intent(in) :: rows, cols           !< history capacity (adore_run_plan)
    real(wp), intent(out) :: hist(rows, cols)   !< the time history (SI units, docs/plots.md)
    integer, intent(out) :: n_rows, n_cols      !< its filled part
@@ -114,21 +115,22 @@ subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start
    character(len=16384), intent(out) :: message !< error message, blank on success
 
    call run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
-                        traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, message)
+                        traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, &
+                        message)
 end subroutine adore_run_file
 
 !> adore_run_file with a progress callback: progress(step, n_steps, tau, time, stop) after
 !> every accepted time step (adore_driver_ball_dynamics' run_progress); stop /= 0 ends the
 !> run there, incomplete ("interrupted", status 2).  Not thread-safe (the callback is Python).
 subroutine adore_run_file_progress(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, &
-                                   element, traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, &
-                                   status, message, progress)
+                                   element, traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, &
+                                   integrated, note, status, message, progress)
    use adore_core_kinds, only: wp
    use adore_api_run, only: run_into_arrays
    use adore_driver_run, only: run_progress
    implicit none
    character(len=*), intent(in) :: deck_path, out_path, traction_table, ball_start
-   integer, intent(in) :: steps, moment_equilibrium, element, traction_2d, rows, cols
+   integer, intent(in) :: steps, moment_equilibrium, element, traction_2d, substeps, rows, cols
    real(wp), intent(out) :: hist(rows, cols)
    integer, intent(out) :: n_rows, n_cols, integrated, status
    character(len=8192), intent(out) :: columns
@@ -137,8 +139,8 @@ subroutine adore_run_file_progress(deck_path, out_path, steps, traction_table, b
    procedure(run_progress) :: progress
 
    call run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
-                        traction_2d, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, message, &
-                        progress)
+                        traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, &
+                        message, progress)
 end subroutine adore_run_file_progress
 
 !> The engine's version string.

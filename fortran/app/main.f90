@@ -1,6 +1,6 @@
 !> The standalone `adore` program:
 !> `adore DECK [OUT.prt] [--steps N] [--history-element N] [--traction-table FILE] [--ball-start NAME]
-!> [--moment-equilibrium] [--traction-1d]`.
+!> [--moment-equilibrium] [--substeps N] [--traction-1d]`.
 !>
 !> The only place that ends the process: exit code 0 ok, 1 bad input, 2 engine failure
 !> (including a time integration that stopped early or was interrupted: its print is kept
@@ -92,10 +92,12 @@ program adore
    type(error_type), allocatable :: error
    character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start, note, hist_path
    integer :: i, nargs, steps, dot, integrated, element
+   integer :: substeps
    logical :: moments, two_d
 
    integrated = 0
    element = 1
+   substeps = 1
    steps = STEPS_FROM_DECK
    deck_path = ""
    table_path = ""
@@ -119,6 +121,9 @@ program adore
          if (allocated(error)) exit
       case ("--history-element")
          call integer_option(i, "--history-element", "a rolling element number", element, error)
+         if (allocated(error)) exit
+      case ("--substeps")
+         call integer_option(i, "--substeps", "a number of substeps", substeps, error)
          if (allocated(error)) exit
       case ("--traction-table")
          call option_value(i, "--traction-table", "a file", table_path, error)
@@ -161,7 +166,8 @@ program adore
       end if
       call install_interrupt()
       call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments, integrated, note=note, &
-                    progress=show_progress, history_element=element, traction_2d=two_d)
+                    progress=show_progress, history_element=element, traction_2d=two_d, &
+                    substeps=substeps)
       call end_progress_line()
    end if
 
@@ -228,7 +234,7 @@ contains
    subroutine usage(unit)
       integer, intent(in) :: unit
       write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--history-element N] [--traction-table FILE]"// &
-         " [--ball-start NAME] [--moment-equilibrium] [--traction-1d]"
+         " [--ball-start NAME] [--moment-equilibrium] [--substeps N] [--traction-1d]"
       write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt) and, when it"
       write (unit, "(a)") "  integrates time steps, its plot-data file beside it (OUT.hist.csv; docs/plots.md)"
       write (unit, "(a)") "  --steps N                time steps to integrate after step 0 (ball decks; thermal model"
@@ -243,6 +249,7 @@ contains
       write (unit, "(a)") "                           or inner-race-control (ball decks only)"
       write (unit, "(a)") "  --moment-equilibrium     solve the inner race's misalignment for moment equilibrium"
       write (unit, "(a)") "                           (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks)"
+      write (unit, "(a)") "  --substeps N             integrator steps in each printed time step (report 4.4.5; default 1)"
       write (unit, "(a)") "  --traction-1d            developer option of the dynamics: one-dimensional race traction"
       write (unit, "(a)") "                           (slip along the rolling direction only, report eq 1) instead of"
       write (unit, "(a)") "                           the two-dimensional default (docs/dynamics.md)"

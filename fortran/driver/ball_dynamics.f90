@@ -95,7 +95,7 @@ contains
    !> INCOMPLETE_MARK//incomplete//" ***", and returns an engine error with the same reason;
    !> incomplete = " after step N (tau = T): <reason>" (blank when the run completed).
    !> Errors of the integrator's settings come from start_ball_dynamics, before any print.
-   subroutine run_ball_dynamics(unit, b, g, s0, sys, it, y, n_steps, history, incomplete, error, progress)
+   subroutine run_ball_dynamics(unit, b, g, s0, sys, it, y, n_steps, history, incomplete, error, progress, substeps)
       integer, intent(in) :: unit
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
@@ -108,15 +108,20 @@ contains
       character(len=:), allocatable, intent(out) :: incomplete
       type(error_type), allocatable, intent(out) :: error
       procedure(run_progress), optional :: progress
+      !> integrator steps per nominal (printed, recorded, counted) step, report 4.4.5
+      !> (default 1); the time averages take every one of them
+      integer, intent(in), optional :: substeps
 
       type(time_average_t) :: averages
       real(wp), allocatable :: dydt(:), azimuth(:), last(:), values(:), mean(:)
       real(wp) :: t, t_old, clearance, axial_origin
       character(len=:), allocatable :: reason
-      integer :: i, k, flag, stop, printed_last, n_values
+      integer :: i, j, k, flag, stop, printed_last, n_values, n_sub
       logical :: print_now
 
       incomplete = ""
+      n_sub = 1
+      if (present(substeps)) n_sub = max(substeps, 1)
       n_values = AVG_BALL_WEAR - 1 + b%n_elements
       allocate (dydt(size(y)), values(n_values), mean(n_values))
       axial_origin = s0%start%equilibrium%u(1) - s0%start%equilibrium%axial_displacement
@@ -136,24 +141,26 @@ contains
       call averages%mean(mean)
       call record(0)
       do i = 1, n_steps
-         t_old = t
-         call it%step(sys, t, y, error)
-         if (allocated(error)) then
-            reason = error%message
-            deallocate (error)
-            call stop_run(i - 1, reason, .true.)
-            return
-         end if
-         ! sys%state, rates and loads belong to the accepted state: the integrator's pairs are
-         ! first-same-as-last, their last stage is evaluated at (t, y) of the accepted step
-         do k = 1, b%n_elements
-            associate (phi => body_azimuth(sys%state%elements(k)))
-               azimuth(k) = azimuth(k) + (modulo(phi - last(k) + pi, 2.0_wp*pi) - pi)
-               last(k) = phi
-            end associate
+         do j = 1, n_sub                      ! substeps (4.4.5): nothing printed or recorded
+            t_old = t
+            call it%step(sys, t, y, error)
+            if (allocated(error)) then
+               reason = error%message
+               deallocate (error)
+               call stop_run(i - 1, reason, .true.)
+               return
+            end if
+            ! sys%state, rates and loads belong to the accepted state: the integrator's pairs
+            ! are first-same-as-last, their last stage is evaluated at (t, y) of the step
+            do k = 1, b%n_elements
+               associate (phi => body_azimuth(sys%state%elements(k)))
+                  azimuth(k) = azimuth(k) + (modulo(phi - last(k) + pi, 2.0_wp*pi) - pi)
+                  last(k) = phi
+               end associate
+            end do
+            call ball_averaged_values(b, sys%state, sys%loads, values)
+            call averages%add(t - t_old, values)
          end do
-         call ball_averaged_values(b, sys%state, sys%loads, values)
-         call averages%add(t - t_old, values)
          print_now = i == n_steps
          if (b%print_interval > 0) print_now = print_now .or. mod(i, b%print_interval) == 0
          if (print_now .or. history_due(history, i, n_steps, print_now)) call averages%mean(mean)

@@ -108,7 +108,7 @@ contains
    !> asking to stop) keeps its print and plot-data file, both ending with the
    !> "RUN INCOMPLETE" line, and returns an engine error naming the print.
    subroutine run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium, &
-                       integrated, history, note, progress, history_element, traction_2d)
+                       integrated, history, note, progress, history_element, traction_2d, substeps)
       character(len=*), intent(in) :: deck_path, out_path
       integer, intent(in) :: steps
       type(error_type), allocatable, intent(out) :: error
@@ -139,6 +139,9 @@ contains
       !> direction only, report eq 1), a developer option listed in the print; absent or
       !> .true.: the two-dimensional traction (eqs 2-3; ball_system_t%traction_2d, the default)
       logical, intent(in), optional :: traction_2d
+      !> integrator steps per nominal step (report 4.4.5: output is neither processed nor saved
+      !> over the substeps); absent: 1.  Input error below 1.
+      integer, intent(in), optional :: substeps
 
       type(deck_text_t) :: text
       type(deck_t) :: deck
@@ -161,6 +164,13 @@ contains
       if (present(note)) note = ""
       call check_steps(steps, error)
       if (allocated(error)) return
+      if (present(substeps)) then
+         if (substeps < 1) then
+            call input_error(error, "substeps must be at least 1 (integrator steps per printed time step, "// &
+                             "report 4.4.5)")
+            return
+         end if
+      end if
       if (len_trim(out_path) == 0) then
          call input_error(error, "print file: no output path given")
          return
@@ -247,7 +257,7 @@ contains
       start_title = ""
       if (start_method /= BALL_START_METHOD) start_title = trim(start_method_title(start_method))
       call write_listing(unit, text, bearing%race_traction, table_path, start_title, moments, n_dynamic, sys%cage, &
-                         sys%land_film, sys%traction_2d, sys%cage_spin_only)
+                         sys%land_film, sys%traction_2d, sys%cage_spin_only, substeps)
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start; then the time steps of a ball deck.
@@ -257,7 +267,7 @@ contains
          call write_ball_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], bearing, ball0)
          if (n_dynamic > 0) then
             call run_ball_dynamics(unit, bearing, geometry, ball0, sys, it, y, n_dynamic, hist, incomplete, &
-                                   run_error, progress)
+                                   run_error, progress, substeps)
          end if
       case (ROLLER_BEARING)
          call write_roller_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], bearing, roller0)

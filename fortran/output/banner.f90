@@ -21,7 +21,7 @@ contains
    !> steps; the listing says so first, with what the time integration does not do yet (the
    !> thermal model is off; the cage contacts when cage_contacts is .false.).
    subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps, &
-                            cage_contacts, land_film, traction_2d, cage_constrained)
+                            cage_contacts, land_film, traction_2d, cage_constrained, substeps)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -40,6 +40,8 @@ contains
       logical, intent(in), optional :: traction_2d
       !> whether the cage's translation and tilt are constrained (absent: .false.)
       logical, intent(in), optional :: cage_constrained
+      !> integrator steps per time step (absent or 1: no substeps)
+      integer, intent(in), optional :: substeps
       integer :: i
       logical :: cage
 
@@ -50,6 +52,9 @@ contains
             cage = .true.
             if (present(cage_contacts)) cage = cage_contacts
             write (unit, "(a,i0,a)") "TIME INTEGRATION: ", dynamics_steps, " TIME STEPS"
+            if (present(substeps)) then
+               if (substeps > 1) write (unit, "(a,i0,a)") "  ", substeps, " SUBSTEPS IN EACH TIME STEP (REPORT 4.4.5)"
+            end if
             write (unit, "(a)") "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"
             if (.not. cage) write (unit, "(a)") "  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"
             if (cage .and. present(cage_constrained)) then

@@ -68,7 +68,7 @@ class RunOutput:
 def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: int,
              traction_table: str | os.PathLike | None = None, ball_start: str | None = None,
              moment_equilibrium: bool = False, history_element: int = 1, progress=None,
-             traction_2d: bool = True) -> RunOutput:
+             traction_2d: bool = True, substeps: int = 1) -> RunOutput:
     """Run the engine on a deck file and write the print file (and, with time steps, the
     plot-data file beside it); return a :class:`RunOutput`.  Status checked: an engine
     failure raises :class:`~pyadore.errors.AdoreEngineError`, whose ``output`` attribute
@@ -82,6 +82,7 @@ def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: i
     (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks only).
     history_element: the rolling element of the time history's contact columns.
     traction_2d: ``False`` selects the one-dimensional race traction (developer option).
+    substeps: integrator steps in each printed time step (report 4.4.5).
     progress: ``None``, or a function ``progress(step, n_steps, tau, time_s) -> int`` the
     engine calls after every accepted time step; a non-zero return stops the run there
     (incomplete).  It must not raise.  With a progress function the call holds the GIL
@@ -92,7 +93,7 @@ def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: i
     start = "" if ball_start is None else str(ball_start)
     _n_steps, rows, cols = run_plan(deck_path, steps)
     args = (os.fspath(deck_path), os.fspath(out_path), int(steps), table, start, int(bool(moment_equilibrium)),
-            int(history_element), int(bool(traction_2d)), max(rows, 1), max(cols, 1))
+            int(history_element), int(bool(traction_2d)), int(substeps), max(rows, 1), max(cols, 1))
     if progress is None:
         out = engine.adore_run_file(*args)
     else:
