@@ -222,15 +222,7 @@ contains
       real(wp) :: t, t_prev, rev, f_mean(3), w_mean, w_start, applied(3), span
       integer :: k, n
 
-      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
-      call check(.not. allocated(error), "run: read Appendix C")
-      if (allocated(error)) return
-      g = mount_geometry(b, b%temperature)
-      call solve_ball_step0(b, s0, error)
-      call check(.not. allocated(error), "run: step 0 of Appendix C")
-      if (allocated(error)) return
-      call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error)
-      call check(.not. allocated(error), "run: dynamics set up from the deck")
+      call appendix_c_dynamics("run", b, g, s0, sys, it, y, error)
       if (allocated(error)) return
       n = b%n_elements
       s = new_bearing_state(n)
@@ -293,12 +285,7 @@ contains
       real(wp) :: t, t_prev, t0, t1, dt, qs_mean(4), worst(4), w_orbit
       integer :: k, n, i
 
-      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
-      if (allocated(error)) return
-      g = mount_geometry(b, b%temperature)
-      call solve_ball_step0(b, s0, error)
-      if (allocated(error)) return
-      call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error)
+      call appendix_c_dynamics("orbit averages", b, g, s0, sys, it, y, error)
       if (allocated(error)) return
       n = b%n_elements
       s = new_bearing_state(n)
@@ -345,5 +332,28 @@ contains
          " rad/s): worst |ball mean / static mean - 1| of Q_o, Q_i, alpha_o, alpha_i ", worst
       call check(all(worst <= 0.02_wp), "orbit averages: every ball's mean loads and angles within 2 % of the statics")
    end subroutine test_orbit_averages_match_the_quasi_static_equilibrium
+
+   !> Appendix C's dynamics as a run starts it: the deck read, mounted, its step 0 solved and
+   !> the system and integrator of start_ball_dynamics (the run's defaults); each stage
+   !> checked under the label `what`.
+   subroutine appendix_c_dynamics(what, b, g, s0, sys, it, y, error)
+      character(len=*), intent(in) :: what
+      type(bearing_t), intent(out) :: b
+      type(mounted_geometry_t), intent(out) :: g
+      type(ball_step0_t), intent(out) :: s0
+      type(ball_system_t), intent(out) :: sys
+      type(integrator_t), intent(out) :: it
+      real(wp), allocatable, intent(out) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      call check(.not. allocated(error), what//": read Appendix C")
+      if (allocated(error)) return
+      g = mount_geometry(b, b%temperature)
+      call solve_ball_step0(b, s0, error)
+      call check(.not. allocated(error), what//": step 0 of Appendix C")
+      if (allocated(error)) return
+      call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error)
+      call check(.not. allocated(error), what//": dynamics set up from the deck")
+   end subroutine appendix_c_dynamics
 
 end program test_dynamics
