@@ -100,10 +100,10 @@ def _dynamic_rows(exe):
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "dynamics.prt"
-        for traction, two_d in (("1-D traction", False), ("2-D traction", True)):
-            flag = ["--traction-2d"] if two_d else []
+        for traction, two_d in (("2-D traction (default)", True), ("1-D traction (--traction-1d)", False)):
+            flag = [] if two_d else ["--traction-1d"]
             for label, fn in [
-                ("f2py", lambda: pyadore.run(deck, steps=DYNAMIC_STEPS, out=out, traction_2d=two_d)),
+                ("f2py", lambda: pyadore.run(deck, steps=DYNAMIC_STEPS, out=out, traction_2d=two_d, progress=False)),
                 ("executable", lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(DYNAMIC_STEPS)] + flag,
                                                       check=True, capture_output=True)),
             ]:
