@@ -38,7 +38,7 @@ def wear_rates(source, *, compare=None, label: str | None = None, compare_label:
     logarithmic axis when the rates are positive and span more than two decades."""
     pairs = runs_and_histories(source, compare, label, compare_label)
     series = tuple((f"wear_rate_{b}_m3_s", name) for b, name in WEAR_BODIES.items())
-    panels = [Panel("Wear rate averaged from t = 0", "m**3/s", series, log=True)]
+    panels = [Panel("Wear rate averaged from t = 0", "m**3/s", series, log=True, noun="wear rate")]
     return history_figure("figure type 3 (time-averaged wear rates vs time)", "time-averaged wear rate",
                           "Time-averaged wear rates", panels, pairs, ax)
 

@@ -79,7 +79,7 @@ def figure_axes(ax=None, nrows: int = 1, sharex: bool = True, height: float | No
 
 def label(quantity: str, unit: str = "") -> str:
     """Axis label ``Quantity (unit)``; ``unit`` in SI as the print writes it (``m**3/s``),
-    drawn with a superscript power (m\ :sup:`3`/s)."""
+    drawn with a superscript power (mathtext ``m$^{3}$/s``)."""
     if unit and "**" in unit:
         unit = re.sub(r"\*\*(-?\d+)", r"$^{\1}$", unit)
     return f"{quantity} ({unit})" if unit else quantity
@@ -101,7 +101,7 @@ def legend(ax, handles=None, labels=None) -> None:
     are labelled lines; ``handles``/``labels`` default to the axes' own."""
     if handles is None:
         handles, labels = ax.get_legend_handles_labels()
-    labels = [textwrap.fill(text, LEGEND_WIDTH, break_on_hyphens=False) for text in labels]
+    labels = [textwrap.fill(text, LEGEND_WIDTH, break_on_hyphens=False, break_long_words=False) for text in labels]
     if handles:
         ax.legend(handles, labels, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
 

@@ -56,6 +56,8 @@ class Panel:
     series: tuple
     log: bool = False
     constant_reason: str = ""
+    #: the quantity in messages ("wear rate"); default the quantity in lower case
+    noun: str = ""
 
     @property
     def columns(self) -> list[str]:
@@ -171,7 +173,7 @@ def condition_title(source, text: str) -> str:
 
 def series_name(panel: Panel, name: str, several: bool) -> str:
     """A series' name in messages: ``contact loss at the outer race``, ``cage temperature``."""
-    quantity = panel.quantity.lower()
+    quantity = panel.noun or panel.quantity.lower()
     if several:
         return f"{quantity} at the {name}"
     return name if quantity.split()[-1] in name else f"{name} {quantity}"
