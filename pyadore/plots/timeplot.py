@@ -207,7 +207,7 @@ def history_figure(figure: str, what: str, title: str, panels: list[Panel], pair
                 runs_drawn.add(i)
                 s = finite(hist, column)
                 x, y = s.index.to_numpy(float) * factor, s.to_numpy(float)
-                twin = next((ln for ln in lines if len(y) > 1 and np.array_equal(ln[1], x)
+                twin = next((ln for ln in lines if np.array_equal(ln[1], x)
                              and np.array_equal(ln[2], y)), None)
                 if twin is not None:   # equal at every instant: one line naming both
                     twin[0].append(name)
