@@ -265,9 +265,14 @@ def test_power_loss_line_is_the_printed_total():
     fig = plots.power_loss(GOLDEN_BALL)
     ax = fig.get_axes()[0]
     (label, x, y), = lines_of(ax)
-    assert list(x) == [0.0, 0.08612] and list(y) == [546.4, 567.7]
-    assert ax.get_xlabel() == "Time (s)" and ax.get_ylabel() == "Total power loss (W)"
+    assert list(x) == [0.0, 86.12] and list(y) == [546.4, 567.7]   # time in ms
+    # two printed steps are two markers, not a line claiming the values between them
+    line, = ax.get_lines()
+    assert line.get_linestyle() == "None" and line.get_marker() == "o"
+    assert ax.get_xlabel() == "Time (ms)" and ax.get_ylabel() == "Total power loss (W)"
     assert ax.get_title() == "Overall power loss"
+    assert [t.get_text().replace("\n", " ") for t in ax.get_legend().get_texts()] == ["total power loss",
+                                                                   f"{GOLDEN_BALL} (printed steps 0, 2500)"]
 
 
 def test_step0_print_has_no_time_history(ball_print):
@@ -308,10 +313,10 @@ def test_every_history_type_draws_the_contract_columns(tmp_path):
             lines = lines_of(ax)
             assert len(lines) == len(columns), func.__name__
             for (_label, x, y), column in zip(lines, columns):
-                np.testing.assert_array_equal(x, t)
+                np.testing.assert_array_equal(x, t * 1e3)   # ms
                 np.testing.assert_array_equal(y, h[column].to_numpy())
             assert ax.get_ylabel().endswith(")"), ax.get_ylabel()  # a unit on every axis
-        assert axes[-1].get_xlabel() == "Time (s)"
+        assert axes[-1].get_xlabel() == "Time (ms)"
         render(fig, tmp_path / f"{func.__name__}.png")
     assert plots.wear_rates(h).get_axes()[0].get_yscale() == "log"  # four decades
 
@@ -320,7 +325,8 @@ def test_orbit_is_to_scale_with_its_clearance_circle(tmp_path):
     h = synthetic_history()
     fig = plots.cage_orbit(h)
     ax = fig.get_axes()[0]
-    (path_label, y, z), (_s, y0, z0), (circle_label, cy, cz), _centre = lines_of(ax)
+    (path_label, y, z), (_s, y0, z0), (_e, y1, z1), (circle_label, cy, cz), _centre = lines_of(ax)
+    assert (y0[0], z0[0], y1[0], z1[0]) == (y[0], z[0], y[-1], z[-1])   # start and end markers
     np.testing.assert_allclose(y, h["cage_y_m"].to_numpy() * 1e3, rtol=1e-15)
     np.testing.assert_allclose(z, h["cage_z_m"].to_numpy() * 1e3, rtol=1e-15)
     np.testing.assert_allclose(np.hypot(cy, cz), 0.75, rtol=1e-12)  # radius = diametral clearance / 2, mm
@@ -397,8 +403,16 @@ def test_cli_plot_golden_with_compare_as_pngs(ball_print, tmp_path):
                      "05-race-contacts.png", "09-pocket-force.png"]
     for p in out.iterdir():
         assert matplotlib.image.imread(p).shape[0] > 100
-    # the step-0 run is compared where it has data (type 1) and named where it has none
-    assert f"figure type 2 (total power loss vs time): {ball_print} has no total power loss" in res.stderr
+    # the step-0 run is compared where it has data (type 1; its step-0 values as one marker) and named
+    # where it has none
+    assert (f"figure type 4 (bulk temperatures vs time): {ball_print} has no exit fluid temperature at any "
+            "printed time; plotted without") in res.stderr
+    fig = plots.power_loss(GOLDEN_BALL, compare=ball_print)
+    _golden, (_l, x, y) = lines_of(fig.get_axes()[0])
+    printed = read_print(ball_print).step(0).table("performance").at["bearing", "total_power_loss_W"]
+    assert list(x) == [0.0] and list(y) == [printed]
+    marker = fig.get_axes()[0].get_lines()[1]
+    assert marker.get_linestyle() == "None" and marker.get_marker() == "s"
 
 
 def test_cli_plot_runs_a_deck(roller_deck, tmp_path):
@@ -473,3 +487,142 @@ def test_every_type_renders_once(ball_print, roller_result, tmp_path):
     assert [t.number for t, _f in made.figures] == [2, 3, 4, 5, 6, 7, 8, 9]
     assert [t.number for t, _r in made.skipped] == [1, 10]
     assert os.path.exists(paths[0])
+
+
+# --- a real dynamic run: the short Appendix C deck (60 steps) ---------------------------------
+
+#: The time-history columns each figure function draws, per panel (ball element 1, two lands).
+RUN_PANELS = {
+    plots.power_loss: [["total_power_loss_W"]],
+    plots.wear_rates: [["wear_rate_re_m3_s", "wear_rate_outer_race_m3_s", "wear_rate_inner_race_m3_s"]],
+    plots.bulk_temperatures: [[f"bulk_temp_{b}_K" for b in ("re", "cage", "outer_race", "inner_race", "housing",
+                                                            "shaft")]],
+    plots.race_contacts: [["re1_contact_loss_outer_W", "re1_contact_loss_inner_W"],
+                          ["re1_contact_temp_outer_K", "re1_contact_temp_inner_K"]],
+    plots.cage_velocities: [["cage_whirl_velocity_m_s", "cage_radial_velocity_m_s"]],
+    plots.cage_land_force: [["land1_force_N", "land2_force_N"]],
+    plots.pocket_force: [["pocket1_force_N"]],
+}
+
+
+@pytest.fixture(scope="module")
+def short_run(tmp_path_factory, short_ball_deck):
+    """The short Appendix C run (time integration, cage contacts on, thermal model off):
+    its Result, with the print and its plot-data file beside it."""
+    return pyadore.run(short_ball_deck, out=tmp_path_factory.mktemp("plots_run") / "appendix_c_short.prt")
+
+
+def test_short_run_lines_are_its_time_history(short_run):
+    """Every line of types 2-7 and 9, drawn from the print file (which finds its plot-data
+    file), is a column of the run's own time history: x = time in ms, y = the column; every
+    column is drawn (series equal at every instant share one line naming them all)."""
+    h = short_run.time_history
+    assert h is not None and len(h) == 61 and list(h["step"]) == list(range(61))
+    t_ms = h.index.to_numpy(float) * 1e3
+    for func, panels in RUN_PANELS.items():
+        fig = func(short_run.print_path)
+        axes = fig.get_axes()
+        assert len(axes) == len(panels), func.__name__
+        for ax, columns in zip(axes, panels):
+            lines = lines_of(ax)
+            matched = set()
+            for column in columns:
+                y_expected = h[column].to_numpy(float)
+                hits = [k for k, (_l, x, y) in enumerate(lines)
+                        if np.array_equal(x, t_ms) and np.array_equal(y, y_expected)]
+                assert hits, f"{func.__name__}: no line is {column}"
+                matched.update(hits)
+            assert matched == set(range(len(lines))), f"{func.__name__}: a line that is no column"
+            assert ax.get_ylabel().endswith(")")
+        assert axes[-1].get_xlabel() == "Time (ms)"
+        title = fig._suptitle.get_text() if fig._suptitle else axes[0].get_title()
+        assert title.endswith("with no thermal interactions"), title  # the print: thermal model off
+
+
+def test_short_run_constant_and_equal_series_are_said(short_run):
+    """Thermal model off: the six bulk temperatures are one line naming them (equal) and a
+    note beside the axes says they are constant and why; equal land forces share a line."""
+    h = short_run.time_history
+    fig = plots.bulk_temperatures(short_run)
+    ax = fig.get_axes()[0]
+    (label, _x, y), = lines_of(ax)
+    assert np.all(y == h["bulk_temp_re_K"].iloc[0])
+    assert label == "rolling elements (mean), cage, outer race, inner race, housing, shaft (equal)"
+    note = " ".join(t.get_text() for t in ax.texts).replace("\n", " ")
+    assert f"constant, {h['bulk_temp_re_K'].iloc[0]:.6g} K, throughout the run" in note
+    assert "thermal model is off" in note
+    lands = lines_of(plots.cage_land_force(short_run).get_axes()[0])
+    if np.array_equal(h["land1_force_N"].to_numpy(), h["land2_force_N"].to_numpy()):
+        assert [ln[0] for ln in lands] == ["guide land 1, guide land 2 (equal)"]
+    else:
+        assert [ln[0] for ln in lands] == ["guide land 1", "guide land 2"]
+    # a varying series has no note
+    assert not plots.power_loss(short_run).get_axes()[0].texts
+
+
+def test_short_run_orbit_to_scale(short_run, tmp_path):
+    h = short_run.time_history
+    fig = plots.cage_orbit(short_run)
+    ax = fig.get_axes()[0]
+    (_p, y, z), _start, _end, (circle, cy, cz), _centre = lines_of(ax)
+    np.testing.assert_array_equal(y, h["cage_y_m"].to_numpy() * 1e3)
+    np.testing.assert_array_equal(z, h["cage_z_m"].to_numpy() * 1e3)
+    np.testing.assert_allclose(np.hypot(cy, cz), 0.5e3 * h["guide_clearance_m"].iloc[-1], rtol=1e-12)
+    assert ax.get_aspect() == 1.0
+    render(fig, tmp_path / "orbit.png")
+    bbox = ax.get_window_extent()
+    assert bbox.width == pytest.approx(bbox.height, rel=0.01)
+
+
+def test_short_run_every_type_renders_and_the_pdf_is_whole(short_run, tmp_path):
+    """The run's report set: all ten figure types, each rendered to PNG, and one PDF page
+    each (pdftoppm renders every page when installed); the PDF gets the usual permissions."""
+    made = plots.make_set(short_run.print_path)
+    assert [t.number for t, _f in made.figures] == list(range(1, 11))
+    for path in plots.write_pngs(made.figures, tmp_path / "png"):
+        image = matplotlib.image.imread(path)
+        assert image.shape[0] > 300 and np.ptp(image[..., :3]) > 0.5
+    out = tmp_path / "report.pdf"
+    res = CliRunner().invoke(cli, ["plot", str(short_run.print_path), "--set", "report", "-o", str(out)])
+    assert res.exit_code == 0, res.output
+    assert pdf_pages(out) == 10
+    umask = os.umask(0)
+    os.umask(umask)
+    assert out.stat().st_mode & 0o777 == 0o666 & ~umask
+
+
+def test_compare_with_golden_draws_its_printed_steps_as_markers(short_run):
+    """The golden file (steps 0 and 2500) overlaid on a run: markers at its printed times,
+    no line between them; a series it prints at one step only is one marker."""
+    fig = plots.bulk_temperatures(short_run, compare=GOLDEN_BALL)
+    ax = fig.get_axes()[0]
+    golden = [ln for ln in ax.get_lines() if ln.get_linestyle() == "None"]
+    assert golden and all(ln.get_marker() == "s" for ln in golden)
+    exit_fluid = [ln for ln in golden if list(ln.get_ydata()) == [341.9]]
+    assert len(exit_fluid) == 1 and list(exit_fluid[0].get_xdata()) == [86.12]   # step 2500 only (ms)
+    legend = [t.get_text().replace("\n", " ") for t in ax.get_legend().get_texts()]
+    assert f"{GOLDEN_BALL} (printed steps 0, 2500)" in legend
+    # the run itself: one line
+    assert len([ln for ln in ax.get_lines() if ln.get_linestyle() == "-"]) == 1
+
+
+def test_display_thinning_keeps_the_envelope():
+    """More than DISPLAY_POINTS points: a subset of the points, in order, holding the
+    first, last, smallest and largest (display only; the table is not changed)."""
+    from pyadore.plots.timeplot import DISPLAY_POINTS, display_indices
+
+    rng = np.random.default_rng(3)
+    y = np.cumsum(rng.normal(size=30_000))
+    y[12_345] = 1e3
+    keep = display_indices(y)
+    assert len(keep) <= DISPLAY_POINTS and np.all(np.diff(keep) > 0)
+    assert {0, len(y) - 1, int(np.argmin(y)), 12_345} <= set(keep.tolist())
+    np.testing.assert_array_equal(display_indices(y[:100]), np.arange(100))
+    h = synthetic_history(n=9_000)
+    fig = plots.power_loss(h)
+    (_l, x, yy), = lines_of(fig.get_axes()[0])
+    assert len(x) <= DISPLAY_POINTS
+    t = h.index.to_numpy() * 1e3
+    idx = np.searchsorted(t, x)
+    np.testing.assert_array_equal(t[idx], x)
+    np.testing.assert_array_equal(h["total_power_loss_W"].to_numpy()[idx], yy)

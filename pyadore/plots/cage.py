@@ -15,11 +15,18 @@ import numpy as np
 from ..errors import MissingSeriesWarning
 from . import style
 from .history import finite
-from .timeplot import Panel, check_series, history_figure, runs_and_histories
+from .timeplot import (Panel, check_series, condition_title, history_figure, run_style, runs_and_histories, sparse,
+                       steps_text)
 
 _LAND = re.compile(r"^land(\d+)_force_N$")
 #: Orbit axes are in mm (an SI unit; the mass centre moves by tenths of a millimetre).
 MM = 1.0e3
+
+
+def cage_reason(source) -> str:
+    """Why a run's cage contact forces stay zero, from its print: the cage contacts were off."""
+    return ("the cage contacts are off in this run (no pocket or guide-land forces)"
+            if getattr(source, "condition", None) and source.condition("CAGE CONTACTS OFF") else "")
 
 
 @style.styled
@@ -42,7 +49,8 @@ def cage_land_force(source, *, compare=None, label: str | None = None, compare_l
     (report figs 21, 29, 37, 43; columns land<k>_force_N)."""
     pairs = runs_and_histories(source, compare, label, compare_label)
     lands = sorted({int(m.group(1)) for _r, h in pairs for c in h.columns if (m := _LAND.match(c))})
-    panels = [Panel("Cage/race contact force", "N", tuple((f"land{k}_force_N", f"guide land {k}") for k in lands))]
+    panels = [Panel("Cage/race contact force", "N", tuple((f"land{k}_force_N", f"guide land {k}") for k in lands),
+                    constant_reason=cage_reason(pairs[0][0]))]
     return history_figure("figure type 7 (cage/race contact force vs time)", "guide land contact force",
                           "Cage/race contacts", panels, pairs, ax)
 
@@ -56,7 +64,8 @@ def pocket_force(source, *, element: int = 1, compare=None, label: str | None = 
     pairs = runs_and_histories(source, compare, label, compare_label)
     word = pairs[0][0].element_word()
     panels = [Panel(f"{word.capitalize()}/cage contact force", "N",
-                    ((f"pocket{element}_force_N", f"{word} {element} pocket"),))]
+                    ((f"pocket{element}_force_N", f"{word} {element} pocket"),), log=True,
+                    constant_reason=cage_reason(pairs[0][0]))]
     return history_figure(f"figure type 9 ({word}/cage pocket contact force vs time)",
                           f"pocket contact force of {word} {element}",
                           f"Typical {word}/cage contacts ({word} {element})", panels, pairs, ax)
@@ -85,7 +94,7 @@ def cage_orbit(source, *, compare=None, label: str | None = None, compare_label:
     figure = "figure type 8 (cage whirl orbit)"
     have = check_series(figure, "cage mass-centre position", pairs, ["cage_y_m", "cage_z_m"],
                         {"cage_y_m": "cage y position", "cage_z_m": "cage z position"})
-    fig, axes, own = style.figure_axes(ax, height=6.0, width=10.0)
+    fig, axes, own = style.figure_axes(ax, height=6.0, width=9.0)
     a = axes[0]
     extent = 0.0
     radii = []
@@ -94,20 +103,23 @@ def cage_orbit(source, *, compare=None, label: str | None = None, compare_label:
             continue
         both = hist[["cage_y_m", "cage_z_m"]].astype(float).dropna()
         y, z = both["cage_y_m"].to_numpy() * MM, both["cage_z_m"].to_numpy() * MM
-        a.plot(y, z, style.line_style(i), color=style.COLORS[0 if i == 0 else 4],
-               marker="o" if len(y) <= 40 else None,
-               label="mass-center path" + (f" ({run.label})" if len(pairs) > 1 else ""))
-        a.plot(y[:1], z[:1], "^", color=style.COLORS[2], markersize=7, label="start" if i == 0 else None)
-        extent = max(extent, float(np.max(np.hypot(y, z))))
+        marks = sparse(hist)
+        radius = np.hypot(y, z)
+        which = f" ({run.label})" if len(pairs) > 1 else ""
+        a.plot(y, z, **run_style(i, marks, style.COLORS[0 if i == 0 else 4]),
+               label=(f"mass center, {steps_text(hist.loc[both.index])}" if marks else
+                      f"mass-center path, largest radius {radius.max():.4g} mm") + which)
+        if not marks:
+            a.plot(y[:1], z[:1], "^", color=style.COLORS[2], markersize=7, label="start" if i == 0 else None)
+            a.plot(y[-1:], z[-1:], "v", color=style.COLORS[3], markersize=7, label="end" if i == 0 else None)
+        extent = max(extent, float(np.max(radius)))
         c = guide_clearance(run, hist)
         if math.isfinite(c) and c > 0.0:
             r = 0.5 * c * MM
             if not any(abs(r - q) <= 1e-9 * r for q in radii):
                 theta = np.linspace(0.0, 2.0 * math.pi, 361)
                 a.plot(r * np.cos(theta), r * np.sin(theta), ":", color=style.COLORS[1 if i == 0 else 3],
-                       linewidth=1.8,
-                       label=f"guide clearance circle, r = {r:.4g} mm"
-                             + (f" ({run.label})" if len(pairs) > 1 else ""))
+                       linewidth=1.8, label=f"guide clearance circle, r = {r:.4g} mm" + which)
                 radii.append(r)
                 extent = max(extent, r)
         elif i == 0:
@@ -122,5 +134,5 @@ def cage_orbit(source, *, compare=None, label: str | None = None, compare_label:
     a.set_xlabel(style.label("Cage mass center y", "mm"))
     a.set_ylabel(style.label("Cage mass center z", "mm"))
     style.legend(a)
-    style.title(fig, axes, own, "Cage mass center whirl orbit")
+    style.title(fig, axes, own, condition_title(pairs[0][0], "Cage mass center whirl orbit"))
     return fig

@@ -141,9 +141,10 @@ def finite(history: pd.DataFrame, column: str) -> pd.Series:
     return s[np.isfinite(s.to_numpy())]
 
 
-def has_series(history: pd.DataFrame, column: str) -> bool:
-    """True when ``column`` has finite values at two or more distinct times."""
-    return finite(history, column).index.nunique() >= 2
+def has_series(history: pd.DataFrame, column: str, points: int = 2) -> bool:
+    """True when ``column`` has finite values at ``points`` (default two) or more distinct
+    times."""
+    return finite(history, column).index.nunique() >= points
 
 
 def _steps_text(source, history: pd.DataFrame) -> str:

@@ -11,6 +11,16 @@ from .history import BULK_BODIES, RACES, WEAR_BODIES
 from .timeplot import Panel, history_figure, runs_and_histories
 
 
+def thermal_reason(source, what: str) -> str:
+    """Why the temperatures of a run stay constant, from its print's run conditions: the
+    thermal model was off ("" when the print does not say so)."""
+    if not getattr(source, "thermal_off", False):
+        return ""
+    if what == "bulk":
+        return "the thermal model is off in this run (bulk temperatures fixed at the initial ones, deck Rec 2.7)"
+    return "the thermal model is off in this run (contact temperature = the initial bulk temperature)"
+
+
 @style.styled
 def power_loss(source, *, compare=None, label: str | None = None, compare_label: str | None = None, ax=None):
     """Figure type 2: total power loss (W) of the bearing vs time (s) (report figs 16, 24,
@@ -28,7 +38,7 @@ def wear_rates(source, *, compare=None, label: str | None = None, compare_label:
     logarithmic axis when the rates are positive and span more than two decades."""
     pairs = runs_and_histories(source, compare, label, compare_label)
     series = tuple((f"wear_rate_{b}_m3_s", name) for b, name in WEAR_BODIES.items())
-    panels = [Panel("Time-averaged wear rate", "m**3/s", series)]
+    panels = [Panel("Wear rate averaged from t = 0", "m**3/s", series, log=True, noun="wear rate")]
     return history_figure("figure type 3 (time-averaged wear rates vs time)", "time-averaged wear rate",
                           "Time-averaged wear rates", panels, pairs, ax)
 
@@ -42,7 +52,7 @@ def bulk_temperatures(source, *, compare=None, label: str | None = None, compare
     pairs = runs_and_histories(source, compare, label, compare_label)
     series = tuple((f"bulk_temp_{b}_K", name) for b, name in BULK_BODIES.items())
     series += (("exit_fluid_temp_K", "exit fluid temperature"),)
-    panels = [Panel("Temperature", "K", series)]
+    panels = [Panel("Temperature", "K", series, constant_reason=thermal_reason(pairs[0][0], "bulk"))]
     return history_figure("figure type 4 (bulk temperatures vs time)", "bulk temperature",
                           "Computed bulk temperatures", panels, pairs, ax)
 
@@ -58,12 +68,13 @@ def race_contacts(source, *, element: int = 1, compare=None, label: str | None =
     pairs = runs_and_histories(source, compare, label, compare_label)
     word = pairs[0][0].element_word()
 
-    def panel(quantity, what, unit):
-        return Panel(quantity, unit, tuple((f"re{element}_{what}_{r}_{unit}", f"{r} race") for r in RACES))
+    def panel(quantity, what, unit, reason=""):
+        return Panel(quantity, unit, tuple((f"re{element}_{what}_{r}_{unit}", f"{r} race") for r in RACES),
+                     constant_reason=reason)
 
     panels = [panel("Contact loss", "contact_loss", "W"),
               panel("Contact temperature rise", "contact_temp_rise", "K"),
-              panel("Contact temperature", "contact_temp", "K")]
+              panel("Contact temperature", "contact_temp", "K", thermal_reason(pairs[0][0], "contact"))]
     return history_figure(f"figure type 5 ({word} {element} race contacts vs time)",
                           f"race contact data of {word} {element}",
                           f"Typical {word}/race interaction ({word} {element})", panels, pairs, ax)

@@ -94,6 +94,17 @@ def make_set(source, set_name: str = "report", *, compare=None, step: int | None
     return out
 
 
+def _file_mode(path: Path) -> int:
+    """Permission bits of a file written at ``path``: those of the file it replaces, else
+    what the umask gives a new file (a temporary file is created private, 0600)."""
+    try:
+        return path.stat().st_mode & 0o777
+    except OSError:
+        umask = os.umask(0)
+        os.umask(umask)
+        return 0o666 & ~umask
+
+
 def write_pdf(figures, path) -> Path:
     """Write ``figures`` ([(FigureType, Figure)]) as one PDF page each to ``path``, whole or
     not at all: a temporary file in the same directory, renamed onto ``path`` at the end."""
@@ -106,6 +117,7 @@ def write_pdf(figures, path) -> Path:
         with PdfPages(tmp, metadata={"Title": f"pyadore figures: {path.stem}", "Creator": "pyadore"}) as pdf:
             for _ftype, fig in figures:
                 pdf.savefig(fig)
+        os.chmod(tmp, _file_mode(path))
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)

@@ -19,7 +19,7 @@ import pandas as pd
 
 from ..errors import AdoreInputError
 from ..printout import PrintRun, read_print
-from ..printout.layout import BANNER_LINE
+from ..printout.layout import BANNER_LINE, TIME_INTEGRATION_PREFIX
 
 _TABLE_TITLE = re.compile(r"^ADRX7 TRACTION-SLIP TABLE \((\d+) POINTS\)")
 _LISTING_TITLE = "Listing of input data records"
@@ -39,6 +39,18 @@ class Source:
     traction_table: pd.DataFrame | None = None
     path: str = ""
     notes: list = field(default_factory=list)
+    #: the run-condition lines an engine print gives under ``TIME INTEGRATION:`` (what its
+    #: time integration leaves out: "THERMAL MODEL OFF: ...", "CAGE CONTACTS OFF: ...").
+    conditions: list = field(default_factory=list)
+
+    def condition(self, prefix: str) -> str:
+        """The run-condition line starting with ``prefix`` (e.g. ``"THERMAL MODEL OFF"``), or ""."""
+        return next((c for c in self.conditions if c.startswith(prefix)), "")
+
+    @property
+    def thermal_off(self) -> bool:
+        """True when the print says its time integration ran with the thermal model off."""
+        return bool(self.condition("THERMAL MODEL OFF"))
 
     @property
     def bearing_type(self) -> str:
@@ -70,13 +82,27 @@ class Source:
         return deck
 
 
-def _pre_banner(path: Path) -> tuple[str, pd.DataFrame | None]:
-    """(deck listing text, ADRX7 table or None) from the lines before the banner of the
-    engine print at ``path``; ("", None) for a golden file that has no such lines."""
+def _conditions(head: list[str]) -> list[str]:
+    """The indented run-condition lines under the print's ``TIME INTEGRATION:`` line
+    (docs/print-layout.md, section 1), stripped."""
+    start = next((k for k, s in enumerate(head) if s.startswith(TIME_INTEGRATION_PREFIX)), None)
+    out = []
+    if start is not None:
+        for s in head[start + 1:]:
+            if not s.startswith("  ") or not s.strip():
+                break
+            out.append(s.strip())
+    return out
+
+
+def _pre_banner(path: Path) -> tuple[str, pd.DataFrame | None, list[str]]:
+    """(deck listing text, ADRX7 table or None, run-condition lines) from the lines before
+    the banner of the engine print at ``path``; ("", None, []) for a golden file that has
+    no such lines."""
     try:
         lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
     except OSError:
-        return "", None
+        return "", None, []
     end = next((k for k, s in enumerate(lines) if s.strip() == BANNER_LINE), len(lines))
     head = lines[:end]
     table = None
@@ -108,7 +134,7 @@ def _pre_banner(path: Path) -> tuple[str, pd.DataFrame | None]:
                 break
             out.append(s)
         listing = "\n".join(out) + "\n"
-    return listing, table
+    return listing, table, _conditions(head)
 
 
 def _with_history(source: Source) -> Source:
@@ -147,14 +173,14 @@ def load(source, label: str | None = None) -> Source:
         return src
     if isinstance(source, PrintRun):
         path = Path(source.path)
-        listing, table = _pre_banner(path) if path.exists() else ("", None)
+        listing, table, conditions = _pre_banner(path) if path.exists() else ("", None, [])
         return _with_history(Source(label=label or str(source.path), run=source, listing=listing,
-                                    traction_table=table, path=str(source.path)))
+                                    traction_table=table, path=str(source.path), conditions=conditions))
     if isinstance(source, (str, os.PathLike)):
         path = Path(os.fspath(source))
         run = read_print(path)
-        listing, table = _pre_banner(path)
+        listing, table, conditions = _pre_banner(path)
         return _with_history(Source(label=label or str(path), run=run, listing=listing, traction_table=table,
-                                    path=str(path)))
+                                    path=str(path), conditions=conditions))
     raise TypeError(f"cannot plot a {type(source).__name__}: expected a print file path, a PrintRun, "
                     "a pyadore.Result or a time-history DataFrame")

@@ -10,6 +10,7 @@ with the same colours and a dashed line, so a legend entry says which run is whi
 from __future__ import annotations
 
 import functools
+import re
 import textwrap
 
 import matplotlib
@@ -24,7 +25,7 @@ PNG_DPI = 120
 #: Colour cycle (matplotlib's colour-blind-safe "tab10" order, first six).
 COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#17becf", "#7f7f7f")
 #: Legend entries longer than this many characters are wrapped (long file paths).
-LEGEND_WIDTH = 36
+LEGEND_WIDTH = 40
 #: Line style of the first (the plotted) run and of the compared run.
 RUN_LINE = "-"
 COMPARE_LINE = "--"
@@ -43,6 +44,7 @@ RC = {
     "lines.markersize": 4.5,
     "axes.formatter.useoffset": False,
     "axes.formatter.limits": (-3, 4),
+    "axes.formatter.use_mathtext": True,   # a scale factor reads "x10^-11", not "1e-11"
     "axes.prop_cycle": matplotlib.cycler(color=list(COLORS)),
 }
 
@@ -76,8 +78,17 @@ def figure_axes(ax=None, nrows: int = 1, sharex: bool = True, height: float | No
 
 
 def label(quantity: str, unit: str = "") -> str:
-    """Axis label ``Quantity (unit)``; ``unit`` in SI as the print writes it (``m**3/s``)."""
+    """Axis label ``Quantity (unit)``; ``unit`` in SI as the print writes it (``m**3/s``),
+    drawn with a superscript power (mathtext ``m$^{3}$/s``)."""
+    if unit and "**" in unit:
+        unit = re.sub(r"\*\*(-?\d+)", r"$^{\1}$", unit)
     return f"{quantity} ({unit})" if unit else quantity
+
+
+def time_unit(t_max: float) -> tuple[float, str]:
+    """(factor, unit) of a time axis reaching ``t_max`` seconds: milliseconds below 1 s
+    (a run of a few thousand steps lasts tens of ms), else seconds."""
+    return (1.0e3, "ms") if t_max < 1.0 else (1.0, "s")
 
 
 def line_style(run_index: int) -> str:
@@ -90,7 +101,7 @@ def legend(ax, handles=None, labels=None) -> None:
     are labelled lines; ``handles``/``labels`` default to the axes' own."""
     if handles is None:
         handles, labels = ax.get_legend_handles_labels()
-    labels = [textwrap.fill(text, LEGEND_WIDTH, break_on_hyphens=False) for text in labels]
+    labels = [textwrap.fill(text, LEGEND_WIDTH, break_on_hyphens=False, break_long_words=False) for text in labels]
     if handles:
         ax.legend(handles, labels, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
 
