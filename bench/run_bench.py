@@ -10,8 +10,8 @@ fast one over those contacts with slide/roll, spin/roll x 0.5 .. x 2 and loads x
 (tests/test_ehd_fast.py's range of the 1e-4 accuracy test): its rows give the mean over the
 contacts (best_s) and the slowest contact (median_s column: the largest), in seconds, and
 us_per_contact.  The dynamics (`dynamics`): the full Appendix C run, DYNAMIC_STEPS time steps
-after step 0 (the deck's 2500), standalone and f2py, with the default one-dimensional race
-traction and with the two-dimensional one (`--traction-2d`, `traction_2d=True`;
+after step 0 (the deck's 2500), standalone and f2py, with the default two-dimensional race
+traction and with the one-dimensional developer option (`--traction-1d`, `traction_2d=False`;
 docs/dynamics.md): best and median wall time of DYNAMIC_REPEAT runs, the least CPU time
 (the process's own, or the child's for the executable: steadier than wall time on a shared
 machine), the print's "Total Derivative Calls" and final tau, and microseconds per
