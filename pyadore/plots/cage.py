@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import re
+import textwrap
 import warnings
 
 import numpy as np
@@ -29,6 +30,15 @@ def cage_reason(source) -> str:
             if getattr(source, "condition", None) and source.condition("CAGE CONTACTS OFF") else "")
 
 
+def centred_reason(source, what: str) -> str:
+    """Why a run's cage does not whirl, from its print: its translation was constrained
+    (report 4.4.6's DOF constraint; the run's listing says "CAGE CENTRED ...")."""
+    if not (getattr(source, "condition", None) and source.condition("CAGE CENTRED")):
+        return ""
+    why = "the cage is centred in this run (translation and tilt constrained, report 4.4.6)"
+    return f"{why}: {what}"
+
+
 @style.styled
 def cage_velocities(source, *, compare=None, label: str | None = None, compare_label: str | None = None,
                     ax=None):
@@ -37,7 +47,8 @@ def cage_velocities(source, *, compare=None, label: str | None = None, compare_l
     cage_radial_velocity_m_s; a print gives the whirl velocity only)."""
     pairs = runs_and_histories(source, compare, label, compare_label)
     panels = [Panel("Cage mass center velocity", "m/s",
-                    (("cage_whirl_velocity_m_s", "whirl"), ("cage_radial_velocity_m_s", "radial")))]
+                    (("cage_whirl_velocity_m_s", "whirl"), ("cage_radial_velocity_m_s", "radial")),
+                    constant_reason=centred_reason(pairs[0][0], "no whirl"))]
     return history_figure("figure type 6 (cage mass-centre velocities vs time)", "cage mass-centre velocity",
                           "Cage mass center velocities", panels, pairs, ax)
 
@@ -50,7 +61,8 @@ def cage_land_force(source, *, compare=None, label: str | None = None, compare_l
     pairs = runs_and_histories(source, compare, label, compare_label)
     lands = sorted({int(m.group(1)) for _r, h in pairs for c in h.columns if (m := _LAND.match(c))})
     panels = [Panel("Cage/race contact force", "N", tuple((f"land{k}_force_N", f"guide land {k}") for k in lands),
-                    constant_reason=cage_reason(pairs[0][0]))]
+                    constant_reason=cage_reason(pairs[0][0]) or
+                    centred_reason(pairs[0][0], "it never reaches its guide lands"))]
     return history_figure("figure type 7 (cage/race contact force vs time)", "guide land contact force",
                           "Cage/race contacts", panels, pairs, ax)
 
@@ -126,6 +138,10 @@ def cage_orbit(source, *, compare=None, label: str | None = None, compare_label:
             warnings.warn(f"{figure}: {run.label} gives no guide-land clearance; plotted without the clearance "
                           "circle", MissingSeriesWarning, stacklevel=2)
     a.plot([0.0], [0.0], "+", color="0.3", markersize=9)
+    note = centred_reason(pairs[0][0], "its mass centre stays on the bearing axis")
+    if note:
+        a.text(1.03, 0.02, "\n".join(textwrap.wrap(note, 36)), transform=a.transAxes, ha="left", va="bottom",
+               fontsize=9, bbox={"boxstyle": "round", "facecolor": "#fff8dc", "edgecolor": "0.55"})
     lim = 1.12 * extent if extent > 0.0 else 1.0
     a.set_aspect("equal", adjustable="box")
     a.set_anchor("W")  # the square box at the left of its space: the legend beside it stays on the page
