@@ -626,3 +626,13 @@ def test_display_thinning_keeps_the_envelope():
     idx = np.searchsorted(t, x)
     np.testing.assert_array_equal(t[idx], x)
     np.testing.assert_array_equal(h["total_power_loss_W"].to_numpy()[idx], yy)
+
+
+def test_short_run_centred_cage_is_said(short_run):
+    """The run's cage is centred (its DOF constraint, listed in the print): the velocity and
+    orbit figures say so beside the axes instead of a flat line and a point left unexplained."""
+    h = short_run.time_history
+    assert (h["cage_y_m"] == 0).all() and (h["cage_whirl_velocity_m_s"] == 0).all()
+    for fig in (plots.cage_velocities(short_run), plots.cage_orbit(short_run)):
+        note = " ".join(t.get_text() for a in fig.get_axes() for t in a.texts).replace("\n", " ")
+        assert "the cage is centred in this run (translation and tilt constrained, report 4.4.6)" in note
