@@ -61,10 +61,13 @@ def hertz_approach(q: float, curv: tuple[float, float], e_prime: float) -> float
 
 class Bearing:
     """A ball bearing for the static reference: n balls of diameter d (m) at pitch diameter
-    dm (m), groove curvature factors f_o, f_i, diametral play pd (m), steel E, nu."""
+    dm (m), groove curvature factors f_o, f_i, diametral play pd (m), steel E, nu;
+    linear_rotation: the inner race's rotation linearised, I + [theta]x (the engine's small
+    rotations, to measure what they neglect), else exact rotation matrices."""
 
-    def __init__(self, n, d, dm, f_o, f_i, pd, e=2.0e11, nu=0.25):
+    def __init__(self, n, d, dm, f_o, f_i, pd, e=2.0e11, nu=0.25, linear_rotation=False):
         self.n, self.d, self.dm, self.f_o, self.f_i = n, d, dm, f_o, f_i
+        self.linear_rotation = linear_rotation
         a = (f_o + f_i - 1.0) * d
         self.a = a
         self.alpha0 = math.acos(1.0 - pd / (2.0 * a))
@@ -105,6 +108,8 @@ class Bearing:
         ry = np.array([[math.cos(ty), 0, math.sin(ty)], [0, 1, 0], [-math.sin(ty), 0, math.cos(ty)]])
         rz = np.array([[math.cos(tz), -math.sin(tz), 0], [math.sin(tz), math.cos(tz), 0], [0, 0, 1]])
         rot = rz @ ry
+        if self.linear_rotation:
+            rot = np.eye(3) + np.array([[0.0, -tz, ty], [tz, 0.0, 0.0], [-ty, 0.0, 0.0]])
         centre = np.array([ux, uy, uz])
         force, moment = np.zeros(3), np.zeros(3)
         loads, angles = [], []
@@ -124,9 +129,11 @@ class Bearing:
             angles.append(alpha)
         return force, moment, np.array(loads), np.array(angles)
 
-    def solve(self, force, moment=(0.0, 0.0, 0.0), tilt=False):
+    def solve(self, force, moment=(0.0, 0.0, 0.0), tilt=False, start=None):
         """Race displacement u (m, rad) under the applied force (N) and moment (N m) on the
-        inner race; tilt: solve theta_y, theta_z for moment equilibrium (else zero)."""
+        inner race; tilt: solve theta_y, theta_z for moment equilibrium (else zero); start:
+        a first u (default: along the applied force; a zero-clearance bearing under a pure
+        moment needs a tilted one)."""
         force, moment = np.asarray(force, float), np.asarray(moment, float)
         lscale, fscale = 1e-6, max(np.linalg.norm(force), 1.0)
         mscale = fscale * self.dm / 2
@@ -148,6 +155,10 @@ class Bearing:
         # start: the load direction, far enough to load some balls
         z0 = np.zeros(5 if tilt else 3)
         z0[:3] = 5.0 * force / fscale
+        if start is not None:
+            z0[:3] = np.asarray(start[:3], float) / lscale
+            if tilt:
+                z0[3:] = np.asarray(start[3:], float) * (self.dm / 2) / lscale
         sol = root(res, z0, method="hybr", options={"xtol": 1e-13})
         if not sol.success or max(abs(np.array(res(sol.x)))) > 1e-9:
             sol = root(res, sol.x, method="lm", options={"xtol": 1e-14, "ftol": 1e-14})
