@@ -247,6 +247,7 @@ class _Rule:
     abs: float | None
     match: str = "index"        #: "index" or "azimuth" (rolling-element tables)
     deviation: str = ""         #: reason of a known deviation ("" for none)
+    deviation_max: float = math.inf  #: largest relative error a known deviation may have
 
     def matches(self, step_kind: set, table: str, column: str) -> bool:
         if self.step != "any" and self.step not in step_kind:
@@ -290,8 +291,11 @@ def load_tolerances(path) -> tuple[float, list]:
             deviation = r.get("deviation", "")
             if not isinstance(deviation, str):
                 raise ValueError(f"rule {k}: deviation must be a text (the reason)")
+            dmax = float(r.get("deviation_max", math.inf))
+            if dmax < 0 or ("deviation_max" in r and not deviation):
+                raise ValueError(f"rule {k}: deviation_max must be >= 0 and needs a deviation reason")
             rules.append(_Rule(step, r.get("table", "*"), tuple(cols), rel, None if ab is None else float(ab),
-                               match, deviation.strip()))
+                               match, deviation.strip(), dmax))
     except (KeyError, TypeError, ValueError) as exc:
         raise PrintFormatError(f"{p}: malformed tolerance rule: {exc}") from None
     return default, rules
@@ -324,7 +328,7 @@ def _compare_value(name, table, column, g, gmark, r, rmark, rule: _Rule, scale: 
         diff = abs((r - g + 180.0) % 360.0 - 180.0)   # angles: 360 and 0 are the same direction
     rel_err = diff / abs(g) if g != 0 else (0.0 if diff == 0 else math.inf)
     ok = diff <= max(atol, rule.rel * abs(g))
-    status = "within" if ok else ("deviation" if rule.deviation else "outside")
+    status = "within" if ok else ("deviation" if rule.deviation and rel_err <= rule.deviation_max else "outside")
     return Comparison(name, table, column, g, r, status, rel_err, tol, rule.deviation if not ok else "")
 
 

@@ -235,9 +235,15 @@ def test_known_deviation_is_reported_with_its_reason_and_does_not_fail(tmp_path)
     assert data["deviation_columns"]["re_contact.contact_load_outer_N"]["count"] == 1
     # within tolerance, a deviation rule changes nothing
     assert diff_prints(perturbed(tmp_path, 1.005), BALL, tol).deviations == 0
+    # beyond deviation_max the value fails as usual
+    capped = _tolerances(tmp_path, '[[rule]]\nstep = "initial"\ntable = "re_contact"\n'
+                                   'columns = ["contact_load_outer_N"]\nrel = 0.01\n'
+                                   'deviation = "test reason"\ndeviation_max = 0.015\n')
+    over = diff_prints(perturbed(tmp_path, 1.02), BALL, capped)
+    assert over.exit_code == 1 and over.deviations == 0 and over.outside == 1
 
 
-@pytest.mark.parametrize("extra", ['match = "nearest"', "deviation = 3"])
+@pytest.mark.parametrize("extra", ['match = "nearest"', "deviation = 3", "deviation_max = 0.1"])
 def test_bad_match_or_deviation_is_a_clear_error(tmp_path, extra):
     tol = _tolerances(tmp_path, f'[[rule]]\nstep = "final"\ntable = "*"\ncolumns = ["*"]\nrel = 0.1\n{extra}\n')
     with pytest.raises(PrintFormatError, match="malformed tolerance rule"):

@@ -175,7 +175,7 @@ def test_explicit_steps_override_the_deck(runs):
 
 
 def test_step_n_stays_near_step_0(runs):
-    """Early in the run the bearing hardly moves: every ball's contact loads within 6 % of
+    """Early in the run the bearing hardly moves: every ball's contact loads within 5 % of
     step 0's load distribution at the azimuth the ball has reached, the mean orbital
     velocity within 2 %, the balls advanced by their orbital speed, the power loss and the
     orbital velocity ratio near step 0's.
@@ -183,11 +183,8 @@ def test_step_n_stays_near_step_0(runs):
     The balls move about 27 deg in N = 30 steps, more than the 20 deg between two balls, and
     Appendix C's combined load makes a ball's load depend on its azimuth (the inner contact
     by up to 19 % over those 27 deg): the step-0 loads are interpolated (periodically,
-    linearly over the 18 balls) at each ball's step-N azimuth.  Measured: within 2.6 %
-    without cage contacts; 5.1 % with them (the default since the cage pockets keep the
-    balls' spacing): the start's orbital speeds differ by 3.4 % between balls (8999-9306
-    rpm), and the pockets bring them to one speed within these steps by impacts that move
-    a ball's loads (docs/dynamics.md, "Cage dynamics")."""
+    linearly over the 18 balls) at each ball's step-N azimuth (measured with the run's
+    defaults: 0.55 % outer, 1.9 % inner)."""
     run = read_print(runs["dyn"].print_path)
     s0, sn = run.steps[0], run.steps[N]
     c0, cn = s0.table("re_contact"), sn.table("re_contact")
@@ -197,7 +194,7 @@ def test_step_n_stays_near_step_0(runs):
         q0 = c0[col].to_numpy()
         expected = np.interp(az, np.r_[az0, 360.0], np.r_[q0, q0[0]])
         ratio = cn[col].to_numpy() / expected
-        assert np.all(np.abs(ratio - 1) < 0.06), (col, ratio)
+        assert np.all(np.abs(ratio - 1) < 0.05), (col, ratio)
     w0 = s0.table("re_motion")["orbital_velocity_rpm"].to_numpy()
     wn = sn.table("re_motion")["orbital_velocity_rpm"].to_numpy()
     assert abs(wn.mean() / w0.mean() - 1) < 0.02
