@@ -237,6 +237,8 @@ contains
          if (sys%cage .and. sys%cage_spin_only) run_note = run_note//"; cage centred, turning about its axis only "// &
                                                          "(translation and tilt constrained, report 4.4.6)"
          if (sys%cage .and. .not. sys%land_film) run_note = run_note//"; guide-land film off (metallic land contact only)"
+         if (sys%gyro_restraint) run_note = run_note//"; ball gyroscopic moments carried by the races without slip"
+         if (sys%contact_damping > 0.0_wp) run_note = run_note//"; ball/race contact damping (stiffness-proportional)"
       else if (bearing%bearing_type == ROLLER_BEARING .and. &
                (steps > 0 .or. (steps == STEPS_FROM_DECK .and. bearing%n_steps > 0))) then
          run_note = "time integration of roller bearings is not implemented yet ([Roller dynamics]); "// &
@@ -257,7 +259,8 @@ contains
       start_title = ""
       if (start_method /= BALL_START_METHOD) start_title = trim(start_method_title(start_method))
       call write_listing(unit, text, bearing%race_traction, table_path, start_title, moments, n_dynamic, sys%cage, &
-                         sys%land_film, sys%traction_2d, sys%cage_spin_only, substeps)
+                         sys%land_film, sys%traction_2d, sys%cage_spin_only, substeps, sys%contact_damping, &
+                         sys%gyro_restraint)
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start; then the time steps of a ball deck.

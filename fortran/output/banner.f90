@@ -3,6 +3,7 @@
 !> Writers only format: they take what to print and a unit, and compute nothing.
 !> Layout: docs/print-layout.md (transcribed from the report's Appendix C/D output).
 module adore_output_banner
+   use adore_core_kinds, only: wp
    use adore_deck_text, only: deck_text_t
    use adore_tribology_traction_law, only: traction_law_t, LAW_TABLE
    implicit none
@@ -21,7 +22,8 @@ contains
    !> steps; the listing says so first, with what the time integration does not do yet (the
    !> thermal model is off; the cage contacts when cage_contacts is .false.).
    subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps, &
-                            cage_contacts, land_film, traction_2d, cage_constrained, substeps)
+                            cage_contacts, land_film, traction_2d, cage_constrained, substeps, contact_damping, &
+                            gyro_restraint)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -42,7 +44,12 @@ contains
       logical, intent(in), optional :: cage_constrained
       !> integrator steps per time step (absent or 1: no substeps)
       integer, intent(in), optional :: substeps
+      !> the ball/race contacts' normal damping beta (s; absent or 0: none)
+      real(wp), intent(in), optional :: contact_damping
+      !> whether the balls' gyroscopic moments are carried by the races without slip
+      logical, intent(in), optional :: gyro_restraint
       integer :: i
+      character(len=16) :: num
       logical :: cage
 
       write (unit, "(a)") "Input from optional user subroutines"
@@ -64,6 +71,17 @@ contains
             if (cage .and. present(land_film)) then
                if (.not. land_film) write (unit, "(a)") "  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT ONLY "// &
                   "(docs/dynamics.md, Cage dynamics)"
+            end if
+            if (present(gyro_restraint)) then
+               if (gyro_restraint) write (unit, "(a)") "  BALL GYROSCOPIC MOMENTS CARRIED BY THE RACES WITHOUT SLIP "// &
+                  "(docs/dynamics.md)"
+            end if
+            if (present(contact_damping)) then
+               if (contact_damping > 0.0_wp) then
+                  write (num, "(es10.3)") contact_damping
+                  write (unit, "(a)") "  BALL/RACE CONTACT DAMPING "//trim(adjustl(num))//" S (STIFFNESS-PROPORTIONAL, "// &
+                     "docs/dynamics.md)"
+               end if
             end if
             if (present(traction_2d)) then
                if (.not. traction_2d) write (unit, "(a)") "  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE "// &
