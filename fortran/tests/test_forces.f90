@@ -64,6 +64,7 @@ program test_forces
    call test_two_dimensional_traction(b, g, st)
    call test_traction_power(b, g, st)
    call test_gyroscopic_restraint(b, g, st)
+   call test_contact_damping(b, g, st)
    call test_fast_two_dimensional_traction(b, g, st)
    call test_free_body_rates()
    call test_hertz_bisection_shortcut()
@@ -496,6 +497,62 @@ contains
       call check(norm2(total_m) < 1.0e-9_wp*maxval(l1%contacts%load)*b%dm, &
                  "gyroscopic restraint: contact moments sum to zero")
    end subroutine test_gyroscopic_restraint
+
+   !> Normal contact damping (ball_bearing_loads' damping): ball 1 moving at v along its outer
+   !> contact normal approaches the outer race (and leaves the inner one); each contact j's
+   !> normal force becomes max(Q_j + beta (1.5 Q_j / delta_j) (v . n_j), 0), so the ball's force
+   !> changes by -sum_j (f_j - Q_j) n_j; the damping takes power out (force . velocity < 0);
+   !> leaving fast, a contact's force is clamped at 0, never pulls.
+   subroutine test_contact_damping(b, g, base)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: base
+      real(wp), parameter :: beta = 2.5e-6_wp
+      real(wp) :: n(3), err(2), p
+      type(ball_bearing_loads_t) :: l0
+      integer :: icase
+
+      call ball_bearing_loads(b, g, base, l0, error, traction=.false., cage=.false.)
+      if (allocated(error)) return
+      n = l0%contacts(1, 1)%normal                      ! ball centre -> outer contact
+      do icase = 1, 2
+         ! 1: approaching the outer race at 1 cm/s; 2: leaving it at 10 m/s (clamped)
+         call damping_case(b, g, base, n, beta, merge(0.01_wp, -10.0_wp, icase == 1), err(icase), p)
+         if (icase == 1) call check(p < 0.0_wp, "contact damping: it takes power out of the approaching ball")
+      end do
+      write (*, "(a,2es10.2)") "contact damping: force change vs max(Q + beta k v.n, 0), approaching and "// &
+         "leaving (relative) ", err
+      call check(err(1) < 1.0e-9_wp, "contact damping: the extra normal force is beta (1.5 Q / delta) d(delta)/dt")
+      call check(err(2) < 1.0e-9_wp, "contact damping: a leaving contact's force is clamped at 0, never pulls")
+   end subroutine test_contact_damping
+
+   !> One case of test_contact_damping: ball 1 of state base moving at v (m/s) along n; rel =
+   !> |change of its force - the expected change| / |expected|, power = change . velocity (W).
+   subroutine damping_case(b, g, base, n, beta, v, rel, power)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: base
+      real(wp), intent(in) :: n(3), beta, v
+      real(wp), intent(out) :: rel, power
+      type(bearing_state_t) :: st
+      type(ball_bearing_loads_t) :: lu, ld
+      real(wp) :: expected(3), df(3), fj
+      integer :: j
+      st = base
+      st%elements(1)%velocity = st%elements(1)%velocity + v*n
+      call ball_bearing_loads(b, g, st, lu, error, traction=.false., cage=.false.)
+      call ball_bearing_loads(b, g, st, ld, error, traction=.false., cage=.false., damping=beta)
+      expected = 0.0_wp
+      do j = 1, 2
+         associate (c => lu%contacts(j, 1))
+            fj = max(c%load + beta*1.5_wp*c%load/c%delta*dot_product(v*n, c%normal), 0.0_wp)
+            expected = expected - (fj - c%load)*c%normal
+         end associate
+      end do
+      df = ld%elements(1)%force - lu%elements(1)%force
+      rel = norm2(df - expected)/max(norm2(expected), 1.0e-30_wp)
+      power = dot_product(df, v*n)
+   end subroutine damping_case
 
    !> Mechanical power (W) of the load difference lw - lo on body bs (force . velocity +
    !> moment . inertial angular velocity).
