@@ -333,12 +333,23 @@ def test_time_history_holds_the_printed_values_at_printed_steps(runs):
     play = run.steps[0].table("race_cage")["effective_dia_play_m"].min()
     assert (hist["guide_clearance_m"] == hist["guide_clearance_m"].iloc[0]).all()   # thermal model off
     assert hist["guide_clearance_m"].iloc[0] == pytest.approx(play, rel=PRINTED)
-    # cage contacts: the forces the run computed (zero while they are off)
+    # cage contacts: the forces the run computed (zero while they are off); the history's
+    # force is the whole contact force (film, metal, friction), the print's section 2 the
+    # metallic load: never more than the history's at the same step
     listing = runs["short"].text.split("Listing of input data records")[0]
     for col in ("land1_force_N", "land2_force_N", "pocket1_force_N"):
         assert np.isfinite(hist[col]).all()
         if "CAGE CONTACTS OFF" in listing:
             assert (hist[col] == 0).all()
+    assert hist["pocket1_force_N"].max() > 0.0                   # the pocket films act
+    for n in (20, 40, 60):
+        row = hist[hist["step"] == n].iloc[0]
+        step = run.steps[n]
+        assert step.table("re_cage").loc[1, "contact_force_N"] <= row["pocket1_force_N"] * (1 + PRINTED)
+        for k in (1, 2):
+            assert step.table("race_cage").loc[k, "force_N"] <= row[f"land{k}_force_N"] * (1 + PRINTED) + 1e-12
+        if "CAGE CENTRED" in listing:   # a centred cage never reaches its lands
+            assert row["land1_force_N"] == 0.0 and step.table("race_cage").loc[1, "geo_int_m"] > 0.0
     # the columns docs/plots.md names, nothing it does not
     assert not any(c.startswith(("exit_fluid", "wear_rate_cage")) or "temp_rise" in c for c in hist.columns)
 
