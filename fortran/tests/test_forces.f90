@@ -38,7 +38,7 @@ program test_forces
    use adore_state_bearing_state, only: body_state_t
    use adore_core_rotation, only: quat_matrix
    use adore_test_support, only: check, finish, get_decks_dir
-   use adore_contact_hertz, only: hertz_geometry_t, hertz_geometry
+   use adore_test_ball_fixture, only: step0_state
    implicit none
 
    character(len=:), allocatable :: decks
@@ -65,42 +65,10 @@ program test_forces
    call test_traction_power(b, g, st)
    call test_gyroscopic_restraint(b, g, st)
    call test_contact_damping(b, g, st)
-   call test_fast_two_dimensional_traction(b, g, st)
    call test_free_body_rates()
-   call test_hertz_bisection_shortcut()
    call finish("force assembly")
 
 contains
-
-   !> The bearing state of the step-0 solution: balls at their equilibrium positions,
-   !> orbiting at w_m with the start's spin (w_b, pitch), races at their speeds, the inner
-   !> race at its equilibrium offset (no misalignment in the deck).
-   function step0_state(b, s0) result(st)
-      type(bearing_t), intent(in) :: b
-      type(ball_step0_t), intent(in) :: s0
-      type(bearing_state_t) :: st
-      real(wp) :: phi, e_r(3), e_t(3), e_x(3), r
-      integer :: k
-
-      st = new_bearing_state(b%n_elements)
-      st%temperature = b%temperature
-      e_x = [1.0_wp, 0.0_wp, 0.0_wp]
-      associate (e => s0%start%equilibrium, kin => s0%start%kinematics)
-         do k = 1, b%n_elements
-            phi = e%azimuth(k)
-            r = e%r(k)
-            e_r = [0.0_wp, -sin(phi), cos(phi)]
-            e_t = [0.0_wp, -cos(phi), -sin(phi)]
-            st%elements(k)%position = e%x(k)*e_x + r*e_r
-            st%elements(k)%velocity = kin(k)%orbital_speed*r*e_t
-            st%elements(k)%omega = (kin(k)%orbital_speed + kin(k)%spin_speed*cos(kin(k)%pitch))*e_x + &
-                                   kin(k)%spin_speed*sin(kin(k)%pitch)*e_r
-         end do
-         st%races(RACE_OUTER)%omega = [b%speed_outer, 0.0_wp, 0.0_wp]
-         st%races(RACE_INNER)%omega = [b%speed_inner, 0.0_wp, 0.0_wp]
-         st%races(RACE_INNER)%position = e%u(1:3)
-      end associate
-   end function step0_state
 
    subroutine test_pack_round_trip(st)
       type(bearing_state_t), intent(in) :: st
@@ -565,79 +533,6 @@ contains
                  dot_product(lw%moment - lo%moment, matmul(r, bs%omega))
    end function power_of
 
-   !> The fast race traction (the default) against its reference (the EHD strip
-   !> quadrature of EHD_GAUSS x EHD_STRIP points at every node, reference = .true.), two-
-   !> and one-dimensional, at every race contact of Appendix C: at the step-0 state (race
-   !> control: the outer contacts' two pure-rolling points merge at the centre, where the
-   !> fast rule grades at the slip's dip) and at three states whose balls slip across the
-   !> rolling direction (each ball's spin tilted out of its orbital plane, from 3 to 3000
-   !> rad/s over the balls, alternating in sign; the balls also moving axially and
-   !> radially; all together with a spin about each ball's outer normal).  Each of the six
-   !> sums (along the rolling direction: force, its cos and sin moments; across it: the
-   !> same) and the power, relative to the larger of the reference value and the contact's
-   !> gross traction power / max slip (a tenth of it for the sin moments, whose arm is
-   !> small), within the 1e-4 that the fast one-dimensional traction keeps from its
-   !> reference at the step-0 contacts (tests/test_ehd_fast.py).
-   subroutine test_fast_two_dimensional_traction(b, g, base)
-      type(bearing_t), intent(in) :: b
-      type(mounted_geometry_t), intent(in) :: g
-      type(bearing_state_t), intent(in) :: base
-      type(bearing_state_t) :: st
-      type(ball_bearing_loads_t) :: lf, lr, l0
-      real(wp) :: worst(4, 2), e, wk, sf(7), sr(7), gross, cross_max(4)
-      integer :: s, k, j, n, i, d
-      character(len=*), parameter :: label(4) = [character(len=24) :: "step 0", "tilted spin", &
-                                                 "tilted spin, moving", "tilted, moving, spun"]
-
-      n = size(base%elements)
-      call ball_bearing_loads(b, g, base, l0, error, cage=.false.)
-      if (allocated(error)) return
-      worst = 0.0_wp
-      cross_max = 0.0_wp
-      do s = 1, 4
-         st = base
-         do k = 1, n
-            wk = merge(1.0_wp, -1.0_wp, mod(k, 2) == 0)*3.0_wp*1000.0_wp**(real(k - 1, wp)/real(n - 1, wp))
-            if (s >= 2) st%elements(k)%omega = st%elements(k)%omega + wk*l0%contacts(1, k)%rolling
-            if (s >= 3) st%elements(k)%velocity = st%elements(k)%velocity + 1.0e-3_wp*wk*[1.0_wp, 0.0_wp, 0.0_wp] + &
-                                                  1.0e-4_wp*wk*l0%contacts(1, k)%normal
-            if (s >= 4) st%elements(k)%omega = st%elements(k)%omega + 300.0_wp*l0%contacts(1, k)%normal
-         end do
-         do d = 1, 2             ! 2-D, 1-D
-            call ball_bearing_loads(b, g, st, lf, error, cage=.false., two_d=d == 1)
-            call check(.not. allocated(error), "fast traction: "//trim(label(s)))
-            if (allocated(error)) return
-            call ball_bearing_loads(b, g, st, lr, error, cage=.false., two_d=d == 1, reference=.true.)
-            call check(.not. allocated(error), "reference traction: "//trim(label(s)))
-            if (allocated(error)) return
-            do k = 1, n
-               do j = 1, 2
-                  if (.not. (lr%contacts(j, k)%load > 0.0_wp)) cycle
-                  associate (tf => lf%traction(j, k), tr => lr%traction(j, k))
-                     sf = [tf%force, tf%force_cos, tf%force_sin, tf%cross_force, tf%power]
-                     sr = [tr%force, tr%force_cos, tr%force_sin, tr%cross_force, tr%power]
-                     gross = tr%power/tr%max_slip
-                     if (d == 1) cross_max(s) = max(cross_max(s), abs(tr%cross_force(1))/gross)
-                  end associate
-                  do i = 1, 6
-                     e = abs(sf(i) - sr(i))/max(abs(sr(i)), merge(0.1_wp, 1.0_wp, i == 3 .or. i == 6)*gross)
-                     worst(s, d) = max(worst(s, d), e)
-                  end do
-                  worst(s, d) = max(worst(s, d), abs(sf(7)/sr(7) - 1.0_wp))
-               end do
-            end do
-         end do
-      end do
-      write (*, "(a,4es10.2)") "fast 2-D traction vs reference, worst per state (step 0, tilted, moving, spun): ", &
-         worst(:, 1)
-      write (*, "(a,4es10.2)") "fast 1-D traction vs reference, worst per state (step 0, tilted, moving, spun): ", &
-         worst(:, 2)
-      write (*, "(a,4es10.2)") "  largest cross traction / gross traction per state: ", cross_max
-      call check(all(cross_max(2:) > 0.1_wp), "fast 2-D traction: the perturbed states slip across the rolling direction")
-      call check(all(worst(:, 1) <= 1.0e-4_wp), "fast 2-D traction: six sums and power within 1e-4 of the reference")
-      call check(all(worst(:, 2) <= 1.0e-4_wp), "fast 1-D traction: force, moments, power within 1e-4 of the reference")
-   end subroutine test_fast_two_dimensional_traction
-
    !> Equations of motion at the step-0 state without traction: every ball accelerates
    !> towards the axis with its orbit's centripetal acceleration r w_m**2 and the inner
    !> race does not accelerate (the quasi-static equilibrium, eqs 65-72, seen from the
@@ -707,53 +602,5 @@ contains
       call check(maxval(abs(rdot - matmul(quat_matrix(body%attitude), skew))) < 1.0e-6_wp*norm2(w), &
                  "free body: attitude rate dR/dt = R [omega]x")
    end subroutine test_free_body_rates
-
-   !> hertz_geometry's bisection, which evaluates F only near Newton's root,
-   !> gives the exhaustive bisection's ellipse bit for bit: ball/race curvatures of
-   !> Appendix C's ball (D = 19.05 mm, dm = 125 mm) at contact angles 0 .. 60 deg and groove
-   !> factors 0.501 .. 0.6 (ellipticities 2 .. 40), and curvature ratios R_y/R_x from
-   !> 1 + 1e-9 to 1e5.
-   subroutine test_hertz_bisection_shortcut()
-      real(wp) :: rho(4), gam, d, ff, alpha, ratio
-      logical :: same
-      integer :: i, j, n
-
-      same = .true.
-      n = 0
-      d = 0.01905_wp
-      do i = 0, 60
-         alpha = real(i, wp)*acos(-1.0_wp)/180.0_wp
-         gam = d*cos(alpha)/0.125_wp
-         do j = 0, 20
-            ff = 0.501_wp + 0.099_wp*real(j, wp)/20.0_wp
-            rho = [2.0_wp/d, 2.0_wp/d, 2.0_wp*gam/(d*(1.0_wp - gam)), -1.0_wp/(ff*d)]
-            call compare(rho, same, n)
-            rho(3) = -2.0_wp*gam/(d*(1.0_wp + gam))
-            call compare(rho, same, n)
-         end do
-      end do
-      do i = 0, 1400
-         ratio = 1.0_wp + 10.0_wp**(-9.0_wp + real(i, wp)/100.0_wp)
-         rho = [1.0_wp, 1.0_wp, ratio - 1.0_wp, 0.0_wp]
-         call compare(rho, same, n)
-      end do
-      write (*, "(a,i0,a)") "Hertz ellipse, shortcut vs exhaustive bisection: ", n, " contacts compared"
-      call check(same, "Hertz ellipse: the bisection's shortcut gives the exhaustive result bit for bit")
-   end subroutine test_hertz_bisection_shortcut
-
-   !> Count one more comparison in n; same stays true while the ellipse of curvatures rho
-   !> (1/m, steel on steel) is the same with and without the bisection's shortcut.
-   subroutine compare(rho, same, n)
-      real(wp), intent(in) :: rho(4)
-      logical, intent(inout) :: same
-      integer, intent(inout) :: n
-      type(hertz_geometry_t) :: fast, full
-      logical :: ok1, ok2
-      call hertz_geometry(rho, 2.0e11_wp, 0.3_wp, 2.0e11_wp, 0.3_wp, fast, ok1)
-      call hertz_geometry(rho, 2.0e11_wp, 0.3_wp, 2.0e11_wp, 0.3_wp, full, ok2, exhaustive=.true.)
-      n = n + 1
-      same = same .and. (ok1 .eqv. ok2) .and. fast%kappa == full%kappa .and. fast%a_star == full%a_star .and. &
-             fast%stiffness == full%stiffness
-   end subroutine compare
 
 end program test_forces
