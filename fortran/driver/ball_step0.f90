@@ -107,7 +107,7 @@ contains
       type(mounted_geometry_t) :: geometry
       type(ball_qs_load_t) :: ld
       type(life_params_t) :: lp
-      real(wp), allocatable :: lives_o(:), lives_i(:), p_max(:), mu(:)
+      real(wp), allocatable :: lives_o(:), lives_i(:), p_max(:), mu(:), speeds(:)
       real(wp) :: n_o, n_i, m_o, m_i, psi, wi_rpm, wo_rpm, race_centre(3, 2), hours(3)
       real(wp), allocatable :: centres(:, :)
 
@@ -150,11 +150,12 @@ contains
       ! the races' hoop stress of the mounting (docs/life-model.md, M1-M3); an unloaded or
       ! unlubricated contact counts as no film (M5)
       allocate (lives_o(b%n_elements), lives_i(b%n_elements), p_max(b%n_elements), &
-                mu(b%n_elements))
+                mu(b%n_elements), speeds(b%n_elements))
+      speeds = s%start%kinematics%orbital_speed          ! contiguous (no array temporary)
       wi_rpm = b%speed_inner*30.0_wp/pi
       wo_rpm = b%speed_outer*30.0_wp/pi
       associate (e => s%start%equilibrium)
-         call ball_basic_life(b, lp, e%q_o, e%alpha_o, e%q_i, e%alpha_i, s%start%kinematics%orbital_speed, &
+         call ball_basic_life(b, lp, e%q_o, e%alpha_o, e%q_i, e%alpha_i, speeds, &
                               lives_o, lives_i, n_o, n_i, hours)
          p_max = e%c_o%max_pressure
          mu = no_nan(s%trac_coeff(1, :))

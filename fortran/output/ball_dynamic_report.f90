@@ -67,7 +67,7 @@ contains
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
       real(wp) :: slices(1, 10, 0), race_cage(max(b%n_lands, 1), 7), bodies(3, 11)
       real(wp) :: ld(5, 6), acc(3, 7), perf(N_PERFORMANCE), summary(1, 10), nan, w_orb(size(azimuth))
-      real(wp) :: lives(size(azimuth), 2), n_race(2), hours(3)
+      real(wp) :: lives(size(azimuth), 2), n_race(2), hours(3), contact_q(2, size(azimuth)), contact_a(2, size(azimuth))
       integer, allocatable :: re_no(:), cage_code(:), cage_end(:)
       integer :: land_no(max(b%n_lands, 1)), land_code(max(b%n_lands, 1))
       integer :: n, k, j
@@ -144,9 +144,10 @@ contains
       acc(3, :) = [rates%races(RACE_INNER)%velocity, rates%races(RACE_INNER)%omega*rpm, s%temperature(TEMP_INNER)]
       perf = nan                  ! modified life, churning, exit fluid: not computed
       ! basic life (eqs 73-74, 102) from the contact loads and orbital speeds of this instant
-      call ball_basic_life(b, life_params_t(), loads%contacts(1, :)%load, abs(loads%contacts(1, :)%alpha), &
-                           loads%contacts(2, :)%load, abs(loads%contacts(2, :)%alpha), w_orb, lives(:, 1), &
-                           lives(:, 2), n_race(1), n_race(2), hours)
+      contact_q = loads%contacts%load                     ! contiguous copies (no array temporaries)
+      contact_a = abs(loads%contacts%alpha)
+      call ball_basic_life(b, life_params_t(), contact_q(1, :), contact_a(1, :), contact_q(2, :), contact_a(2, :), &
+                           w_orb, lives(:, 1), lives(:, 2), n_race(1), n_race(2), hours)
       perf(1) = hours(1)
       perf(3) = g%mounting%outer_fit
       perf(4) = g%mounting%inner_fit
