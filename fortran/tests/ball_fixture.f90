@@ -1,14 +1,20 @@
 !> Fixtures shared by the engine's unit-test programs of the ball bearing force assembly
-!> (test_forces, test_traction_fast): the bearing state of a step-0 solution.
+!> (test_forces, test_traction_fast, test_cage_contacts): Appendix C's step 0 under race
+!> control and the bearing state of a step-0 solution.
 module adore_test_ball_fixture
    use adore_core_kinds, only: wp
    use adore_model_bearing, only: bearing_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, RACE_OUTER, RACE_INNER
-   use adore_driver_ball_step0, only: ball_step0_t
+   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_core_error, only: error_type
+   use adore_model_from_deck, only: read_bearing
+   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
+   use adore_test_support, only: check, finish, get_decks_dir
    implicit none
    private
 
-   public :: step0_state
+   public :: step0_state, appendix_c_race_control
 
 contains
 
@@ -41,5 +47,25 @@ contains
          st%races(RACE_INNER)%position = e%u(1:3)
       end associate
    end function step0_state
+
+   !> The Appendix C deck (decks/ directory of the test's argument) read, mounted and its
+   !> step 0 solved under outer race control; a failure is reported and ends the test
+   !> program `suite` (adore_test_support's finish).
+   subroutine appendix_c_race_control(suite, b, g, s0)
+      character(len=*), intent(in) :: suite
+      type(bearing_t), intent(out) :: b
+      type(mounted_geometry_t), intent(out) :: g
+      type(ball_step0_t), intent(out) :: s0
+      character(len=:), allocatable :: decks
+      type(error_type), allocatable :: error
+      call get_decks_dir(decks)
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      call check(.not. allocated(error), "read the Appendix C deck")
+      if (allocated(error)) call finish(suite)
+      g = mount_geometry(b, b%temperature)
+      call solve_ball_step0(b, s0, error, CONTROL_OUTER)
+      call check(.not. allocated(error), "step 0 of Appendix C with race control")
+      if (allocated(error)) call finish(suite)
+   end subroutine appendix_c_race_control
 
 end module adore_test_ball_fixture

@@ -19,8 +19,7 @@ program test_cage_contacts
    use adore_core_error, only: error_type
    use adore_core_rotation, only: cross, quat_from_rotation_vector, quat_multiply, quat_matrix
    use adore_model_bearing, only: bearing_t
-   use adore_model_from_deck, only: read_bearing
-   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, state_size, pack_state, RACE_INNER
    use adore_contact_cage_pocket, only: cage_pocket_pair_t, cage_pocket_geometry_t, cage_pocket_pair, &
                                         cage_pocket_contact, pocket_energy
@@ -29,12 +28,11 @@ program test_cage_contacts
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_pocket_pair, guide_land_pairs
    use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state
    use adore_dynamics_integrator, only: DERIV_OK, DERIV_REJECT_STEP
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
-   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
-   use adore_test_support, only: check, finish, get_decks_dir
+   use adore_driver_ball_step0, only: ball_step0_t
+   use adore_test_ball_fixture, only: appendix_c_race_control
+   use adore_test_support, only: check, finish
    implicit none
 
-   character(len=:), allocatable :: decks
    type(bearing_t) :: b
    type(mounted_geometry_t) :: g
    type(error_type), allocatable :: error
@@ -46,14 +44,7 @@ program test_cage_contacts
    call test_pushed_back_and_abnormal()
    call test_short_bearing_closed_form()
 
-   call get_decks_dir(decks)
-   call read_bearing(decks//"/appendix_c_ball.inp", b, error)
-   call check(.not. allocated(error), "read the Appendix C deck")
-   if (allocated(error)) call finish("cage contacts")
-   g = mount_geometry(b, b%temperature)
-   call solve_ball_step0(b, s0, error, CONTROL_OUTER)
-   call check(.not. allocated(error), "step 0 of Appendix C with race control")
-   if (allocated(error)) call finish("cage contacts")
+   call appendix_c_race_control("cage contacts", b, g, s0)
    call test_step0_geometry()
    call test_friction_from_deck()
    call test_centred_cage()

@@ -22,40 +22,31 @@ program test_forces
    use adore_core_error, only: error_type
    use adore_core_rotation, only: cross, quat_from_rotation_vector, quat_multiply
    use adore_model_bearing, only: bearing_t
-   use adore_model_from_deck, only: read_bearing
-   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, RACE_OUTER, RACE_INNER, &
                                         state_size, pack_state, unpack_state
    use adore_contact_ball_race, only: ball_race_pair_t, ball_race_geometry_t, ball_race_contact, planar_contact, &
                                       contact_energy
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_race_pairs, &
                                         add_gyroscopic_restraint
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
-   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, ball_contacts
+   use adore_driver_ball_step0, only: ball_step0_t
+   use adore_quasistatic_ball_kinematics, only: ball_contacts
    use adore_tribology_slip, only: ball_race_contact_t
    use adore_dynamics_ball_motion, only: ball_bearing_rates, body_rates
    use adore_forces_ball_bearing, only: body_load_t
    use adore_state_bearing_state, only: body_state_t
    use adore_core_rotation, only: quat_matrix
-   use adore_test_support, only: check, finish, get_decks_dir
-   use adore_test_ball_fixture, only: step0_state
+   use adore_test_support, only: check, finish
+   use adore_test_ball_fixture, only: step0_state, appendix_c_race_control
    implicit none
 
-   character(len=:), allocatable :: decks
    type(bearing_t) :: b
    type(mounted_geometry_t) :: g
    type(error_type), allocatable :: error
    type(ball_step0_t) :: s0
    type(bearing_state_t) :: st
 
-   call get_decks_dir(decks)
-   call read_bearing(decks//"/appendix_c_ball.inp", b, error)
-   call check(.not. allocated(error), "read the Appendix C deck")
-   if (allocated(error)) call finish("force assembly")
-   g = mount_geometry(b, b%temperature)
-   call solve_ball_step0(b, s0, error, CONTROL_OUTER)
-   call check(.not. allocated(error), "step 0 of Appendix C with race control")
-   if (allocated(error)) call finish("force assembly")
+   call appendix_c_race_control("force assembly", b, g, s0)
    st = step0_state(b, s0)
    call test_pack_round_trip(st)
    call test_planar_special_case(b, g, s0, st)

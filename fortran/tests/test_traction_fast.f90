@@ -7,31 +7,21 @@ program test_traction_fast
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_model_bearing, only: bearing_t
-   use adore_model_from_deck, only: read_bearing
-   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
-   use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
+   use adore_driver_ball_step0, only: ball_step0_t
    use adore_contact_hertz, only: hertz_geometry_t, hertz_geometry
-   use adore_test_support, only: check, finish, get_decks_dir
-   use adore_test_ball_fixture, only: step0_state
+   use adore_test_support, only: check, finish
+   use adore_test_ball_fixture, only: step0_state, appendix_c_race_control
    implicit none
 
-   character(len=:), allocatable :: decks
    type(bearing_t) :: b
    type(mounted_geometry_t) :: g
    type(error_type), allocatable :: error
    type(ball_step0_t) :: s0
 
-   call get_decks_dir(decks)
-   call read_bearing(decks//"/appendix_c_ball.inp", b, error)
-   call check(.not. allocated(error), "read the Appendix C deck")
-   if (allocated(error)) call finish("fast traction")
-   g = mount_geometry(b, b%temperature)
-   call solve_ball_step0(b, s0, error, CONTROL_OUTER)
-   call check(.not. allocated(error), "step 0 of Appendix C with race control")
-   if (allocated(error)) call finish("fast traction")
+   call appendix_c_race_control("fast traction", b, g, s0)
    call test_fast_two_dimensional_traction(b, g, step0_state(b, s0))
    call test_hertz_bisection_shortcut()
    call finish("fast traction")
