@@ -1,7 +1,7 @@
 """Roller bearing step 0 (issue "[Roller step 0]"): line contact by slices (report Appendix B,
 fortran/contact/line_slices.f90), roller and inner race quasi-static equilibrium
 (fortran/quasistatic/roller_equilibrium.f90) and the deck-to-result driver
-(fortran/driver/roller_step0.f90), against the report's printed step 0
+(fortran/start/roller_step0.f90), against the report's printed step 0
 (golden/appendix_d_roller.prt) and against independent closed forms.
 
 Tolerances are those of the issue: contact loads, stresses, half widths, deflections 1 %,

@@ -122,11 +122,11 @@ subroutine adore_model_inertia(kind, p, n, rho, result, status, message)
 end subroutine adore_model_inertia
 
 !> Traction curve fit: result = [A, B (s/m), C (s/m), D] from k0, kmax, kinf, umax (m/s).
-subroutine adore_model_traction_fit(k0, kmax, kinf, umax, result, status, message)
+subroutine adore_tribology_traction_fit(k0, kmax, kinf, umax, result, status, message)
    use adore_core_kinds, only: wp
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
-   use adore_model_traction_fit, only: fit_traction_curve
+   use adore_tribology_traction_fit, only: fit_traction_curve
    implicit none
    real(wp), intent(in) :: k0, kmax, kinf, umax
    real(wp), intent(out) :: result(4)
@@ -141,13 +141,13 @@ subroutine adore_model_traction_fit(k0, kmax, kinf, umax, result, status, messag
    if (allocated(error)) then
       call set_error(error, status, message)
    end if
-end subroutine adore_model_traction_fit
+end subroutine adore_tribology_traction_fit
 
 !> Traction coefficient of the fitted curve at slips u (m/s): kappa(i) = kappa(u(i)).
 subroutine adore_model_traction_eval(coef, u, n, kappa, status, message)
    use adore_core_kinds, only: wp
    use adore_core_error, only: ADORE_OK
-   use adore_model_traction_fit, only: traction_coefficient
+   use adore_tribology_traction_fit, only: traction_coefficient
    implicit none
    real(wp), intent(in) :: coef(4)
    integer, intent(in) :: n

@@ -191,7 +191,7 @@ subroutine adore_ball_step0_deck(deck_path, nmax, mech_tol, moments, n, balls, s
    use adore_core_error, only: error_type, ADORE_OK, ADORE_INPUT_ERROR
    use adore_model_bearing, only: bearing_t, BALL_BEARING
    use adore_model_from_deck, only: read_bearing
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0
    implicit none
    character(len=*), intent(in) :: deck_path
    integer, intent(in) :: nmax

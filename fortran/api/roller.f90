@@ -54,7 +54,7 @@ end subroutine adore_line_contact
 
 !> Step 0 of a roller-bearing deck end to end (deck -> model -> mounting -> kinematics ->
 !> quasi-static equilibrium with slice contacts).  growth_count: 2 = as ADORE 5.0 (report),
-!> 1 = consistent clearance (see adore_driver_roller_step0).
+!> 1 = consistent clearance (see adore_start_roller_step0).
 !>
 !> rollers(nmax, 18): [azimuth (rad), r (m), tilt (rad), Q_o, Q_i (N), stress_o, stress_i (Pa),
 !>   a_o, a_i, b_o, b_i (m, half contact length, mean half width), delta_o, delta_i (m, max
@@ -71,7 +71,7 @@ subroutine adore_roller_step0_deck(deck_path, growth_count, misalignment, nmax, 
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_model_bearing, only: bearing_t
-   use adore_driver_roller_step0, only: roller_step0_t
+   use adore_start_roller_step0, only: roller_step0_t
    use adore_api_unpack, only: roller_start_from_deck
    implicit none
    character(len=*), intent(in) :: deck_path

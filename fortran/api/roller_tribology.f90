@@ -1,6 +1,6 @@
 !> Flat f2py wrapper of the roller step-0 tribology (module pyadore._engine).
 
-!> Step 0 of a roller-bearing deck with its slice tractions (adore_driver_roller_step0,
+!> Step 0 of a roller-bearing deck with its slice tractions (adore_start_roller_step0,
 !> adore_tribology_roller_traction).  growth_count as adore_roller_step0_deck; spin_method
 !> 1 = pure rolling of the land (the report), 2 = traction moment balance per roller.
 !>
@@ -20,7 +20,7 @@ subroutine adore_roller_step0_tribology(deck_path, growth_count, spin_method, nm
    use adore_api_status, only: set_error
    use adore_core_error, only: error_type, ADORE_OK
    use adore_model_bearing, only: bearing_t
-   use adore_driver_roller_step0, only: roller_step0_t
+   use adore_start_roller_step0, only: roller_step0_t
    use adore_api_unpack, only: roller_start_from_deck
    implicit none
    character(len=*), intent(in) :: deck_path

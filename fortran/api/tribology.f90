@@ -319,7 +319,7 @@ subroutine adore_tribo_ehd_contact_time(geom, rheo, h, b, method, n_rep, microse
    use adore_core_error, only: error_type, ADORE_OK, input_error
    use adore_tribology_slip, only: contact_traction_t, ball_race_contact_t
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_contact_traction_fast
-   use adore_tribology_race_contact, only: EHD_GAUSS, EHD_STRIP
+   use adore_forces_race_contact, only: EHD_GAUSS, EHD_STRIP
    use adore_api_unpack, only: contact_from_geom
    implicit none
    real(wp), intent(in) :: geom(9), rheo(4), h, b

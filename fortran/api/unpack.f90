@@ -7,7 +7,7 @@ module adore_api_unpack
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t
    use adore_model_bearing, only: bearing_t, ROLLER_BEARING
    use adore_model_from_deck, only: read_bearing
-   use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
+   use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
    implicit none
    private
 

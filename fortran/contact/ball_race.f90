@@ -28,7 +28,7 @@ module adore_contact_ball_race
    use adore_core_rotation, only: quat_matrix, cross
    use adore_contact_hertz, only: hertz_geometry_t, hertz_contact_t, hertz_geometry, hertz_contact
    use adore_state_bearing_state, only: body_state_t
-   use adore_tribology_slip, only: ball_race_contact_t, SIDE_OUTER, SIDE_INNER
+   use adore_contact_ball_race_kinematics, only: ball_race_contact_t, SIDE_OUTER, SIDE_INNER
    implicit none
    private
 

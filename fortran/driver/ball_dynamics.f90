@@ -22,7 +22,7 @@ module adore_driver_ball_dynamics
    use adore_tribology_wear, only: archard_wear_rate
    use adore_dynamics_integrator, only: integrator_t, DERIV_FAIL
    use adore_dynamics_ball_system, only: ball_system_t
-   use adore_driver_ball_step0, only: ball_step0_t
+   use adore_start_ball_step0, only: ball_step0_t
    use adore_driver_time_average, only: time_average_t
    use adore_driver_run_history, only: run_history_t, history_due, record_ball_history
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios

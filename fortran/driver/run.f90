@@ -21,9 +21,9 @@ module adore_driver_run
    use adore_output_banner, only: write_listing, write_banner
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
+   use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
    use adore_quasistatic_ball_start, only: start_method_from_name, start_method_title
-   use adore_driver_roller_step0, only: roller_step0_t, solve_roller_step0
+   use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_output_echo_fill, only: fill_echo
    use adore_output_step_report, only: write_ball_step0, write_roller_step0
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry

@@ -24,7 +24,7 @@ module adore_driver_run_history
                                    TEMP_INNER, TEMP_HOUSING, TEMP_SHAFT
    use adore_state_bearing_state, only: bearing_state_t
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, total_power_loss
-   use adore_tribology_race_contact, only: wall_temperature
+   use adore_forces_race_contact, only: wall_temperature
    implicit none
    private
 

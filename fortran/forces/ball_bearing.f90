@@ -5,7 +5,7 @@
 !> The one force assembly for the quasi-static start's checks and the equations of motion
 !> ([Dynamics]).  Per ball and race (adore_contact_ball_race): the Hertz load Q acts on the
 !> ball along -n through the contact point P (no moment about the ball centre) and on the
-!> race along +n at P.  The traction of the run's model (adore_tribology_race_contact:
+!> race along +n at P.  The traction of the run's model (adore_forces_race_contact:
 !> the deck's traction curve, an ADRX7 table or the EHD film traction of model 3; report
 !> 2.1) acts along the rolling direction e_t, distributed over the major axis: on the race
 !> dF e_t at Q(psi) = B + D/2 (cos psi n + sin psi e_m), on the ball the opposite, so the
@@ -42,7 +42,7 @@ module adore_forces_ball_bearing
    use adore_contact_ball_race, only: ball_race_pair_t, ball_race_geometry_t, ball_race_contact, planar_contact
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_OUTER, SIDE_INNER, &
                                    contact_kinematics
-   use adore_tribology_race_contact, only: PRINT_GAUSS, EHD_GAUSS, ehd_traction_model, lubricant_film, &
+   use adore_forces_race_contact, only: PRINT_GAUSS, EHD_GAUSS, ehd_traction_model, lubricant_film, &
                                            check_ehd_film, ehd_traction
    implicit none
    private

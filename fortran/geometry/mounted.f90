@@ -22,7 +22,7 @@
 !>   inner raceway out by its growth.
 !> * Roller raceways: radii from the model's raceway diameters moved by growth_count times
 !>   the mounting's raceway displacements (growth_count = 2 reproduces the ADORE 5.0
-!>   report, 1 is the consistent clearance; adore_driver_roller_step0).
+!>   report, 1 is the consistent clearance; adore_start_roller_step0).
 !> Units SI (m, K).
 module adore_geometry_mounted
    use adore_core_kinds, only: wp

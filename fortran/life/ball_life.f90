@@ -1,5 +1,5 @@
 !> Basic (Lundberg-Palmgren) fatigue life of a ball bearing from its contact loads (report
-!> eqs 73-74 and 102), shared by the quasi-static start (adore_driver_ball_step0) and the
+!> eqs 73-74 and 102), shared by the quasi-static start (adore_start_ball_step0) and the
 !> dynamic steps (adore_output_ball_dynamic_report): inner race rotating, outer race
 !> stationary, as ADORE's start (docs/life-model.md).
 module adore_life_ball_life

@@ -18,7 +18,7 @@ module adore_model_from_deck
    use adore_model_inertia, only: sphere_inertia, hollow_cylinder_inertia, ball_cage_inertia, &
                                   roller_cage_inertia, roller_moments
    use adore_contact_line_slices, only: roller_profile_t, roller_mass
-   use adore_model_traction_fit, only: fit_traction_curve
+   use adore_tribology_traction_fit, only: fit_traction_curve
    use adore_tribology_traction_law, only: curve_law
    use adore_tribology_film, only: lubricant_from_code
    implicit none

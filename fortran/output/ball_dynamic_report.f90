@@ -17,7 +17,7 @@ module adore_output_ball_dynamic_report
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, body_azimuth, RACE_OUTER, RACE_INNER
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, total_power_loss, guide_land_pairs
    use adore_contact_cage_land, only: cage_land_pair_t
-   use adore_tribology_race_contact, only: wall_temperature
+   use adore_forces_race_contact, only: wall_temperature
    use adore_cage_step0, only: cage_step0_t
    use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
    use adore_output_print_tables, only: write_step

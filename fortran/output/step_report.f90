@@ -14,8 +14,8 @@ module adore_output_step_report
                                    TEMP_CAGE, TEMP_ELEMENT, TEMP_HOUSING, TEMP_INNER, TEMP_OUTER, TEMP_SHAFT
    use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
    use adore_output_print_tables, only: write_step
-   use adore_driver_ball_step0, only: ball_step0_t
-   use adore_driver_roller_step0, only: roller_step0_t
+   use adore_start_ball_step0, only: ball_step0_t
+   use adore_start_roller_step0, only: roller_step0_t
    use adore_cage_step0, only: cage_step0_t
    implicit none
    private

@@ -5,7 +5,7 @@ module adore_test_ball_fixture
    use adore_core_kinds, only: wp
    use adore_model_bearing, only: bearing_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, RACE_OUTER, RACE_INNER
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0
    use adore_core_error, only: error_type
    use adore_model_from_deck, only: read_bearing
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry

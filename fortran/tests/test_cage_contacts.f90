@@ -28,7 +28,7 @@ program test_cage_contacts
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_pocket_pair, guide_land_pairs
    use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state
    use adore_dynamics_integrator, only: DERIV_OK, DERIV_REJECT_STEP
-   use adore_driver_ball_step0, only: ball_step0_t
+   use adore_start_ball_step0, only: ball_step0_t
    use adore_test_ball_fixture, only: appendix_c_race_control
    use adore_test_support, only: check, finish
    implicit none

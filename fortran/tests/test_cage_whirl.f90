@@ -84,7 +84,7 @@ program test_cage_whirl
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_forces_ball_bearing, only: guide_land_pairs
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0
    use adore_test_support, only: check, finish, get_decks_dir
    use test_cage_whirl_free_cage, only: free_cage_t, land_force_on_cage
    implicit none

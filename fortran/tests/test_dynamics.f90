@@ -58,7 +58,7 @@ program test_dynamics
    use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state, start_ball_dynamics, &
                                          state_error_scale
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
-   use adore_driver_ball_step0, only: ball_step0_t, solve_ball_step0
+   use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0
    use adore_quasistatic_ball_equilibrium, only: ball_qs_load_t, ball_qs_solution_t, solve_ball_equilibrium
    use adore_quasistatic_models, only: ball_qs_model
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER

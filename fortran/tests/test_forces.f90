@@ -29,7 +29,7 @@ program test_forces
                                       contact_energy
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_race_pairs, &
                                         add_gyroscopic_restraint
-   use adore_driver_ball_step0, only: ball_step0_t
+   use adore_start_ball_step0, only: ball_step0_t
    use adore_quasistatic_ball_kinematics, only: ball_contacts
    use adore_tribology_slip, only: ball_race_contact_t
    use adore_dynamics_ball_motion, only: ball_bearing_rates, body_rates

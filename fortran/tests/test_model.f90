@@ -10,7 +10,7 @@ program test_model
                                     roller_race_diameters
    use adore_model_inertia, only: sphere_inertia, solid_cylinder_inertia, hollow_cylinder_inertia, &
                                   ball_cage_inertia, roller_cage_inertia, roller_moments
-   use adore_model_traction_fit, only: fit_traction_curve, traction_coefficient, traction_slope
+   use adore_tribology_traction_fit, only: fit_traction_curve, traction_coefficient, traction_slope
    use adore_model_scales, only: scale_factors
    implicit none
 

@@ -10,7 +10,7 @@ program test_traction_fast
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads
-   use adore_driver_ball_step0, only: ball_step0_t
+   use adore_start_ball_step0, only: ball_step0_t
    use adore_contact_hertz, only: hertz_geometry_t, hertz_geometry
    use adore_test_support, only: check, finish
    use adore_test_ball_fixture, only: step0_state, appendix_c_race_control

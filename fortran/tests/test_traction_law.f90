@@ -6,7 +6,7 @@ program test_traction_law
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
-   use adore_model_traction_fit, only: traction_coefficient
+   use adore_tribology_traction_fit, only: traction_coefficient
    use adore_tribology_traction_law, only: traction_law_t, curve_law, table_law, law_kappa, &
                                            law_slip_scale, LAW_TABLE
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_INNER, &

@@ -22,27 +22,14 @@ module adore_tribology_slip
    use adore_core_error, only: error_type, input_error
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_traction_law, only: traction_law_t, law_kappa
+   use adore_contact_ball_race_kinematics, only: ball_race_contact_t, SIDE_OUTER, SIDE_INNER
    implicit none
    private
 
-   public :: ball_race_contact_t, contact_traction_t
+   public :: ball_race_contact_t, contact_traction_t, SIDE_OUTER, SIDE_INNER
    public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
              major_axis_nodes, print_slip_node, contact_power, rolling_zones, axis_nodes, cross_slip
 
-   integer, parameter, public :: SIDE_OUTER = 1   !< contact with the outer race
-   integer, parameter, public :: SIDE_INNER = -1  !< contact with the inner race
-
-   !> One ball/race contact at a given instant (SI units, angles in rad).
-   type :: ball_race_contact_t
-      integer :: side = SIDE_OUTER      !< SIDE_OUTER or SIDE_INNER
-      real(wp) :: alpha = 0.0_wp        !< contact angle (rad)
-      real(wp) :: rho = 0.0_wp          !< radius of the contact surface about the ball centre (m)
-      real(wp) :: r_b = 0.0_wp          !< radius of the ball centre from the bearing axis (m)
-      real(wp) :: omega(2) = 0.0_wp     !< ball angular velocity (axial, radial) in the orbit frame (rad/s)
-      real(wp) :: race_speed = 0.0_wp   !< race angular speed relative to the orbit frame, Omega - w_m (rad/s)
-      real(wp) :: a = 0.0_wp            !< semi-major axis of the contact ellipse (m)
-      real(wp) :: load = 0.0_wp         !< normal load (N)
-   end type ball_race_contact_t
 
    !> Integrated contact quantities.
    type :: contact_traction_t

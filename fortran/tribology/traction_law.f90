@@ -2,7 +2,7 @@
 !>
 !> Two kinds:
 !> * the deck's four-parameter curve kappa(u) = (A + B u) exp(-C u) + D (Rec 10.1B/10.1C,
-!>   fitted in `adore_model_traction_fit`);
+!>   fitted in `adore_tribology_traction_fit`);
 !> * an arbitrary traction-slip table, ADORE's user subroutine ADRX7 (report 4.4.9: "compute
 !>   the traction coefficient by interpolating this data").  The report gives no interpolation
 !>   rule; pyadore's is: piecewise linear in the slip speed |u| (m/s) through the nodes, which
@@ -14,7 +14,7 @@ module adore_tribology_traction_law
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
    use adore_core_strings, only: itoa
-   use adore_model_traction_fit, only: traction_coefficient
+   use adore_tribology_traction_fit, only: traction_coefficient
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private

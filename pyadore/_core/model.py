@@ -44,7 +44,7 @@ def body_inertia(kind: str, params, rho: float, n: int = 0) -> tuple[float, list
 
 def traction_fit(k0: float, kmax: float, kinf: float, umax: float) -> tuple[float, float, float, float]:
     """Coefficients (A, B, C, D) of kappa(u) = (A + B u) exp(-C u) + D (B, C in s/m)."""
-    values, status, message = _engine().adore_model_traction_fit(k0, kmax, kinf, umax)
+    values, status, message = _engine().adore_tribology_traction_fit(k0, kmax, kinf, umax)
     check(int(status), message)
     return tuple(float(v) for v in values)
 

@@ -129,7 +129,7 @@ def roller_step0_from_deck(deck_path: str | os.PathLike, *, growth_count: int = 
     """Step 0 of a roller-bearing deck computed by the engine end to end (SI, rad, rad/s).
 
     growth_count 2 reproduces ADORE 5.0 (raceway growth applied twice in the contact
-    geometry, see fortran/driver/roller_step0.f90), 1 is the consistent clearance.
+    geometry, see fortran/start/roller_step0.f90), 1 is the consistent clearance.
     misalignment: the inner race's prescribed misalignment about y and z (rad; the report
     runs roller bearings with prescribed misalignment, section 4.4.1).  No deck field is
     identified for it (docs/examples.md), so it is given here.

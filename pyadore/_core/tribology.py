@@ -120,7 +120,7 @@ def contact_temperature_rise(a: float, b: float, p0: float, xk, wk, g, u1: float
 
 
 # --- roller bearings: line contact by slices, step 0 (fortran/contact/line_slices.f90,
-# fortran/driver/roller_step0.f90) ---------------------------------------------------
+# fortran/start/roller_step0.f90) ---------------------------------------------------
 
 
 def ehd_contact_traction(side: int, alpha: float, rho: float, r_b: float, omega, race_speed: float, a: float,

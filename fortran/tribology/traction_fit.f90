@@ -14,7 +14,7 @@
 !>   A = 0: x = 1.
 !> Then C = x / umax, B = C A / (1 - x) (A = 0: B = e C (kmax - kinf)).
 !> A solution exists exactly when umax > 0 and kmax > max(k0, kinf).
-module adore_model_traction_fit
+module adore_tribology_traction_fit
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
    implicit none
@@ -114,4 +114,4 @@ contains
       y = 0.5_wp*(lo + hi)
    end function solve_yexpy
 
-end module adore_model_traction_fit
+end module adore_tribology_traction_fit

@@ -10,7 +10,7 @@
 !> model 3), the balls' Archard wear rates (adore_tribology_wear), the basic and Tallian
 !> modified lives.  Quantities of later issues (cage contact forces) are not computed here
 !> and stay NaN, so the print shows them as not computed.
-module adore_driver_ball_step0
+module adore_start_ball_step0
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
@@ -23,7 +23,7 @@ module adore_driver_ball_step0
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER, CONTROL_INNER, MIN_DISSIPATION, ball_contacts, &
                                                 ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
-   use adore_tribology_race_contact, only: PRINT_GAUSS, ehd_traction_model, wall_temperature, wall_rheology, &
+   use adore_forces_race_contact, only: PRINT_GAUSS, ehd_traction_model, wall_temperature, wall_rheology, &
                                            lubricant_film, check_ehd_film, ehd_traction, ehd_flash, law_flash, &
                                            printed_slip
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start, is_loaded
@@ -392,4 +392,4 @@ contains
 
    end subroutine solve_ball_step0
 
-end module adore_driver_ball_step0
+end module adore_start_ball_step0

@@ -33,7 +33,7 @@
 !> * Basic fatigue life (ADRF1): adore_life_roller from the slice contacts, eqs 73, 75, 76,
 !>   102, with the default life_params_t (the deck has no fatigue records).  The modified
 !>   (Tallian) life is not computed for line contacts and stays NaN.
-module adore_driver_roller_step0
+module adore_start_roller_step0
    use adore_core_kinds, only: wp
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_error, only: error_type, input_error
@@ -48,7 +48,7 @@ module adore_driver_roller_step0
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    use adore_tribology_wear, only: archard_wear_rate
    use adore_tribology_traction_law, only: law_slip_scale
-   use adore_tribology_race_contact, only: line_flash, wall_temperature
+   use adore_forces_race_contact, only: line_flash, wall_temperature
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
                                               roller_equilibrium_spin, RACE_OUTER, RACE_INNER
    implicit none
@@ -250,4 +250,4 @@ contains
 
    end subroutine roller_tribology
 
-end module adore_driver_roller_step0
+end module adore_start_roller_step0

@@ -4,10 +4,10 @@
 !> temperature, all from the bearing model and the current bulk temperatures.
 !>
 !> ADORE's ADRD with ADRH2 for one contact (report 2.1, 2.6-2.8): the procedures the
-!> step-0 start calls for every ball (adore_driver_ball_step0) and the force assembly
+!> step-0 start calls for every ball (adore_start_ball_step0) and the force assembly
 !> calls at any state (adore_forces_ball_bearing).  temperature(7): the bulk temperatures
 !> in the bearing model's TEMP_* order (K); race: BODY_OUTER or BODY_INNER.  Units SI.
-module adore_tribology_race_contact
+module adore_forces_race_contact
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER
@@ -254,4 +254,4 @@ contains
                                     rise, error=error)
    end subroutine line_flash
 
-end module adore_tribology_race_contact
+end module adore_forces_race_contact
