@@ -13,7 +13,7 @@ ADORE  := $(NATIVE)/adore
 DECK   := decks/appendix_c_ball.inp
 OUT    := out/appendix_c_ball.prt
 # Engine unit-test executables (meson targets) that `make test` builds and pytest runs.
-ENGINE_TESTS := test_deck_text test_deck_reader test_model test_life test_print test_tribology test_roller test_cage test_roller_traction test_traction_law test_forces test_traction_fast test_integrator test_dynamics test_cage_contacts test_cage_whirl
+ENGINE_TESTS := test_deck_text test_deck_reader test_model test_life test_print test_tribology test_roller test_cage test_roller_traction test_traction_law test_forces test_traction_fast test_integrator test_dynamics test_cage_contacts test_cage_whirl test_bearing_system
 # Build tools (meson, ninja, f2py) are taken from the venv, never from the system.
 VPATH_ENV := PATH="$(CURDIR)/$(VENV)/bin:$$PATH"
 # the run loop's bookkeeping (time averages, time history rows; issue #20)

@@ -69,9 +69,7 @@ def read_traction_table(path):
     return pd.DataFrame({"slip_m_s": slip, "kappa": kappa})
 
 
-def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball_start=None,
-        moment_equilibrium: bool = False, history_element: int = 1, progress=None,
-        traction_2d: bool = True, substeps: int = 1) -> Result:
+def run(deck_path, steps: int | None = None, out=None, progress=None, **options) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
 
     steps: ``None`` runs as many time steps as the deck asks for (Rec 1; Appendix C: 2500),
@@ -82,45 +80,38 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
     file beside the print (:attr:`Result.history_path`) and returns the same table as
     :attr:`Result.time_history`.
     out: the print file to write; by default a file in a fresh temporary directory.
-    traction_table: a traction-slip table file (ADORE's ADRX7, report 4.4.9; format in
-    docs/tribology.md) replacing the deck's RE/race traction model; the print lists it
-    under "Input from optional user subroutines".
-    ball_start: the initial ball angular velocity (report 4.4.7), one of
-    :data:`BALL_STARTS`; ``None`` for the default (minimum dissipation).  Race control
-    is listed in the print's first section.  Ball decks only.
-    moment_equilibrium: ``True`` solves the inner race's misalignments about y and z for
-    moment equilibrium in the quasi-static start (ADORE kFS4 = kFS5 = 0) instead of
-    prescribing them zero (the default; the deck's Rec 3.3 flags are not identified, see
-    docs/examples.md).  Listed in the print's first section; the tilts are printed in
-    section 2 (IRace Ang Position Theta, Phi).  Ball decks only.
-    history_element: the rolling element whose race contacts and pocket force the time
-    history records (default 1).
-    substeps: integrator steps in each time step (report 4.4.5): the deck's step count and
-    print interval count time steps of ``substeps`` integrator steps each; output is neither
-    printed nor recorded over the substeps (default 1).
-    traction_2d: ``True`` (default): the dynamics' race traction acts along the slip vector
-    along and across the rolling direction (report eqs 2-3); ``False`` is a developer option,
-    the one-dimensional traction along the rolling direction only (eq 1), listed in the print
-    (docs/dynamics.md, "Ball gyroscopic moment and the 2-D traction").
     progress: ``None`` shows a progress bar (tqdm: step, simulated time, time left) on
     stderr when it is a terminal; ``True`` always, ``False`` never; or a function
     ``progress(step, n_steps, time_s)`` called after every time step.
+    options: the run options of the engine's table (:func:`pyadore.options.run_options`;
+    ``pyadore run --help`` lists them with their help), by name, e.g.
+    ``substeps=5`` (integrator steps in each printed time step, report 4.4.5),
+    ``history_element=3`` (the rolling element of the time history's contact columns),
+    ``traction_table="table.txt"`` (an ADRX7 traction-slip table replacing the deck's
+    RE/race traction model, listed in the print), ``ball_start="outer-race-control"``
+    (report 4.4.7; ball decks), ``moment_equilibrium=True`` (the inner race's
+    misalignment solved for moment equilibrium in the quasi-static start, ADORE kFS4 =
+    kFS5 = 0; ball decks), ``traction_2d=False`` (the one-dimensional race traction, a
+    developer option).  ``None`` for an option means its default.
     Ctrl-C during the time steps (main thread) stops the run after its current step.
-    Raises :class:`~pyadore.errors.AdoreInputError` for bad input and
-    :class:`~pyadore.errors.AdoreEngineError` when the engine fails.  A time integration
-    that stops early (Ctrl-C, a failed integration, a non-finite state) raises
+    Raises :class:`~pyadore.errors.AdoreInputError` for bad input (an unknown option
+    included) and :class:`~pyadore.errors.AdoreEngineError` when the engine fails.  A time
+    integration that stops early (Ctrl-C, a failed integration, a non-finite state) raises
     AdoreEngineError naming the step and time; its print is kept and ends with the line
     ``*** RUN INCOMPLETE ...`` (the error's ``print_path``; ``time_history``: the steps
     done).
     """
+    from .options import options_text
+
     if steps is None:
         engine_steps = STEPS_FROM_DECK
     else:
         if isinstance(steps, bool) or not isinstance(steps, int) or steps < 0:
             raise AdoreInputError(f"steps must be None or an integer >= 0, got {steps!r}")
         engine_steps = steps
-    if isinstance(history_element, bool) or not isinstance(history_element, int) or history_element < 1:
-        raise AdoreInputError(f"history_element must be a rolling element number >= 1, got {history_element!r}")
+    if "steps" in options:
+        raise AdoreInputError("steps is run()'s own argument; pass it once")
+    text = options_text(steps=engine_steps, **options)
     deck = Path(os.fspath(deck_path))
     if out is None:
         out_path = Path(tempfile.mkdtemp(prefix="pyadore-")) / (deck.stem + ".prt")
@@ -128,26 +119,13 @@ def run(deck_path, steps: int | None = None, out=None, traction_table=None, ball
         out_path = Path(os.fspath(out))
         if out_path.parent and not out_path.parent.exists():
             raise AdoreInputError(f"{out_path}: the output directory {out_path.parent} does not exist")
-    table = None
-    if traction_table is not None:
-        table = Path(os.fspath(traction_table))
-        if not str(traction_table).strip():
-            raise AdoreInputError("traction table: the file name is blank")
-    if not isinstance(moment_equilibrium, bool):
-        raise AdoreInputError(f"moment_equilibrium must be True or False, got {moment_equilibrium!r}")
-    if not isinstance(traction_2d, bool):
-        raise AdoreInputError(f"traction_2d must be True or False, got {traction_2d!r}")
-    if isinstance(substeps, bool) or not isinstance(substeps, int) or substeps < 1:
-        raise AdoreInputError(f"substeps must be an integer >= 1 (integrator steps per printed time step), "
-                              f"got {substeps!r}")
     from .progress import RunProgress
     from .timehistory import history_frame
 
     watch = RunProgress(progress, label=deck.name)
     try:
         with watch:
-            output = _core.run_file(deck, out_path, engine_steps, table, ball_start, moment_equilibrium,
-                                    history_element, watch.callback, traction_2d, substeps)
+            output = _core.run_file(deck, out_path, text, watch.callback)
     except AdoreEngineError as exc:
         done = getattr(exc, "output", None)
         exc.print_path = out_path if out_path.exists() else None

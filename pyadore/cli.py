@@ -14,6 +14,7 @@ import click
 
 from .api import BALL_STARTS
 from .errors import AdoreError
+from .options import click_options
 
 CONTEXT = {"help_option_names": ["-h", "--help"]}
 
@@ -42,21 +43,8 @@ def cli() -> None:
 @click.option("--steps", type=click.IntRange(min=0),
               help="time steps to integrate after step 0 (ball decks; thermal model off); 0 = the "
                    "quasi-static start only [default: as the deck says, Rec 1]")
-@click.option("--history-element", type=click.IntRange(min=1), default=1, show_default=True,
-              help="rolling element whose race contacts and pocket force the time history records")
-@click.option("--traction-table", type=click.Path(dir_okay=False, path_type=Path),
-              help="traction-slip table (slip m/s, coefficient per line; ADORE's ADRX7) replacing "
-                   "the deck's RE/race traction model")
-@click.option("--ball-start", type=click.Choice(BALL_STARTS),
-              help="initial ball angular velocity (report 4.4.7): minimum contact dissipation "
-                   "[default] or race control at one race (ball decks only)")
-@click.option("--substeps", type=click.IntRange(min=1), default=1, show_default=True,
-              help="integrator steps in each printed time step (report 4.4.5)")
-@click.option("--moment-equilibrium", is_flag=True, default=False,
-              help="solve the inner race's misalignment for moment equilibrium (ADORE kFS4 = kFS5 = 0) "
-                   "instead of prescribing it zero (ball decks only)")
-def run(deck: Path, out: Path | None, steps: int | None, history_element: int, traction_table: Path | None,
-        ball_start: str | None, substeps: int, moment_equilibrium: bool) -> None:
+@click_options(skip=("steps",))
+def run(deck: Path, out: Path | None, steps: int | None, **options) -> None:
     """Run DECK through the engine and write its print file.
 
     A run with time steps also writes its plot-data file (time histories) beside the print,
@@ -73,9 +61,7 @@ def run(deck: Path, out: Path | None, steps: int | None, history_element: int, t
         click.echo(f"pyadore: error: cannot create the output directory {out.parent}: {exc.strerror}", err=True)
         sys.exit(1)
     try:
-        result = run_deck(deck, steps=steps, out=out, traction_table=traction_table, ball_start=ball_start,
-                          moment_equilibrium=moment_equilibrium, history_element=history_element,
-                          substeps=substeps)
+        result = run_deck(deck, steps=steps, out=out, **options)
     except AdoreError as exc:
         _fail(exc)
     except KeyboardInterrupt:

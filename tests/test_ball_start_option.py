@@ -83,7 +83,7 @@ def test_unknown_start_is_an_input_error(tmp_path, ball_deck):
         pyadore.run(ball_deck, steps=0, out=tmp_path / "x.prt", ball_start="race-control")
     # the engine is the one place that checks the name
     with pytest.raises(AdoreInputError, match="got 'race-control'"):
-        _core.run_file(ball_deck, tmp_path / "y.prt", 0, None, "race-control")
+        _core.run_file(ball_deck, tmp_path / "y.prt", "steps=0\nball_start=race-control")
     with pytest.raises(AdoreInputError, match="got '3'"):
         pyadore.run(ball_deck, steps=0, out=tmp_path / "z.prt", ball_start=3)
     assert list(tmp_path.iterdir()) == []

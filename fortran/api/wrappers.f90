@@ -12,7 +12,8 @@ module adore_api_run
    use adore_core_error, only: error_type, engine_error, ADORE_OK
    use adore_api_status, only: set_error
    use adore_driver_run, only: run_deck, run_progress
-   use adore_driver_run_history, only: run_history_t, history_columns_text
+   use adore_model_run_options, only: run_options_t, run_options_from_text
+   use adore_output_run_history, only: run_history_t, history_columns_text
    implicit none
    private
 
@@ -20,25 +21,27 @@ module adore_api_run
 
 contains
 
-   !> run_deck(deck_path, out_path, steps, ...) with the time history in hist(1:n_rows,
-   !> 1:n_cols) (rows x cols from adore_run_plan), its column names joined by commas in
-   !> columns, the steps integrated, the run's note, status and message.  On an early stop
-   !> (status 2) the arrays hold the history up to the last accepted step.
-   subroutine run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
-                              traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, integrated, note, &
-                              status, message, progress)
-      character(len=*), intent(in) :: deck_path, out_path, traction_table, ball_start
-      integer, intent(in) :: steps, moment_equilibrium, element, traction_2d, substeps, rows, cols
+   !> run_deck(deck_path, out_path, options, ...) with the run options as "name=value"
+   !> lines (adore_model_run_options), the time history in hist(1:n_rows, 1:n_cols) (rows x
+   !> cols from adore_run_plan), its column names joined by commas in columns, the steps
+   !> integrated, the run's note, status and message.  On an early stop (status 2) the
+   !> arrays hold the history up to the last accepted step.
+   subroutine run_into_arrays(deck_path, out_path, options, rows, cols, hist, n_rows, n_cols, columns, integrated, &
+                              note, status, message, progress)
+      character(len=*), intent(in) :: deck_path, out_path, options
+      integer, intent(in) :: rows, cols
       real(wp), intent(out) :: hist(rows, cols)
       integer, intent(out) :: n_rows, n_cols, integrated, status
       character(len=*), intent(out) :: columns, note, message
       procedure(run_progress), optional :: progress
       type(error_type), allocatable :: error
       type(run_history_t) :: history
+      type(run_options_t) :: opts
       character(len=:), allocatable :: text, run_note
 
-      call run_deck(deck_path, out_path, steps, error, traction_table, ball_start, moment_equilibrium /= 0, &
-                    integrated, history, run_note, progress, element, traction_2d /= 0, substeps)
+      integrated = 0
+      call run_options_from_text(options, opts, error)
+      if (.not. allocated(error)) call run_deck(deck_path, out_path, opts, error, integrated, history, run_note, progress)
       status = ADORE_OK
       message = ""
       note = ""
@@ -68,20 +71,26 @@ end module adore_api_run
 
 !> What a run of the deck will do (see adore_driver_run::run_plan): time steps after step
 !> 0 and the shape (rows, cols) of its time history, for the arrays of adore_run_file.
-subroutine adore_run_plan(deck_path, steps, n_steps, rows, cols, status, message)
+subroutine adore_run_plan(deck_path, options, n_steps, rows, cols, status, message)
    use adore_core_error, only: error_type, ADORE_OK
    use adore_api_status, only: set_error
    use adore_driver_run, only: run_plan
+   use adore_model_run_options, only: run_options_t, run_options_from_text
    implicit none
    character(len=*), intent(in) :: deck_path   !< deck file path
-   integer, intent(in) :: steps                !< -1 deck's count, 0 quasi-static only, n steps (ball decks)
+   character(len=*), intent(in) :: options     !< run options, "name=value" lines (adore_model_run_options)
    integer, intent(out) :: n_steps             !< time steps the run integrates after step 0
    integer, intent(out) :: rows, cols          !< time history capacity (0, 0 without time steps)
    integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
    character(len=16384), intent(out) :: message !< error message, blank on success
    type(error_type), allocatable :: error
+   type(run_options_t) :: opts
 
-   call run_plan(deck_path, steps, n_steps, rows, cols, error)
+   n_steps = 0
+   rows = 0
+   cols = 0
+   call run_options_from_text(options, opts, error)
+   if (.not. allocated(error)) call run_plan(deck_path, opts, n_steps, rows, cols, error)
    status = ADORE_OK
    message = ""
    if (allocated(error)) call set_error(error, status, message)
@@ -91,20 +100,14 @@ end subroutine adore_run_plan
 !> history: hist(rows, cols) as planned by adore_run_plan, n_rows x n_cols of it filled,
 !> columns = the column names joined by commas, integrated = steps after step 0, note =
 !> what the run does not do (blank: nothing).  No progress callback (thread-safe).
-subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
-                          traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, message)
+subroutine adore_run_file(deck_path, out_path, options, rows, cols, hist, n_rows, n_cols, columns, integrated, note, &
+                          status, message)
    use adore_core_kinds, only: wp
    use adore_api_run, only: run_into_arrays
    implicit none
    character(len=*), intent(in) :: deck_path   !< deck file path
    character(len=*), intent(in) :: out_path    !< print file path to write
-   integer, intent(in) :: steps                !< -1 deck's count, 0 quasi-static only, n steps (ball decks)
-   character(len=*), intent(in) :: traction_table  !< traction-slip table file (ADRX7); blank: none
-   character(len=*), intent(in) :: ball_start      !< ball start hypothesis name (report 4.4.7); blank: default
-   integer, intent(in) :: moment_equilibrium   !< 1: moment equilibrium of the inner race (kFS4 = kFS5 = 0); 0: prescribed
-   integer, intent(in) :: element              !< rolling element of the history's contact columns
-   integer, intent(in) :: traction_2d          !< 1: two-dimensional race traction (the default); 0: the 1-D developer option
-   integer, intent(in) :: substeps             !< integrator steps per printed time step (report 4.4.5; >= 1)
+   character(len=*), intent(in) :: options     !< run options, "name=value" lines (adore_model_run_options)
    integer, intent(in) :: rows, cols           !< history capacity (adore_run_plan)
    real(wp), intent(out) :: hist(rows, cols)   !< the time history (SI units, docs/plots.md)
    integer, intent(out) :: n_rows, n_cols      !< its filled part
@@ -114,23 +117,21 @@ subroutine adore_run_file(deck_path, out_path, steps, traction_table, ball_start
    integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
    character(len=16384), intent(out) :: message !< error message, blank on success
 
-   call run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
-                        traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, &
-                        message)
+   call run_into_arrays(deck_path, out_path, options, rows, cols, hist, n_rows, n_cols, columns, integrated, note, &
+                        status, message)
 end subroutine adore_run_file
 
 !> adore_run_file with a progress callback: progress(step, n_steps, tau, time, stop) after
 !> every accepted time step (adore_driver_ball_dynamics' run_progress); stop /= 0 ends the
 !> run there, incomplete ("interrupted", status 2).  Not thread-safe (the callback is Python).
-subroutine adore_run_file_progress(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, &
-                                   element, traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, &
+subroutine adore_run_file_progress(deck_path, out_path, options, rows, cols, hist, n_rows, n_cols, columns, &
                                    integrated, note, status, message, progress)
    use adore_core_kinds, only: wp
    use adore_api_run, only: run_into_arrays
    use adore_driver_run, only: run_progress
    implicit none
-   character(len=*), intent(in) :: deck_path, out_path, traction_table, ball_start
-   integer, intent(in) :: steps, moment_equilibrium, element, traction_2d, substeps, rows, cols
+   character(len=*), intent(in) :: deck_path, out_path, options
+   integer, intent(in) :: rows, cols
    real(wp), intent(out) :: hist(rows, cols)
    integer, intent(out) :: n_rows, n_cols, integrated, status
    character(len=8192), intent(out) :: columns
@@ -138,10 +139,46 @@ subroutine adore_run_file_progress(deck_path, out_path, steps, traction_table, b
    character(len=16384), intent(out) :: message
    procedure(run_progress) :: progress
 
-   call run_into_arrays(deck_path, out_path, steps, traction_table, ball_start, moment_equilibrium, element, &
-                        traction_2d, substeps, rows, cols, hist, n_rows, n_cols, columns, integrated, note, status, &
-                        message, progress)
+   call run_into_arrays(deck_path, out_path, options, rows, cols, hist, n_rows, n_cols, columns, integrated, note, &
+                        status, message, progress)
 end subroutine adore_run_file_progress
+
+!> The run option table (adore_model_run_options' OPTION_TABLE), for pyadore's keyword
+!> checks and click options: per option its name, kind (1 integer, 2 text, 3 flag, 4 flag
+!> whose `flag` spelling sets it false, 5 choice), default, minimum, off-flag, value name,
+!> choices (comma-separated) and help line.
+subroutine adore_run_option_table(nmax, n, names, kinds, defaults, minimums, flags, metavars, choices, helps)
+   use adore_model_run_options, only: OPTION_TABLE, N_OPTIONS
+   implicit none
+   integer, intent(in) :: nmax
+   integer, intent(out) :: n
+   character(len=24), intent(out) :: names(nmax), defaults(nmax), flags(nmax)
+   integer, intent(out) :: kinds(nmax), minimums(nmax)
+   character(len=8), intent(out) :: metavars(nmax)
+   character(len=64), intent(out) :: choices(nmax)
+   character(len=160), intent(out) :: helps(nmax)
+   integer :: k
+
+   n = min(N_OPTIONS, nmax)
+   names = ""
+   defaults = ""
+   flags = ""
+   metavars = ""
+   choices = ""
+   helps = ""
+   kinds = 0
+   minimums = 0
+   do k = 1, n
+      names(k) = OPTION_TABLE(k)%name
+      kinds(k) = OPTION_TABLE(k)%kind
+      defaults(k) = OPTION_TABLE(k)%default
+      minimums(k) = OPTION_TABLE(k)%minimum
+      flags(k) = OPTION_TABLE(k)%flag
+      metavars(k) = OPTION_TABLE(k)%metavar
+      choices(k) = OPTION_TABLE(k)%choices
+      helps(k) = OPTION_TABLE(k)%help
+   end do
+end subroutine adore_run_option_table
 
 !> The engine's version string.
 subroutine adore_version(version)

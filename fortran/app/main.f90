@@ -83,27 +83,21 @@ end module adore_app_progress
 program adore
    use adore_core_error, only: error_type, input_error, ADORE_OK
    use adore_core_version, only: adore_version_string
-   use adore_driver_run, only: run_deck, STEPS_FROM_DECK
-   use adore_driver_run_history, only: history_file_name
+   use adore_driver_run, only: run_deck
+   use adore_model_run_options, only: run_options_t, set_run_option, option_index, OPTION_TABLE, N_OPTIONS, &
+                                      OPTION_FLAG, OPTION_FLAG_OFF
+   use adore_output_run_history, only: history_file_name
    use adore_app_progress, only: show_progress, install_interrupt, end_progress_line
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    implicit none
 
    type(error_type), allocatable :: error
-   character(len=:), allocatable :: deck_path, out_path, arg, table_path, ball_start, note, hist_path
-   integer :: i, nargs, steps, dot, integrated, element
-   integer :: substeps
-   logical :: moments, two_d
+   type(run_options_t) :: opts
+   character(len=:), allocatable :: deck_path, out_path, arg, value, note, hist_path
+   integer :: i, nargs, dot, integrated, k
 
    integrated = 0
-   element = 1
-   substeps = 1
-   steps = STEPS_FROM_DECK
    deck_path = ""
-   table_path = ""
-   ball_start = ""
-   moments = .false.
-   two_d = .true.
    out_path = ""
    nargs = command_argument_count()
    i = 1
@@ -116,27 +110,23 @@ program adore
       case ("--version")
          write (output_unit, "(a)") "adore (pyadore) "//adore_version_string
          call exit_with(ADORE_OK)
-      case ("--steps")
-         call integer_option(i, "--steps", "a value", steps, error)
-         if (allocated(error)) exit
-      case ("--history-element")
-         call integer_option(i, "--history-element", "a rolling element number", element, error)
-         if (allocated(error)) exit
-      case ("--substeps")
-         call integer_option(i, "--substeps", "a number of substeps", substeps, error)
-         if (allocated(error)) exit
-      case ("--traction-table")
-         call option_value(i, "--traction-table", "a file", table_path, error)
-         if (allocated(error)) exit
-      case ("--moment-equilibrium")
-         moments = .true.
-      case ("--traction-1d")
-         two_d = .false.
-      case ("--ball-start")
-         call option_value(i, "--ball-start", "a start hypothesis name", ball_start, error)
-         if (allocated(error)) exit
       case default
-         if (len(deck_path) == 0) then
+         if (len(arg) > 2 .and. arg(1:min(2, len(arg))) == "--") then
+            ! a run option of the table (adore_model_run_options): --name value, a flag alone
+            k = option_index(arg(3:))
+            if (k == 0) then
+               call input_error(error, "unknown option '"//arg//"' (adore --help lists them)")
+               exit
+            end if
+            if (OPTION_TABLE(k)%kind == OPTION_FLAG .or. OPTION_TABLE(k)%kind == OPTION_FLAG_OFF) then
+               value = "true"
+            else
+               call option_value(i, arg, trim(OPTION_TABLE(k)%metavar), value, error)
+               if (allocated(error)) exit
+            end if
+            call set_run_option(opts, arg(3:), value, error)
+            if (allocated(error)) exit
+         else if (len(deck_path) == 0) then
             deck_path = arg
          else if (len(out_path) == 0) then
             out_path = arg
@@ -165,9 +155,7 @@ program adore
          end if
       end if
       call install_interrupt()
-      call run_deck(deck_path, out_path, steps, error, table_path, ball_start, moments, integrated, note=note, &
-                    progress=show_progress, history_element=element, traction_2d=two_d, &
-                    substeps=substeps)
+      call run_deck(deck_path, out_path, opts, error, integrated, note=note, progress=show_progress)
       call end_progress_line()
    end if
 
@@ -205,22 +193,6 @@ contains
       if (len_trim(value) == 0) call input_error(error, name//": expected "//what//", got a blank argument")
    end subroutine option_value
 
-   !> The integer value after option `name` at argument i (option_value, then read as I0);
-   !> input error naming the option when it is missing or not an integer.
-   subroutine integer_option(i, name, what, value, error)
-      integer, intent(inout) :: i
-      character(len=*), intent(in) :: name, what
-      integer, intent(inout) :: value
-      type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: text
-      integer :: stat
-
-      call option_value(i, name, what, text, error)
-      if (allocated(error)) return
-      read (text, *, iostat=stat) value
-      if (stat /= 0) call input_error(error, name//": expected an integer, got '"//text//"'")
-   end subroutine integer_option
-
    subroutine get_arg(n, value)
       integer, intent(in) :: n
       character(len=:), allocatable, intent(out) :: value
@@ -231,29 +203,41 @@ contains
       call get_command_argument(n, value)
    end subroutine get_arg
 
+   !> The command line: the deck, the print file and every run option of the table
+   !> (adore_model_run_options), one line of help each.
    subroutine usage(unit)
       integer, intent(in) :: unit
-      write (unit, "(a)") "usage: adore DECK [OUT.prt] [--steps N] [--history-element N] [--traction-table FILE]"// &
-         " [--ball-start NAME] [--moment-equilibrium] [--substeps N] [--traction-1d]"
+      character(len=:), allocatable :: flag
+      integer :: k
+      write (unit, "(a)") "usage: adore DECK [OUT.prt] [options]"
       write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt) and, when it"
       write (unit, "(a)") "  integrates time steps, its plot-data file beside it (OUT.hist.csv; docs/plots.md)"
-      write (unit, "(a)") "  --steps N                time steps to integrate after step 0 (ball decks; thermal model"
-      write (unit, "(a)") "                           off): N > 0, 0 = quasi-static start only, -1 = as the deck"
-      write (unit, "(a)") "                           says (default, Rec 1); roller decks end after step 0"
-      write (unit, "(a)") "  --history-element N      rolling element of the plot-data file's contact columns"
-      write (unit, "(a)") "                           (default 1)"
-      write (unit, "(a)") "  --traction-table FILE    traction-slip table (slip m/s, coefficient per line; ADRX7)"
-      write (unit, "(a)") "                           replacing the deck's RE/race traction model"
-      write (unit, "(a)") "  --ball-start NAME        initial ball angular velocity (report 4.4.7): dissipation"
-      write (unit, "(a)") "                           (default, minimum contact dissipation), outer-race-control"
-      write (unit, "(a)") "                           or inner-race-control (ball decks only)"
-      write (unit, "(a)") "  --moment-equilibrium     solve the inner race's misalignment for moment equilibrium"
-      write (unit, "(a)") "                           (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks)"
-      write (unit, "(a)") "  --substeps N             integrator steps in each printed time step (report 4.4.5; default 1)"
-      write (unit, "(a)") "  --traction-1d            developer option of the dynamics: one-dimensional race traction"
-      write (unit, "(a)") "                           (slip along the rolling direction only, report eq 1) instead of"
-      write (unit, "(a)") "                           the two-dimensional default (docs/dynamics.md)"
+      write (unit, "(a)") "options:"
+      do k = 1, N_OPTIONS
+         associate (o => OPTION_TABLE(k))
+            if (o%kind == OPTION_FLAG_OFF) then
+               flag = "--"//dashes(o%flag)
+            else
+               flag = "--"//dashes(o%name)
+            end if
+            if (len_trim(o%metavar) > 0) flag = flag//" "//trim(o%metavar)
+            write (unit, "(2x,a,t27,a)") flag, trim(o%help)
+            if (len_trim(o%default) > 0 .and. o%kind /= OPTION_FLAG .and. o%kind /= OPTION_FLAG_OFF) &
+               write (unit, "(t27,a)") "(default: "//trim(o%default)//")"
+         end associate
+      end do
    end subroutine usage
+
+   !> name with '-' for '_'.
+   function dashes(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      integer :: i
+      text = trim(name)
+      do i = 1, len(text)
+         if (text(i:i) == "_") text(i:i) = "-"
+      end do
+   end function dashes
 
    !> End the process with exit status `code` and nothing printed by the runtime.
    !> Ctrl-C during a time integration (fortran/app/sigint.c) stops the run after its step:

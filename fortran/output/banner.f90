@@ -3,7 +3,6 @@
 !> Writers only format: they take what to print and a unit, and compute nothing.
 !> Layout: docs/print-layout.md (transcribed from the report's Appendix C/D output).
 module adore_output_banner
-   use adore_core_kinds, only: wp
    use adore_deck_text, only: deck_text_t
    use adore_tribology_traction_law, only: traction_law_t, LAW_TABLE
    implicit none
@@ -13,17 +12,15 @@ module adore_output_banner
 
 contains
 
-   !> "Input from optional user subroutines" (a traction-slip table of ADRX7, report 4.4.9,
-   !> when the run has one: its file and points, slip in m/s; the ball start hypothesis
-   !> when a run option replaced the default, start_title non-blank; moment equilibrium of
-   !> the inner race when the run option asked for it) and the "Listing of
-   !> input data records": every deck line, verbatim (ADORE prints the deck before its
-   !> banner, report Appendix C/D).  dynamics_steps > 0: the run integrates that many time
-   !> steps; the listing says so first, with what the time integration does not do yet (the
-   !> thermal model is off; the cage contacts when cage_contacts is .false.).
+   !> "Input from optional user subroutines" (the time integration when the run has time
+   !> steps: its step count, substeps and the bearing kind's lines on its physics; the ball
+   !> start hypothesis when a run option replaced the default, start_title non-blank;
+   !> moment equilibrium of the inner race when the run option asked for it; a
+   !> traction-slip table of ADRX7, report 4.4.9, when the run has one: its file and points,
+   !> slip in m/s) and the "Listing of input data records": every deck line, verbatim (ADORE
+   !> prints the deck before its banner, report Appendix C/D).
    subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps, &
-                            cage_contacts, land_film, traction_2d, cage_constrained, substeps, contact_damping, &
-                            gyro_restraint)
+                            substeps, dynamics_lines)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -33,60 +30,21 @@ contains
       logical, intent(in), optional :: moment_equilibrium
       !> time steps of the run (absent or 0: none)
       integer, intent(in), optional :: dynamics_steps
-      !> whether the time integration has the pocket and guide-land contacts (absent: .true.)
-      logical, intent(in), optional :: cage_contacts
-      !> whether the guide lands carry their hydrodynamic film (absent: .true.)
-      logical, intent(in), optional :: land_film
-      !> whether the race traction is two-dimensional (absent: .true.; .false. is the
-      !> developer option of the one-dimensional traction, report eq 1)
-      logical, intent(in), optional :: traction_2d
-      !> whether the cage's translation and tilt are constrained (absent: .false.)
-      logical, intent(in), optional :: cage_constrained
       !> integrator steps per time step (absent or 1: no substeps)
       integer, intent(in), optional :: substeps
-      !> the ball/race contacts' normal damping beta (s; absent or 0: none)
-      real(wp), intent(in), optional :: contact_damping
-      !> whether the balls' gyroscopic moments are carried by the races without slip
-      logical, intent(in), optional :: gyro_restraint
+      !> the bearing kind's lines on the physics of its time integration, each ending in LF
+      character(len=*), intent(in), optional :: dynamics_lines
       integer :: i
-      character(len=16) :: num
-      logical :: cage
 
       write (unit, "(a)") "Input from optional user subroutines"
       write (unit, "(a)") ""
       if (present(dynamics_steps)) then
          if (dynamics_steps > 0) then
-            cage = .true.
-            if (present(cage_contacts)) cage = cage_contacts
             write (unit, "(a,i0,a)") "TIME INTEGRATION: ", dynamics_steps, " TIME STEPS"
             if (present(substeps)) then
                if (substeps > 1) write (unit, "(a,i0,a)") "  ", substeps, " SUBSTEPS IN EACH TIME STEP (REPORT 4.4.5)"
             end if
-            write (unit, "(a)") "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"
-            if (.not. cage) write (unit, "(a)") "  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"
-            if (cage .and. present(cage_constrained)) then
-               if (cage_constrained) write (unit, "(a)") "  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY "// &
-                  "(DOF CONSTRAINT, REPORT 4.4.6)"
-            end if
-            if (cage .and. present(land_film)) then
-               if (.not. land_film) write (unit, "(a)") "  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT ONLY "// &
-                  "(docs/dynamics.md, Cage dynamics)"
-            end if
-            if (present(gyro_restraint)) then
-               if (gyro_restraint) write (unit, "(a)") "  BALL GYROSCOPIC MOMENTS CARRIED BY THE RACES WITHOUT SLIP "// &
-                  "(docs/dynamics.md)"
-            end if
-            if (present(contact_damping)) then
-               if (contact_damping > 0.0_wp) then
-                  write (num, "(es10.3)") contact_damping
-                  write (unit, "(a)") "  BALL/RACE CONTACT DAMPING "//trim(adjustl(num))//" S (STIFFNESS-PROPORTIONAL, "// &
-                     "docs/dynamics.md)"
-               end if
-            end if
-            if (present(traction_2d)) then
-               if (.not. traction_2d) write (unit, "(a)") "  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE "// &
-                  "ROLLING DIRECTION ONLY, REPORT EQ 1): DEVELOPER OPTION"
-            end if
+            if (present(dynamics_lines)) write (unit, "(a)", advance="no") dynamics_lines
             write (unit, "(a)") ""
          end if
       end if

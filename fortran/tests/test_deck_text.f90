@@ -4,7 +4,7 @@ program test_deck_text
    use adore_test_support, only: check, finish
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
    use adore_deck_text, only: deck_text_t, read_deck_text
-   use adore_driver_run, only: run_deck
+   use adore_driver_run, only: run_deck, run_options_t
    implicit none
 
 
@@ -84,7 +84,7 @@ contains
    subroutine test_failed_run_leaves_no_output()
       type(error_type), allocatable :: error
       logical :: exists
-      call run_deck("test_binary.inp", "test_failed.prt", -1, error)
+      call run_deck("test_binary.inp", "test_failed.prt", run_options_t(), error)
       call check(allocated(error), "run of a bad deck fails")
       inquire (file="test_failed.prt", exist=exists)
       call check(.not. exists, "no print file after a failed run")

@@ -1,11 +1,11 @@
 !> Unit tests of the run loop's bookkeeping (issue #20 items 5, 6): the time averages since
 !> the start (adore_driver_time_average) against exact integrals, and the time history's
-!> rows (adore_driver_run_history: stride, capacity, the plot-data file's name and text).
+!> rows (adore_output_run_history: stride, capacity, the plot-data file's name and text).
 program test_run_loop
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_driver_time_average, only: time_average_t
-   use adore_driver_run_history, only: run_history_t, history_shape, history_due, history_file_name, &
+   use adore_output_run_history, only: run_history_t, history_shape, history_due, history_file_name, &
                                        write_history_csv, HISTORY_ROWS
    use adore_test_support, only: check, finish
    implicit none

@@ -43,11 +43,23 @@ def check(status: int, message) -> None:
     raise AdoreError(f"{text} (unknown engine status {status})")
 
 
-def run_plan(deck_path: str | os.PathLike, steps: int) -> tuple[int, int, int]:
+def run_option_table() -> list[tuple]:
+    """The engine's run option table (fortran/model/run_options.f90), one tuple per option:
+    (name, kind, default, minimum, off-flag, value name, choices tuple, help)."""
+    n, names, kinds, defaults, minimums, flags, metavars, choices, helps = _engine().adore_run_option_table(64)
+    rows = []
+    for k in range(int(n)):
+        rows.append((_text(names[k]), int(kinds[k]), _text(defaults[k]), int(minimums[k]), _text(flags[k]),
+                     _text(metavars[k]), tuple(c for c in _text(choices[k]).split(",") if c), _text(helps[k])))
+    return rows
+
+
+def run_plan(deck_path: str | os.PathLike, options: str = "") -> tuple[int, int, int]:
     """(time steps after step 0, history rows, history columns) of a run of the deck with
-    ``steps`` (-1: the deck's count): what :func:`run_file` will integrate and the shape of
-    the arrays holding its time history (0, 0 without time steps).  Status checked."""
-    n_steps, rows, cols, status, message = _engine().adore_run_plan(os.fspath(deck_path), int(steps))
+    the run options ``options`` (the engine's ``name=value`` lines, :mod:`pyadore.options`):
+    what :func:`run_file` will integrate and the shape of the arrays holding its time
+    history (0, 0 without time steps).  Status checked."""
+    n_steps, rows, cols, status, message = _engine().adore_run_plan(os.fspath(deck_path), options)
     check(int(status), message)
     return int(n_steps), int(rows), int(cols)
 
@@ -65,35 +77,23 @@ class RunOutput:
         self.columns = columns
 
 
-def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, steps: int,
-             traction_table: str | os.PathLike | None = None, ball_start: str | None = None,
-             moment_equilibrium: bool = False, history_element: int = 1, progress=None,
-             traction_2d: bool = True, substeps: int = 1) -> RunOutput:
+def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, options: str = "",
+             progress=None) -> RunOutput:
     """Run the engine on a deck file and write the print file (and, with time steps, the
     plot-data file beside it); return a :class:`RunOutput`.  Status checked: an engine
     failure raises :class:`~pyadore.errors.AdoreEngineError`, whose ``output`` attribute
     then holds the RunOutput of the steps done (a time integration that stopped early).
 
-    traction_table: a traction-slip table file (ADRX7) replacing the deck's RE/race
-    traction model; ``None`` for the deck's model.
-    ball_start: the ball start hypothesis by name (report 4.4.7; the engine checks it);
-    ``None`` for the default, minimum dissipation.
-    moment_equilibrium: solve the inner race's misalignment for moment equilibrium
-    (ADORE kFS4 = kFS5 = 0) instead of prescribing it zero (ball decks only).
-    history_element: the rolling element of the time history's contact columns.
-    traction_2d: ``False`` selects the one-dimensional race traction (developer option).
-    substeps: integrator steps in each printed time step (report 4.4.5).
+    options: the run options as the engine's ``name=value`` lines
+    (:func:`pyadore.options.options_text`; the engine checks names, ranges and choices).
     progress: ``None``, or a function ``progress(step, n_steps, tau, time_s) -> int`` the
     engine calls after every accepted time step; a non-zero return stops the run there
     (incomplete).  It must not raise.  With a progress function the call holds the GIL
     (the function is Python); without one it releases it (threads run at once).
     """
     engine = _engine()
-    table = "" if traction_table is None else os.fspath(traction_table)
-    start = "" if ball_start is None else str(ball_start)
-    _n_steps, rows, cols = run_plan(deck_path, steps)
-    args = (os.fspath(deck_path), os.fspath(out_path), int(steps), table, start, int(bool(moment_equilibrium)),
-            int(history_element), int(bool(traction_2d)), int(substeps), max(rows, 1), max(cols, 1))
+    _n_steps, rows, cols = run_plan(deck_path, options)
+    args = (os.fspath(deck_path), os.fspath(out_path), options, max(rows, 1), max(cols, 1))
     if progress is None:
         out = engine.adore_run_file(*args)
     else:

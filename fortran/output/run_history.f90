@@ -14,7 +14,7 @@
 !>
 !> The record is a derived type owned by the caller (no module state); it is allocated once
 !> at the start of a run (new_ball_history), recording a row allocates nothing.
-module adore_driver_run_history
+module adore_output_run_history
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error, engine_error
@@ -250,4 +250,4 @@ contains
       end if
    end subroutine write_history_csv
 
-end module adore_driver_run_history
+end module adore_output_run_history

@@ -1,0 +1,305 @@
+!> The ball bearing as a bearing kind (adore_bearings_system): its quasi-static start
+!> (adore_start_ball_step0), its equations of motion (adore_dynamics_ball_system), its
+!> printed steps (adore_output_step_report, adore_output_ball_dynamic_report), its time
+!> history (adore_output_run_history) and what the run says about its physics.
+!>
+!> The run's physics defaults are the equations of motion's (docs/dynamics.md, "The run's
+!> physics"); the run options (adore_model_run_options) choose the start hypothesis, the
+!> moment equilibrium of the start and the 1-D traction developer option.  No module state.
+module adore_bearings_ball
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
+   use adore_core_error, only: error_type, engine_error
+   use adore_core_strings, only: itoa
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
+   use adore_model_condition, only: condition_of
+   use adore_model_run_options, only: STEPS_FROM_DECK
+   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, unpack_state, pack_state
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
+   use adore_tribology_wear, only: archard_wear_rate
+   use adore_quasistatic_ball_start, only: start_method_from_name
+   use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
+   use adore_dynamics_integrator, only: integrator_t
+   use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics
+   use adore_bearings_system, only: bearing_system_t
+   use adore_output_step_report, only: write_ball_step0
+   use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
+   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history
+   implicit none
+   private
+
+   public :: ball_kind_t, ball_averaged_values
+
+   !> Positions in the vector of ball_averaged_values: power loss (W), the three speed
+   !> ratios, the outer and inner race wear (m**3/s), then each ball's wear (m**3/s).
+   integer, parameter, public :: AVG_POWER = 1, AVG_RATIOS = 2, AVG_RACE_WEAR = 5, AVG_BALL_WEAR = 7
+
+   !> A ball bearing run.
+   type, extends(bearing_system_t) :: ball_kind_t
+      type(ball_step0_t) :: step0           !< the quasi-static start
+      type(ball_system_t) :: eom            !< the equations of motion (model data inside)
+      real(wp), allocatable :: azimuth(:)   !< each ball's orbital position, unwrapped (rad)
+      real(wp), allocatable :: last(:)      !< each ball's orbital position at the last step (rad)
+      real(wp) :: axial_origin = 0.0_wp     !< the print's axial origin of the balls (m)
+      real(wp) :: clearance = 0.0_wp        !< guide land diametral clearance (m; NaN: no land)
+   contains
+      procedure :: eval => ball_eval
+      procedure :: solve_start => ball_solve_start
+      procedure :: write_start => ball_write_start
+      procedure :: dynamic_steps => ball_dynamic_steps
+      procedure :: start_dynamics => ball_start_dynamics
+      procedure :: listing_lines => ball_listing_lines
+      procedure :: run_note => ball_run_note
+      procedure :: n_values => ball_n_values
+      procedure :: averaged_values => ball_values
+      procedure :: accepted => ball_accepted
+      procedure :: write_step => ball_write_step
+      procedure :: new_history => ball_new_history
+      procedure :: record_row => ball_record_row
+      procedure :: mount => ball_mount
+   end type ball_kind_t
+
+contains
+
+   !> dy/dtau of the equations of motion (adore_dynamics_ball_system).
+   subroutine ball_eval(self, t, y, dydt, flag)
+      class(ball_kind_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      call self%eom%eval(t, y, dydt, flag)
+      if (allocated(self%eom%failure_reason)) then
+         self%failure_reason = self%eom%failure_reason
+      else if (allocated(self%failure_reason)) then
+         deallocate (self%failure_reason)
+      end if
+   end subroutine ball_eval
+
+   !> Step 0: mounting, equilibrium, ball speeds (the options' start hypothesis, report
+   !> 4.4.7; moment equilibrium when asked), tribology, life, cage.
+   subroutine ball_solve_start(self, error)
+      class(ball_kind_t), intent(inout) :: self
+      type(error_type), allocatable, intent(out) :: error
+      integer :: start_method
+      start_method = BALL_START_METHOD
+      if (len_trim(self%options%ball_start) > 0) then
+         call start_method_from_name(self%options%ball_start, start_method, error)
+         if (allocated(error)) return
+      end if
+      self%condition = condition_of(self%bearing)
+      call solve_ball_step0(self%bearing, self%step0, error, start_method, self%options%moment_equilibrium)
+   end subroutine ball_solve_start
+
+   !> Step 0 in the ADORE 5.0 layout.
+   subroutine ball_write_start(self, unit)
+      class(ball_kind_t), intent(in) :: self
+      integer, intent(in) :: unit
+      call write_ball_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], self%bearing, self%step0)
+   end subroutine ball_write_start
+
+   !> The options' steps: Rec 1 n_steps for STEPS_FROM_DECK.
+   integer function ball_dynamic_steps(self) result(n)
+      class(ball_kind_t), intent(in) :: self
+      if (self%options%steps == STEPS_FROM_DECK) then
+         n = max(self%bearing%n_steps, 0)
+      else
+         n = max(self%options%steps, 0)
+      end if
+   end function ball_dynamic_steps
+
+   !> The dynamics from the step-0 start (start_ball_dynamics) at the initial temperatures.
+   subroutine ball_start_dynamics(self, it, y, error)
+      class(ball_kind_t), intent(inout) :: self
+      type(integrator_t), intent(out) :: it
+      real(wp), allocatable, intent(out) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(mounted_geometry_t) :: g
+      g = mount_geometry(self%bearing, self%bearing%temperature)
+      call start_ball_dynamics(self%bearing, g, self%step0%start, self%step0%cage, self%eom, it, y, error, &
+                               two_d=self%options%traction_2d)
+      if (allocated(error)) return
+      self%time_scale = self%eom%time_scale
+      associate (e => self%step0%start%equilibrium)
+         self%axial_origin = e%u(1) - e%axial_displacement
+         self%azimuth = e%azimuth
+         self%last = e%azimuth
+      end associate
+      self%clearance = guide_clearance(self%bearing, g, self%eom%state%temperature)
+   end subroutine ball_start_dynamics
+
+   !> The print listing's lines on the physics of the time integration.
+   function ball_listing_lines(self, n_steps) result(text)
+      class(ball_kind_t), intent(in) :: self
+      integer, intent(in) :: n_steps
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: lf = new_line("a")
+      character(len=16) :: num
+      text = ""
+      if (n_steps < 1) return
+      text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf
+      associate (s => self%eom)
+         if (.not. s%cage) text = text//"  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"//lf
+         if (s%cage .and. s%cage_spin_only) text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT "// &
+            "ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
+         if (s%cage .and. .not. s%land_film) text = text//"  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT "// &
+            "ONLY (docs/dynamics.md, Cage dynamics)"//lf
+         if (s%gyro_restraint) text = text//"  BALL GYROSCOPIC MOMENTS CARRIED BY THE RACES WITHOUT SLIP "// &
+            "(docs/dynamics.md)"//lf
+         if (s%contact_damping > 0.0_wp) then
+            write (num, "(es10.3)") s%contact_damping
+            text = text//"  BALL/RACE CONTACT DAMPING "//trim(adjustl(num))//" S (STIFFNESS-PROPORTIONAL, "// &
+                   "docs/dynamics.md)"//lf
+         end if
+         if (.not. s%traction_2d) text = text//"  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE ROLLING "// &
+            "DIRECTION ONLY, REPORT EQ 1): DEVELOPER OPTION"//lf
+      end associate
+   end function ball_listing_lines
+
+   !> What the time integration leaves out or assumes (blank without time steps).
+   function ball_run_note(self, n_steps) result(text)
+      class(ball_kind_t), intent(in) :: self
+      integer, intent(in) :: n_steps
+      character(len=:), allocatable :: text
+      text = ""
+      if (n_steps < 1) return
+      associate (s => self%eom)
+         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
+         if (.not. s%cage) text = text//"; cage contacts off (no pocket or guide-land forces)"
+         if (s%cage .and. s%cage_spin_only) text = text//"; cage centred, turning about its axis only "// &
+                                                   "(translation and tilt constrained, report 4.4.6)"
+         if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
+         if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
+         if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
+      end associate
+   end function ball_run_note
+
+   integer function ball_n_values(self)
+      class(ball_kind_t), intent(in) :: self
+      ball_n_values = AVG_BALL_WEAR - 1 + self%bearing%n_elements
+   end function ball_n_values
+
+   !> ball_averaged_values at the last evaluated state.
+   subroutine ball_values(self, v)
+      class(ball_kind_t), intent(in) :: self
+      real(wp), intent(out) :: v(:)
+      call ball_averaged_values(self%bearing, self%eom%state, self%eom%loads, v)
+   end subroutine ball_values
+
+   !> Each ball's orbital position unwrapped from step to step (a step moves a ball far
+   !> less than half a revolution).
+   subroutine ball_accepted(self)
+      class(ball_kind_t), intent(inout) :: self
+      integer :: k
+      do k = 1, self%bearing%n_elements
+         associate (phi => body_azimuth(self%eom%state%elements(k)))
+            self%azimuth(k) = self%azimuth(k) + (modulo(phi - self%last(k) + pi, 2.0_wp*pi) - pi)
+            self%last(k) = phi
+         end associate
+      end do
+   end subroutine ball_accepted
+
+   !> A printed time step (adore_output_ball_dynamic_report) at the last evaluated state.
+   subroutine ball_write_step(self, unit, step, t, mean)
+      class(ball_kind_t), intent(in) :: self
+      integer, intent(in) :: unit, step
+      real(wp), intent(in) :: t, mean(:)
+      real(wp) :: time
+      time = t*self%time_scale
+      associate (b => self%bearing)
+         call write_ball_step(unit, step, [t, time, b%speed_outer*time/(2.0_wp*pi), &
+                                           b%speed_inner*time/(2.0_wp*pi)], &
+                              b, self%eom%geometry, self%eom%state, self%eom%rates, self%eom%loads, self%azimuth, &
+                              self%axial_origin, mean(AVG_BALL_WEAR:), mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), &
+                              mean(AVG_POWER:AVG_RATIOS + 2))
+      end associate
+   end subroutine ball_write_step
+
+   !> The ball history (new_ball_history) with the options' element.
+   subroutine ball_new_history(self, h, n_steps, error)
+      class(ball_kind_t), intent(in) :: self
+      type(run_history_t), intent(out) :: h
+      integer, intent(in) :: n_steps
+      type(error_type), allocatable, intent(out) :: error
+      call new_ball_history(h, self%bearing, n_steps, self%options%history_element, error)
+   end subroutine ball_new_history
+
+   !> A history row at the last evaluated state.
+   subroutine ball_record_row(self, h, step, t, mean)
+      class(ball_kind_t), intent(in) :: self
+      type(run_history_t), intent(inout) :: h
+      integer, intent(in) :: step
+      real(wp), intent(in) :: t, mean(:)
+      call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, mean(AVG_BALL_WEAR:), &
+                               mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
+   end subroutine ball_record_row
+
+   !> The equations of motion in self%condition: the geometry mounted at its temperatures
+   !> (adore_geometry_mounted: fits, growth, clearance from the initial temperatures), its
+   !> load on the inner race, the state's temperatures in y, the guide clearance anew.
+   subroutine ball_mount(self, y, error)
+      class(ball_kind_t), intent(inout) :: self
+      real(wp), intent(inout) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(bearing_state_t) :: s
+      if (.not. allocated(self%eom%state%elements)) then
+         call engine_error(error, "ball bearing: mount before the dynamics started")
+         return
+      end if
+      associate (c => self%condition)
+         self%eom%geometry = mount_geometry(self%bearing, c%temperature)
+         self%eom%bearing%force = c%force
+         self%eom%bearing%moment = c%moment
+         s = self%eom%state
+         call unpack_state(y, 0.0_wp, s)
+         s%temperature = c%temperature
+         call pack_state(s, y)
+         self%clearance = guide_clearance(self%bearing, self%eom%geometry, c%temperature)
+      end associate
+   end subroutine ball_mount
+
+   !> The quantities the print shows as time averages, at one state s of ball bearing b
+   !> with the force assembly's loads there, into v (size AVG_BALL_WEAR - 1 + n): the total
+   !> power loss of the race contacts (W), dynamic_speed_ratios, and the Archard wear rates
+   !> (adore_tribology_wear, as step 0 computes them) of the outer and inner race (over all
+   !> their contacts) and of each ball (over both its contacts), from each contact's
+   !> integral of |slip| dQ of the rolling-direction traction model (0 where unloaded).
+   subroutine ball_averaged_values(b, s, loads, v)
+      type(bearing_t), intent(in) :: b
+      type(bearing_state_t), intent(in) :: s
+      type(ball_bearing_loads_t), intent(in) :: loads
+      real(wp), intent(out) :: v(:)
+      integer :: k
+      v(AVG_POWER) = total_power_loss(loads)
+      v(AVG_RATIOS:AVG_RATIOS + 2) = dynamic_speed_ratios(b, s)
+      v(AVG_RACE_WEAR) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
+                                           sum(loads%traction(1, :)%sliding))
+      v(AVG_RACE_WEAR + 1) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
+                                               sum(loads%traction(2, :)%sliding))
+      do k = 1, b%n_elements
+         v(AVG_BALL_WEAR - 1 + k) = archard_wear_rate(b%material(BODY_ELEMENT)%wear, &
+                                                      b%material(BODY_ELEMENT)%hardness, &
+                                                      loads%traction(1, k)%sliding + loads%traction(2, k)%sliding)
+      end do
+   end subroutine ball_averaged_values
+
+   !> Diametral clearance (m) of the cage's guide: the smallest effective diametral play of
+   !> its guide lands at bulk temperatures temperature (adore_forces_ball_bearing's land
+   !> pairs); NaN without a guide land.
+   function guide_clearance(b, g, temperature) result(c)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      real(wp), intent(in) :: temperature(:)
+      real(wp) :: c
+      if (b%n_lands < 1) then
+         c = ieee_value(1.0_wp, ieee_quiet_nan)
+         return
+      end if
+      associate (pairs => guide_land_pairs(b, g, temperature))
+         c = 2.0_wp*minval(pairs%clearance)
+      end associate
+   end function guide_clearance
+
+end module adore_bearings_ball

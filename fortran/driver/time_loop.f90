@@ -1,0 +1,197 @@
+!> The time loop of a run (report 4.4.5): integrates the equations of motion of any bearing
+!> kind (adore_bearings_system) from its step-0 start for the run's number of accepted
+!> steps, prints the dynamic steps with their time averages since the start, records the
+!> time histories (adore_output_run_history), calls the system's event hook at its event
+!> times, and ends with the termination line and "Statistics of this Run" - or, when the run
+!> stops early (a failed integration, a non-finite state, a progress callback asking to
+!> stop), with the last accepted step and a last line
+!> "*** RUN INCOMPLETE after step N (tau = ...): <reason> ***".
+!>
+!> Nothing here knows the bearing kind: what is printed, recorded and averaged is the
+!> system's.  No module state.
+module adore_driver_time_loop
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, engine_error
+   use adore_core_strings, only: itoa
+   use adore_dynamics_integrator, only: integrator_t, DERIV_FAIL
+   use adore_bearings_system, only: bearing_system_t
+   use adore_driver_time_average, only: time_average_t
+   use adore_output_run_history, only: run_history_t, history_due
+   use adore_output_print_tables, only: write_termination, write_statistics
+   implicit none
+   private
+
+   public :: run_time_loop, run_progress, INCOMPLETE_MARK
+
+   !> First words of the last line of a print whose run stopped early.
+   character(len=*), parameter :: INCOMPLETE_MARK = "*** RUN INCOMPLETE"
+
+   abstract interface
+      !> Called after every accepted step with the step number, the run's number of steps,
+      !> tau and the time (s); stop /= 0 asks the run to stop there (it ends incomplete:
+      !> "interrupted").  The f2py run passes a Python function; the standalone program its
+      !> progress line and Ctrl-C flag.
+      subroutine run_progress(step, n_steps, tau, time, stop)
+         import :: wp
+         integer, intent(in) :: step, n_steps
+         real(wp), intent(in) :: tau, time
+         integer, intent(out) :: stop
+      end subroutine run_progress
+   end interface
+
+contains
+
+   !> Integrate bearing system sys from its step-0 start for n_steps accepted steps
+   !> (n_steps >= 1) with the integrator it and packed state y of sys%start_dynamics (y at
+   !> tau = 0 on entry), writing to `unit`: every print_interval-th step (Rec 1
+   !> data_control_2; 0: only the last) and always the last, each with the time averages
+   !> since the start (sys%write_step), then the termination line (last step, final tau)
+   !> and the integrator's statistics (steps in tau).  history (sys%new_history) records
+   !> the rows history_due asks for (sys%record_row).  progress, when present, is called
+   !> after every accepted step (run_progress).  substeps: integrator steps per nominal
+   !> (printed, recorded, counted) step, report 4.4.5 (default 1); the time averages take
+   !> every one of them.  At each of the system's event times a step ends exactly there and
+   !> sys%on_event is called after it.
+   !>
+   !> A run that stops early (the integrator's error, a failed evaluation, an event's error,
+   !> progress asking to stop) prints its last accepted step (when not printed yet) and the
+   !> line INCOMPLETE_MARK//incomplete//" ***", and returns an engine error with the same
+   !> reason; incomplete = " after step N (tau = T): <reason>" (blank when the run completed).
+   subroutine run_time_loop(unit, sys, it, y, n_steps, history, incomplete, error, progress, substeps)
+      integer, intent(in) :: unit
+      class(bearing_system_t), intent(inout) :: sys
+      type(integrator_t), intent(inout) :: it
+      real(wp), intent(inout) :: y(:)
+      integer, intent(in) :: n_steps
+      type(run_history_t), intent(inout) :: history
+      character(len=:), allocatable, intent(out) :: incomplete
+      type(error_type), allocatable, intent(out) :: error
+      procedure(run_progress), optional :: progress
+      integer, intent(in), optional :: substeps
+
+      type(time_average_t) :: averages
+      real(wp), allocatable :: dydt(:), values(:), mean(:)
+      real(wp) :: t, t_old, t_event
+      character(len=:), allocatable :: reason
+      integer :: i, j, flag, stop, printed_last, n_sub, print_interval, n_events
+      logical :: print_now, events
+
+      incomplete = ""
+      n_sub = 1
+      if (present(substeps)) n_sub = max(substeps, 1)
+      print_interval = sys%bearing%print_interval
+      allocate (dydt(size(y)), values(sys%n_values()), mean(sys%n_values()))
+      t = 0.0_wp
+      printed_last = 0
+      events = sys%event_period > 0.0_wp
+      n_events = 0
+      t_event = huge(1.0_wp)
+      if (events) t_event = max(sys%event_start, 0.0_wp)/sys%time_scale
+      ! the initial state: its loads start the averages and the history's first row
+      call sys%eval(t, y, dydt, flag)
+      if (flag == DERIV_FAIL) then
+         call stop_run(0, "the equations of motion failed at the start: "//sys%failure_reason, .false.)
+         return
+      end if
+      call sys%averaged_values(values)
+      call averages%start(values)
+      call averages%mean(mean)
+      call record(0)
+      do i = 1, n_steps
+         do j = 1, n_sub                      ! substeps (4.4.5): nothing printed or recorded
+            t_old = t
+            if (events) then
+               call it%step(sys, t, y, error, t_limit=t_event)
+            else
+               call it%step(sys, t, y, error)
+            end if
+            if (allocated(error)) then
+               reason = error%message
+               deallocate (error)
+               call stop_run(i - 1, reason, .true.)
+               return
+            end if
+            ! the system's state, rates and loads belong to the accepted state: the
+            ! integrator's pairs are first-same-as-last, their last stage is evaluated at
+            ! (t, y) of the step
+            call sys%accepted()
+            call sys%averaged_values(values)
+            call averages%add(t - t_old, values)
+            if (events .and. t >= t_event) then
+               n_events = n_events + 1
+               call sys%on_event(t*sys%time_scale, it, y, error)
+               if (allocated(error)) then
+                  reason = "event at "//itoa(n_events)//": "//error%message
+                  deallocate (error)
+                  call stop_run(i, reason, .true.)
+                  return
+               end if
+               t_event = (max(sys%event_start, 0.0_wp) + n_events*sys%event_period)/sys%time_scale
+            end if
+         end do
+         print_now = i == n_steps
+         if (print_interval > 0) print_now = print_now .or. mod(i, print_interval) == 0
+         if (print_now .or. history_due(history, i, n_steps, print_now)) call averages%mean(mean)
+         if (history_due(history, i, n_steps, print_now)) call record(i)
+         if (print_now) call print_step(i)
+         if (present(progress)) then
+            call progress(i, n_steps, t, t*sys%time_scale, stop)
+            if (stop /= 0) then
+               call stop_run(i, "interrupted", .false.)
+               return
+            end if
+         end if
+      end do
+      call write_termination(unit, n_steps, t)
+      write (unit, "(a)") ""
+      call write_statistics(unit, [it%stats%h_min_used, it%stats%h_max_used, it%stats%h_last, &
+                                   it%stats%max_truncation], it%stats%derivative_calls)
+
+   contains
+
+      !> Print step i at the system's last evaluated state (the state at tau = t).
+      subroutine print_step(i)
+         integer, intent(in) :: i
+         call sys%write_step(unit, i, t, mean)
+         printed_last = i
+      end subroutine print_step
+
+      !> A history row of step i at the system's last evaluated state.
+      subroutine record(i)
+         integer, intent(in) :: i
+         call sys%record_row(history, i, t, mean)
+      end subroutine record
+
+      !> End the run early after accepted step i_last (state y at tau = t): print that step if
+      !> it is not printed yet (evaluated anew when evaluate, i.e. when the system's last
+      !> evaluation was not at that state), its history row, the incomplete mark; the error.
+      subroutine stop_run(i_last, reason, evaluate)
+         integer, intent(in) :: i_last
+         character(len=*), intent(in) :: reason
+         logical, intent(in) :: evaluate
+         character(len=24) :: tau_text
+         logical :: ok
+
+         write (tau_text, "(es10.4)") t
+         incomplete = " after step "//itoa(i_last)//" (tau = "//trim(adjustl(tau_text))//"): "//reason
+         if (i_last > printed_last) then
+            ok = .true.
+            if (evaluate) then
+               call sys%eval(t, y, dydt, flag)
+               ok = flag /= DERIV_FAIL
+            end if
+            call averages%mean(mean)          ! step i_last is in the averages already
+            if (ok) then
+               call print_step(i_last)
+               if (history%rows > 0) then
+                  if (nint(history%values(history%rows, 2)) /= i_last) call record(i_last)
+               end if
+            end if
+         end if
+         write (unit, "(a)") INCOMPLETE_MARK//incomplete//" ***"
+         call engine_error(error, "run incomplete"//incomplete)
+      end subroutine stop_run
+
+   end subroutine run_time_loop
+
+end module adore_driver_time_loop

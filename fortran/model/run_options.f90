@@ -1,0 +1,263 @@
+!> The run options: what a run does beyond the deck, as one record (issue #24 item 2).
+!>
+!> One table (OPTION_TABLE) names every option once: its name (the Python keyword, the
+!> `--name` of `adore` and `pyadore run` with '-' for '_'), its kind, default, limits or
+!> choices, the value name of the command lines and its help line.  The f2py boundary
+!> passes options as "name=value" lines (run_options_from_text), the standalone program
+!> reads "--name value" (set_run_option), Python builds its click options and keyword
+!> checks from the same table (adore_run_option_table, pyadore/options.py).  Adding an
+!> option touches this file (table row, field, one case of set_run_option), the code that
+!> uses it, and its test.  No module state: the table is a constant.
+module adore_model_run_options
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
+   use adore_core_strings, only: itoa
+   implicit none
+   private
+
+   public :: run_options_t, option_spec_t, OPTION_TABLE, N_OPTIONS, STEPS_FROM_DECK
+   public :: set_run_option, run_options_from_text, option_index
+   public :: OPTION_INT, OPTION_TEXT, OPTION_FLAG, OPTION_FLAG_OFF, OPTION_CHOICE
+
+   !> `steps` value meaning "as many steps as the deck asks for" (Rec 1 n_steps).
+   integer, parameter :: STEPS_FROM_DECK = -1
+
+   !> Option kinds: an integer >= its minimum; a text (a file name); a flag that sets a
+   !> logical .true. (`--name`); a flag that sets its logical .false. (its `flag` spelling,
+   !> e.g. --traction-1d for traction_2d); one of the listed choices.
+   integer, parameter :: OPTION_INT = 1, OPTION_TEXT = 2, OPTION_FLAG = 3, OPTION_FLAG_OFF = 4, OPTION_CHOICE = 5
+
+   !> What a run does beyond the deck.  Defaults: the deck's own run.
+   type :: run_options_t
+      !> time steps after step 0: STEPS_FROM_DECK (Rec 1 n_steps), 0 (quasi-static start
+      !> only) or n > 0
+      integer :: steps = STEPS_FROM_DECK
+      !> integrator steps per printed time step (report 4.4.5)
+      integer :: substeps = 1
+      !> rolling element of the time history's per-element columns
+      integer :: history_element = 1
+      !> traction-slip table file (ADRX7, report 4.4.9) replacing the deck's RE/race model;
+      !> blank: the deck's model
+      character(len=4096) :: traction_table = ""
+      !> ball start hypothesis (report 4.4.7; adore_quasistatic_ball_start's START_NAMES);
+      !> blank: minimum dissipation
+      character(len=32) :: ball_start = ""
+      !> moment equilibrium of the inner race in the quasi-static start (ADORE kFS4 = kFS5 = 0)
+      logical :: moment_equilibrium = .false.
+      !> two-dimensional race traction (report eqs 2-3); .false.: the 1-D developer option
+      logical :: traction_2d = .true.
+   end type run_options_t
+
+   !> One row of the option table.
+   type :: option_spec_t
+      character(len=24) :: name = ""       !< keyword (snake case)
+      integer :: kind = OPTION_INT
+      character(len=24) :: default = ""    !< default as text ("" for none)
+      integer :: minimum = 0               !< OPTION_INT: smallest value
+      character(len=24) :: flag = ""       !< OPTION_FLAG_OFF: the flag that sets .false.
+      character(len=8) :: metavar = ""     !< value name on the command lines
+      character(len=64) :: choices = ""    !< OPTION_CHOICE: the values, comma-separated
+      character(len=160) :: help = ""      !< one line
+   end type option_spec_t
+
+   integer, parameter :: N_OPTIONS = 7
+
+   !> The run options (keep the order of run_options_t).
+   type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
+      option_spec_t("steps", OPTION_INT, "-1", -1, "", "N", "", &
+                    "time steps after step 0: -1 as the deck says (Rec 1), 0 the quasi-static start only"), &
+      option_spec_t("substeps", OPTION_INT, "1", 1, "", "N", "", &
+                    "integrator steps in each printed time step (report 4.4.5)"), &
+      option_spec_t("history_element", OPTION_INT, "1", 1, "", "N", "", &
+                    "rolling element whose race contacts and pocket force the time history records"), &
+      option_spec_t("traction_table", OPTION_TEXT, "", 0, "", "FILE", "", &
+                    "traction-slip table (slip m/s, coefficient per line; ADRX7) replacing the deck's "// &
+                    "RE/race traction model"), &
+      option_spec_t("ball_start", OPTION_CHOICE, "dissipation", 0, "", "NAME", &
+                    "dissipation,outer-race-control,inner-race-control", &
+                    "initial ball angular velocity (report 4.4.7): minimum contact dissipation or race "// &
+                    "control at one race (ball decks)"), &
+      option_spec_t("moment_equilibrium", OPTION_FLAG, "false", 0, "", "", "", &
+                    "solve the inner race's misalignment for moment equilibrium (ADORE kFS4 = kFS5 = 0) "// &
+                    "instead of prescribing it zero (ball decks)"), &
+      option_spec_t("traction_2d", OPTION_FLAG_OFF, "true", 0, "traction_1d", "", "", &
+                    "developer option: one-dimensional race traction (slip along the rolling direction "// &
+                    "only, report eq 1) instead of the two-dimensional default") &
+      ]
+
+contains
+
+   !> Position of option `name` in OPTION_TABLE (its name, or the flag of an OPTION_FLAG_OFF;
+   !> '-' and '_' alike); 0 when there is none.
+   pure integer function option_index(name) result(k)
+      character(len=*), intent(in) :: name
+      character(len=len(name)) :: key
+      integer :: i
+      key = name
+      do i = 1, len(key)
+         if (key(i:i) == "-") key(i:i) = "_"
+      end do
+      do k = 1, N_OPTIONS
+         if (trim(key) == trim(OPTION_TABLE(k)%name)) return
+         if (len_trim(OPTION_TABLE(k)%flag) > 0 .and. trim(key) == trim(OPTION_TABLE(k)%flag)) return
+      end do
+      k = 0
+   end function option_index
+
+   !> Set option `name` (OPTION_TABLE) of opts from its text `value` ("true"/"false" or
+   !> "1"/"0" for flags; a flag's own off-spelling, e.g. traction_1d, takes "true" to mean
+   !> off).  Input error naming the option for an unknown name or a bad value.
+   subroutine set_run_option(opts, name, value, error)
+      type(run_options_t), intent(inout) :: opts
+      character(len=*), intent(in) :: name, value
+      type(error_type), allocatable, intent(out) :: error
+      type(option_spec_t) :: spec
+      integer :: k, n, stat
+      logical :: flag, ok
+
+      k = option_index(name)
+      if (k == 0) then
+         call input_error(error, "run option '"//trim(name)//"': unknown (the options: "//option_names()//")")
+         return
+      end if
+      spec = OPTION_TABLE(k)
+      n = 0
+      flag = .false.
+      select case (spec%kind)
+      case (OPTION_INT)
+         read (value, *, iostat=stat) n
+         if (stat /= 0 .or. len_trim(value) == 0 .or. verify(trim(adjustl(value)), "+-0123456789") /= 0) then
+            call input_error(error, "run option "//trim(spec%name)//": expected an integer, got '"// &
+                             trim(value)//"'")
+            return
+         end if
+         if (n < spec%minimum) then
+            call input_error(error, "run option "//trim(spec%name)//": "//itoa(n)//" is below its minimum "// &
+                             itoa(spec%minimum)//" ("//trim(spec%help)//")")
+            return
+         end if
+      case (OPTION_FLAG, OPTION_FLAG_OFF)
+         select case (trim(adjustl(value)))
+         case ("true", "True", "1", "yes", "on")
+            flag = .true.
+         case ("false", "False", "0", "no", "off")
+            flag = .false.
+         case default
+            call input_error(error, "run option "//trim(name)//": expected true or false, got '"//trim(value)//"'")
+            return
+         end select
+         ! the off-spelling of a flag (traction_1d = true sets traction_2d = .false.)
+         if (trim(name) /= trim(spec%name) .and. trim(replace_dash(name)) /= trim(spec%name)) flag = .not. flag
+      case (OPTION_CHOICE)
+         ok = len_trim(value) == 0
+         if (.not. ok) ok = index(","//trim(spec%choices)//",", ","//trim(adjustl(value))//",") > 0
+         if (.not. ok) then
+            call input_error(error, spaced(spec%name)//": expected one of "//spaced_list(spec%choices)// &
+                             ", got '"//trim(value)//"'")
+            return
+         end if
+      end select
+      select case (spec%name)
+      case ("steps")
+         opts%steps = n
+      case ("substeps")
+         opts%substeps = n
+      case ("history_element")
+         opts%history_element = n
+      case ("traction_table")
+         if (len_trim(value) > len(opts%traction_table)) then
+            call input_error(error, "run option traction_table: the file name is longer than "// &
+                             itoa(len(opts%traction_table))//" characters")
+            return
+         end if
+         opts%traction_table = value
+      case ("ball_start")
+         opts%ball_start = trim(adjustl(value))
+      case ("moment_equilibrium")
+         opts%moment_equilibrium = flag
+      case ("traction_2d")
+         opts%traction_2d = flag
+      end select
+   end subroutine set_run_option
+
+   !> Options from text: one "name=value" per line (LF-separated; blank lines ignored), each
+   !> through set_run_option; the defaults for the rest.  Every bad line is reported in one
+   !> input error.
+   subroutine run_options_from_text(text, opts, error)
+      character(len=*), intent(in) :: text
+      type(run_options_t), intent(out) :: opts
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type), allocatable :: line_error
+      character(len=:), allocatable :: messages
+      integer :: start, finish, eq
+
+      messages = ""
+      start = 1
+      do while (start <= len(text))
+         finish = index(text(start:), new_line("a"))
+         if (finish == 0) then
+            finish = len(text)
+         else
+            finish = start + finish - 2
+         end if
+         if (len_trim(text(start:finish)) > 0) then
+            eq = index(text(start:finish), "=")
+            if (eq == 0) then
+               messages = messages//"; run option '"//trim(text(start:finish))//"': expected name=value"
+            else
+               call set_run_option(opts, trim(adjustl(text(start:start + eq - 2))), text(start + eq:finish), line_error)
+               if (allocated(line_error)) messages = messages//"; "//line_error%message
+            end if
+         end if
+         start = finish + 2
+      end do
+      if (len(messages) > 0) call input_error(error, messages(3:))
+   end subroutine run_options_from_text
+
+   !> The option names, comma-separated.
+   function option_names() result(names)
+      character(len=:), allocatable :: names
+      integer :: k
+      names = trim(OPTION_TABLE(1)%name)
+      do k = 2, N_OPTIONS
+         names = names//", "//trim(OPTION_TABLE(k)%name)
+      end do
+   end function option_names
+
+   !> name with ' ' for '_' (as a message names the option).
+   pure function spaced(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=len_trim(name)) :: text
+      integer :: i
+      text = trim(name)
+      do i = 1, len(text)
+         if (text(i:i) == "_") text(i:i) = " "
+      end do
+   end function spaced
+
+   !> A comma-separated list with ', ' between its items.
+   function spaced_list(list) result(text)
+      character(len=*), intent(in) :: list
+      character(len=:), allocatable :: text
+      integer :: i
+      text = ""
+      do i = 1, len_trim(list)
+         if (list(i:i) == ",") then
+            text = text//", "
+         else
+            text = text//list(i:i)
+         end if
+      end do
+   end function spaced_list
+
+   pure function replace_dash(name) result(key)
+      character(len=*), intent(in) :: name
+      character(len=len(name)) :: key
+      integer :: i
+      key = name
+      do i = 1, len(key)
+         if (key(i:i) == "-") key(i:i) = "_"
+      end do
+   end function replace_dash
+
+end module adore_model_run_options

@@ -1,0 +1,140 @@
+"""The run options: one table, in the engine (``fortran/model/run_options.f90``).
+
+Every option a run takes beyond the deck is a row of the engine's option table: its name
+(the keyword of :func:`pyadore.run` and ``--name`` of ``pyadore run`` / ``adore``), kind,
+default, limits or choices and help.  This module reads the table once from the engine and
+derives from it
+
+- :func:`options_text`: keyword values checked and turned into the engine's
+  ``name=value`` lines (what crosses the f2py boundary);
+- :func:`click_options`: the click options of ``pyadore run`` and ``pyadore sweep``.
+
+So a new option is a row in the engine's table, the code that uses it and its test;
+neither this module nor the command line changes.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from .errors import AdoreInputError
+
+__all__ = ["RunOption", "run_options", "options_text", "click_options", "INT", "TEXT", "FLAG", "FLAG_OFF",
+           "CHOICE"]
+
+#: Option kinds (the engine's OPTION_*): an integer, a text (a file), a flag that sets a
+#: logical true, a flag whose ``flag`` spelling sets it false, one of ``choices``.
+INT, TEXT, FLAG, FLAG_OFF, CHOICE = 1, 2, 3, 4, 5
+
+
+@dataclass(frozen=True)
+class RunOption:
+    """One row of the engine's run option table."""
+
+    name: str
+    kind: int
+    default: str
+    minimum: int
+    flag: str
+    metavar: str
+    choices: tuple[str, ...]
+    help: str
+
+    @property
+    def default_value(self):
+        """The default as a Python value (None where the engine's default is blank)."""
+        if self.kind == INT:
+            return int(self.default)
+        if self.kind in (FLAG, FLAG_OFF):
+            return self.default == "true"
+        return self.default or None
+
+
+@lru_cache(maxsize=1)
+def run_options() -> tuple[RunOption, ...]:
+    """The engine's run option table, in its order."""
+    from ._core import run_option_table
+
+    return tuple(RunOption(*row) for row in run_option_table())
+
+
+def _option(name: str) -> RunOption:
+    for opt in run_options():
+        if opt.name == name:
+            return opt
+    names = ", ".join(o.name for o in run_options())
+    raise AdoreInputError(f"unknown run option {name!r} (the options: {names})")
+
+
+def _value_text(opt: RunOption, value) -> str:
+    if opt.kind == INT:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise AdoreInputError(f"{opt.name} must be an integer >= {opt.minimum} ({opt.help}), got {value!r}")
+        if value < opt.minimum:
+            raise AdoreInputError(f"{opt.name} must be an integer >= {opt.minimum} ({opt.help}), got {value!r}")
+        return str(value)
+    if opt.kind in (FLAG, FLAG_OFF):
+        if not isinstance(value, bool):
+            raise AdoreInputError(f"{opt.name} must be True or False, got {value!r}")
+        return "true" if value else "false"
+    if opt.kind == TEXT:
+        text = os.fspath(value) if isinstance(value, (str, os.PathLike)) else None
+        if text is None:
+            raise AdoreInputError(f"{opt.name} must be a file name, got {value!r}")
+        if not text.strip():
+            raise AdoreInputError(f"{opt.name.replace('_', ' ')}: the file name is blank")
+        if "\n" in text:
+            raise AdoreInputError(f"{opt.name}: a file name with a line break is not supported")
+        return text
+    text = str(value)
+    if "\n" in text:
+        raise AdoreInputError(f"{opt.name}: a value with a line break is not supported")
+    return text  # a choice: the engine checks it and names the choices
+
+
+def options_text(**values) -> str:
+    """The engine's ``name=value`` lines for the keyword options given (``None``: the
+    option's default).  Raises :class:`~pyadore.errors.AdoreInputError` for an unknown
+    name or a value of the wrong type; the engine checks ranges and choices."""
+    lines = []
+    for name, value in values.items():
+        opt = _option(name)
+        if value is None:
+            continue
+        lines.append(f"{opt.name}={_value_text(opt, value)}")
+    return "\n".join(lines)
+
+
+def click_options(skip: tuple[str, ...] = ()):
+    """A decorator adding every run option (but those in ``skip``) to a click command as
+    ``--name`` (flags as ``--name``, an off-flag as its own spelling, e.g. ``--traction-1d``);
+    the command receives them as keywords named after the options, ``None`` or the flag's
+    default when not given."""
+    import click
+
+    def decorate(command):
+        for opt in reversed(run_options()):
+            if opt.name in skip:
+                continue
+            dashed = "--" + opt.name.replace("_", "-")
+            if opt.kind == INT:
+                deco = click.option(dashed, opt.name, type=click.IntRange(min=opt.minimum), default=None,
+                                    metavar=opt.metavar or None, help=f"{opt.help} [default: {opt.default}]")
+            elif opt.kind == TEXT:
+                deco = click.option(dashed, opt.name, type=click.Path(dir_okay=False, path_type=Path), default=None,
+                                    metavar=opt.metavar or None, help=opt.help)
+            elif opt.kind == CHOICE:
+                deco = click.option(dashed, opt.name, type=click.Choice(opt.choices), default=None,
+                                    help=f"{opt.help} [default: {opt.default}]")
+            elif opt.kind == FLAG:
+                deco = click.option(dashed, opt.name, flag_value=True, default=None, help=opt.help)
+            else:  # FLAG_OFF: its own spelling sets the option false
+                deco = click.option("--" + opt.flag.replace("_", "-"), opt.name, flag_value=False, default=None,
+                                    help=opt.help)
+            command = deco(command)
+        return command
+
+    return decorate
