@@ -7,6 +7,7 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.pyadore-installed
+CONSTRAINTS := constraints.txt
 NATIVE := build/native
 DEBUG  := build/debug
 ADORE  := $(NATIVE)/adore
@@ -41,12 +42,14 @@ gfortran:
 	  command -v gfortran >/dev/null || { echo "error: gfortran still not on PATH" >&2; exit 1; }; \
 	fi
 
-# The venv is rebuilt when the build description changes; editable installs
-# rebuild the engine extension by themselves when Fortran sources change.
-$(STAMP): pyproject.toml meson.build meson.options | gfortran
+# The venv is rebuilt when the build description or the pinned versions change; editable
+# installs rebuild the engine extension by themselves when Fortran sources change.
+# $(CONSTRAINTS) pins every package's version, so a fresh machine (and CI) installs the set
+# the suite was run with.
+$(STAMP): pyproject.toml meson.build meson.options $(CONSTRAINTS) | gfortran
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
-	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check "meson-python>=0.15" "meson>=1.1" ninja "numpy>=2.0"
-	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check --no-build-isolation -e '.[test]'
+	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check -c $(CONSTRAINTS) "meson-python>=0.15" "meson>=1.1" ninja "numpy>=2.0"
+	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check -c $(CONSTRAINTS) --no-build-isolation -e '.[test]'
 	@touch $(STAMP)
 
 setup: gfortran $(STAMP)
