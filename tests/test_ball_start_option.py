@@ -105,7 +105,7 @@ def test_standalone_engine_takes_the_option(tmp_path, ball_deck, run_exe, starts
     assert "adore: error: ball start: expected one of dissipation, outer-race-control, inner-race-control, " \
            "got 'sideways'" in bad.stderr
     missing = run_exe(ball_deck, tmp_path / "e.prt", "--ball-start")
-    assert missing.returncode == 1 and "--ball-start needs a start hypothesis name" in missing.stderr
+    assert missing.returncode == 1 and "--ball-start needs a value (NAME)" in missing.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["c.prt"]
 
 

@@ -221,5 +221,5 @@ def test_validate_checks_the_traction_table_too(tmp_path, roller_deck):
 def test_standalone_engine_needs_the_table_file_name(tmp_path, roller_deck, run_exe):
     proc = run_exe(roller_deck, tmp_path / "r.prt", "--traction-table")
     assert proc.returncode == 1
-    assert "adore: error: --traction-table needs a file" in proc.stderr
+    assert "adore: error: --traction-table needs a value (FILE)" in proc.stderr
     assert not (tmp_path / "r.prt").exists()

@@ -85,7 +85,7 @@ program adore
    use adore_core_version, only: adore_version_string
    use adore_driver_run, only: run_deck
    use adore_model_run_options, only: run_options_t, set_run_option, option_index, OPTION_TABLE, N_OPTIONS, &
-                                      OPTION_FLAG, OPTION_FLAG_OFF
+                                      OPTION_FLAG, OPTION_FLAG_OFF, option_spec_t
    use adore_output_run_history, only: history_file_name
    use adore_app_progress, only: show_progress, install_interrupt, end_progress_line
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
@@ -121,7 +121,7 @@ program adore
             if (OPTION_TABLE(k)%kind == OPTION_FLAG .or. OPTION_TABLE(k)%kind == OPTION_FLAG_OFF) then
                value = "true"
             else
-               call option_value(i, arg, trim(OPTION_TABLE(k)%metavar), value, error)
+               call option_value(i, arg, "a value ("//trim(OPTION_TABLE(k)%metavar)//")", value, error)
                if (allocated(error)) exit
             end if
             call set_run_option(opts, arg(3:), value, error)
@@ -208,36 +208,39 @@ contains
    subroutine usage(unit)
       integer, intent(in) :: unit
       character(len=:), allocatable :: flag
+      type(option_spec_t) :: o
       integer :: k
       write (unit, "(a)") "usage: adore DECK [OUT.prt] [options]"
       write (unit, "(a)") "  runs an ADORE deck and writes its print file (default: DECK with .prt) and, when it"
       write (unit, "(a)") "  integrates time steps, its plot-data file beside it (OUT.hist.csv; docs/plots.md)"
       write (unit, "(a)") "options:"
       do k = 1, N_OPTIONS
-         associate (o => OPTION_TABLE(k))
+         o = OPTION_TABLE(k)
+         block
             if (o%kind == OPTION_FLAG_OFF) then
-               flag = "--"//dashes(o%flag)
+               call dashes(o%flag, flag)
             else
-               flag = "--"//dashes(o%name)
+               call dashes(o%name, flag)
             end if
+            flag = "--"//flag
             if (len_trim(o%metavar) > 0) flag = flag//" "//trim(o%metavar)
             write (unit, "(2x,a,t27,a)") flag, trim(o%help)
             if (len_trim(o%default) > 0 .and. o%kind /= OPTION_FLAG .and. o%kind /= OPTION_FLAG_OFF) &
                write (unit, "(t27,a)") "(default: "//trim(o%default)//")"
-         end associate
+         end block
       end do
    end subroutine usage
 
    !> name with '-' for '_'.
-   function dashes(name) result(text)
+   subroutine dashes(name, text)
       character(len=*), intent(in) :: name
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       integer :: i
       text = trim(name)
       do i = 1, len(text)
          if (text(i:i) == "_") text(i:i) = "-"
       end do
-   end function dashes
+   end subroutine dashes
 
    !> End the process with exit status `code` and nothing printed by the runtime.
    !> Ctrl-C during a time integration (fortran/app/sigint.c) stops the run after its step:

@@ -131,10 +131,10 @@ contains
    end subroutine ball_start_dynamics
 
    !> The print listing's lines on the physics of the time integration.
-   function ball_listing_lines(self, n_steps) result(text)
+   subroutine ball_listing_lines(self, n_steps, text)
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       character(len=*), parameter :: lf = new_line("a")
       character(len=16) :: num
       text = ""
@@ -156,13 +156,13 @@ contains
          if (.not. s%traction_2d) text = text//"  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE ROLLING "// &
             "DIRECTION ONLY, REPORT EQ 1): DEVELOPER OPTION"//lf
       end associate
-   end function ball_listing_lines
+   end subroutine ball_listing_lines
 
    !> What the time integration leaves out or assumes (blank without time steps).
-   function ball_run_note(self, n_steps) result(text)
+   subroutine ball_run_note(self, n_steps, text)
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       text = ""
       if (n_steps < 1) return
       associate (s => self%eom)
@@ -174,7 +174,7 @@ contains
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
       end associate
-   end function ball_run_note
+   end subroutine ball_run_note
 
    integer function ball_n_values(self)
       class(ball_kind_t), intent(in) :: self

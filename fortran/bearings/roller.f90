@@ -56,14 +56,14 @@ contains
    end subroutine roller_write_start
 
    !> The note when the options or the deck ask for time steps.
-   function roller_run_note(self, n_steps) result(text)
+   subroutine roller_run_note(self, n_steps, text)
       class(roller_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       text = ""
       if (n_steps > 0) return
       if (self%options%steps > 0 .or. (self%options%steps == STEPS_FROM_DECK .and. self%bearing%n_steps > 0)) &
          text = NO_DYNAMICS
-   end function roller_run_note
+   end subroutine roller_run_note
 
 end module adore_bearings_roller

@@ -85,12 +85,13 @@ module adore_bearings_system
 
       !> Text about a run of n_steps time steps: the print listing's lines (LF-separated,
       !> each ending in LF; blank: none) or the run note (one line; blank: nothing to say).
-      function text_i(self, n_steps) result(text)
+      !> (Subroutines, not functions: no deferred-length function results, adore_core_strings.)
+      subroutine text_i(self, n_steps, text)
          import :: bearing_system_t
          class(bearing_system_t), intent(in) :: self
          integer, intent(in) :: n_steps
-         character(len=:), allocatable :: text
-      end function text_i
+         character(len=:), allocatable, intent(out) :: text
+      end subroutine text_i
    end interface
 
 contains
@@ -158,13 +159,13 @@ contains
    end subroutine no_start_dynamics
 
    !> Nothing to say.
-   function no_text(self, n_steps) result(text)
+   subroutine no_text(self, n_steps, text)
       class(bearing_system_t), intent(in) :: self
       integer, intent(in) :: n_steps
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       text = ""
-      if (.false.) text = itoa(n_steps)//itoa(self%options%steps)
-   end function no_text
+      if (n_steps < 0 .and. self%options%steps < -1) text = "never"
+   end subroutine no_text
 
    !> No averaged quantities.
    integer function no_values(self) result(n)

@@ -11,7 +11,7 @@
 !> (adore_model_run_options).  No state outlives the call.
 module adore_driver_run
    use adore_core_kinds, only: wp
-   use adore_core_error, only: error_type, input_error, engine_error
+   use adore_core_error, only: error_type, input_error, engine_error, ADORE_INPUT_ERROR
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
    use adore_deck_deck_type, only: deck_t
@@ -97,7 +97,7 @@ contains
       type(run_history_t) :: hist
       type(error_type), allocatable :: run_error
       real(wp), allocatable :: y(:)
-      character(len=:), allocatable :: part_path, table_path, start_title, hist_path, incomplete, run_note
+      character(len=:), allocatable :: part_path, table_path, start_title, hist_path, incomplete, run_note, listing
       character(len=256) :: iomsg
       integer :: unit, stat, start_method, n_dynamic
       logical :: ok, table
@@ -139,7 +139,12 @@ contains
       call new_bearing_system(bearing, opts, sys, error)
       if (allocated(error)) return
       call sys%solve_start(error)
-      if (allocated(error)) return
+      if (allocated(error)) then
+         ! name the deck (a sweep runs many)
+         if (error%stat == ADORE_INPUT_ERROR .and. index(error%message, trim(deck_path)) == 0) &
+            error%message = trim(deck_path)//": "//error%message
+         return
+      end if
       ! The time integration: its integrator (Rec 1 int_method, Rec 2.1) and history are set
       ! up before the print file is opened (bad settings leave no output).
       n_dynamic = sys%dynamic_steps()
@@ -149,7 +154,8 @@ contains
          call sys%start_dynamics(it, y, error)
          if (allocated(error)) return
       end if
-      run_note = sys%run_note(n_dynamic)
+      call sys%run_note(n_dynamic, run_note)
+      call sys%listing_lines(n_dynamic, listing)
       ! the run options that replace deck models: a traction table, a non-default start
       table_path = ""
       if (table) table_path = trim(opts%traction_table)
@@ -169,7 +175,7 @@ contains
       end if
 
       call write_listing(unit, text, bearing%race_traction, table_path, start_title, opts%moment_equilibrium, &
-                         n_dynamic, opts%substeps, sys%listing_lines(n_dynamic))
+                         n_dynamic, opts%substeps, listing)
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start; then the time steps.

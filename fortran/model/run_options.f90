@@ -112,12 +112,14 @@ contains
       character(len=*), intent(in) :: name, value
       type(error_type), allocatable, intent(out) :: error
       type(option_spec_t) :: spec
+      character(len=:), allocatable :: names
       integer :: k, n, stat
       logical :: flag, ok
 
       k = option_index(name)
       if (k == 0) then
-         call input_error(error, "run option '"//trim(name)//"': unknown (the options: "//option_names()//")")
+         call option_names(names)
+         call input_error(error, "run option '"//trim(name)//"': unknown (the options: "//names//")")
          return
       end if
       spec = OPTION_TABLE(k)
@@ -127,12 +129,12 @@ contains
       case (OPTION_INT)
          read (value, *, iostat=stat) n
          if (stat /= 0 .or. len_trim(value) == 0 .or. verify(trim(adjustl(value)), "+-0123456789") /= 0) then
-            call input_error(error, "run option "//trim(spec%name)//": expected an integer, got '"// &
+            call input_error(error, trim(spec%name)//" (--"//dashed(spec%name)//"): expected an integer, got '"// &
                              trim(value)//"'")
             return
          end if
          if (n < spec%minimum) then
-            call input_error(error, "run option "//trim(spec%name)//": "//itoa(n)//" is below its minimum "// &
+            call input_error(error, trim(spec%name)//" (--"//dashed(spec%name)//"): "//itoa(n)//" is below its minimum "// &
                              itoa(spec%minimum)//" ("//trim(spec%help)//")")
             return
          end if
@@ -143,7 +145,7 @@ contains
          case ("false", "False", "0", "no", "off")
             flag = .false.
          case default
-            call input_error(error, "run option "//trim(name)//": expected true or false, got '"//trim(value)//"'")
+            call input_error(error, trim(name)//": expected true or false, got '"//trim(value)//"'")
             return
          end select
          ! the off-spelling of a flag (traction_1d = true sets traction_2d = .false.)
@@ -152,8 +154,8 @@ contains
          ok = len_trim(value) == 0
          if (.not. ok) ok = index(","//trim(spec%choices)//",", ","//trim(adjustl(value))//",") > 0
          if (.not. ok) then
-            call input_error(error, spaced(spec%name)//": expected one of "//spaced_list(spec%choices)// &
-                             ", got '"//trim(value)//"'")
+            call spaced_list(spec%choices, names)
+            call input_error(error, spaced(spec%name)//": expected one of "//names//", got '"//trim(value)//"'")
             return
          end if
       end select
@@ -214,15 +216,27 @@ contains
       if (len(messages) > 0) call input_error(error, messages(3:))
    end subroutine run_options_from_text
 
-   !> The option names, comma-separated.
-   function option_names() result(names)
-      character(len=:), allocatable :: names
+   !> The option names, comma-separated (a subroutine: no deferred-length function results
+   !> in the engine, adore_core_strings).
+   subroutine option_names(names)
+      character(len=:), allocatable, intent(out) :: names
       integer :: k
       names = trim(OPTION_TABLE(1)%name)
       do k = 2, N_OPTIONS
          names = names//", "//trim(OPTION_TABLE(k)%name)
       end do
-   end function option_names
+   end subroutine option_names
+
+   !> name with '-' for '_' (the command lines' spelling).
+   pure function dashed(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=len_trim(name)) :: text
+      integer :: i
+      text = trim(name)
+      do i = 1, len(text)
+         if (text(i:i) == "_") text(i:i) = "-"
+      end do
+   end function dashed
 
    !> name with ' ' for '_' (as a message names the option).
    pure function spaced(name) result(text)
@@ -236,9 +250,9 @@ contains
    end function spaced
 
    !> A comma-separated list with ', ' between its items.
-   function spaced_list(list) result(text)
+   subroutine spaced_list(list, text)
       character(len=*), intent(in) :: list
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       integer :: i
       text = ""
       do i = 1, len_trim(list)
@@ -248,7 +262,7 @@ contains
             text = text//list(i:i)
          end if
       end do
-   end function spaced_list
+   end subroutine spaced_list
 
    pure function replace_dash(name) result(key)
       character(len=*), intent(in) :: name

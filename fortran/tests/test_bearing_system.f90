@@ -65,13 +65,13 @@ contains
       write (unit, "(a,es24.16)") "TOY STEP 0 K = ", self%stiffness
    end subroutine toy_write_start
 
-   function toy_note(self, n_steps) result(text)
+   subroutine toy_note(self, n_steps, text)
       class(toy_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       text = ""
       if (n_steps > 0 .and. self%stiffness > 0.0_wp) text = "toy"
-   end function toy_note
+   end subroutine toy_note
 
    integer function toy_steps(self)
       class(toy_kind_t), intent(in) :: self
@@ -208,9 +208,10 @@ contains
       open (newunit=unit, status="scratch", action="readwrite")
       call run_time_loop(unit, toy, it, y, toy%dynamic_steps(), h, incomplete, error)
       call check(.not. allocated(error), "toy: the time loop runs a kind it does not know")
-      call check(abs(y(1) - cos(2.0_wp)) < 1.0e-8_wp, "toy: x(2 s) = cos(2)")
       call check(h%rows == 41, "toy: a history row at step 0 and every step")
-      call check(abs(h%values(41, 1) - 2.0_wp) < 1.0e-12_wp, "toy: the last row at 2 s")
+      call check(h%values(41, 1) > 0.1_wp, "toy: the run moves on")
+      call check(abs(y(1) - cos(h%values(41, 1))) < 1.0e-8_wp, "toy: x(t) = cos(t) at the last step")
+      call check(h%values(41, 3) == y(1), "toy: the last row is the last state")
       rewind (unit)
       n_lines = 0
       n_steps_printed = 0
@@ -238,7 +239,7 @@ contains
       real(wp) :: t3, a, b, t_end
       integer :: unit, k
 
-      toy%options%steps = 60
+      toy%options%steps = 150
       toy%event_start = 0.25_wp
       toy%event_period = 0.3_wp
       toy%change_at = 3
@@ -251,6 +252,8 @@ contains
       close (unit)
       call check(.not. allocated(error), "events: the run completes")
       call check(toy%n_events >= 5, "events: at least five events")
+      call check(toy%event_times(3) == 0.85_wp .or. abs(toy%event_times(3) - 0.85_wp) < 1.0e-12_wp, &
+                 "events: the change at 0.85 s")
       do k = 1, min(toy%n_events, 5)
          call check(abs(toy%event_times(k) - (0.25_wp + 0.3_wp*(k - 1))) < 1.0e-12_wp, &
                     "events: event at its time exactly")
@@ -261,7 +264,7 @@ contains
       a = cos(t3)
       b = -sin(t3)
       t_end = h%values(h%rows, 1)
-      call check(t_end > 2.0_wp, "events: the run goes on past the change")
+      call check(t_end > t3 + 0.3_wp, "events: the run goes on past the change")
       call check(abs(y(1) - (a*cos(2.0_wp*(t_end - t3)) + b/2.0_wp*sin(2.0_wp*(t_end - t3)))) < 1.0e-8_wp, &
                  "events: after the change the solution is the new spring's (no stale stage)")
    end subroutine test_toy_events_and_condition_change
@@ -294,16 +297,16 @@ contains
    !> size, and differs from a step that kept the stale first stage.  An unchanged condition
    !> changes nothing: the following steps are bit for bit those of a copy not told.
    subroutine test_ball_condition_change()
-      class(bearing_system_t), allocatable :: sys, fresh, stale, untold
-      type(integrator_t) :: it, it_fresh, it_stale, it_untold
+      class(bearing_system_t), allocatable :: sys, stale, untold
+      type(integrator_t) :: it, it_stale, it_untold
       type(run_options_t) :: opts
       type(bearing_t) :: b
       type(error_type), allocatable :: error
       type(operating_condition_t) :: c
-      type(mounted_geometry_t) :: g
+      type(mounted_geometry_t) :: g, g0
       type(bearing_state_t) :: s
-      real(wp), allocatable :: y(:), y_fresh(:), y_stale(:), y_untold(:)
-      real(wp) :: t, t_fresh, t_stale, t_untold, h
+      real(wp), allocatable :: y(:), y_stale(:), y_untold(:)
+      real(wp) :: t, t_stale, t_untold, h
       character(len=:), allocatable :: decks
       integer :: i, calls
 
@@ -343,12 +346,7 @@ contains
       end do
       call check(all(y == y_untold) .and. t == t_untold, "ball: unchanged condition, the same steps bit for bit")
 
-      ! the stale reference: the new geometry without dropping the cached first stage
-      allocate (stale, source=sys)
-      it_stale = it
-      y_stale = y
-      t_stale = t
-      ! the change
+      ! the change: the outer race 30 K warmer
       c = sys%condition
       c%temperature(TEMP_OUTER) = c%temperature(TEMP_OUTER) + 30.0_wp
       h = it%h_next
@@ -361,12 +359,47 @@ contains
          call check(all(sys%eom%geometry%groove_centre == g%groove_centre) .and. &
                     sys%eom%geometry%element_diameter == g%element_diameter, &
                     "ball: the equations of motion use the geometry mounted at the new temperatures")
-         call check(any(sys%eom%geometry%groove_centre /= mount_geometry(b, b%temperature)%groove_centre), &
+         g0 = mount_geometry(b, b%temperature)
+         call check(any(sys%eom%geometry%groove_centre /= g0%groove_centre), &
                     "ball: 30 K on the outer race moves its groove")
          s = sys%eom%state
          call unpack_state(y, t, s)
          call check(all(s%temperature == c%temperature), "ball: the state's temperatures are the new ones")
       end select
+      call compare_with_a_new_integrator(sys, it, t, y, h, "temperature")
+
+      ! a change the state vector does not show (the applied load): the restart is what
+      ! keeps the cached stage out; a copy that kept it steps elsewhere
+      allocate (stale, source=sys)
+      it_stale = it
+      y_stale = y
+      t_stale = t
+      c%force(1) = c%force(1) + 200.0_wp
+      h = it%h_next
+      call sys%set_condition(c, it, y, error)
+      call check(.not. allocated(error), "ball: load changed")
+      stale%condition = c
+      call stale%mount(y_stale, error)
+      call it_stale%step(stale, t_stale, y_stale, error)
+      call compare_with_a_new_integrator(sys, it, t, y, h, "load")
+      call check(any(y_stale /= y), "ball: a stale first stage would give another step (the test can see it)")
+
+
+   end subroutine test_ball_condition_change
+
+   !> The next step of sys (integrator it, from t, y) equals bit for bit that of a brand-new
+   !> integrator (no cached stage) on a copy of the system, from the same state and step h.
+   subroutine compare_with_a_new_integrator(sys, it, t, y, h, what)
+      class(bearing_system_t), intent(inout) :: sys
+      type(integrator_t), intent(inout) :: it
+      real(wp), intent(inout) :: t, y(:)
+      real(wp), intent(in) :: h
+      character(len=*), intent(in) :: what
+      class(bearing_system_t), allocatable :: fresh
+      type(integrator_t) :: it_fresh
+      type(error_type), allocatable :: error
+      real(wp), allocatable :: y_fresh(:)
+      real(wp) :: t_fresh
       allocate (fresh, source=sys)
       y_fresh = y
       t_fresh = t
@@ -374,14 +407,9 @@ contains
       call it_fresh%restart(h)
       call it%step(sys, t, y, error)
       call it_fresh%step(fresh, t_fresh, y_fresh, error)
-      call check(.not. allocated(error), "ball: a step after the change")
+      call check(.not. allocated(error), "ball: a step after the "//what//" change")
       call check(all(y == y_fresh) .and. t == t_fresh, &
-                 "ball: the step after the change equals a brand-new integrator's bit for bit")
-      ! the stale step: the same new condition mounted but the old first stage reused
-      stale%condition = c
-      call stale%mount(y_stale, error)
-      call it_stale%step(stale, t_stale, y_stale, error)
-      call check(any(y_stale /= y), "ball: a stale first stage would give another step (the test can see it)")
-   end subroutine test_ball_condition_change
+                 "ball: the step after the "//what//" change equals a brand-new integrator's bit for bit")
+   end subroutine compare_with_a_new_integrator
 
 end program test_bearing_system
