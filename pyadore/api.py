@@ -120,7 +120,6 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, **options)
         if out_path.parent and not out_path.parent.exists():
             raise AdoreInputError(f"{out_path}: the output directory {out_path.parent} does not exist")
     from .progress import RunProgress
-    from .timehistory import history_frame
 
     watch = RunProgress(progress, label=deck.name)
     try:
@@ -129,11 +128,25 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, **options)
     except AdoreEngineError as exc:
         done = getattr(exc, "output", None)
         exc.print_path = out_path if out_path.exists() else None
-        exc.time_history = history_frame(done.history, done.columns) if done is not None and done.columns else None
+        exc.time_history = _written_history(out_path, done)
         raise
     watch.raise_pending_interrupt()
     text = out_path.read_text(encoding="utf-8", errors="replace")
-    history = history_frame(output.history, output.columns) if output.columns else None
+    history = _written_history(out_path, output)
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
                   notes=[output.note] if output.note else [], steps_integrated=output.integrated,
                   time_history=history)
+
+
+def _written_history(print_path: Path, output) -> "pd.DataFrame | None":
+    """The time history the engine wrote beside the print (every value to its last digit,
+    ES24.16E3), when the run wrote one; None otherwise."""
+    if output is None or output.history_rows <= 0:
+        return None
+    from .timehistory import history_path, read_history_csv
+
+    path = history_path(print_path)
+    if not path.exists():
+        return None
+    frame, _incomplete = read_history_csv(path)
+    return frame

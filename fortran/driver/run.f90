@@ -24,7 +24,7 @@ module adore_driver_run
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo
    use adore_output_echo_fill, only: fill_echo
-   use adore_output_run_history, only: run_history_t, write_history_csv, history_file_name, history_shape
+   use adore_output_run_history, only: run_history_t, write_history_csv, history_file_name
    use adore_quasistatic_ball_start, only: start_method_from_name, start_method_title, MIN_DISSIPATION
    use adore_dynamics_integrator, only: integrator_t
    use adore_bearings_system, only: bearing_system_t
@@ -33,39 +33,9 @@ module adore_driver_run
    implicit none
    private
 
-   public :: run_deck, run_plan, run_progress, run_options_t, STEPS_FROM_DECK
+   public :: run_deck, run_progress, run_options_t, STEPS_FROM_DECK
 
 contains
-
-   !> What a run of the deck at `deck_path` with options opts (as run_deck) will do: n_steps
-   !> time steps after step 0, and the shape of its time history (row capacity, columns; 0,
-   !> 0 without time steps), so that a caller can hold the history
-   !> (adore_output_run_history).  Reads and checks the deck and its model, nothing more.
-   subroutine run_plan(deck_path, opts, n_steps, rows, cols, error)
-      character(len=*), intent(in) :: deck_path
-      type(run_options_t), intent(in) :: opts
-      integer, intent(out) :: n_steps, rows, cols
-      type(error_type), allocatable, intent(out) :: error
-      type(deck_text_t) :: text
-      type(deck_t) :: deck
-      type(bearing_t) :: bearing
-      class(bearing_system_t), allocatable :: sys
-      integer :: stride
-
-      n_steps = 0
-      rows = 0
-      cols = 0
-      call read_deck_text(deck_path, text, error)
-      if (allocated(error)) return
-      call parse_deck(text, deck, error)
-      if (allocated(error)) return
-      call build_bearing(deck, bearing, error)
-      if (allocated(error)) return
-      call new_bearing_system(bearing, opts, sys, error)
-      if (allocated(error)) return
-      n_steps = sys%dynamic_steps()
-      if (n_steps > 0) call history_shape(n_steps, bearing%print_interval, bearing%n_lands, rows, cols, stride)
-   end subroutine run_plan
 
    !> Run the deck at `deck_path` with the run options opts and write the print file
    !> `out_path` and, when the run integrates time steps, its plot-data file beside it

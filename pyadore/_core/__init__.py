@@ -7,7 +7,7 @@ concept (base, contact, quasistatic, roller_tribology, model, life, deck, printe
 re-exported here: ``from pyadore import _core; _core.hertz_point(...)``.
 """
 
-from .base import check, run_option_table, run_plan, run_file, RunOutput, engine_version  # noqa: F401
+from .base import check, run_option_table, run_file, RunOutput, engine_version  # noqa: F401
 from .contact import hertz_point, LINE_CONTACT_RESULT, line_contact  # noqa: F401
 from .quasistatic import BALL_QS_COLUMNS, ball_quasi_static, ball_race_jacobian, race_control, mount_races, BALL_STEP0_COLUMNS, BALL_STEP0_SUMMARY, ball_step0_from_deck, ROLLER_STEP0_COLUMNS, ROLLER_STEP0_SLICES, ROLLER_STEP0_SUMMARY, roller_step0_from_deck  # noqa: F401
 from .roller_tribology import ROLLER_TRIBOLOGY_COLUMNS, ROLLER_TRIBOLOGY_SLICES, ROLLER_TRIBOLOGY_SUMMARY, SPIN_ROLLING, SPIN_EQUILIBRIUM, roller_step0_tribology  # noqa: F401
@@ -20,7 +20,6 @@ from .tribology import film_thickness, thermal_reduction_factor, lubricant, LUBR
 __all__ = [
     "check",
     "run_option_table",
-    "run_plan",
     "run_file",
     "RunOutput",
     "engine_version",

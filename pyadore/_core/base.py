@@ -54,35 +54,24 @@ def run_option_table() -> list[tuple]:
     return rows
 
 
-def run_plan(deck_path: str | os.PathLike, options: str = "") -> tuple[int, int, int]:
-    """(time steps after step 0, history rows, history columns) of a run of the deck with
-    the run options ``options`` (the engine's ``name=value`` lines, :mod:`pyadore.options`):
-    what :func:`run_file` will integrate and the shape of the arrays holding its time
-    history (0, 0 without time steps).  Status checked."""
-    n_steps, rows, cols, status, message = _engine().adore_run_plan(os.fspath(deck_path), options)
-    check(int(status), message)
-    return int(n_steps), int(rows), int(cols)
-
-
 class RunOutput:
     """What :func:`run_file` returns: ``integrated`` time steps after step 0, the engine's
-    ``note`` ("" when it has nothing to say), and the time history as a 2-D float array
-    ``history`` (rows x columns, SI units) with its ``columns`` names (docs/plots.md); an
-    empty array and no names for a run without time steps."""
+    ``note`` ("" when it has nothing to say) and ``history_rows``, the rows of the time
+    history the engine wrote to the plot-data file beside the print (0: none written)."""
 
-    def __init__(self, integrated: int, note: str, history, columns: list[str]):
+    def __init__(self, integrated: int, note: str, history_rows: int):
         self.integrated = integrated
         self.note = note
-        self.history = history
-        self.columns = columns
+        self.history_rows = history_rows
 
 
 def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, options: str = "",
              progress=None) -> RunOutput:
     """Run the engine on a deck file and write the print file (and, with time steps, the
-    plot-data file beside it); return a :class:`RunOutput`.  Status checked: an engine
-    failure raises :class:`~pyadore.errors.AdoreEngineError`, whose ``output`` attribute
-    then holds the RunOutput of the steps done (a time integration that stopped early).
+    plot-data file beside it, every value to its last digit); return a :class:`RunOutput`.
+    The deck is read once.  Status checked: an engine failure raises
+    :class:`~pyadore.errors.AdoreEngineError`, whose ``output`` attribute then holds the
+    RunOutput of the steps done (a time integration that stopped early).
 
     options: the run options as the engine's ``name=value`` lines
     (:func:`pyadore.options.options_text`; the engine checks names, ranges and choices).
@@ -92,15 +81,13 @@ def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, options:
     (the function is Python); without one it releases it (threads run at once).
     """
     engine = _engine()
-    _n_steps, rows, cols = run_plan(deck_path, options)
-    args = (os.fspath(deck_path), os.fspath(out_path), options, max(rows, 1), max(cols, 1))
+    args = (os.fspath(deck_path), os.fspath(out_path), options)
     if progress is None:
         out = engine.adore_run_file(*args)
     else:
         out = engine.adore_run_file_progress(*args, progress)
-    hist, n_rows, n_cols, columns, integrated, note, status, message = out
-    names = [c for c in _text(columns).split(",") if c] if n_cols > 0 else []
-    output = RunOutput(int(integrated), _text(note), hist[:int(n_rows), :int(n_cols)].copy(), names)
+    integrated, history_rows, note, status, message = out
+    output = RunOutput(int(integrated), _text(note), int(history_rows))
     try:
         check(int(status), message)
     except AdoreEngineError as exc:
