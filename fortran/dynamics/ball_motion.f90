@@ -22,7 +22,7 @@ module adore_dynamics_ball_motion
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_rotation, only: cross, quat_matrix, quat_rate
-   use adore_model_bearing, only: bearing_t
+   use adore_model_bearing, only: BODY_CAGE, BODY_ELEMENT, BODY_INNER, bearing_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, new_bearing_state, RACE_OUTER, RACE_INNER
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, body_load_t, ball_bearing_loads, add_gyroscopic_restraint
@@ -64,15 +64,15 @@ contains
                               land_film=land_film)
       if (allocated(error)) return
       if (present(gyro_restraint)) then
-         if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, 1), loads)
+         if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, BODY_ELEMENT), loads)
       end if
       rates = new_bearing_state(size(s%elements))
       rates%time = 1.0_wp
       rates%temperature = 0.0_wp
       do k = 1, size(s%elements)
-         rates%elements(k) = body_rates(s%elements(k), loads%elements(k), b%mass(1), b%moments(:, 1))
+         rates%elements(k) = body_rates(s%elements(k), loads%elements(k), b%mass(BODY_ELEMENT), b%moments(:, BODY_ELEMENT))
       end do
-      rates%cage = body_rates(s%cage, loads%cage, b%mass(2), b%moments(:, 2))
+      rates%cage = body_rates(s%cage, loads%cage, b%mass(BODY_CAGE), b%moments(:, BODY_CAGE))
       if (present(cage_spin_only)) then
          if (cage_spin_only) then
             rates%cage%position = 0.0_wp
@@ -84,7 +84,8 @@ contains
       rates%races(RACE_OUTER) = body_state_t(0.0_wp, 0.0_wp, quat_rate(s%races(RACE_OUTER)%attitude, &
                                              s%races(RACE_OUTER)%omega), 0.0_wp)
       ! inner race: free translation, prescribed rotation
-      rates%races(RACE_INNER) = body_rates(s%races(RACE_INNER), loads%races(RACE_INNER), b%mass(4), b%moments(:, 4))
+      rates%races(RACE_INNER) = body_rates(s%races(RACE_INNER), loads%races(RACE_INNER), b%mass(BODY_INNER), &
+                                           b%moments(:, BODY_INNER))
       rates%races(RACE_INNER)%omega = 0.0_wp
    end subroutine ball_bearing_rates
 

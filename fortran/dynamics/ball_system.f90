@@ -14,7 +14,7 @@ module adore_dynamics_ball_system
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, engine_error
    use adore_core_rotation, only: quat_from_rotation_vector
-   use adore_model_bearing, only: bearing_t
+   use adore_model_bearing, only: BODY_ELEMENT, bearing_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, state_size, pack_state, unpack_state, &
                                         RACE_OUTER, RACE_INNER, BODY_SIZE
@@ -231,7 +231,7 @@ contains
       real(wp) :: scales(3), l, tt
       type(bearing_state_t) :: st
 
-      call scale_factors(b%d, b%mass(1), b%force, scales, error)
+      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error)
       if (allocated(error)) return
       l = scales(1)
       tt = scales(3)

@@ -244,11 +244,11 @@ contains
       allocate (loads%elements(n), loads%contacts(2, n), loads%traction(2, n))
       allocate (loads%heat(2, n), source=0.0_wp)
       do k = 1, n
-         loads%elements(k)%force = b%mass(1)*b%gravity
+         loads%elements(k)%force = b%mass(BODY_ELEMENT)*b%gravity
       end do
-      loads%cage%force = b%mass(2)*b%gravity
-      loads%races(RACE_OUTER)%force = b%mass(3)*b%gravity
-      loads%races(RACE_INNER)%force = b%mass(4)*b%gravity + b%force
+      loads%cage%force = b%mass(BODY_CAGE)*b%gravity
+      loads%races(RACE_OUTER)%force = b%mass(BODY_OUTER)*b%gravity
+      loads%races(RACE_INNER)%force = b%mass(BODY_INNER)*b%gravity + b%force
       loads%races(RACE_INNER)%moment = b%moment
 
       do k = 1, n

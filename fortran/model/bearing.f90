@@ -77,7 +77,8 @@ module adore_model_bearing
       type(cage_input_t) :: cage_initial       !< Rec 9.5.1 (angles in rad)
       ! materials (echo order: element, outer, inner, cage, shaft, housing)
       type(material_t) :: material(6)
-      ! inertia (element, cage, outer race, inner race): kg and kg m**2 (x, y, z)
+      ! inertia by body (BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE: the one body-index
+      ! convention of the model): kg and kg m**2 (x, y, z)
       real(wp) :: mass(4) = 0.0_wp
       real(wp) :: moments(3, 4) = 0.0_wp
       ! traction curves (RE/race): kappa(u) = (A + B u) exp(-C u) + D, Rec 10.1x

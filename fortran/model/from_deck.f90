@@ -149,10 +149,10 @@ contains
          b%dia_play = ball_diametral_play(b%d, b%f_o, b%f_i, b%alpha0)
          b%end_play = ball_end_play(b%d, b%f_o, b%f_i, b%alpha0)
          call ball_groove_diameters(b%dm, b%d, b%f_o, b%f_i, b%alpha0, b%outer_raceway_dia, b%inner_raceway_dia)
-         call sphere_inertia(b%d, b%material(BODY_ELEMENT)%density, b%mass(1), b%moments(:, 1))
+         call sphere_inertia(b%d, b%material(BODY_ELEMENT)%density, b%mass(BODY_ELEMENT), b%moments(:, BODY_ELEMENT))
          pocket = b%d + b%pocket_clearance(1)
          call ball_cage_inertia(b%cage_od, b%cage_id, b%cage_width, b%n_elements, pocket, &
-                                b%material(BODY_CAGE)%density, b%mass(2), b%moments(:, 2))
+                                b%material(BODY_CAGE)%density, b%mass(BODY_CAGE), b%moments(:, BODY_CAGE))
       else
          call deck_collect_real(deck, "5B", "roller_diameter", b%d, error)
          call deck_collect_real(deck, "5B", "roller_length", b%roller_length, error)
@@ -174,20 +174,20 @@ contains
          call roller_race_diameters(b%dm, b%d, b%dia_play, b%outer_raceway_dia, b%inner_raceway_dia)
          ! the crowned roller (land and crown arcs; adore_contact_line_slices): the same mass
          ! for the centrifugal force, the echo and the time scale
-         b%mass(1) = roller_mass(roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, &
+         b%mass(BODY_ELEMENT) = roller_mass(roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, &
                                                   b%corner_radius), b%d, b%material(BODY_ELEMENT)%density)
-         b%moments(:, 1) = roller_moments(b%mass(1), b%d, b%roller_length)
+         b%moments(:, BODY_ELEMENT) = roller_moments(b%mass(BODY_ELEMENT), b%d, b%roller_length)
          call roller_cage_inertia(b%cage_od, b%cage_id, b%cage_width, b%n_elements, &
                                   b%d + b%pocket_clearance(1), b%roller_length + b%pocket_clearance(2), &
-                                  b%material(BODY_CAGE)%density, b%mass(2), b%moments(:, 2))
+                                  b%material(BODY_CAGE)%density, b%mass(BODY_CAGE), b%moments(:, BODY_CAGE))
       end if
       b%traction_input = k
       call check_values(deck, error)
       if (allocated(error)) return
       call hollow_cylinder_inertia(b%bearing_od, b%outer_raceway_dia, b%width_outer, &
-                                   b%material(BODY_OUTER)%density, b%mass(3), b%moments(:, 3))
+                                   b%material(BODY_OUTER)%density, b%mass(BODY_OUTER), b%moments(:, BODY_OUTER))
       call hollow_cylinder_inertia(b%inner_raceway_dia, b%shaft_od, b%width_inner, &
-                                   b%material(BODY_INNER)%density, b%mass(4), b%moments(:, 4))
+                                   b%material(BODY_INNER)%density, b%mass(BODY_INNER), b%moments(:, BODY_INNER))
       call fit_traction_curve(k(1), k(2), k(3), k(4), b%traction, error)
       if (allocated(error)) return
       b%race_traction = curve_law(b%traction)

@@ -11,7 +11,7 @@ module adore_output_ball_dynamic_report
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi, rad_to_deg, rad_s_to_rpm
    use adore_core_rotation, only: quat_matrix
-   use adore_model_bearing, only: bearing_t, BODY_OUTER, BODY_INNER, &
+   use adore_model_bearing, only: BODY_CAGE, bearing_t, BODY_OUTER, BODY_INNER, &
                                    TEMP_CAGE, TEMP_ELEMENT, TEMP_HOUSING, TEMP_INNER, TEMP_OUTER, TEMP_SHAFT
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, body_azimuth, RACE_OUTER, RACE_INNER
@@ -129,12 +129,12 @@ contains
       ! section 3: forces of the balls on the races (contact loads = the race's load minus
       ! its weight and, for the inner race, the applied load) and the reactions
       ld = nan
-      ld(1, :) = [loads%cage%force - b%mass(2)*b%gravity, loads%cage%moment]   ! cage contacts
-      ld(2, :) = [loads%races(RACE_OUTER)%force - b%mass(3)*b%gravity, loads%races(RACE_OUTER)%moment]
-      ld(3, :) = [loads%races(RACE_INNER)%force - b%mass(4)*b%gravity - b%force, &
+      ld(1, :) = [loads%cage%force - b%mass(BODY_CAGE)*b%gravity, loads%cage%moment]   ! cage contacts
+      ld(2, :) = [loads%races(RACE_OUTER)%force - b%mass(BODY_OUTER)*b%gravity, loads%races(RACE_OUTER)%moment]
+      ld(3, :) = [loads%races(RACE_INNER)%force - b%mass(BODY_INNER)*b%gravity - b%force, &
                   loads%races(RACE_INNER)%moment - b%moment]
       ! the outer race is held fixed: its support carries the contact loads and its weight
-      ld(4, :) = [-(ld(2, 1:3) + b%mass(3)*b%gravity), -ld(2, 4:6)]
+      ld(4, :) = [-(ld(2, 1:3) + b%mass(BODY_OUTER)*b%gravity), -ld(2, 4:6)]
       ! the inner race is free in translation (the applied load) with its rotation held
       ! (the shaft's moment balances the contacts')
       ld(5, :) = [b%force, -ld(3, 4:6)]

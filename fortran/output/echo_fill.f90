@@ -8,7 +8,7 @@ module adore_output_echo_fill
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type
    use adore_deck_deck_type, only: deck_t, deck_collect_real, deck_collect_int, deck_count, deck_has
-   use adore_model_bearing, only: bearing_t, BALL_BEARING, &
+   use adore_model_bearing, only: bearing_t, BALL_BEARING, BODY_ELEMENT, BODY_CAGE, BODY_OUTER, BODY_INNER, &
                                    TEMP_CAGE, TEMP_ELEMENT, TEMP_HOUSING, TEMP_INNER, TEMP_OUTER, TEMP_ROOM, TEMP_SHAFT
    use adore_model_scales, only: scale_factors
    use adore_tribology_film, only: LUBRICANT_MIL_L_7808
@@ -17,6 +17,9 @@ module adore_output_echo_fill
    use adore_output_layout, only: ELEMENT_BALL, ELEMENT_ROLLER, INT_NOT_COMPUTED, ECHO_MAX_GUIDE
    implicit none
    private
+
+   !> The echo's inertia rows: rolling element, cage, outer race, inner race.
+   integer, parameter :: ECHO_BODIES(4) = [BODY_ELEMENT, BODY_CAGE, BODY_OUTER, BODY_INNER]
 
    public :: fill_echo
 
@@ -101,7 +104,9 @@ contains
       end do
       ! inertia rows: RE, cage, outer race, inner race: mass, 3 moments, 3 offsets (0: centred)
       do k = 1, 4
-         e%inertia(:, k) = [b%mass(k), b%moments(:, k), 0.0_wp, 0.0_wp, 0.0_wp]
+         associate (body => ECHO_BODIES(k))
+            e%inertia(:, k) = [b%mass(body), b%moments(:, body), 0.0_wp, 0.0_wp, 0.0_wp]
+         end associate
          e%principal(:, k) = 0.0_wp
       end do
 
@@ -185,7 +190,7 @@ contains
       call deck_collect_real(deck, "9.5.1", "cage_epicyclic_ratio", e%epicyclic_ratio, error, if_present=.true.)
 
       ! scale factors and output controls
-      call scale_factors(b%d, b%mass(1), b%force, scales, error)
+      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error)
       if (allocated(error)) return
       e%scale_length = scales(1)
       e%scale_load = scales(2)

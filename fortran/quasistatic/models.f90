@@ -28,14 +28,14 @@ contains
       q%dm = b%dm
       q%f_o = b%f_o
       q%f_i = b%f_i
-      q%ball_mass = b%mass(1)
+      q%ball_mass = b%mass(BODY_ELEMENT)
       q%e_ball = b%material(BODY_ELEMENT)%modulus
       q%nu_ball = b%material(BODY_ELEMENT)%poisson
       q%e_outer = b%material(BODY_OUTER)%modulus
       q%nu_outer = b%material(BODY_OUTER)%poisson
       q%e_inner = b%material(BODY_INNER)%modulus
       q%nu_inner = b%material(BODY_INNER)%poisson
-      q%inner_race_mass = b%mass(4)
+      q%inner_race_mass = b%mass(BODY_INNER)
       q%x_o = g%groove_centre(1, 1)
       q%r_o = g%groove_centre(2, 1)
       q%x_i = g%groove_centre(1, 2)
@@ -54,7 +54,7 @@ contains
       q%n_rollers = b%n_elements
       q%d = b%d
       q%profile = roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, b%corner_radius)
-      q%mass = b%mass(1)   ! the crowned roller of the bearing model
+      q%mass = b%mass(BODY_ELEMENT)   ! the crowned roller of the bearing model
       q%race_crown = b%race_crown
       q%r_o = g%raceway_radius(1)
       q%r_i = g%raceway_radius(2)
@@ -71,7 +71,7 @@ contains
       q%k_o = line_stiffness(q%e_o, l_ref)
       q%k_i = line_stiffness(q%e_i, l_ref)
       q%n_sub = n_sub
-      q%inner_race_mass = b%mass(4)
+      q%inner_race_mass = b%mass(BODY_INNER)
    end function roller_qs_model
 
 end module adore_quasistatic_models

@@ -130,8 +130,8 @@ contains
       ld%solve_moment = .false.
       if (present(moment_equilibrium)) ld%solve_moment = moment_equilibrium
       ld%misalignment = 0.0_wp
-      s%inner_weight = b%mass(4)*b%gravity
-      s%outer_weight = b%mass(3)*b%gravity
+      s%inner_weight = b%mass(BODY_INNER)*b%gravity
+      s%outer_weight = b%mass(BODY_OUTER)*b%gravity
 
       call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, s%start_method, s%start, error, &
                             b%race_traction, centrifugal_tol=centrifugal_tol)

@@ -18,7 +18,7 @@ program test_cage_contacts
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type
    use adore_core_rotation, only: cross, quat_from_rotation_vector, quat_multiply, quat_matrix
-   use adore_model_bearing, only: bearing_t
+   use adore_model_bearing, only: BODY_CAGE, bearing_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, state_size, pack_state, RACE_INNER
    use adore_contact_cage_pocket, only: cage_pocket_pair_t, cage_pocket_geometry_t, cage_pocket_pair, &
@@ -385,8 +385,8 @@ contains
       end do
       torque = ld%cage%moment(1)
       write (*, "(a,es10.2,a,2es12.4,a)") "centred cage: |cage force - weight| ", &
-         norm2(ld%cage%force - b%mass(2)*b%gravity), " N; moment x, Couette ", torque, ref, " N m"
-      call check(norm2(ld%cage%force - b%mass(2)*b%gravity) < 1.0e-12_wp, "centred cage: no cage contact force")
+         norm2(ld%cage%force - b%mass(BODY_CAGE)*b%gravity), " N; moment x, Couette ", torque, ref, " N m"
+      call check(norm2(ld%cage%force - b%mass(BODY_CAGE)*b%gravity) < 1.0e-12_wp, "centred cage: no cage contact force")
       call check(all(ld%pockets%metallic_load == 0.0_wp) .and. all(abs(ld%pockets%hydro_load) < 1.0e-12_wp), &
                  "centred cage: no pocket force")
       call check(ref /= 0.0_wp .and. abs(torque - ref) < 1.0e-12_wp*abs(ref), "centred cage: moment = Couette torque")

@@ -79,7 +79,7 @@ program test_cage_whirl
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type
-   use adore_model_bearing, only: bearing_t
+   use adore_model_bearing, only: BODY_CAGE, bearing_t
    use adore_model_from_deck, only: read_bearing
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_forces_ball_bearing, only: guide_land_pairs
@@ -106,7 +106,7 @@ program test_cage_whirl
    call check(.not. allocated(error), "step 0 of Appendix C")
    if (allocated(error)) call finish("cage whirl")
    cage%lands = guide_land_pairs(b, g, b%temperature)
-   cage%mass = b%mass(2)
+   cage%mass = b%mass(BODY_CAGE)
    cage%w_race = b%speed_inner
    cage%w_cage = s0%cage%state%angular_speed
    cage%gravity = b%gravity

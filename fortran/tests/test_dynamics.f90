@@ -48,7 +48,7 @@ program test_dynamics
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_rotation, only: quat_matrix, quat_from_rotation_vector
-   use adore_model_bearing, only: bearing_t
+   use adore_model_bearing, only: BODY_CAGE, BODY_ELEMENT, BODY_INNER, bearing_t
    use adore_model_from_deck, only: read_bearing
    use adore_model_scales, only: length_scale, load_scale, time_scale
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
@@ -132,18 +132,18 @@ contains
          e = 0.0_wp
          hertz = 0.0_wp
          do k = 1, size(s%elements)
-            e = e + 0.5_wp*b%mass(1)*dot_product(s%elements(k)%velocity, s%elements(k)%velocity) &
-                + 0.5_wp*dot_product(s%elements(k)%omega, b%moments(:, 1)*s%elements(k)%omega) &
-                - b%mass(1)*dot_product(b%gravity, s%elements(k)%position)
+            e = e + 0.5_wp*b%mass(BODY_ELEMENT)*dot_product(s%elements(k)%velocity, s%elements(k)%velocity) &
+                + 0.5_wp*dot_product(s%elements(k)%omega, b%moments(:, BODY_ELEMENT)*s%elements(k)%omega) &
+                - b%mass(BODY_ELEMENT)*dot_product(b%gravity, s%elements(k)%position)
             do j = 1, 2
                hertz = hertz + contact_energy(sys%loads%contacts(j, k))
             end do
          end do
-         e = e + hertz + 0.5_wp*b%mass(2)*dot_product(s%cage%velocity, s%cage%velocity) &
-             + 0.5_wp*dot_product(s%cage%omega, b%moments(:, 2)*s%cage%omega) &
-             - b%mass(2)*dot_product(b%gravity, s%cage%position)
-         e = e + 0.5_wp*b%mass(4)*dot_product(s%races(RACE_INNER)%velocity, s%races(RACE_INNER)%velocity) &
-             - dot_product(b%force + b%mass(4)*b%gravity, s%races(RACE_INNER)%position)
+         e = e + hertz + 0.5_wp*b%mass(BODY_CAGE)*dot_product(s%cage%velocity, s%cage%velocity) &
+             + 0.5_wp*dot_product(s%cage%omega, b%moments(:, BODY_CAGE)*s%cage%omega) &
+             - b%mass(BODY_CAGE)*dot_product(b%gravity, s%cage%position)
+         e = e + 0.5_wp*b%mass(BODY_INNER)*dot_product(s%races(RACE_INNER)%velocity, s%races(RACE_INNER)%velocity) &
+             - dot_product(b%force + b%mass(BODY_INNER)*b%gravity, s%races(RACE_INNER)%position)
       end associate
    end function total_energy
 
@@ -167,7 +167,7 @@ contains
       call check(.not. allocated(error), "energy: step 0 of Appendix C")
       if (allocated(error)) return
       l = length_scale(b%d)
-      tt = time_scale(b%mass(1), l, load_scale(b%force))
+      tt = time_scale(b%mass(BODY_ELEMENT), l, load_scale(b%force))
       sys = new_ball_system(b, g, tt, traction=.false., cage=.false.)   ! cage friction dissipates
       sys%contact_damping = 0.0_wp                                       ! so does contact damping
       s = initial_ball_state(b, g, s0%start, s0%cage)
@@ -239,7 +239,7 @@ contains
          ! the loads of the last evaluation belong to the end of the step (FSAL): weight by the step
          call unpack_state(y, t*sys%time_scale, s)
          ! contact loads (normal and traction) of the balls on the inner race
-         f_mean = f_mean + (t - t_prev)*(sys%loads%races(RACE_INNER)%force - b%force - b%mass(4)*b%gravity)
+         f_mean = f_mean + (t - t_prev)*(sys%loads%races(RACE_INNER)%force - b%force - b%mass(BODY_INNER)*b%gravity)
          do k = 1, n
             w_mean = w_mean + (t - t_prev)*(s%elements(k)%position(2)*s%elements(k)%velocity(3) - &
                                             s%elements(k)%position(3)*s%elements(k)%velocity(2)) &
@@ -255,7 +255,7 @@ contains
       f_mean = f_mean/span
       w_mean = w_mean/span
       w_start = sum(s0%start%kinematics%orbital_speed)/n
-      applied = b%force + b%mass(4)*b%gravity
+      applied = b%force + b%mass(BODY_INNER)*b%gravity
       write (*, "(a,3es11.3,a,3es11.3,a,f9.3,a,f9.3,a,i0,a,i0)") "run: mean ball force on the inner race ", f_mean, &
          " N, applied ", applied, " N; mean orbital speed ", w_mean, " rad/s (start ", w_start, "); steps ", &
          it%stats%accepted, ", derivative calls ", sys%calls

@@ -21,7 +21,7 @@ program test_forces
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_rotation, only: cross, quat_from_rotation_vector, quat_multiply
-   use adore_model_bearing, only: bearing_t
+   use adore_model_bearing, only: BODY_CAGE, BODY_ELEMENT, BODY_INNER, BODY_OUTER, bearing_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, RACE_OUTER, RACE_INNER, &
                                         state_size, pack_state, unpack_state
@@ -151,7 +151,7 @@ contains
             ! ball balance: normal loads + centrifugal m r w_m**2 e_r = 0 (eqs 65-66)
             phi = e%azimuth(k)
             e_r = [0.0_wp, -sin(phi), cos(phi)]
-            worst_ball = max(worst_ball, norm2(normal_force(ld, k) + b%mass(1)*e%r(k)*kin(k)%orbital_speed**2*e_r) &
+            worst_ball = max(worst_ball, norm2(normal_force(ld, k) + b%mass(BODY_ELEMENT)*e%r(k)*kin(k)%orbital_speed**2*e_r) &
                                          /qmax)
          end do
          ! inner race: the balls' normal loads balance the applied load and the race weight
@@ -159,7 +159,7 @@ contains
          do k = 1, b%n_elements
             f_ref = f_ref + ld%contacts(2, k)%load*ld%contacts(2, k)%normal
          end do
-         worst_race = norm2(f_ref + b%force + b%mass(4)*b%gravity)/norm2(b%force)
+         worst_race = norm2(f_ref + b%force + b%mass(BODY_INNER)*b%gravity)/norm2(b%force)
       end associate
       write (*, "(a,3es10.2,a,2es10.2)") "planar case, step-0 state: load, ball balance, race balance ", &
          worst_q, worst_ball, worst_race, "; linearisation bounds ", tol_load, tol_speed
@@ -195,7 +195,7 @@ contains
       type(bearing_t), intent(in) :: b
       integer, intent(in) :: j
       real(wp) :: w(3)
-      w = b%mass(merge(3, 4, j == RACE_OUTER))*b%gravity
+      w = b%mass(merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER))*b%gravity
    end function race_weight
 
    !> Total contact energy (J) at state st with the stiffness of each contact frozen at k_frozen.
@@ -296,7 +296,7 @@ contains
       ! sum to zero force and zero moment about the origin
       call contact_load_sums(b, st, ld, total_f, total_m)
       ! the cage's pocket and guide-land contacts
-      f = ld%cage%force - b%mass(2)*b%gravity
+      f = ld%cage%force - b%mass(BODY_CAGE)*b%gravity
       total_f = total_f + f
       total_m = total_m + ld%cage%moment + cross(st%cage%position, f)
       call check(norm2(total_f) < 1.0e-9_wp*fscale, "perturbed: contact forces sum to zero (action = reaction)")
@@ -319,9 +319,9 @@ contains
       total_f = 0.0_wp
       total_m = 0.0_wp
       do k = 1, size(st%elements)
-         total_f = total_f + ld%elements(k)%force - b%mass(1)*b%gravity
+         total_f = total_f + ld%elements(k)%force - b%mass(BODY_ELEMENT)*b%gravity
          total_m = total_m + ld%elements(k)%moment + cross(st%elements(k)%position, ld%elements(k)%force - &
-                                                           b%mass(1)*b%gravity)
+                                                           b%mass(BODY_ELEMENT)*b%gravity)
       end do
       do j = 1, 2
          f = ld%races(j)%force - race_weight(b, j)
@@ -430,7 +430,7 @@ contains
       call ball_bearing_loads(b, g, st, l0, error, cage=.false.)
       if (allocated(error)) return
       l1 = l0
-      call add_gyroscopic_restraint(st, b%moments(1, 1), l1)
+      call add_gyroscopic_restraint(st, b%moments(1, BODY_ELEMENT), l1)
       p_mech = 0.0_wp
       worst = 0.0_wp
       do k = 1, size(st%elements)
@@ -439,14 +439,14 @@ contains
             r2 = e%position(2)**2 + e%position(3)**2
             w_m = (e%position(2)*e%velocity(3) - e%position(3)*e%velocity(2))/r2
             w = matmul(quat_matrix(e%attitude), e%omega)
-            m_ref = b%moments(1, 1)*abs(w_m)*hypot(w(2), w(3))   ! J w_m |w| sin(beta)
+            m_ref = b%moments(1, BODY_ELEMENT)*abs(w_m)*hypot(w(2), w(3))   ! J w_m |w| sin(beta)
          end associate
          worst = max(worst, abs(norm2(l1%elements(k)%moment - l0%elements(k)%moment) - m_ref)/m_ref)
       end do
       do j = 1, 2
          p_mech = p_mech + power_of(st%races(j), l1%races(j), l0%races(j))
       end do
-      m_ref = b%moments(1, 1)*norm2(st%elements(1)%omega)*1000.0_wp
+      m_ref = b%moments(1, BODY_ELEMENT)*norm2(st%elements(1)%omega)*1000.0_wp
       write (*, "(a,es10.2,a,es10.2)") "gyroscopic restraint: power (W) ", p_mech, &
          ", worst |M_g| vs J w_m w sin(beta) ", worst
       call check(abs(p_mech) <= 1.0e-12_wp*m_ref, "gyroscopic restraint: no work on balls and races")
@@ -549,15 +549,15 @@ contains
             e_r = [0.0_wp, -sin(phi), cos(phi)]
             a_c = e%r(k)*kin(k)%orbital_speed**2
             ! normal loads + weight over the mass, less the weight's share
-            worst = max(worst, norm2(rates%elements(k)%velocity - b%gravity + a_c*e_r)*b%mass(1)/ &
+            worst = max(worst, norm2(rates%elements(k)%velocity - b%gravity + a_c*e_r)*b%mass(BODY_ELEMENT)/ &
                                maxval([e%q_o, e%q_i]))
             call check(all(rates%elements(k)%position == st%elements(k)%velocity), "ball position rate = velocity")
          end do
          write (*, "(a,2es10.2)") "step-0 motion: ball acceleration - centripetal (rel. to largest load), "// &
             "inner race acceleration (rel. to applied) ", worst, &
-            norm2(rates%races(RACE_INNER)%velocity)*b%mass(4)/norm2(b%force)
+            norm2(rates%races(RACE_INNER)%velocity)*b%mass(BODY_INNER)/norm2(b%force)
          call check(worst < tol, "step-0 motion: balls accelerate centripetally (r w_m**2 towards the axis)")
-         call check(norm2(rates%races(RACE_INNER)%velocity)*b%mass(4)/norm2(b%force) < tol, &
+         call check(norm2(rates%races(RACE_INNER)%velocity)*b%mass(BODY_INNER)/norm2(b%force) < tol, &
                     "step-0 motion: the inner race does not accelerate")
       end associate
       call check(all(rates%races(RACE_OUTER)%velocity == 0.0_wp) .and. all(rates%races(RACE_OUTER)%omega == 0.0_wp), &
