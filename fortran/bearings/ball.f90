@@ -104,7 +104,7 @@ contains
    integer function ball_dynamic_steps(self) result(n)
       class(ball_kind_t), intent(in) :: self
       if (self%options%steps == STEPS_FROM_DECK) then
-         n = max(self%bearing%n_steps, 0)
+         n = max(self%bearing%controls%n_steps, 0)
       else
          n = max(self%options%steps, 0)
       end if

@@ -62,7 +62,7 @@ contains
       character(len=:), allocatable, intent(out) :: text
       text = ""
       if (n_steps > 0) return
-      if (self%options%steps > 0 .or. (self%options%steps == STEPS_FROM_DECK .and. self%bearing%n_steps > 0)) &
+      if (self%options%steps > 0 .or. (self%options%steps == STEPS_FROM_DECK .and. self%bearing%controls%n_steps > 0)) &
          text = NO_DYNAMICS
    end subroutine roller_run_note
 

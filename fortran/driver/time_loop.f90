@@ -79,7 +79,7 @@ contains
       incomplete = ""
       n_sub = 1
       if (present(substeps)) n_sub = max(substeps, 1)
-      print_interval = sys%bearing%print_interval
+      print_interval = sys%bearing%controls%print_interval
       allocate (dydt(size(y)), values(sys%n_values()), mean(sys%n_values()))
       t = 0.0_wp
       printed_last = 0

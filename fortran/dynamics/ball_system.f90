@@ -247,10 +247,12 @@ contains
          st%cage%attitude = quat_from_rotation_vector([0.0_wp, 0.0_wp, 0.0_wp])
       end if
       call pack_state(st, y)
-      call it%init(size(y), integrator_settings_t(int_method=b%int_method, h_initial=b%step_initial, &
-                                                  h_min=b%step_min, h_max=b%step_max, error_limit=b%error_limit, &
-                                                  rel_weight=0.0_wp, accept_at_h_min=.true.), error, &
-                   scale=state_error_scale(b%n_elements, l, tt))
+      associate (c => b%controls)
+         call it%init(size(y), integrator_settings_t(int_method=c%int_method, h_initial=c%step_initial, &
+                                                     h_min=c%step_min, h_max=c%step_max, error_limit=c%error_limit, &
+                                                     rel_weight=0.0_wp, accept_at_h_min=.true.), error, &
+                      scale=state_error_scale(b%n_elements, l, tt))
+      end associate
    end subroutine start_ball_dynamics
 
 end module adore_dynamics_ball_system

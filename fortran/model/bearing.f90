@@ -10,7 +10,7 @@ module adore_model_bearing
    implicit none
    private
 
-   public :: material_t, bearing_t
+   public :: material_t, bearing_t, run_controls_t
    public :: BALL_BEARING, ROLLER_BEARING
    public :: BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, BODY_SHAFT, BODY_HOUSING
    public :: TEMP_ROOM, TEMP_HOUSING, TEMP_SHAFT, TEMP_ELEMENT, TEMP_CAGE, TEMP_OUTER, TEMP_INNER
@@ -40,17 +40,22 @@ module adore_model_bearing
    end type material_t
 
    !> Everything the physics needs from the deck.
+   !> The deck's time integration controls (Rec 1, Rec 2.1; steps in dimensionless time tau).
+   type :: run_controls_t
+      integer :: n_steps = 0                   !< Rec 1 n_steps (NUMBER OF STEPS)
+      integer :: int_method = 5                !< Rec 1 int_method (INT METHOD)
+      integer :: print_interval = 0            !< Rec 1 data_control_2: steps between printed steps
+      real(wp) :: step_initial = 0.0_wp, step_min = 0.0_wp, step_max = 0.0_wp   !< Rec 2.1 (tau)
+      real(wp) :: error_limit = 0.0_wp         !< Rec 2.1 ERROR LIMIT
+   end type run_controls_t
+
    type :: bearing_t
       character(len=:), allocatable :: run_id
       integer :: bearing_type = BALL_BEARING
       integer :: mode = 1
       integer :: n_elements = 0
-      integer :: n_steps = 0
-      ! time integration (Rec 1, Rec 2.1; steps in dimensionless time tau)
-      integer :: int_method = 5                !< Rec 1 int_method (INT METHOD)
-      integer :: print_interval = 0            !< Rec 1 data_control_2: steps between printed steps
-      real(wp) :: step_initial = 0.0_wp, step_min = 0.0_wp, step_max = 0.0_wp   !< Rec 2.1 (tau)
-      real(wp) :: error_limit = 0.0_wp         !< Rec 2.1 ERROR LIMIT
+      !> the deck's time integration (Rec 1, Rec 2.1): run controls, not bearing data
+      type(run_controls_t) :: controls
       ! envelope, Rec 4 (m)
       real(wp) :: shaft_od = 0.0_wp, bearing_od = 0.0_wp, shaft_id = 0.0_wp, housing_od = 0.0_wp
       real(wp) :: width_outer = 0.0_wp, width_inner = 0.0_wp

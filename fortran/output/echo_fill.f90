@@ -199,7 +199,7 @@ contains
       call deck_collect_real(deck, "2.1", "step_max", e%step_max, error, if_present=.true.)
       call deck_collect_real(deck, "2.1", "step_initial", e%step_initial, error, if_present=.true.)
       call deck_collect_real(deck, "2.1", "error_limit", e%error_limit, error, if_present=.true.)
-      e%n_steps = b%n_steps
+      e%n_steps = b%controls%n_steps
       call deck_collect_int(deck, "1", "data_control_1", e%data_control(1), error)
       call deck_collect_int(deck, "1", "data_control_2", e%data_control(2), error)
       e%data_control(3) = INT_NOT_COMPUTED

@@ -84,7 +84,7 @@ contains
                           itoa(b%n_elements))
          return
       end if
-      call history_shape(n_steps, b%print_interval, b%n_lands, rows, cols, h%stride)
+      call history_shape(n_steps, b%controls%print_interval, b%n_lands, rows, cols, h%stride)
       h%element = element
       h%n_lands = b%n_lands
       allocate (h%names(cols), h%values(rows, cols))

@@ -200,7 +200,7 @@ contains
       integer :: unit, n_lines, n_steps_printed, stat
 
       toy%options%steps = 40
-      toy%bearing%print_interval = 1
+      toy%bearing%controls%print_interval = 1
       call toy%solve_start(error)
       call toy%start_dynamics(it, y, error)
       call check(.not. allocated(error), "toy: start")
