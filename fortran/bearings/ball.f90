@@ -13,7 +13,7 @@ module adore_bearings_ball
    use adore_core_error, only: error_type, engine_error
    use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
-   use adore_model_condition, only: condition_of
+   use adore_model_condition, only: condition_of, default_constraints
    use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, unpack_state, pack_state
@@ -122,6 +122,9 @@ contains
                                two_d=self%options%traction_2d)
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
+      ! the run's degrees of freedom are the condition's from now on (report 4.4.6)
+      self%condition%constraints = default_constraints(self%eom%cage_spin_only)
+      self%eom%constraints = self%condition%constraints
       associate (e => self%step0%start%equilibrium)
          self%axial_origin = e%u(1) - e%axial_displacement
          self%azimuth = e%azimuth
@@ -238,7 +241,8 @@ contains
 
    !> The equations of motion in self%condition: the geometry mounted at its temperatures
    !> (adore_geometry_mounted: fits, growth, clearance from the initial temperatures), its
-   !> load on the inner race, the state's temperatures in y, the guide clearance anew.
+   !> load on the inner race, its degrees of freedom, the state's temperatures in y, the
+   !> guide clearance anew.
    subroutine ball_mount(self, y, error)
       class(ball_kind_t), intent(inout) :: self
       real(wp), intent(inout) :: y(:)
@@ -252,6 +256,7 @@ contains
          self%eom%geometry = mount_geometry(self%bearing, c%temperature)
          self%eom%bearing%force = c%force
          self%eom%bearing%moment = c%moment
+         self%eom%constraints = c%constraints
          s = self%eom%state
          call unpack_state(y, 0.0_wp, s)
          s%temperature = c%temperature

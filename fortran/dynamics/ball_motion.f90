@@ -13,17 +13,19 @@
 !> gravity, the applied load of the inner race).  A ball's inertia is isotropic, so its
 !> gyroscopic term vanishes.
 !> Constraints (report 4.4.6, until the deck's DOF constraints of Rec 3.3 are identified):
-!> the outer race is fixed in the housing and turns at its Rec 9.1.2 speed; the inner race
-!> turns at its prescribed speed about its axis (no angular acceleration, its misalignment
-!> held) and translates freely under the applied load.  The cage moves in six degrees of
-!> freedom under its pocket and guide-land contacts (adore_forces_ball_bearing).
+!> the operating condition's (adore_model_condition's dof_constraints_t; by default the
+!> outer race is fixed in the housing and turns at its Rec 9.1.2 speed; the inner race
+!> turns at its prescribed speed about its axis, no angular acceleration, its misalignment
+!> held, and translates freely under the applied load; the cage moves in six degrees of
+!> freedom under its pocket and guide-land contacts, adore_forces_ball_bearing).
 !> Temperatures do not change here (the thermal model is [Thermal]).  Units SI, time in s.
 module adore_dynamics_ball_motion
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_rotation, only: cross, quat_matrix, quat_rate
-   use adore_model_bearing, only: BODY_CAGE, BODY_ELEMENT, BODY_INNER, bearing_t
+   use adore_model_bearing, only: BODY_CAGE, BODY_ELEMENT, BODY_INNER, BODY_OUTER, bearing_t
    use adore_geometry_mounted, only: mounted_geometry_t
+   use adore_model_condition, only: dof_constraints_t, body_dof_t, default_constraints
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, new_bearing_state, RACE_OUTER, RACE_INNER
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, body_load_t, ball_bearing_loads, add_gyroscopic_restraint
    implicit none
@@ -40,10 +42,11 @@ contains
    !> traction, cage, stiffness and two_d as ball_bearing_loads; gyro_restraint (default
    !> .false.): the balls' gyroscopic moments resisted by the races without slip
    !> (add_gyroscopic_restraint); damping, land_film as ball_bearing_loads; cage_spin_only:
-   !> the cage's translation and tilt constrained (report 4.4.6).  Input errors of
-   !> the traction model come back in error.
+   !> the cage's translation and tilt constrained (report 4.4.6); constraints: the bodies'
+   !> degrees of freedom (replaces cage_spin_only; absent: default_constraints).  Input
+   !> errors of the traction model come back in error.
    subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
-                                 damping, land_film, cage_spin_only)
+                                 damping, land_film, cage_spin_only, constraints)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -58,7 +61,16 @@ contains
       !> .true.: the cage's translation and tilt are constrained (report 4.4.6's DOF
       !> constraints): it keeps its position and turns about its own axis only
       logical, intent(in), optional :: cage_spin_only
+      type(dof_constraints_t), intent(in), optional :: constraints
+      type(dof_constraints_t) :: dof
       integer :: k
+
+      if (present(constraints)) then
+         dof = constraints
+      else
+         dof = default_constraints(.false.)
+         if (present(cage_spin_only)) dof = default_constraints(cage_spin_only)
+      end if
 
       call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
                               land_film=land_film)
@@ -73,21 +85,27 @@ contains
          rates%elements(k) = body_rates(s%elements(k), loads%elements(k), b%mass(BODY_ELEMENT), b%moments(:, BODY_ELEMENT))
       end do
       rates%cage = body_rates(s%cage, loads%cage, b%mass(BODY_CAGE), b%moments(:, BODY_CAGE))
-      if (present(cage_spin_only)) then
-         if (cage_spin_only) then
-            rates%cage%position = 0.0_wp
-            rates%cage%velocity = 0.0_wp
-            rates%cage%omega(2:3) = 0.0_wp
-         end if
-      end if
-      ! outer race fixed, turning at its speed: only its attitude moves
-      rates%races(RACE_OUTER) = body_state_t(0.0_wp, 0.0_wp, quat_rate(s%races(RACE_OUTER)%attitude, &
-                                             s%races(RACE_OUTER)%omega), 0.0_wp)
-      ! inner race: free translation, prescribed rotation
+      call constrain(rates%cage, dof%cage)
+      rates%races(RACE_OUTER) = body_rates(s%races(RACE_OUTER), loads%races(RACE_OUTER), b%mass(BODY_OUTER), &
+                                           b%moments(:, BODY_OUTER))
+      call constrain(rates%races(RACE_OUTER), dof%outer)
       rates%races(RACE_INNER) = body_rates(s%races(RACE_INNER), loads%races(RACE_INNER), b%mass(BODY_INNER), &
                                            b%moments(:, BODY_INNER))
-      rates%races(RACE_INNER)%omega = 0.0_wp
+      call constrain(rates%races(RACE_INNER), dof%inner)
    end subroutine ball_bearing_rates
+
+   !> The rates r of a body with its constrained degrees of freedom dof held: no velocity
+   !> and no acceleration along a constrained translation, no angular acceleration about a
+   !> constrained axis (the attitude still turns at the body's angular velocity).
+   pure subroutine constrain(r, dof)
+      type(body_state_t), intent(inout) :: r
+      type(body_dof_t), intent(in) :: dof
+      where (.not. dof%translation)
+         r%position = 0.0_wp
+         r%velocity = 0.0_wp
+      end where
+      where (.not. dof%rotation) r%omega = 0.0_wp
+   end subroutine constrain
 
    !> Rates of one free rigid body of mass m (kg) and principal moments inertia(3) (kg m**2)
    !> under the load ld (force and moment about the mass centre, inertial components).

@@ -15,6 +15,7 @@ module adore_dynamics_ball_system
    use adore_core_error, only: error_type, engine_error
    use adore_core_rotation, only: quat_from_rotation_vector
    use adore_model_bearing, only: BODY_ELEMENT, bearing_t
+   use adore_model_condition, only: dof_constraints_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, state_size, pack_state, unpack_state, &
                                         RACE_OUTER, RACE_INNER, BODY_SIZE
@@ -55,6 +56,9 @@ module adore_dynamics_ball_system
       !> axis, driven by its pockets; .false. frees all six (docs/dynamics.md, "Cage dynamics":
       !> the free cage of Appendix C either whips on its land films or rides its lands)
       logical :: cage_spin_only = .true.
+      !> the bodies' degrees of freedom (adore_model_condition; the bearing kind sets them
+      !> from its operating condition); not allocated: those of cage_spin_only
+      type(dof_constraints_t), allocatable :: constraints
       !> two-dimensional race traction (ball_bearing_loads' two_d; report eqs 2-3: the slip
       !> vector along and across the rolling direction): on by default, it damps the balls'
       !> motion across the rolling direction that the 1-D traction leaves free
@@ -110,6 +114,11 @@ contains
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
                                  self%contact_damping, self%land_film, self%cage_spin_only)
+      else if (allocated(self%constraints)) then
+         call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
+                                 self%traction, self%cage, two_d=self%traction_2d, &
+                                 gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
+                                 land_film=self%land_film, constraints=self%constraints)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &

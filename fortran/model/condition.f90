@@ -1,6 +1,7 @@
 !> The operating condition of a run: what may change while the bearing runs (issue #24 item 3)
-!> - the bulk temperatures (which set the mounted geometry: fits, growth, clearance; ADRC2)
-!> and the load applied to the inner race.  A bearing system owns one
+!> - the bulk temperatures (which set the mounted geometry: fits, growth, clearance; ADRC2),
+!> the load applied to the inner race and the degrees of freedom of the cage and the races
+!> (report 4.4.6's DOF constraints).  A bearing system owns one
 !> (adore_bearings_system's set_condition re-mounts and restarts the integrator); the
 !> thermal model and any periodic update change it through that one call.
 module adore_model_condition
@@ -10,6 +11,26 @@ module adore_model_condition
    private
 
    public :: operating_condition_t, condition_of, same_condition
+   public :: body_dof_t, dof_constraints_t, default_constraints
+
+   !> Which degrees of freedom of a body move under its loads (.true.: free): translation
+   !> along x, y, z and angular acceleration about the body's x, y, z axes.  A constrained
+   !> translation keeps its position and velocity; a constrained rotation keeps its angular
+   !> velocity (the body still turns at it).
+   type :: body_dof_t
+      logical :: translation(3) = .true.
+      logical :: rotation(3) = .true.
+   end type body_dof_t
+
+   !> The constraints of the bodies that are not rolling elements (report 4.4.6).
+   type :: dof_constraints_t
+      type(body_dof_t) :: cage
+      !> fixed in the housing, turning at its Rec 9.1.2 speed
+      type(body_dof_t) :: outer = body_dof_t([.false., .false., .false.], [.false., .false., .false.])
+      !> translating freely under the applied load, turning at its prescribed speed with its
+      !> misalignment held
+      type(body_dof_t) :: inner = body_dof_t([.true., .true., .true.], [.false., .false., .false.])
+   end type dof_constraints_t
 
    !> Bulk temperatures (K, the TEMP_* order of adore_model_bearing) and the load applied to
    !> the inner race (N, N m; inertial components).
@@ -17,6 +38,7 @@ module adore_model_condition
       real(wp) :: temperature(7) = 293.0_wp
       real(wp) :: force(3) = 0.0_wp
       real(wp) :: moment(3) = 0.0_wp
+      type(dof_constraints_t) :: constraints
    end type operating_condition_t
 
 contains
@@ -35,7 +57,23 @@ contains
    pure logical function same_condition(a, b)
       type(operating_condition_t), intent(in) :: a, b
       same_condition = all(a%temperature == b%temperature) .and. all(a%force == b%force) .and. &
-                       all(a%moment == b%moment)
+                       all(a%moment == b%moment) .and. same_dof(a%constraints%cage, b%constraints%cage) .and. &
+                       same_dof(a%constraints%outer, b%constraints%outer) .and. &
+                       same_dof(a%constraints%inner, b%constraints%inner)
    end function same_condition
+
+   pure logical function same_dof(a, b)
+      type(body_dof_t), intent(in) :: a, b
+      same_dof = all(a%translation .eqv. b%translation) .and. all(a%rotation .eqv. b%rotation)
+   end function same_dof
+
+   !> The run's constraints (report 4.4.6, until Rec 3.3's flags are identified, issue #25):
+   !> outer race fixed, inner race free in translation with its rotation prescribed, the cage
+   !> free - or, cage_spin_only, centred and untilted, turning about its own axis.
+   pure function default_constraints(cage_spin_only) result(c)
+      logical, intent(in) :: cage_spin_only
+      type(dof_constraints_t) :: c
+      if (cage_spin_only) c%cage = body_dof_t([.false., .false., .false.], [.true., .false., .false.])
+   end function default_constraints
 
 end module adore_model_condition

@@ -169,7 +169,7 @@ program test_bearing_system
    use adore_model_run_options, only: run_options_t, set_run_option, run_options_from_text
    use adore_model_condition, only: operating_condition_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
-   use adore_state_bearing_state, only: bearing_state_t, unpack_state
+   use adore_state_bearing_state, only: bearing_state_t, unpack_state, RACE_INNER
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
    use adore_bearings_system, only: bearing_system_t
    use adore_bearings_select, only: new_bearing_system
@@ -306,7 +306,7 @@ contains
       type(mounted_geometry_t) :: g, g0
       type(bearing_state_t) :: s
       real(wp), allocatable :: y(:), y_stale(:), y_untold(:)
-      real(wp) :: t, t_stale, t_untold, h
+      real(wp) :: t, t_stale, t_untold, h, p_inner(3), v_inner(3)
       character(len=:), allocatable :: decks
       integer :: i, calls
 
@@ -383,6 +383,22 @@ contains
       call it_stale%step(stale, t_stale, y_stale, error)
       call compare_with_a_new_integrator(sys, it, t, y, h, "load")
       call check(any(y_stale /= y), "ball: a stale first stage would give another step (the test can see it)")
+
+      ! a change of the degrees of freedom: the inner race held in translation from now on
+      ! (its position and velocity then stay exactly as they are)
+      c%constraints%inner%translation = .false.
+      call sys%set_condition(c, it, y, error)
+      call check(.not. allocated(error) .and. .not. it%fsal_valid, "ball: constraints changed, integrator restarted")
+      call unpack_state(y, t, s)
+      p_inner = s%races(RACE_INNER)%position
+      v_inner = s%races(RACE_INNER)%velocity
+      do i = 1, 3
+         call it%step(sys, t, y, error)
+      end do
+      call unpack_state(y, t, s)
+      call check(.not. allocated(error), "ball: steps with the inner race held")
+      call check(all(s%races(RACE_INNER)%position == p_inner) .and. all(s%races(RACE_INNER)%velocity == v_inner), &
+                 "ball: the held inner race keeps its position and velocity")
 
 
    end subroutine test_ball_condition_change
