@@ -86,7 +86,9 @@ def test_no_ehd_film_is_a_clear_input_error(tmp_path):
     with pytest.raises(pyadore.AdoreInputError) as info:
         pyadore.run(deck, steps=0, out=tmp_path / "cold.prt")
     message = str(info.value)
-    assert message.startswith("ball 1 outer race contact: no film for the EHD traction (Rec 10.0 traction_model 3)")
+    # the run names the deck first (a sweep runs many)
+    assert message.startswith(f"{deck}: ball 1 outer race contact: no film for the EHD traction "
+                              "(Rec 10.0 traction_model 3)")
     assert "thermal reduction factor  0.000E+00" in message
     assert ("MIL-L-7808 at 163.12 K, the mean of Rec 2.7 rolling_element_temperature 3.23 K and "
             "outer_race_temperature 323.00 K") in message
