@@ -1,4 +1,4 @@
-"""Cage at step 0 (fortran/cage/cage_step0.f90): the run's section 2 cage rows against the
+"""Cage at step 0 (fortran/cage/step0.f90): the run's section 2 cage rows against the
 report's (golden/*.prt, legible values only), 5 % as the issue asks.  Definitions and
 their evidence are in the module header; independent geometry checks are the engine test
 fortran/tests/test_cage.f90."""

@@ -34,10 +34,10 @@ FILE_LEVEL = {"io", "non_text", "empty"}  # reported by the engine's text stage 
 
 
 def test_generated_schema_table_is_current():
-    committed = (ROOT / "fortran" / "deck" / "schema_table.f90").read_text()
+    committed = (ROOT / "fortran" / "deck" / "schema.f90").read_text()
     assert committed == generate(), (
-        "fortran/deck/schema_table.f90 is stale: run "
-        "`python -m pyadore.deck.fortran_schema > fortran/deck/schema_table.f90`")
+        "fortran/deck/schema.f90 is stale: run "
+        "`python -m pyadore.deck.fortran_schema > fortran/deck/schema.f90`")
 
 
 def test_generated_schema_table_covers_every_record_and_field():

@@ -1,6 +1,6 @@
 """The engine's print writer (fortran/output/print_*.f90) against the Python writer and the golden files.
 
-* ``fortran/output/layout_table.f90`` is what ``pyadore.printout.fortran_layout`` generates
+* ``fortran/output/layout.f90`` is what ``pyadore.printout.fortran_layout`` generates
   from ``layout.py`` / ``echo_layout.py`` (one source of truth).
 * The Python echo writer reproduces the golden echo blocks line for line (``?`` kept).
 * Every golden step (unknown ``?`` replaced by arbitrary finite values), the end of run
@@ -33,7 +33,7 @@ ROOT = Path(__file__).resolve().parent.parent
 BALL = ROOT / "golden" / "appendix_c_ball.prt"
 ROLLER = ROOT / "golden" / "appendix_d_roller.prt"
 GOLDEN = {"ball": BALL, "roller": ROLLER}
-LAYOUT_F90 = ROOT / "fortran" / "output" / "layout_table.f90"
+LAYOUT_F90 = ROOT / "fortran" / "output" / "layout.f90"
 BANNER_LINES = 5  # written by fortran/output/banner.f90 (write_banner)
 
 
@@ -100,10 +100,10 @@ def text_of(lines: list[str]) -> str:
 
 # --------------------------------------------------------------------- one source of truth
 def test_generated_layout_table_is_current():
-    """fortran/output/layout_table.f90 == a fresh `python -m pyadore.printout.fortran_layout`."""
+    """fortran/output/layout.f90 == a fresh `python -m pyadore.printout.fortran_layout`."""
     assert LAYOUT_F90.read_text() == generate(), (
-        "fortran/output/layout_table.f90 is stale: run "
-        "`python -m pyadore.printout.fortran_layout > fortran/output/layout_table.f90`")
+        "fortran/output/layout.f90 is stale: run "
+        "`python -m pyadore.printout.fortran_layout > fortran/output/layout.f90`")
 
 
 def test_generated_layout_table_fits_free_form_lines():

@@ -322,7 +322,7 @@ def test_line_contact_rejects_bad_input():
         _core.line_contact([L, LAND, -1.0, 0, 0], 1e10, [1e-6, 0, 0], [-L / 2, L / 2], E_STAR, 1e-3, l_ref=1e-3)
 
 
-# --- section 3: basic fatigue life (eqs 73, 75, 76, 102; fortran/life/roller_life.f90) ------
+# --- section 3: basic fatigue life (eqs 73, 75, 76, 102; fortran/life/roller.f90) ------
 
 REPORT_BASIC_LIFE_H = 136.9   # "Basic Fatigue Life (hours) 1.369E+02", report line 3898
 

@@ -94,7 +94,7 @@ end subroutine adore_print_end
 
 !> The banner (adore_output_banner::write_banner) and the input echo of a record given as
 !> flat vectors: texts(ntext) (each at most 80 characters), ints(nint), reals(nreal) in
-!> the field order of pyadore/printout/echo_layout.py (offsets ET_/EI_/ER_ of layout_table.f90).
+!> the field order of pyadore/printout/echo_layout.py (offsets ET_/EI_/ER_ of layout.f90).
 subroutine adore_print_echo(path, append, ntext, texts, nint, ints, nreal, reals, status, message)
    use adore_core_kinds, only: wp
    use adore_core_error, only: ADORE_OK, ADORE_INPUT_ERROR

@@ -2,7 +2,7 @@
 !> counterpart of pyadore.deck's reader.
 !>
 !> The record sequence, the field layout, defaults, bounds and choices all come from the
-!> generated table adore_deck_schema (fortran/deck/schema_table.f90, written from
+!> generated table adore_deck_schema (fortran/deck/schema.f90, written from
 !> pyadore/deck/records.py), and lines are cut exactly as pyadore/deck/tokenizer.py cuts
 !> them, so both readers accept and reject the same decks with the same messages.
 !>

@@ -4,7 +4,7 @@
 !> as the print shows them); the writer only formats it.  A real it does not compute yet
 !> stays IEEE NaN (the default here) and prints "NaN"; an integer it does not compute is
 !> INT_NOT_COMPUTED.  Field names, sizes and their order in the flat vectors of the f2py
-!> wrapper are those of pyadore/printout/echo_layout.py (offsets in layout_table.f90).
+!> wrapper are those of pyadore/printout/echo_layout.py (offsets in layout.f90).
 !> Matrices are (values per printed row, printed rows): material(:, k) is printed row k.
 module adore_output_echo_data
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -18,7 +18,7 @@ module adore_output_echo_data
    type :: echo_data_t
       ! -- banner and kind
       character(len=ECHO_TEXT_LEN) :: bearing_type = "", run_id = "", title = ""
-      integer :: element_kind = ELEMENT_BALL        !< ELEMENT_BALL or ELEMENT_ROLLER (layout_table.f90)
+      integer :: element_kind = ELEMENT_BALL        !< ELEMENT_BALL or ELEMENT_ROLLER (layout.f90)
       integer :: program_mode = 0
       ! -- bearing geometry (m, deg); index 1 = outer race, 2 = inner race
       integer :: n_elements = 0

@@ -1,7 +1,7 @@
 !> Print writer, part 3: the input echo (banner box and the seven echo blocks).
 !>
 !> Formats an echo_data_t (echo_data.f90) line for line as the golden files show it
-!> (docs/print-layout.md section 3; labels and headings from layout_table.f90, generated
+!> (docs/print-layout.md section 3; labels and headings from layout.f90, generated
 !> from pyadore/printout/echo_layout.py).  pyadore.printout.echo_writer.format_echo is the
 !> Python reference; tests/test_print_writer.py proves the two byte-identical.
 !> Reals are (1X,ES12.5) (NaN prints "NaN"), integers I12 / I9 / I6 / I3 as documented.

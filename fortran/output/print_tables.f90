@@ -2,7 +2,7 @@
 !> 3 and 4), the termination line and the run statistics.
 !>
 !> Writers only format: they take a unit and plain values and compute nothing.  Layout:
-!> docs/print-layout.md, as data in layout_table.f90 (generated from
+!> docs/print-layout.md, as data in layout.f90 (generated from
 !> pyadore/printout/layout.py); pyadore.printout.writer is the Python reference, and
 !> tests/test_print_writer.py proves the two byte-identical on the golden files.
 !>

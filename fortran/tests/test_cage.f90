@@ -1,4 +1,4 @@
-!> Engine unit tests of the cage at step 0 (fortran/cage/cage_step0.f90): independent
+!> Engine unit tests of the cage at step 0 (fortran/cage/step0.f90): independent
 !> geometry checks only (a centred cage, a whirl offset, the land play); the comparison
 !> with the report is in tests/test_cage_step0.py.
 program test_cage

@@ -1,6 +1,6 @@
-"""Generate ``fortran/deck/schema_table.f90``: the record schema as Fortran parameter data.
+"""Generate ``fortran/deck/schema.f90``: the record schema as Fortran parameter data.
 
-Run ``python -m pyadore.deck.fortran_schema > fortran/deck/schema_table.f90`` after changing
+Run ``python -m pyadore.deck.fortran_schema > fortran/deck/schema.f90`` after changing
 :mod:`pyadore.deck.records` or :mod:`pyadore.deck.schema`.  The generated module
 (``adore_deck_schema``) is checked into the tree so that building the engine never needs
 Python; ``tests/test_deck_fortran.py`` fails when the checked-in file differs from a fresh
@@ -76,7 +76,7 @@ def _fields() -> list[tuple[str, FieldSpec]]:
 
 
 def generate() -> str:
-    """The text of ``fortran/deck/schema_table.f90``."""
+    """The text of ``fortran/deck/schema.f90``."""
     check_schema()
     for r in RECORDS:  # the Fortran reader derives occurrence ids by replacing a final "n"
         if r.repeat and not (r.rid.endswith(".n") and r.rid.count(".n") == 1):

@@ -2,7 +2,7 @@
 
 This is the echo part of the print layout (docs/print-layout.md, section 3), shared by
 the Python echo writer (:mod:`.echo_writer`) and - through the generated
-``fortran/output/layout_table.f90`` - the engine's echo writer
+``fortran/output/layout.f90`` - the engine's echo writer
 (``fortran/output/print_echo.f90``).  It fixes
 
 * the fields of the echo record (``echo_data_t`` in ``fortran/output/echo_data.f90``):

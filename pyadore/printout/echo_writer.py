@@ -293,7 +293,7 @@ def echo_data_from_print(run: PrintRun) -> dict:
 # --------------------------------------------------------------------------- f2py packing
 def pack_echo(d: dict) -> tuple[list[str], list[int], list[float]]:
     """Flatten an echo record into (texts, integers, reals) in the field order of
-    :mod:`.echo_layout` (the offsets of ``fortran/output/layout_table.f90``).
+    :mod:`.echo_layout` (the offsets of ``fortran/output/layout.f90``).
 
     Markers cannot cross the boundary: the caller replaces them first (a NOT_COMPUTED
     real may be passed as NaN).  Raises ValueError for a marker.

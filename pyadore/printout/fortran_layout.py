@@ -1,4 +1,4 @@
-"""Generate ``fortran/output/layout_table.f90``: the print layout as Fortran parameter data.
+"""Generate ``fortran/output/layout.f90``: the print layout as Fortran parameter data.
 
 One source of truth: :mod:`.layout` (step tables, step header, section 3, termination,
 statistics) and :mod:`.echo_layout` (echo blocks and the echo record's fields) are what
@@ -8,7 +8,7 @@ the Python reader and writer use; this module turns them into the Fortran module
 Python for it); ``tests/test_print_writer.py`` fails when it differs from a fresh
 generation.
 
-Usage: ``python -m pyadore.printout.fortran_layout > fortran/output/layout_table.f90``
+Usage: ``python -m pyadore.printout.fortran_layout > fortran/output/layout.f90``
 """
 
 from __future__ import annotations
@@ -89,7 +89,7 @@ class _Module:
     def render(self) -> str:
         head = [
             "!> GENERATED FILE - do not edit.  Source: pyadore/printout/layout.py and echo_layout.py;",
-            "!> regenerate with `python -m pyadore.printout.fortran_layout > fortran/output/layout_table.f90`.",
+            "!> regenerate with `python -m pyadore.printout.fortran_layout > fortran/output/layout.f90`.",
             "!> tests/test_print_writer.py fails when this file differs from a fresh generation.",
             "!>",
             "!> The ADORE 5.0 print layout (docs/print-layout.md) as parameter data for the engine's",
@@ -112,7 +112,7 @@ class _Module:
 
 
 def generate() -> str:
-    """The text of ``fortran/output/layout_table.f90``."""
+    """The text of ``fortran/output/layout.f90``."""
     m = _Module()
     m.comment("General rules: line width, table value width (1X,ES10.3), the integer 'not computed' value.")
     m.int("LINE_WIDTH", L.LINE_WIDTH)

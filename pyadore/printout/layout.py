@@ -20,7 +20,7 @@ a Fortran write prints for IEEE NaN) is a value the engine does not compute; int
 fields print it for :data:`INT_NOT_COMPUTED`.
 
 ``pyadore/printout/fortran_layout.py`` turns this module into Fortran parameter data
-(``fortran/output/layout_table.f90``) for the engine's print writer.
+(``fortran/output/layout.f90``) for the engine's print writer.
 """
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
 !> GENERATED FILE - do not edit.  Source: pyadore/printout/layout.py and echo_layout.py;
-!> regenerate with `python -m pyadore.printout.fortran_layout > fortran/output/layout_table.f90`.
+!> regenerate with `python -m pyadore.printout.fortran_layout > fortran/output/layout.f90`.
 !> tests/test_print_writer.py fails when this file differs from a fresh generation.
 !>
 !> The ADORE 5.0 print layout (docs/print-layout.md) as parameter data for the engine's
