@@ -42,11 +42,13 @@ gfortran:
 	fi
 
 # The venv is rebuilt when the build description changes; editable installs
-# rebuild the engine extension by themselves when Fortran sources change.
+# rebuild the engine extensions by themselves when Fortran sources change.  The install
+# also builds pyadore._probes (meson option probes), the test-only extension the tests use.
 $(STAMP): pyproject.toml meson.build meson.options | gfortran
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check "meson-python>=0.15" "meson>=1.1" ninja "numpy>=2.0"
-	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check --no-build-isolation -e '.[test]'
+	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check --no-build-isolation \
+	  -Csetup-args=-Dprobes=true -e '.[test]'
 	@touch $(STAMP)
 
 setup: gfortran $(STAMP)
