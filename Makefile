@@ -43,13 +43,15 @@ gfortran:
 	fi
 
 # The venv is rebuilt when the build description or the pinned versions change; editable
-# installs rebuild the engine extension by themselves when Fortran sources change.
+# installs rebuild the engine extensions by themselves when Fortran sources change.
 # $(CONSTRAINTS) pins every package's version, so a fresh machine (and CI) installs the set
-# the suite was run with.
+# the suite was run with.  The install also builds pyadore._probes (meson option probes),
+# the test-only extension the tests use.
 $(STAMP): pyproject.toml meson.build meson.options $(CONSTRAINTS) | gfortran
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check -c $(CONSTRAINTS) "meson-python>=0.15" "meson>=1.1" ninja "numpy>=2.0"
-	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check -c $(CONSTRAINTS) --no-build-isolation -e '.[test]'
+	$(VPATH_ENV) $(PY) -m pip install -q --disable-pip-version-check -c $(CONSTRAINTS) --no-build-isolation \
+	  -Csetup-args=-Dprobes=true -e '.[test]'
 	@touch $(STAMP)
 
 setup: gfortran $(STAMP)

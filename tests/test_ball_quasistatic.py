@@ -16,9 +16,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pyadore import _core
 from pyadore.deck import read_deck
 from pyadore.printout import read_print
+
+import probes
+
 
 ROOT = Path(__file__).resolve().parents[1]
 RPM = math.pi / 30.0
@@ -45,7 +47,7 @@ def _rings(deck):
     e, nu, rho = 2.0e11, 0.25, 7750.0
     bore = deck.get("4", "shaft_outer_diameter")
     od = deck.get("4", "bearing_outer_diameter")
-    grooves = _core.ball_clearance(deck.get("5A", "pitch_diameter"), deck.get("5A", "ball_diameter"),
+    grooves = probes.ball_clearance(deck.get("5A", "pitch_diameter"), deck.get("5A", "ball_diameter"),
                                    deck.get("5A", "outer_curvature_factor"),
                                    deck.get("5A", "inner_curvature_factor"),
                                    math.radians(deck.get("5A", "free_contact_angle")))
@@ -65,7 +67,7 @@ def _dia_play(deck):
 @pytest.fixture(scope="module")
 def mounting(deck):
     speed = deck.get("9.1.2", "inner_race_speed") * RPM
-    return _core.mount_races(_rings(deck),
+    return probes.mount_races(_rings(deck),
                              [deck.get("9.0", "inner_race_fit"), deck.get("9.0", "outer_race_fit")],
                              [speed, 0.0], _dia_play(deck))
 
@@ -97,7 +99,7 @@ def report_speeds(golden_step0):
 def solution(deck, mounting, report_speeds):
     # Appendix C: misalignment prescribed (echo QUASI-STATIC CONSTRAINTS ... 1 1; the
     # printed inner race moment is a reaction, not an applied moment)
-    return _core.ball_quasi_static(_geom(deck, mounting), _load(deck), [0, 0], report_speeds)
+    return probes.ball_quasi_static(_geom(deck, mounting), _load(deck), [0, 0], report_speeds)
 
 
 # --- against the report (Appendix C, step 0) -------------------------------------------
@@ -181,7 +183,7 @@ def test_moment_equilibrium_option_balances_moments(deck, mounting, report_speed
     """kFS4 = kFS5 = 0: the race misaligns until the moments balance as well (eqs 71-72)."""
     load = _load(deck)
     load[4] = 20.0  # an applied moment about y (N m)
-    sol = _core.ball_quasi_static(_geom(deck, mounting), load, [1, 1], report_speeds)
+    sol = probes.ball_quasi_static(_geom(deck, mounting), load, [1, 1], report_speeds)
     res = sol["race_residual"]
     assert np.max(np.abs(res[:3])) <= 1e-8 * 4500
     assert np.max(np.abs(res[3:])) <= 1e-8 * 4500 * 0.14
@@ -191,16 +193,16 @@ def test_moment_equilibrium_option_balances_moments(deck, mounting, report_speed
 
 def test_race_jacobian_against_finite_differences(deck, mounting, report_speeds):
     geom, load = _geom(deck, mounting), _load(deck)
-    sol = _core.ball_quasi_static(geom, load, [1, 1], report_speeds)
+    sol = probes.ball_quasi_static(geom, load, [1, 1], report_speeds)
     u0 = sol["u"] + np.array([2e-7, 1e-7, -1e-7, 1e-5, -1e-5])
-    _, jac = _core.ball_race_jacobian(geom, load, [1, 1], report_speeds, u0)
+    _, jac = probes.ball_race_jacobian(geom, load, [1, 1], report_speeds, u0)
     steps = [1e-9, 1e-9, 1e-9, 1e-8, 1e-8]
     for j, h in enumerate(steps):
         up, um = u0.copy(), u0.copy()
         up[j] += h
         um[j] -= h
-        rp, _ = _core.ball_race_jacobian(geom, load, [1, 1], report_speeds, up)
-        rm, _ = _core.ball_race_jacobian(geom, load, [1, 1], report_speeds, um)
+        rp, _ = probes.ball_race_jacobian(geom, load, [1, 1], report_speeds, up)
+        rm, _ = probes.ball_race_jacobian(geom, load, [1, 1], report_speeds, um)
         fd = (rp - rm) / (2 * h)
         col_scale = np.max(np.abs(jac[:, j])) + 1e-30
         assert np.max(np.abs(fd - jac[:, j])) <= 1e-4 * col_scale, f"column {j}: {fd} vs {jac[:, j]}"
@@ -214,13 +216,13 @@ def test_pure_thrust_at_rest_matches_the_closed_form():
     engine's Hertz routine only."""
     d, dm, fo, fi, a0, z, fa = 0.0125, 0.08, 0.52, 0.53, math.radians(30.0), 12, 3000.0
     geom = [d, dm, fo, fi, a0, 0.0, 2.0e11, 0.3, 2.0e11, 0.3, 0.0, 0.0, 0.0]
-    sol = _core.ball_quasi_static(geom, [fa, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], [0, 0], np.zeros(z))
+    sol = probes.ball_quasi_static(geom, [fa, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], [0, 0], np.zeros(z))
 
     def stiffness(alpha, outer):
         gamma = d * math.cos(alpha) / dm
         rho = ([2 / d, 2 / d, -2 * gamma / (d * (1 + gamma)), -1 / (fo * d)] if outer else
                [2 / d, 2 / d, 2 * gamma / (d * (1 - gamma)), -1 / (fi * d)])
-        return _core.hertz_point(rho, 2.0e11, 0.3, 2.0e11, 0.3, 1.0)["stiffness"]
+        return probes.hertz_point(rho, 2.0e11, 0.3, 2.0e11, 0.3, 1.0)["stiffness"]
 
     big_a = (fo + fi - 1) * d
 
@@ -246,7 +248,7 @@ def test_mounting_lame_closed_form_at_rest():
     rings = [[0.0, 2 * a, e, nu, 7800], [2 * a, 2 * b, e, nu, 7800], [0.1, 0.12, e, nu, 7800],
              [0.12, 0.16, e, nu, 7800]]
     fit = 2.0e-5
-    m = _core.mount_races(rings, [fit, 0.0], [0.0, 0.0], 1.0e-4)
+    m = probes.mount_races(rings, [fit, 0.0], [0.0, 0.0], 1.0e-4)
     assert m["inner_fit"] == fit
     assert m["inner_pressure"] == pytest.approx(fit * e * (b**2 - a**2) / (4 * a * b**2), rel=1e-12)
     # the raceway (outer surface of the ring) grows by 2 p a^2 b / (E (b^2 - a^2))
@@ -259,7 +261,7 @@ def test_race_control_radial_bearing_closed_form():
     """Zero contact angles, pure rolling: w_cage = w_i (1 - D/d_m)/2, spin axis parallel
     to the bearing axis (the classical epicyclic cage speed)."""
     d, dm, wi = 0.012, 0.06, 1000.0
-    wm, wb, beta = _core.race_control(d, dm / 2, [0.0, 1.0], [0.0, -1.0], 0.0, wi, 1)
+    wm, wb, beta = probes.race_control(d, dm / 2, [0.0, 1.0], [0.0, -1.0], 0.0, wi, 1)
     assert wm == pytest.approx(wi * (1 - d / dm) / 2, rel=1e-12)
     assert beta == pytest.approx(0.0, abs=1e-9)
     assert abs(wb) == pytest.approx(wi * (dm / d) * (1 - (d / dm) ** 2) / 2, rel=1e-12)
@@ -274,7 +276,7 @@ def test_race_control_satisfies_rolling_and_no_spin(solution, deck, report_speed
         ao, ai, rb = solution["alpha_o"][k], solution["alpha_i"][k], solution["r"][k]
         n_o = np.array([math.sin(ao), math.cos(ao)])
         n_i = np.array([-math.sin(ai), -math.cos(ai)])
-        wm, wb, beta = _core.race_control(d, rb, n_o, n_i, 0.0, wi, 1)
+        wm, wb, beta = probes.race_control(d, rb, n_o, n_i, 0.0, wi, 1)
         axis = wb * np.array([math.cos(beta), math.sin(beta)])
         for n, w in ((n_o, 0.0), (n_i, wi)):
             surface = d / 2 * (axis[0] * n[1] - axis[1] * n[0])
@@ -291,7 +293,7 @@ def test_radial_load_distribution_stribeck(z):
     Analysis, 'radially loaded ball bearing', zero clearance)."""
     d, dm, f, fr = 0.0125, 0.0625, 0.52, 5000.0
     geom = [d, dm, f, f, 0.0, 0.0, 2.0e11, 0.3, 2.0e11, 0.3, 0.0, 0.0, 0.0]
-    sol = _core.ball_quasi_static(geom, [0, 0, fr, 0, 0, 0, 0, 0, 0, 0, 0], [0, 0], np.zeros(z))
+    sol = probes.ball_quasi_static(geom, [0, 0, fr, 0, 0, 0, 0, 0, 0, 0, 0], [0, 0], np.zeros(z))
     phi = 2 * math.pi * np.arange(z) / z
     cos = np.clip(np.cos(phi), 0.0, None)
     q_max = fr / np.sum(cos**2.5)

@@ -24,6 +24,9 @@ import pytest
 from pyadore import _core
 from pyadore.printout import read_print
 
+import probes
+
+
 ROOT = Path(__file__).resolve().parents[1]
 RPM = math.pi / 30
 DEG = math.pi / 180
@@ -153,7 +156,7 @@ def _dissipation(b, k, beta, w_b):
     p = 0.0
     for tag, side, wr in (("o", 1, 0.0), ("i", -1, INNER_SPEED)):
         h = b[f"film_{tag}"][k] * b[f"thermal_factor_{tag}"][k]
-        p += _core.ehd_contact_traction(side, b[f"alpha_{tag}"][k], D_BALL / 2, r, om, wr - w_m, b[f"a_{tag}"][k],
+        p += probes.ehd_contact_traction(side, b[f"alpha_{tag}"][k], D_BALL / 2, r, om, wr - w_m, b[f"a_{tag}"][k],
                                         b[f"q_{tag}"][k], rheo, h, b[f"b_{tag}"][k], n_gauss=4, n_strip=8)["power"]
     return p, w_m
 
@@ -186,7 +189,7 @@ def test_minimum_dissipation_is_closer_to_the_report_than_outer_race_control():
     err = {"md_t": [], "rc_t": [], "md_w": [], "rc_w": []}
     for k in range(18):
         ao, ai = balls["alpha_o"][k], balls["alpha_i"][k]
-        wm_rc, w, beta = _core.race_control(D_BALL, balls["r"][k], (math.sin(ao), math.cos(ao)),
+        wm_rc, w, beta = probes.race_control(D_BALL, balls["r"][k], (math.sin(ao), math.cos(ao)),
                                             (-math.sin(ai), -math.cos(ai)), 0.0, INNER_SPEED, 1)
         theta_rc = math.degrees(math.atan2(-w * math.sin(beta), -w * math.cos(beta)))
         ref_t, ref_w = mot["ang_vel_theta_deg"].iloc[k], mot["orbital_velocity_rpm"].iloc[k] * RPM
@@ -211,7 +214,7 @@ def test_run_film_is_hamrock_dowson_with_the_echoed_lubricant():
     for k in (0, 9):
         for tag, side, wr in (("o", 1, 0.0), ("i", -1, INNER_SPEED)):
             w_b, beta = balls["spin_speed"][k], balls["pitch"][k]
-            t = _core.contact_traction(side, balls[f"alpha_{tag}"][k], D_BALL / 2, balls["r"][k],
+            t = probes.contact_traction(side, balls[f"alpha_{tag}"][k], D_BALL / 2, balls["r"][k],
                                        (w_b * math.cos(beta), w_b * math.sin(beta)), wr - balls["orbital_speed"][k],
                                        balls[f"a_{tag}"][k], balls[f"q_{tag}"][k], COEF, n_gauss=4)
             u, rx = abs(t["rolling_speed"]), t["rx"]

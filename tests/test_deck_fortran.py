@@ -21,11 +21,13 @@ from pathlib import Path
 import pytest
 
 import pyadore
-from pyadore import _core
 from pyadore.deck import field_table, read_deck
 from pyadore.deck.fortran_schema import generate
 from pyadore.deck.reader import _load, parse_text
 from pyadore.deck.validate import _ranges, validate_deck
+
+import probes
+
 
 ROOT = Path(__file__).resolve().parents[1]
 BAD = ROOT / "tests" / "data" / "bad_decks"
@@ -54,7 +56,7 @@ def test_generated_schema_table_covers_every_record_and_field():
 @pytest.mark.parametrize("deck_name", ["appendix_c_ball.inp", "appendix_d_roller.inp"])
 def test_appendix_decks_agree_field_by_field(deck_name):
     path = ROOT / "decks" / deck_name
-    fortran = _core.deck_field_table(path)
+    fortran = probes.deck_field_table(path)
     python = field_table(read_deck(path))
     assert len(fortran) == len(python) > 100
     for f, p in zip(fortran, python):
@@ -65,7 +67,7 @@ def test_appendix_decks_agree_field_by_field(deck_name):
 
 def test_blank_fields_take_the_schema_defaults():
     # Rec 2.4 of the ball deck leaves its fourth field blank: both readers give the default 0
-    rows = {(r, n): v for r, _, n, v in _core.deck_field_table(ROOT / "decks" / "appendix_c_ball.inp")}
+    rows = {(r, n): v for r, _, n, v in probes.deck_field_table(ROOT / "decks" / "appendix_c_ball.inp")}
     assert rows[("2.4", "rec2_4_flag_4")] == 0
     assert rows[("9.5.1", "cage_center_z")] == -6.0e-4   # run together with its neighbour
     assert rows[("7.1", "cage_outer_diameter")] == 1.46292e-01
@@ -92,11 +94,11 @@ def test_bad_deck_rejected_by_fortran_reader(name):
     if not problems:
         # only a cross-field value check fails: the reader accepts it, the model's checks refuse it
         assert e["kind"] == "cross_field" and e["field"] is not None
-        assert _core.deck_field_table(path) == field_table(deck)
+        assert probes.deck_field_table(path) == field_table(deck)
         assert any(p.kind == "cross_field" and p.field == e["field"] for p in validate_deck(deck))
         return
     with pytest.raises(pyadore.AdoreInputError) as info:
-        _core.deck_field_table(path)
+        probes.deck_field_table(path)
     message = str(info.value)
     assert message.startswith(str(path))
     assert "Traceback" not in message and "Backtrace" not in message
@@ -141,7 +143,7 @@ def test_fortran_reader_reports_all_problems_at_once(tmp_path):
     path = tmp_path / "many.inp"
     path.write_text("\n".join(src) + "\n")
     with pytest.raises(pyadore.AdoreInputError) as info:
-        _core.deck_field_table(path)
+        probes.deck_field_table(path)
     lines = str(info.value).split("\n")
     assert lines[0] == f"{path}: 4 problem(s) reading the deck"
     assert lines[1] == f"{path}:1:18  Rec 1  field mode = 9: expected [-2, 2] (program mode MODE (1 in both decks)"
@@ -154,10 +156,10 @@ def test_fortran_reader_reports_all_problems_at_once(tmp_path):
 def test_interpreter_survives_every_bad_deck(tmp_path):
     for name in sorted(EXPECTED):
         try:
-            _core.deck_field_table(BAD / name)
+            probes.deck_field_table(BAD / name)
         except pyadore.AdoreInputError:
             pass
-    assert len(_core.deck_field_table(ROOT / "decks" / "appendix_d_roller.inp")) > 100
+    assert len(probes.deck_field_table(ROOT / "decks" / "appendix_d_roller.inp")) > 100
     assert pyadore.run(ROOT / "decks" / "appendix_c_ball.inp", steps=0, out=tmp_path / "ok.prt").print_path.exists()
 
 
@@ -176,4 +178,4 @@ def test_malformed_deck_stops_the_run_before_the_print_file(tmp_path, run_exe):
 
 def test_deck_table_of_a_missing_file_is_an_input_error(tmp_path):
     with pytest.raises(pyadore.AdoreInputError, match="not found"):
-        _core.deck_field_table(tmp_path / "nope.inp")
+        probes.deck_field_table(tmp_path / "nope.inp")

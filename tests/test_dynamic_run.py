@@ -589,7 +589,7 @@ def test_basic_life_of_a_dynamic_step_follows_its_printed_loads(runs):
     """The basic life printed at a dynamic step (section 3) is eqs 73-74 and 102 of the
     loads, contact angles and orbital speeds printed at that step (to print precision:
     4 digits, life ~ Q**-3)."""
-    from pyadore._core import ball_bearing_life
+    from probes import ball_bearing_life
 
     step = read_print(runs["dyn"].print_path).step(N)
     c, mo = step.table("re_contact"), step.table("re_motion")

@@ -25,7 +25,9 @@ import pyadore
 from pyadore.deck import read_deck
 from pyadore.printout import read_print
 
+import probes
 from ball_reference import Bearing, hertz_approach, radial_integral, stribeck_radial, thrust_closed_form
+
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "decks" / "examples"
@@ -326,9 +328,7 @@ ROLLER_EXAMPLE = EXAMPLES / "cylindrical_roller_misaligned.inp"
 def roller_start(misalignment):
     """Step 0 of the cylindrical roller example with the inner race's prescribed
     misalignment (rad, about y and z): per roller arrays and the summary."""
-    from pyadore import _core
-
-    rollers, _, summary = _core.roller_step0_from_deck(ROLLER_EXAMPLE, misalignment=misalignment)
+    rollers, _, summary = probes.roller_step0_from_deck(ROLLER_EXAMPLE, misalignment=misalignment)
     return rollers, summary
 
 
@@ -340,9 +340,7 @@ def test_cylindrical_roller_with_a_misaligned_inner_race():
     sum of its parts (about y and z together); the radial load stays balanced and the most
     loaded roller's peak pressure rises (edge loading)."""
     aligned, s0 = roller_start((0.0, 0.0))
-    from pyadore import _core
-
-    default, _, s_default = _core.roller_step0_from_deck(ROLLER_EXAMPLE)
+    default, _, s_default = probes.roller_step0_from_deck(ROLLER_EXAMPLE)
     assert s0 == s_default and np.array_equal(aligned["q_i"], default["q_i"])
     for axis, key in ((0, "inner_moment_y"), (1, "inner_moment_z")):
         tilt = [0.0, 0.0]

@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from pyadore import AdoreInputError
-from pyadore._core import hertz_point
+
+from probes import hertz_point
 
 STEEL = (2.0e11, 0.25)
 

@@ -14,8 +14,9 @@ import numpy as np
 import pytest
 
 from pyadore import AdoreInputError
-from pyadore._core import LIFE_CONSTANT_NAMES, ball_bearing_life, life_default_constants
 from pyadore.printout import read_print
+
+from probes import LIFE_CONSTANT_NAMES, ball_bearing_life, life_default_constants
 
 # Appendix C bearing (BEARING GEOMETRY echo)
 D_BALL, D_PITCH, F_OUTER, F_INNER, Z = 1.905e-2, 0.140, 0.52, 0.54, 18

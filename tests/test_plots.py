@@ -25,6 +25,9 @@ from pyadore.cli import cli
 from pyadore.errors import MissingSeriesError, MissingSeriesWarning
 from pyadore.printout import read_print
 
+import probes
+
+
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN_BALL = ROOT / "golden" / "appendix_c_ball.prt"
 GOLDEN_ROLLER = ROOT / "golden" / "appendix_d_roller.prt"
@@ -224,7 +227,7 @@ def test_traction_ball_run_draws_the_ehd_model_at_its_most_loaded_ball(ball_prin
         assert kappa[0] == 0.0 and np.all(kappa[1:] > 0.0)
         for i in (5, 30, 90):
             w = -u[i] / 0.09525
-            res = _core.ehd_contact_traction(side, 0.0, 0.009525, 0.09525, (w, 0.0), w,
+            res = probes.ehd_contact_traction(side, 0.0, 0.009525, 0.09525, (w, 0.0), w,
                                              float(contact.at[k, f"major_half_width_{tag}_m"]),
                                              float(contact.at[k, f"contact_load_{tag}_N"]),
                                              (lub["eta_t"], lub["alpha_t"], lub["beta_t"], lub["conductivity"]),

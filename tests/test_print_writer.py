@@ -19,7 +19,6 @@ from pathlib import Path
 
 import pytest
 
-from pyadore import _core
 from pyadore.diff import diff_prints
 from pyadore.printout import echo_layout as E
 from pyadore.printout import format_step, read_print
@@ -28,6 +27,9 @@ from pyadore.printout.fortran_layout import generate
 from pyadore.printout.layout import INT_NOT_COMPUTED
 from pyadore.printout.model import NOT_COMPUTED, NOT_COMPUTED_VALUE, OVERFLOW, UNKNOWN, UNKNOWN_VALUE
 from pyadore.printout.writer import format_int, format_value, statistics_lines, termination_line
+
+import probes
+
 
 ROOT = Path(__file__).resolve().parent.parent
 BALL = ROOT / "golden" / "appendix_c_ball.prt"
@@ -128,7 +130,7 @@ def test_fortran_step_is_byte_identical_to_python(runs, kind, number, tmp_path):
         assert len(step.table("re_cage")) == 16
     assert n_filled > 0
     out = tmp_path / "step.prt"
-    _core.fortran_print_step(out, step)
+    probes.fortran_print_step(out, step)
     assert out.read_bytes() == text_of(format_step(step)).encode("ascii")
 
 
@@ -138,7 +140,7 @@ def test_fortran_end_of_run_is_byte_identical_to_python(runs, kind, tmp_path):
     term = fill_scalars(run.termination, run.termination_markers, 7)
     stats = fill_scalars(run.statistics, run.statistics_markers, 8)
     out = tmp_path / "end.prt"
-    _core.fortran_print_end(out, term, stats, append=False)
+    probes.fortran_print_end(out, term, stats, append=False)
     expected = [termination_line(term["last_step_number"], term["final_time"]), ""] + statistics_lines(stats)
     assert out.read_bytes() == text_of(expected).encode("ascii")
 
@@ -147,7 +149,7 @@ def test_fortran_end_of_run_is_byte_identical_to_python(runs, kind, tmp_path):
 def test_fortran_echo_is_byte_identical_to_python(runs, kind, tmp_path):
     record = fill_echo(echo_data_from_print(runs[kind]), seed=3)
     out = tmp_path / "echo.prt"
-    _core.fortran_print_echo(out, record)
+    probes.fortran_print_echo(out, record)
     banner = GOLDEN[kind].read_text().splitlines()[:BANNER_LINES]
     assert out.read_bytes() == text_of(banner + format_echo(record)).encode("ascii")
 
@@ -158,15 +160,15 @@ def test_whole_fortran_file_equals_python_and_matches_golden(runs, kind, tmp_pat
     run = runs[kind]
     out = tmp_path / "whole.prt"
     record = fill_echo(echo_data_from_print(run), seed=5)
-    _core.fortran_print_echo(out, record)
+    probes.fortran_print_echo(out, record)
     expected = GOLDEN[kind].read_text().splitlines()[:BANNER_LINES] + format_echo(record)
     for n in run.step_numbers:
         step, _ = fill_step(run.step(n), seed=n)
-        _core.fortran_print_step(out, step, append=True)
+        probes.fortran_print_step(out, step, append=True)
         expected += format_step(step)
     term = fill_scalars(run.termination, run.termination_markers, 1)
     stats = fill_scalars(run.statistics, run.statistics_markers, 2)
-    _core.fortran_print_end(out, term, stats)
+    probes.fortran_print_end(out, term, stats)
     expected += [termination_line(term["last_step_number"], term["final_time"]), ""] + statistics_lines(stats)
     assert out.read_bytes() == text_of(expected).encode("ascii")
     report = diff_prints(out, GOLDEN[kind])
@@ -182,7 +184,7 @@ def test_nan_prints_not_computed_reads_back_and_fails_diff(runs, tmp_path):
     record["element_dia"] = math.nan                    # echo real not computed
     record["material"][0] = math.nan                    # density of the rolling element
     record["n_steps"] = INT_NOT_COMPUTED                # echo integer not computed
-    _core.fortran_print_echo(out, record)
+    probes.fortran_print_echo(out, record)
     banner = BALL.read_text().splitlines()[:BANNER_LINES]
     assert " BALL DIA (m)                 NaN INNER CUR FAC" in out.read_text()
     assert out.read_text() == text_of(banner + format_echo(record))
@@ -195,9 +197,9 @@ def test_nan_prints_not_computed_reads_back_and_fails_diff(runs, tmp_path):
     for table, idx, col in nan_cells:
         step.tables[table].at[idx, col] = math.nan
     step.header["time_s"] = math.nan
-    _core.fortran_print_step(out, step, append=True)
+    probes.fortran_print_step(out, step, append=True)
     stats = dict(run.statistics, max_truncation=math.nan)
-    _core.fortran_print_end(out, run.termination, stats)
+    probes.fortran_print_end(out, run.termination, stats)
     text = out.read_text()
     py = text_of(banner + format_echo(record) + format_step(step)
                  + [termination_line(run.termination["last_step_number"], run.termination["final_time"]), ""]
@@ -242,8 +244,8 @@ def test_too_wide_values_print_asterisks_like_fortran(runs, tmp_path):
     step.tables["re_contact"].at[3, "contact_load_outer_N"] = math.inf  # 'Infinity' in ES10.3
     step.tables["re_contact"].at[4, "contact_load_outer_N"] = -math.inf
     out = tmp_path / "over.prt"
-    _core.fortran_print_step(out, step)
-    _core.fortran_print_end(out, {"last_step_number": 123456789, "final_time": -353.4},
+    probes.fortran_print_step(out, step)
+    probes.fortran_print_end(out, {"last_step_number": 123456789, "final_time": -353.4},
                             {"minimum_step_size": 5e-3, "total_derivative_calls": 21160})
     text = out.read_text()
     expected = format_step(step) + [termination_line(123456789, -353.4), ""]

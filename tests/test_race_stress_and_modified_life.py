@@ -19,6 +19,9 @@ import pyadore
 from pyadore import _core
 from pyadore.printout import read_print
 
+import probes
+
+
 ROOT = Path(__file__).resolve().parents[1]
 RPM = math.pi / 30
 E, NU, RHO = 2.0e11, 0.25, 7750.0          # steel races, shaft and housing of both decks
@@ -45,9 +48,9 @@ CASES = {
 
 def _raceways(name):
     if name == "appendix_c_ball":
-        c = _core.ball_clearance(0.14, 0.01905, 0.52, 0.54, math.radians(25.0))
+        c = probes.ball_clearance(0.14, 0.01905, 0.52, 0.54, math.radians(25.0))
         return c["outer_groove_dia"], c["inner_groove_dia"], c["dia_play"]
-    d_o, d_i = _core.roller_races(0.043, 0.008, 4e-5)
+    d_o, d_i = probes.roller_races(0.043, 0.008, 4e-5)
     return d_o, d_i, 4e-5
 
 
@@ -58,7 +61,7 @@ def test_race_hoop_stress_is_lame_and_matches_report(tmp_path, name):
     w = rpm * RPM
     rings = [[shaft_id, shaft_od, E, NU, RHO], [shaft_od, d_i, E, NU, RHO], [d_o, bearing_od, E, NU, RHO],
              [bearing_od, housing_od, E, NU, RHO]]
-    m = _core.mount_races(rings, fits, [w, 0.0], play)
+    m = probes.mount_races(rings, fits, [w, 0.0], play)
     inner = _bore_hoop(shaft_od, d_i, m["inner_pressure"], 0.0, w)
     outer = _bore_hoop(d_o, bearing_od, 0.0, m["outer_pressure"], 0.0)
     run = _bodies(pyadore.run(ROOT / "decks" / f"{name}.inp", steps=0, out=tmp_path / "run.prt").print_path)
@@ -78,19 +81,19 @@ def ball_step0():
 
 
 def test_run_modified_life_is_the_life_model_of_its_own_state(ball_step0):
-    """The run's Tallian life equals pyadore._core.ball_bearing_life fed with the run's own
+    """The run's Tallian life equals pyadore.probes.ball_bearing_life fed with the run's own
     loads, angles, speeds, pressures, Lambda = film x thermal factor / sigma, mu = printed
     traction coefficient and the Lame hoop stresses (checked above)."""
     b, s = ball_step0
-    consts = _core.life_default_constants()
+    consts = probes.life_default_constants()
     sigma = consts["sigma_rms"]
     lam = {t: np.nan_to_num(b[f"film_{t}"] * b[f"thermal_factor_{t}"] / sigma) for t in "oi"}
-    c = _core.ball_clearance(0.14, 0.01905, 0.52, 0.54, math.radians(25.0))
+    c = probes.ball_clearance(0.14, 0.01905, 0.52, 0.54, math.radians(25.0))
     w = 20000 * RPM
     rings = [[0.02, 0.1, E, NU, RHO], [0.1, c["inner_groove_dia"], E, NU, RHO],
              [c["outer_groove_dia"], 0.18, E, NU, RHO], [0.18, 0.205, E, NU, RHO]]
-    m = _core.mount_races(rings, [5e-5, 1e-5], [w, 0.0], c["dia_play"])
-    life = _core.ball_bearing_life(
+    m = probes.mount_races(rings, [5e-5, 1e-5], [w, 0.0], c["dia_play"])
+    life = probes.ball_bearing_life(
         b["q_o"], b["q_i"], b["alpha_o"], b["alpha_i"], b["orbital_speed"] / RPM, b["p_o"], b["p_i"],
         d_ball=0.01905, d_pitch=0.14, f_outer=0.52, f_inner=0.54, outer_speed=0.0, inner_speed=20000.0,
         lambda_outer=lam["o"], lambda_inner=lam["i"], mu_outer=np.nan_to_num(b["trac_o"]),

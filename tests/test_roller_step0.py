@@ -17,8 +17,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pyadore import AdoreInputError, _core
+from pyadore import AdoreInputError
 from pyadore.printout import read_print
+
+import probes
+
 
 ROOT = Path(__file__).resolve().parents[1]
 DECK = ROOT / "decks" / "appendix_d_roller.inp"
@@ -32,7 +35,7 @@ E_STAR = 1.0 / ((1 - 0.26**2) / 3.1e11 + (1 - 0.25**2) / 2.0e11)   # Si3N4 rolle
 
 @pytest.fixture(scope="module")
 def step0():
-    return _core.roller_step0_from_deck(DECK)
+    return probes.roller_step0_from_deck(DECK)
 
 
 @pytest.fixture(scope="module")
@@ -183,7 +186,7 @@ def test_unloaded_rollers_carry_their_centrifugal_force(step0):
 
 def test_consistent_clearance_option(step0):
     # growth_count=1: contact geometry clearance is the printed operating clearance
-    _, _, s1 = _core.roller_step0_from_deck(DECK, growth_count=1)
+    _, _, s1 = probes.roller_step0_from_deck(DECK, growth_count=1)
     assert s1["contact_clearance"] == pytest.approx(s1["clearance"], rel=1e-12)
     _, _, s2 = step0
     assert s2["contact_clearance"] == pytest.approx(s2["clearance"] - 2 * s2["inner_raceway_growth"], rel=1e-12)
@@ -209,7 +212,7 @@ def test_light_radial_load_converges_to_equilibrium(tmp_path, force):
     deck.set("9.1.1", "applied_force_z", force[1])
     path = tmp_path / "light.inp"
     deck.save(path)
-    rollers, _, s = _core.roller_step0_from_deck(path)
+    rollers, _, s = probes.roller_step0_from_deck(path)
     scale = rollers["q_o"].max()
     assert abs(s["inner_force_y"] + force[0]) <= 1e-10 * scale
     assert abs(s["inner_force_z"] + force[1]) <= 1e-10 * scale
@@ -219,7 +222,7 @@ def test_light_radial_load_converges_to_equilibrium(tmp_path, force):
 
 def test_ball_deck_is_refused_by_the_roller_path():
     with pytest.raises(AdoreInputError, match="not a roller-bearing deck"):
-        _core.roller_step0_from_deck(ROOT / "decks" / "appendix_c_ball.inp")
+        probes.roller_step0_from_deck(ROOT / "decks" / "appendix_c_ball.inp")
 
 
 # --- independent truth: closed-form line contacts and a fine quadrature ----------------------
@@ -242,7 +245,7 @@ def test_uncrowned_roller_is_palmgren(delta):
     """Straight roller, no corners, slice reference length = roller length: the slice
     model must give Palmgren's closed form for the whole roller."""
     length = 0.01
-    _, c = _core.line_contact([length, length, 1e10, 0, 0], 1e10, [delta, 0, 0], [-length / 2, length / 2],
+    _, c = probes.line_contact([length, length, 1e10, 0, 0], 1e10, [delta, 0, 0], [-length / 2, length / 2],
                               E_STAR, r_eq_outer(), l_ref=length)
     ref = palmgren_q(delta, length, E_STAR)
     print(f"Palmgren straight roller delta={delta:g}: {abs(c['load'] / ref - 1):.2e}")
@@ -257,7 +260,7 @@ def test_uncrowned_roller_with_corners_is_palmgren_of_effective_length(delta):
     length, rc = 0.01, 2.5e-4
     l_eff = length - 2 * rc
     k_line = palmgren_q(1.0, l_eff, E_STAR) / l_eff     # q = k delta**(10/9) at l_ref = l_eff
-    _, c = _core.line_contact([length, length, 1e10, rc, rc], 1e10, [delta, 0, 0], [-length / 2, length / 2],
+    _, c = probes.line_contact([length, length, 1e10, rc, rc], 1e10, [delta, 0, 0], [-length / 2, length / 2],
                               E_STAR, r_eq_outer(), k_line=k_line, n_sub=40)
     ref = palmgren_q(delta, l_eff, E_STAR)
     print(f"Palmgren with corners delta={delta:g}: {abs(c['load'] / ref - 1):.3%}")
@@ -266,7 +269,7 @@ def test_uncrowned_roller_with_corners_is_palmgren_of_effective_length(delta):
 
 def test_slice_half_width_and_pressure_are_hertz():
     """Hertz line contact (Johnson eq. 4.43): b = sqrt(8 q R'/(pi E')), E' = 2 E*, p0 = 2 q/(pi b)."""
-    slices, c = _core.line_contact([L, LAND, CROWN, CORNER, CORNER], 1e10, [5e-6, 0, 0], [-L / 2, L / 2],
+    slices, c = probes.line_contact([L, LAND, CROWN, CORNER, CORNER], 1e10, [5e-6, 0, 0], [-L / 2, L / 2],
                                    E_STAR, r_eq_outer(), l_ref=LENGTH_SCALE)
     b = np.sqrt(8 * slices["q"] * r_eq_outer() / (math.pi * 2 * E_STAR))
     assert slices["b"] == pytest.approx(b, rel=1e-12)
@@ -289,14 +292,14 @@ def test_slice_integration_against_fine_quadrature(delta, tilt):
     """The 12 slices of ADORE's grid against a 400 000-point trapezoid of the same profile
     (and the engine's own 400-zone Gauss rule): load and moment."""
     k_line = 1.7e11
-    slices, c = _core.line_contact([L, LAND, CROWN, CORNER, CORNER], 1e10, [delta, tilt, 0], [-L / 2, L / 2],
+    slices, c = probes.line_contact([L, LAND, CROWN, CORNER, CORNER], 1e10, [delta, tilt, 0], [-L / 2, L / 2],
                                    E_STAR, r_eq_outer(), k_line=k_line)
     assert len(slices["x"]) == 12
     x = np.linspace(-L / 2, L / 2, 400_001)
     d = delta + tilt * x - crowned_profile(x)
     q = k_line * np.clip(d, 0, None) ** (10 / 9)
     load, moment = np.trapezoid(q, x), np.trapezoid(q * x, x)
-    _, fine = _core.line_contact([L, LAND, CROWN, CORNER, CORNER], 1e10, [delta, tilt, 0], [-L / 2, L / 2],
+    _, fine = probes.line_contact([L, LAND, CROWN, CORNER, CORNER], 1e10, [delta, tilt, 0], [-L / 2, L / 2],
                                  E_STAR, r_eq_outer(), k_line=k_line, n_sub=400)
     print(f"slices vs fine quadrature delta={delta:g} tilt={tilt:g}: load {abs(c['load'] / load - 1):.3%}")
     assert fine["load"] == pytest.approx(load, rel=1e-6)
@@ -310,7 +313,7 @@ def test_slice_integration_against_fine_quadrature(delta, tilt):
 
 
 def test_no_contact_reports_largest_interaction():
-    slices, c = _core.line_contact([L, LAND, CROWN, CORNER, CORNER], 1e10, [-1e-6, 0, 0], [-L / 2, L / 2],
+    slices, c = probes.line_contact([L, LAND, CROWN, CORNER, CORNER], 1e10, [-1e-6, 0, 0], [-L / 2, L / 2],
                                    E_STAR, r_eq_outer(), l_ref=LENGTH_SCALE)
     assert c["in_contact"] == 0.0 and c["load"] == 0.0
     assert c["max_deflection"] == pytest.approx(-1e-6, rel=1e-12)
@@ -319,7 +322,7 @@ def test_no_contact_reports_largest_interaction():
 
 def test_line_contact_rejects_bad_input():
     with pytest.raises(AdoreInputError):
-        _core.line_contact([L, LAND, -1.0, 0, 0], 1e10, [1e-6, 0, 0], [-L / 2, L / 2], E_STAR, 1e-3, l_ref=1e-3)
+        probes.line_contact([L, LAND, -1.0, 0, 0], 1e10, [1e-6, 0, 0], [-L / 2, L / 2], E_STAR, 1e-3, l_ref=1e-3)
 
 
 # --- section 3: basic fatigue life (eqs 73, 75, 76, 102; fortran/life/roller.f90) ------
@@ -381,7 +384,7 @@ def test_radial_load_distribution_of_straight_rollers(tmp_path, z):
     deck.set("9.1.2", "inner_race_speed", 0.0)
     path = tmp_path / "straight.inp"
     deck.save(path)
-    balls, _, _ = _core.roller_step0_from_deck(path)
+    balls, _, _ = probes.roller_step0_from_deck(path)
     fr = deck.get("9.1.1", "applied_force_z")
     phi = 2 * math.pi * np.arange(z) / z
     cos = np.clip(np.cos(phi), 0.0, None)

@@ -13,8 +13,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pyadore._core import SPIN_EQUILIBRIUM, roller_step0_tribology, traction_eval, traction_fit
+from pyadore._core import traction_eval
 from pyadore.printout import read_print
+
+from probes import SPIN_EQUILIBRIUM, roller_step0_tribology, traction_fit
+
 
 ROOT = Path(__file__).resolve().parents[1]
 DECK = ROOT / "decks" / "appendix_d_roller.inp"

@@ -18,6 +18,9 @@ import pytest
 from pyadore import AdoreInputError, _core
 from pyadore.printout import read_print
 
+import probes
+
+
 ROOT = Path(__file__).resolve().parents[1]
 RPM = math.pi / 30
 COEF = [-1.6e-2, 3.82896e-2, 1.71782, 1.6e-2]  # Rec 10.1C fit (echo A, B, C; D = kinf = 0.016)
@@ -39,13 +42,13 @@ def test_film_thickness_scaling_and_formula():
     """Hamrock-Dowson central film, h/R_x = 2.69 U^0.67 G^0.53 W^-0.067 (1 - 0.61 e^-0.73k),
     recomputed here; exponents checked by scaling."""
     rx, k, u, q, eta, alpha = 0.0108, 7.5, 75.0, 2457.0, 0.008, 1.1e-8
-    h = _core.film_thickness(rx, k, u, q, E_PRIME, eta, alpha)
+    h = probes.film_thickness(rx, k, u, q, E_PRIME, eta, alpha)
     ref = rx * 2.69 * (eta * u / (E_PRIME * rx)) ** 0.67 * (alpha * E_PRIME) ** 0.53 \
         * (q / (E_PRIME * rx**2)) ** -0.067 * (1 - 0.61 * math.exp(-0.73 * k))
     assert h == pytest.approx(ref, rel=1e-13)
-    assert _core.film_thickness(rx, k, 2 * u, q, E_PRIME, eta, alpha) == pytest.approx(h * 2**0.67, rel=1e-13)
+    assert probes.film_thickness(rx, k, 2 * u, q, E_PRIME, eta, alpha) == pytest.approx(h * 2**0.67, rel=1e-13)
     with pytest.raises(AdoreInputError):
-        _core.film_thickness(rx, k, u, q, E_PRIME, -eta, alpha)
+        probes.film_thickness(rx, k, u, q, E_PRIME, -eta, alpha)
 
 
 def test_lubricant_library_is_the_reports_echo():
@@ -99,15 +102,15 @@ def test_film_shear_stress_solves_the_film_energy_equation():
     the film's energy equation (finite differences, Newton), and its isothermal limit."""
     eta_w, beta, k_f, h = 0.5, 0.0425519, 0.1425185, 0.5e-6
     u = np.array([0.05, 0.5, 2.0, 4.0])
-    tau = _core.film_shear_stress(u, eta_w, beta, k_f, h)
+    tau = probes.film_shear_stress(u, eta_w, beta, k_f, h)
     for ui, ti in zip(u, tau):
         assert _bratu_slip(ti, eta_w, beta, k_f, h) == pytest.approx(ui, rel=1e-5)
     assert tau[-1] < 0.99 * eta_w * u[-1] / h                      # heating thins the film's shear
-    iso = _core.film_shear_stress([1e-4, 2e-4], eta_w, beta, k_f, h)
+    iso = probes.film_shear_stress([1e-4, 2e-4], eta_w, beta, k_f, h)
     assert iso[0] == pytest.approx(eta_w * 1e-4 / h, rel=1e-6)
-    assert _core.film_shear_stress([3.0], eta_w, 0.0, 0.0, h)[0] == pytest.approx(eta_w * 3.0 / h, rel=1e-14)
+    assert probes.film_shear_stress([3.0], eta_w, 0.0, 0.0, h)[0] == pytest.approx(eta_w * 3.0 / h, rel=1e-14)
     with pytest.raises(AdoreInputError, match="film shear"):
-        _core.film_shear_stress([1.0], eta_w, beta, 0.0, h)
+        probes.film_shear_stress([1.0], eta_w, beta, 0.0, h)
 
 
 def test_ehd_contact_isothermal_limit_is_the_viscous_integral():
@@ -117,12 +120,12 @@ def test_ehd_contact_isothermal_limit_is_the_viscous_integral():
     eta, h, b = 0.01, 1.0e-6, 0.4e-3
     s = np.linspace(-g["a"], g["a"], 20001)
     mid = 0.5 * (s[1:] + s[:-1])
-    u = np.asarray(_core.contact_slip(**{k: v for k, v in g.items() if k != "load"}, s=mid))
+    u = np.asarray(probes.contact_slip(**{k: v for k, v in g.items() if k != "load"}, s=mid))
     width = 2 * b * np.sqrt(1 - (mid / g["a"]) ** 2)
     exact = np.sum(eta / h * u**2 * width) * (s[1] - s[0])
     err = []
     for n in (16, 64):
-        t = _core.ehd_contact_traction(g["side"], g["alpha"], g["rho"], g["r_b"], g["omega"], g["race_speed"],
+        t = probes.ehd_contact_traction(g["side"], g["alpha"], g["rho"], g["r_b"], g["omega"], g["race_speed"],
                                        g["a"], g["load"], (eta, 0.0, 0.0, 0.14), h, b, n_gauss=n, n_strip=24)
         err.append(abs(t["power"] / exact - 1))
     # the strip width's square root at the contact ends limits Gauss-Legendre to ~n**-3
@@ -137,12 +140,12 @@ def test_ehd_flash_isothermal_film_is_the_uniform_flux_closed_form():
     along the major axis, evaluated here on a fine uniform grid."""
     g = CONTACTS["inner"]
     eta, h, b, speed = 0.01, 1.0e-6, 0.4e-3, 75.0
-    avg, peak = _core.ehd_temperature_rise(g["side"], g["alpha"], g["rho"], g["r_b"], g["omega"], g["race_speed"],
+    avg, peak = probes.ehd_temperature_rise(g["side"], g["alpha"], g["rho"], g["r_b"], g["omega"], g["race_speed"],
                                            g["a"], g["load"], (eta, 0.0, 0.0, 0.14), h, b, speed, speed,
                                            STEEL, STEEL, n_gauss=64, ny=401)
     s = np.linspace(-g["a"], g["a"], 40001)
     mid = 0.5 * (s[1:] + s[:-1])
-    u = np.asarray(_core.contact_slip(**{k: v for k, v in g.items() if k != "load"}, s=mid))
+    u = np.asarray(probes.contact_slip(**{k: v for k, v in g.items() if k != "load"}, s=mid))
     bk = b * np.sqrt(1 - (mid / g["a"]) ** 2)
     q = eta * u**2 / h
     denom = 2 * math.sqrt(math.pi * STEEL[0] * STEEL[1] * STEEL[2] * speed)
@@ -165,20 +168,20 @@ CONTACTS = {  # report-like contacts (ball 2 of Appendix C, outer and inner), or
 def test_slip_integral_matches_fine_uniform_quadrature(name):
     """Zone-split Gauss (report 2.1) against a 400 000-point midpoint sum of eq (1)."""
     c = CONTACTS[name]
-    t = _core.contact_traction(**c, coef=COEF, n_gauss=16)
+    t = probes.contact_traction(**c, coef=COEF, n_gauss=16)
     a, q = c["a"], c["load"]
     n = 400_000
     s = -a + (np.arange(n) + 0.5) * (2 * a / n)
     geo = {k: v for k, v in c.items() if k != "load"}
-    u = _core.contact_slip(**geo, s=s)
+    u = probes.contact_slip(**geo, s=s)
     dq = 0.75 * q / a * (1 - (s / a) ** 2) * (2 * a / n)
     assert t["force"] == pytest.approx(np.sum(np.sign(u) * kappa(np.abs(u)) * dq), rel=1e-6, abs=1e-9 * q)
     assert t["power"] == pytest.approx(np.sum(kappa(np.abs(u)) * np.abs(u) * dq), rel=1e-7)
     assert t["sliding"] == pytest.approx(np.sum(np.abs(u) * dq), rel=1e-7)   # Archard's load x slip
-    ends = _core.contact_slip(**geo, s=[-a, a])
+    ends = probes.contact_slip(**geo, s=[-a, a])
     assert t["max_slip"] == pytest.approx(np.abs(np.r_[u, ends]).max(), rel=1e-9)
     for k in range(int(t["n_rolling"])):
-        assert abs(_core.contact_slip(**geo, s=[t[f"s{k + 1}"]])[0]) < 1e-9
+        assert abs(probes.contact_slip(**geo, s=[t[f"s{k + 1}"]])[0]) < 1e-9
 
 
 @pytest.mark.parametrize("name", list(CONTACTS))
@@ -186,7 +189,7 @@ def test_power_is_area_integral_of_traction_times_slip(name):
     """Power loss = integral over the ellipse of tau u dA with tau = sigma kappa(u) (eqs 1, 4, 5),
     Hertz sigma = p0 sqrt(1 - x^2/a^2 - y^2/b^2), Q = 2/3 pi a b p0; 2-D Gauss over the ellipse."""
     c = CONTACTS[name]
-    t = _core.contact_traction(**c, coef=COEF, n_gauss=16)
+    t = probes.contact_traction(**c, coef=COEF, n_gauss=16)
     a, q = c["a"], c["load"]
     b = 0.13 * a
     p0 = 1.5 * q / (math.pi * a * b)
@@ -194,7 +197,7 @@ def test_power_is_area_integral_of_traction_times_slip(name):
     x, wx = np.polynomial.legendre.leggauss(4000)
     y, wy = np.polynomial.legendre.leggauss(64)
     xs = a * x
-    u = _core.contact_slip(**geo, s=xs)
+    u = probes.contact_slip(**geo, s=xs)
     half = b * np.sqrt(1 - x**2)
     sigma = p0 * np.sqrt(np.clip(1 - x[:, None] ** 2 - y[None, :] ** 2 * (1 - x[:, None] ** 2), 0, None))
     area_sigma = (sigma * wy[None, :]).sum(axis=1) * half          # integral of sigma dy per strip
@@ -204,7 +207,7 @@ def test_power_is_area_integral_of_traction_times_slip(name):
 
 def test_flash_uniform_flux_closed_form():
     xi = np.linspace(-1, 1, 101)
-    assert np.allclose(_core.flash_rise(xi, np.full_like(xi, 2.0)), 4 * np.sqrt(xi + 1), atol=1e-12)
+    assert np.allclose(probes.flash_rise(xi, np.full_like(xi, 2.0)), 4 * np.sqrt(xi + 1), atol=1e-12)
 
 
 # --- against the report's printed step 0 ---------------------------------------------------
@@ -239,10 +242,10 @@ def _report_step0():
             if any(math.isnan(v) for v in inputs):
                 rows.append(row)
                 continue
-            t = _core.contact_traction(side, row["alpha"], D_BALL / 2, balls["r"][k], omega, w_race - wm, row["a"],
+            t = probes.contact_traction(side, row["alpha"], D_BALL / 2, balls["r"][k], omega, w_race - wm, row["a"],
                                        row["load"], COEF, n_gauss=16)
             row["calc"] = t
-            row["calc4"] = _core.contact_traction(side, row["alpha"], D_BALL / 2, balls["r"][k], omega, w_race - wm,
+            row["calc4"] = probes.contact_traction(side, row["alpha"], D_BALL / 2, balls["r"][k], omega, w_race - wm,
                                                   row["a"], row["load"], COEF, n_gauss=4)
             row["geo"] = dict(side=side, r_b=balls["r"][k], omega=omega, race_speed=w_race - wm)
             rx = t["rx"]
@@ -259,7 +262,7 @@ def _usable(rows, *keys):
 def _film_unit(r):
     """Central film for eta0 = 1 Pa s and alpha = 1/Pa: h = this * eta0^0.67 alpha^0.53."""
     k = r["a"] / r["b"]
-    return _core.film_thickness(r["rx"], k, r["u"], r["load"], E_PRIME, 1.0, 1.0)
+    return probes.film_thickness(r["rx"], k, r["u"], r["load"], E_PRIME, 1.0, 1.0)
 
 
 def _calibration_row(rows):
@@ -278,7 +281,7 @@ def _loading(r, p, phi):
     lo, hi = 1e-6, 1e4
     for _ in range(200):
         mid = math.sqrt(lo * hi)
-        if _core.thermal_reduction_factor(p, E_PRIME, [mid], 0.0)[0] > phi:
+        if probes.thermal_reduction_factor(p, E_PRIME, [mid], 0.0)[0] > phi:
             lo = mid
         else:
             hi = mid
@@ -297,7 +300,7 @@ def _thermal_errors():
             continue
         s = r["calc"]["centre_slip"] / r["calc"]["rolling_speed"]
         load = THERMAL_LOADING_SCALE * lub["eta"] * lub["beta"] * r["u"] ** 2 / lub["conductivity"]
-        out.append((r, _core.thermal_reduction_factor(r["p0"], E_PRIME, [load], s)[0], r["phi"]))
+        out.append((r, probes.thermal_reduction_factor(r["p0"], E_PRIME, [load], s)[0], r["phi"]))
     return out
 
 
@@ -316,7 +319,7 @@ def _ehd(r, n_gauss):
     widths, film x thermal reduction factor; MIL-L-7808's traction rheology at 323 K."""
     lub = _core.lubricant(1, 323.0)
     g = r["geo"]
-    return _core.ehd_contact_traction(g["side"], r["alpha"], D_BALL / 2, g["r_b"], g["omega"], g["race_speed"],
+    return probes.ehd_contact_traction(g["side"], r["alpha"], D_BALL / 2, g["r_b"], g["omega"], g["race_speed"],
                                       r["a"], r["load"], (lub["eta_t"], lub["alpha_t"], lub["beta_t"],
                                                           lub["conductivity"]),
                                       r["film"] * r["phi"], r["b"], n_gauss=n_gauss)
@@ -338,7 +341,7 @@ def _temperature_errors():
     xk, wk = np.polynomial.legendre.leggauss(24)
     for r in _usable(_report_step0(), "rise", "loss", "b", "p0"):
         g = r["loss"] / r["load"]
-        avg, _ = _core.contact_temperature_rise(r["a"], r["b"], r["p0"], r["a"] * xk, r["a"] * wk,
+        avg, _ = probes.contact_temperature_rise(r["a"], r["b"], r["p0"], r["a"] * xk, r["a"] * wk,
                                                 np.full(24, g), r["u"], r["u"], STEEL, STEEL, ny=201)
         out.append((r, avg, r["rise"]))
     return out
@@ -417,13 +420,13 @@ def test_ball_wear_is_archard_over_both_race_contacts_with_the_reports_speeds():
     by_ball = {}
     for r in _usable(_report_step0()):
         g = r["geo"]
-        ehd = _core.ehd_contact_traction(g["side"], r["alpha"], D_BALL / 2, g["r_b"], g["omega"], g["race_speed"],
+        ehd = probes.ehd_contact_traction(g["side"], r["alpha"], D_BALL / 2, g["r_b"], g["omega"], g["race_speed"],
                                          r["a"], r["load"], (1e-2, 0.0, 0.0, 0.1), 1e-6, 0.1 * r["a"])
         by_ball.setdefault(r["ball"], []).append(ehd["sliding"])
     ratios = [printed.iloc[k - 1] / sum(s) for k, s in by_ball.items()
               if len(s) == 2 and not math.isnan(printed.iloc[k - 1])]
     assert len(ratios) >= 14
-    hardness, (k_over_h,) = _core.wear_rate(5e-6, 61.0, [1.0])
+    hardness, (k_over_h,) = probes.wear_rate(5e-6, 61.0, [1.0])
     assert hardness == pytest.approx(61 * 9.80665e7)
     assert max(ratios) / min(ratios) - 1 < 0.006          # one constant (spread 0.5 %)
     assert np.mean(ratios) == pytest.approx(k_over_h, rel=0.01)   # 0.5 % below k / H
@@ -436,11 +439,11 @@ def test_flat_wrappers_refuse_bad_input_with_a_message():
     geo = {k: v for k, v in CONTACTS["outer"].items() if k != "load"}
     geo["a"] = 0.0
     with pytest.raises(AdoreInputError, match="half width"):
-        _core.contact_slip(**geo, s=[0.0])
+        probes.contact_slip(**geo, s=[0.0])
     with pytest.raises(AdoreInputError, match="increase strictly"):
-        _core.flash_rise([0.0, 0.0, 1.0], [1.0, 1.0, 1.0])
+        probes.flash_rise([0.0, 0.0, 1.0], [1.0, 1.0, 1.0])
     with pytest.raises(AdoreInputError, match="p_h > 0"):
-        _core.thermal_reduction_factor(0.0, 2.2e11, [1.0], 0.1)
+        probes.thermal_reduction_factor(0.0, 2.2e11, [1.0], 0.1)
 
 
 def _pitch_of_least_power(o, i, orbital_speed, lo, hi):
@@ -459,7 +462,7 @@ def _pitch_of_least_power(o, i, orbital_speed, lo, hi):
                / (D_BALL / 2 * (math.cos(beta) * n_i[1] - math.sin(beta) * n_i[0])))
         total = 0.0
         for r, race_speed in ((o, -orbital_speed), (i, INNER_SPEED - orbital_speed)):
-            total += _core.ehd_contact_traction(
+            total += probes.ehd_contact_traction(
                 r["geo"]["side"], r["alpha"], D_BALL / 2, r_b, (w_b * math.cos(beta), w_b * math.sin(beta)),
                 race_speed, r["a"], r["load"], rheology, r["film"] * r["phi"], r["b"], n_gauss=8,
                 n_strip=12)["power"]
@@ -521,7 +524,7 @@ def test_report_orbital_speed_is_a_multiple_of_outer_race_control():
         a_o, a_i = (math.radians(con[f"contact_angle_{s}_deg"].iloc[k]) for s in ("outer", "inner"))
         if math.isnan(a_o) or math.isnan(a_i):
             continue
-        w_m, _, _ = _core.race_control(D_BALL, balls["r"][k], (math.sin(a_o), math.cos(a_o)),
+        w_m, _, _ = probes.race_control(D_BALL, balls["r"][k], (math.sin(a_o), math.cos(a_o)),
                                        (-math.sin(a_i), -math.cos(a_i)), 0.0, INNER_SPEED, 1)
         ratios[k + 1] = mot["orbital_velocity_rpm"].iloc[k] * RPM / w_m
     near = [v for b, v in ratios.items() if 8 <= b <= 12]

@@ -16,6 +16,9 @@ from pyadore import AdoreInputError, _core
 from pyadore.deck import read_deck
 from pyadore.printout import read_print
 
+import probes
+
+
 ROOT = Path(__file__).resolve().parents[1]
 ROLLER_DECK = ROOT / "decks" / "appendix_d_roller.inp"
 
@@ -33,7 +36,7 @@ def test_hardness_conversion_reproduces_the_cage_land_row():
     assert mu == 0.05
     row = _roller_golden().table("race_cage").iloc[1]
     sliding = row["contact_loss_W"] / mu
-    hardness, (rate,) = _core.wear_rate(5e-4, 20.0, [sliding])
+    hardness, (rate,) = probes.wear_rate(5e-4, 20.0, [sliding])
     assert hardness == pytest.approx(200 * 9.80665e6, rel=1e-12)
     assert rate == pytest.approx(row["wear_rate_m3_s"], rel=5e-4)
     vickers = (223 * 20 + 14500) / (100 - 20) * 9.80665e6          # HRC -> HV, ASTM E140 fit
@@ -43,7 +46,7 @@ def test_hardness_conversion_reproduces_the_cage_land_row():
 def test_roller_wear_matches_the_printed_rows():
     """Ceramic rollers (Rec 8.1: k 2E-6, RC 80) over the engine's slice slips and loads:
     the printed rows of the loaded (roller 2, 8) and the unloaded-inner rollers (3-7)."""
-    rollers, _, _ = _core.roller_step0_tribology(ROLLER_DECK)
+    rollers, _, _ = probes.roller_step0_tribology(ROLLER_DECK)
     printed = _roller_golden().table("re_motion")["wear_rate_m3_s"].to_numpy()
     rows = [k for k in range(len(printed)) if not np.isnan(printed[k])]
     assert rows == [1, 2, 3, 4, 5, 6, 7]
@@ -55,18 +58,18 @@ def test_run_wear_is_archard_of_the_runs_own_sliding():
     """Energy-style consistency: each element's wear is k/H times the load x slip of its two
     race contacts, and the load x slip is never below loss / largest traction coefficient."""
     balls, _ = _core.ball_step0_from_deck(ROOT / "decks" / "appendix_c_ball.inp")
-    _, rates = _core.wear_rate(5e-6, 61.0, balls["sliding_o"] + balls["sliding_i"])
+    _, rates = probes.wear_rate(5e-6, 61.0, balls["sliding_o"] + balls["sliding_i"])
     assert np.allclose(balls["wear"], rates, rtol=1e-13, atol=0)
     assert np.all(balls["sliding_o"] * 0.1 > balls["loss_o"])      # traction coefficients < 0.1
-    rollers, _, _ = _core.roller_step0_tribology(ROLLER_DECK)
-    _, rates = _core.wear_rate(2e-6, 80.0, rollers["sliding_o"] + rollers["sliding_i"])
+    rollers, _, _ = probes.roller_step0_tribology(ROLLER_DECK)
+    _, rates = probes.wear_rate(2e-6, 80.0, rollers["sliding_o"] + rollers["sliding_i"])
     assert np.allclose(rollers["wear"], rates, rtol=1e-13, atol=0)
 
 
 def test_uniform_sliding_is_archards_closed_form():
     """A load Q sliding at a uniform speed v: dV/dt = k Q v / H."""
     q, v = 250.0, 3.0
-    hardness, (rate,) = _core.wear_rate(1e-5, 45.0, [q * v])
+    hardness, (rate,) = probes.wear_rate(1e-5, 45.0, [q * v])
     assert rate == pytest.approx(1e-5 * q * v / (450 * 9.80665e6), rel=1e-14)
     assert hardness == pytest.approx(450 * 9.80665e6, rel=1e-14)
 
@@ -74,7 +77,7 @@ def test_uniform_sliding_is_archards_closed_form():
 @pytest.mark.parametrize("k, rc, sliding", [(-1e-6, 60.0, 1.0), (1e-6, 0.0, 1.0), (1e-6, 60.0, -1.0)])
 def test_wear_wrapper_refuses_bad_input(k, rc, sliding):
     with pytest.raises(AdoreInputError, match="wear rate"):
-        _core.wear_rate(k, rc, [sliding])
+        probes.wear_rate(k, rc, [sliding])
 
 
 @pytest.fixture(scope="module")
@@ -102,8 +105,8 @@ def test_race_wear_is_archard_of_its_contacts_sliding(roller_print, tmp_path):
     wear as much as all balls together."""
     from pyadore import run
 
-    rollers, _, _ = _core.roller_step0_tribology(ROLLER_DECK)
-    _, (outer, inner) = _core.wear_rate(5e-6, 61.0, [rollers["sliding_o"].sum(), rollers["sliding_i"].sum()])
+    rollers, _, _ = probes.roller_step0_tribology(ROLLER_DECK)
+    _, (outer, inner) = probes.wear_rate(5e-6, 61.0, [rollers["sliding_o"].sum(), rollers["sliding_i"].sum()])
     bodies = roller_print.table("bodies")
     for body, expected in (("ORace", outer), ("IRace", inner)):
         assert bodies.loc[body, "wear_rate_m3_s"] == pytest.approx(expected, rel=6e-4), body  # 4 digits

@@ -1,4 +1,5 @@
-!> Flat-array unpacking shared by the quasi-static f2py wrappers (fortran/api/quasistatic.f90).
+!> Flat-array unpacking shared by the f2py wrappers of both extension modules (pyadore._engine:
+!> fortran/api/; pyadore._probes: fortran/api/probes/).
 module adore_api_unpack
    use adore_core_kinds, only: wp
    use adore_quasistatic_ball_equilibrium, only: ball_qs_bearing_t, ball_qs_load_t

@@ -1,6 +1,6 @@
-!> Flat f2py wrappers of the print writer (module pyadore._engine): write a whole step, the
-!> end of run, or the banner and input echo from plain arrays to a file, so that Python
-!> can compare the Fortran writer with pyadore.printout.writer / echo_writer.
+!> Flat f2py wrappers of the print writer (test-only module pyadore._probes): write a whole
+!> step, the end of run, or the banner and input echo from plain arrays to a file, so that
+!> Python can compare the Fortran writer with pyadore.printout.writer / echo_writer.
 !> append /= 0 appends to the file, 0 replaces it.  Status 1 (input error) when the file
 !> cannot be opened or the arrays do not fit the layout.
 

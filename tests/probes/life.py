@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import math
 
-from ..errors import AdoreInputError
-from .base import _engine, check
+from pyadore.errors import AdoreInputError
+from .base import _probes, check
 
 
 LIFE_CONSTANT_NAMES = (
@@ -23,7 +23,7 @@ _HUGE = 1.0e300  # the engine's huge(1.0_wp) ("never fails") is returned as math
 
 def life_default_constants() -> dict:
     """Default fatigue model constants of the engine (report section 3.2), by name."""
-    values = _engine().adore_life_default_constants()
+    values = _probes().adore_life_default_constants()
     return dict(zip(LIFE_CONSTANT_NAMES, (float(v) for v in values)))
 
 
@@ -79,7 +79,7 @@ def ball_bearing_life(q_outer, q_inner, alpha_outer, alpha_inner, orbital_speed,
     if unknown:
         raise AdoreInputError(f"life: unknown constant(s) {', '.join(unknown)}")
     values.update({k: float(v) for k, v in (constants or {}).items()})
-    result, lives_o, lives_i, status, message = _engine().adore_life_ball_bearing(
+    result, lives_o, lives_i, status, message = _probes().adore_life_ball_bearing(
         *arrays, float(hoop_outer), float(hoop_inner), float(d_ball), float(d_pitch), float(f_outer),
         float(f_inner), float(outer_speed), float(inner_speed), int(bool(outer_rotating)),
         int(bool(inner_rotating)), np.array([values[k] for k in LIFE_CONSTANT_NAMES], dtype=float))

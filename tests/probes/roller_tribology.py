@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 
-from .base import _engine, check
+from .base import _probes, check
 
 ROLLER_TRIBOLOGY_COLUMNS = ["spin", "moment_residual", "tangential_force",
                             "slip_o", "kappa_o", "power_o", "force_o", "moment_o",
@@ -29,7 +29,7 @@ def roller_step0_tribology(deck_path: str | os.PathLike, *, growth_count: int = 
     scalars ROLLER_TRIBOLOGY_SUMMARY); slip_x = printed Slip Velocity (largest |u| over the
     slices), kappa_x = kappa(slip_x) (printed Trac Coeff), power_x = contact loss (eq 4).
     """
-    n, rollers, slices, summary, status, message = _engine().adore_roller_step0_tribology(
+    n, rollers, slices, summary, status, message = _probes().adore_roller_step0_tribology(
         os.fspath(deck_path), int(growth_count), int(spin_method), int(nmax))
     check(int(status), message)
     n = int(n)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 
-from .base import _engine, check
+from .base import _probes, check
 
 
 def _plain(frame, markers, what: str):
@@ -22,7 +22,7 @@ def _plain(frame, markers, what: str):
 def _codes(values):
     import numpy as np
 
-    from ..printout.layout import INT_NOT_COMPUTED
+    from pyadore.printout.layout import INT_NOT_COMPUTED
 
     v = np.asarray(values, dtype=float)
     out = np.where(np.isnan(v), INT_NOT_COMPUTED, np.nan_to_num(v)).astype(np.int64)
@@ -39,7 +39,7 @@ def fortran_print_step(path: str | os.PathLike, step, append: bool = False) -> N
     import numpy as np
     import pandas as pd
 
-    from ..printout import layout as L
+    from pyadore.printout import layout as L
 
     t, m = step.tables, step.markers
     hm = m.get("header", {})
@@ -78,7 +78,7 @@ def fortran_print_step(path: str | os.PathLike, step, append: bool = False) -> N
             raise ValueError(f"step {step.number} {name}: rows must be {list(rows)}")
         fixed[name] = _plain(t[name], m.get(name), name)
     summ = t["summary"]
-    status, message = _engine().adore_print_step(
+    status, message = _probes().adore_print_step(
         os.fspath(path), int(append), int(step.number), header, step.run_id,
         re_no, re["re_contact"], re["re_motion"], re["re_traction"], re["re_thermal"],
         len(names), slice_roller, slice_no, slices, int(roller),
@@ -93,14 +93,14 @@ def fortran_print_end(path: str | os.PathLike, termination: dict, statistics: di
     """Termination line, blank line and run statistics with the engine's print writer."""
     import numpy as np
 
-    from ..printout import layout as L
-    from ..printout.layout import INT_NOT_COMPUTED
+    from pyadore.printout import layout as L
+    from pyadore.printout.layout import INT_NOT_COMPUTED
 
     names = list(L.STATISTICS_LABELS.values())
     stats = np.array([float(statistics.get(n, float("nan"))) for n in names[:4]], dtype=float)
     calls = statistics.get(names[4])
     calls = INT_NOT_COMPUTED if calls is None or calls != calls else int(calls)
-    status, message = _engine().adore_print_end(
+    status, message = _probes().adore_print_end(
         os.fspath(path), int(append), int(termination["last_step_number"]), float(termination["final_time"]),
         stats, calls)
     check(int(status), message)
@@ -110,16 +110,16 @@ def fortran_print_echo(path: str | os.PathLike, record: dict, append: bool = Fal
     """Banner and input echo of an echo record (``pyadore.printout.echo_writer``) with the engine's writer."""
     import numpy as np
 
-    from ..printout.echo_writer import pack_echo
+    from pyadore.printout.echo_writer import pack_echo
 
-    from ..printout.echo_layout import TEXT_LEN
-    from ..printout.layout import INT_NOT_COMPUTED
+    from pyadore.printout.echo_layout import TEXT_LEN
+    from pyadore.printout.layout import INT_NOT_COMPUTED
 
     texts, ints, reals = pack_echo(record)
     if any(len(s) > TEXT_LEN for s in texts):
         raise ValueError(f"echo texts are at most {TEXT_LEN} characters")
     ints = [INT_NOT_COMPUTED if v is None else v for v in ints]
-    status, message = _engine().adore_print_echo(
+    status, message = _probes().adore_print_echo(
         os.fspath(path), int(append), np.array([s.ljust(TEXT_LEN).encode("ascii") for s in texts], dtype="S80"),
         np.asarray(ints, dtype=np.int32), np.asarray(reals, dtype=float))
     check(int(status), message)

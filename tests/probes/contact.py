@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .base import _engine, check
+from .base import _probes, check
 
 
 def hertz_point(rho, e1: float, nu1: float, e2: float, nu2: float, load: float) -> dict:
@@ -14,7 +14,7 @@ def hertz_point(rho, e1: float, nu1: float, e2: float, nu2: float, load: float) 
     """
     import numpy as np
 
-    values, status, message = _engine().adore_hertz_point(
+    values, status, message = _probes().adore_hertz_point(
         np.asarray(rho, dtype=float), e1, nu1, e2, nu2, load)
     check(int(status), message)
     keys = ["kappa", "a_star", "b_star", "delta_star", "semi_major", "semi_minor",
@@ -38,7 +38,7 @@ def line_contact(profile, race_crown: float, h, lim, e_star: float, r_eq: float,
     import numpy as np
 
     nmax = 4 * int(n_sub)
-    n, slices, result, status, message = _engine().adore_line_contact(
+    n, slices, result, status, message = _probes().adore_line_contact(
         np.asarray(profile, dtype=float), float(race_crown), np.asarray(h, dtype=float),
         np.asarray(lim, dtype=float), float(e_star), float(r_eq), float(l_ref), float(k_line),
         int(n_sub), nmax)

@@ -1,4 +1,5 @@
-!> Flat f2py wrappers of the roller-bearing line contact and step 0 (module pyadore._engine).
+!> Flat f2py wrappers of the roller-bearing line contact and step 0 (test-only module
+!> pyadore._probes).
 
 !> One roller/race line contact by slices (adore_contact_line_slices).
 !>

@@ -1,4 +1,4 @@
-!> Flat f2py wrappers of the contact mechanics (module pyadore._engine).
+!> Flat f2py wrappers of the contact mechanics (test-only module pyadore._probes).
 
 !> Hertz point contact for curvatures rho (1/m), elastic constants and load q (N).
 !>

@@ -1,4 +1,4 @@
-!> Flat f2py wrappers of the fatigue life model (module pyadore._engine).
+!> Flat f2py wrappers of the fatigue life model (test-only module pyadore._probes).
 
 !> Default fatigue constants (report section 3.2, Tables 3-4, Appendix C echo).
 !>

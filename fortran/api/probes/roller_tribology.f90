@@ -1,4 +1,4 @@
-!> Flat f2py wrapper of the roller step-0 tribology (module pyadore._engine).
+!> Flat f2py wrapper of the roller step-0 tribology (test-only module pyadore._probes).
 
 !> Step 0 of a roller-bearing deck with its slice tractions (adore_start_roller_step0,
 !> adore_tribology_roller_traction).  growth_count as adore_roller_step0_deck; spin_method
