@@ -66,3 +66,22 @@ def test_library_code_has_no_saved_state():
                   and not re.search(r"intent\s*\(", code)):
                 offenders.append(f"{path.relative_to(ROOT)}:{n}: {line.strip()}")
     assert offenders == []
+
+
+def test_engine_folders_depend_one_way():
+    """The library folders' `use` graph has no cycle (docs/architecture.md draws its order)."""
+    mod_dir = {}
+    for path in _library_sources():
+        for name in re.findall(r"^\s*module\s+(\w+)\s*$", path.read_text(), re.M | re.I):
+            mod_dir[name.lower()] = path.parent.name
+    edges = {}
+    for path in _library_sources():
+        for name in re.findall(r"^\s*use\s+(\w+)", path.read_text(), re.M | re.I):
+            target = mod_dir.get(name.lower())
+            if target and target != path.parent.name:
+                edges.setdefault(path.parent.name, set()).add(target)
+
+    def reaches(start, goal, seen=()):
+        return any(t == goal or (t not in seen and reaches(t, goal, seen + (t,))) for t in edges.get(start, ()))
+
+    assert [d for d in sorted(edges) if reaches(d, d)] == []

@@ -83,6 +83,7 @@ end module adore_app_progress
 program adore
    use adore_core_error, only: error_type, input_error, ADORE_OK
    use adore_core_version, only: adore_version_string
+   use adore_core_strings, only: replaced
    use adore_driver_run, only: run_deck
    use adore_model_run_options, only: run_options_t, set_run_option, option_index, OPTION_TABLE, N_OPTIONS, &
                                       OPTION_FLAG, OPTION_FLAG_OFF, option_spec_t
@@ -218,11 +219,10 @@ contains
          o = OPTION_TABLE(k)
          block
             if (o%kind == OPTION_FLAG_OFF) then
-               call dashes(o%flag, flag)
+               flag = "--"//replaced(trim(o%flag), "_", "-")
             else
-               call dashes(o%name, flag)
+               flag = "--"//replaced(trim(o%name), "_", "-")
             end if
-            flag = "--"//flag
             if (len_trim(o%metavar) > 0) flag = flag//" "//trim(o%metavar)
             write (unit, "(2x,a,t27,a)") flag, trim(o%help)
             if (len_trim(o%default) > 0 .and. o%kind /= OPTION_FLAG .and. o%kind /= OPTION_FLAG_OFF) &
@@ -231,16 +231,6 @@ contains
       end do
    end subroutine usage
 
-   !> name with '-' for '_'.
-   subroutine dashes(name, text)
-      character(len=*), intent(in) :: name
-      character(len=:), allocatable, intent(out) :: text
-      integer :: i
-      text = trim(name)
-      do i = 1, len(text)
-         if (text(i:i) == "_") text(i:i) = "-"
-      end do
-   end subroutine dashes
 
    !> End the process with exit status `code` and nothing printed by the runtime.
    !> Ctrl-C during a time integration (fortran/app/sigint.c) stops the run after its step:

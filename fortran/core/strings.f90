@@ -14,7 +14,7 @@ module adore_core_strings
    private
 
    public :: is_space, is_blank, lstrip_count, strip, rstrip, itoa, quoted
-   public :: join_words, trim_zeros, strip_inner
+   public :: join_words, trim_zeros, strip_inner, replaced
 
 contains
 
@@ -178,5 +178,18 @@ contains
          end if
       end do
    end function strip_inner
+
+   !> Copy of `s` with every character `from` replaced by `to` (e.g. '_' by '-' in an option
+   !> name).
+   pure function replaced(s, from, to) result(t)
+      character(len=*), intent(in) :: s
+      character(len=1), intent(in) :: from, to
+      character(len=len(s)) :: t
+      integer :: i
+      t = s
+      do i = 1, len(s)
+         if (s(i:i) == from) t(i:i) = to
+      end do
+   end function replaced
 
 end module adore_core_strings

@@ -11,7 +11,7 @@
 module adore_model_run_options
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
-   use adore_core_strings, only: itoa
+   use adore_core_strings, only: itoa, replaced
    implicit none
    private
 
@@ -92,11 +92,7 @@ contains
    pure integer function option_index(name) result(k)
       character(len=*), intent(in) :: name
       character(len=len(name)) :: key
-      integer :: i
-      key = name
-      do i = 1, len(key)
-         if (key(i:i) == "-") key(i:i) = "_"
-      end do
+      key = replaced(name, "-", "_")
       do k = 1, N_OPTIONS
          if (trim(key) == trim(OPTION_TABLE(k)%name)) return
          if (len_trim(OPTION_TABLE(k)%flag) > 0 .and. trim(key) == trim(OPTION_TABLE(k)%flag)) return
@@ -112,7 +108,7 @@ contains
       character(len=*), intent(in) :: name, value
       type(error_type), allocatable, intent(out) :: error
       type(option_spec_t) :: spec
-      character(len=:), allocatable :: names
+      character(len=:), allocatable :: names, flag_name
       integer :: k, n, stat
       logical :: flag, ok
 
@@ -123,18 +119,19 @@ contains
          return
       end if
       spec = OPTION_TABLE(k)
+      flag_name = replaced(trim(spec%name), "_", "-")
       n = 0
       flag = .false.
       select case (spec%kind)
       case (OPTION_INT)
          read (value, *, iostat=stat) n
          if (stat /= 0 .or. len_trim(value) == 0 .or. verify(trim(adjustl(value)), "+-0123456789") /= 0) then
-            call input_error(error, trim(spec%name)//" (--"//dashed(spec%name)//"): expected an integer, got '"// &
+            call input_error(error, trim(spec%name)//" (--"//flag_name//"): expected an integer, got '"// &
                              trim(value)//"'")
             return
          end if
          if (n < spec%minimum) then
-            call input_error(error, trim(spec%name)//" (--"//dashed(spec%name)//"): "//itoa(n)//" is below its minimum "// &
+            call input_error(error, trim(spec%name)//" (--"//flag_name//"): "//itoa(n)//" is below its minimum "// &
                              itoa(spec%minimum)//" ("//trim(spec%help)//")")
             return
          end if
@@ -149,13 +146,13 @@ contains
             return
          end select
          ! the off-spelling of a flag (traction_1d = true sets traction_2d = .false.)
-         if (trim(name) /= trim(spec%name) .and. trim(replace_dash(name)) /= trim(spec%name)) flag = .not. flag
+         if (trim(name) /= trim(spec%name) .and. trim(replaced(name, "-", "_")) /= trim(spec%name)) flag = .not. flag
       case (OPTION_CHOICE)
          ok = len_trim(value) == 0
          if (.not. ok) ok = index(","//trim(spec%choices)//",", ","//trim(adjustl(value))//",") > 0
          if (.not. ok) then
             call spaced_list(spec%choices, names)
-            call input_error(error, spaced(spec%name)//": expected one of "//names//", got '"//trim(value)//"'")
+            call input_error(error, replaced(trim(spec%name), "_", " ")//": expected one of "//names//", got '"//trim(value)//"'")
             return
          end if
       end select
@@ -227,27 +224,7 @@ contains
       end do
    end subroutine option_names
 
-   !> name with '-' for '_' (the command lines' spelling).
-   pure function dashed(name) result(text)
-      character(len=*), intent(in) :: name
-      character(len=len_trim(name)) :: text
-      integer :: i
-      text = trim(name)
-      do i = 1, len(text)
-         if (text(i:i) == "_") text(i:i) = "-"
-      end do
-   end function dashed
 
-   !> name with ' ' for '_' (as a message names the option).
-   pure function spaced(name) result(text)
-      character(len=*), intent(in) :: name
-      character(len=len_trim(name)) :: text
-      integer :: i
-      text = trim(name)
-      do i = 1, len(text)
-         if (text(i:i) == "_") text(i:i) = " "
-      end do
-   end function spaced
 
    !> A comma-separated list with ', ' between its items.
    subroutine spaced_list(list, text)
@@ -263,15 +240,5 @@ contains
          end if
       end do
    end subroutine spaced_list
-
-   pure function replace_dash(name) result(key)
-      character(len=*), intent(in) :: name
-      character(len=len(name)) :: key
-      integer :: i
-      key = name
-      do i = 1, len(key)
-         if (key(i:i) == "-") key(i:i) = "_"
-      end do
-   end function replace_dash
 
 end module adore_model_run_options
