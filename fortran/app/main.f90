@@ -100,6 +100,7 @@ program adore
    integrated = 0
    deck_path = ""
    out_path = ""
+   value = ""
    nargs = command_argument_count()
    i = 1
    do while (i <= nargs)

@@ -110,15 +110,14 @@ contains
       end if
    end function ball_dynamic_steps
 
-   !> The dynamics from the step-0 start (start_ball_dynamics) at the initial temperatures.
+   !> The dynamics from the step-0 start (start_ball_dynamics) at the initial temperatures, in
+   !> the geometry step 0 mounted (computed once).
    subroutine ball_start_dynamics(self, it, y, error)
       class(ball_kind_t), intent(inout) :: self
       type(integrator_t), intent(out) :: it
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      type(mounted_geometry_t) :: g
-      g = mount_geometry(self%bearing, self%bearing%temperature)
-      call start_ball_dynamics(self%bearing, g, self%step0%start, self%step0%cage, self%eom, it, y, error, &
+      call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, error, &
                                two_d=self%options%traction_2d)
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
@@ -130,7 +129,7 @@ contains
          self%azimuth = e%azimuth
          self%last = e%azimuth
       end associate
-      self%clearance = guide_clearance(self%bearing, g, self%eom%state%temperature)
+      self%clearance = guide_clearance(self%bearing, self%step0%geometry, self%eom%state%temperature)
    end subroutine ball_start_dynamics
 
    !> The print listing's lines on the physics of the time integration.

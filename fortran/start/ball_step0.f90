@@ -45,6 +45,8 @@ module adore_start_ball_step0
    !> The step-0 state of a ball bearing.
    type :: ball_step0_t
       type(mounting_t) :: mounting
+      !> the mounted geometry at the initial temperatures (the dynamics starts from it)
+      type(mounted_geometry_t) :: geometry
       type(ball_start_t) :: start
       !> start hypothesis used: MIN_DISSIPATION, CONTROL_OUTER or CONTROL_INNER
       integer :: start_method = BALL_START_METHOD
@@ -121,6 +123,7 @@ contains
          return
       end if
       geometry = mount_geometry(b, b%temperature)
+      s%geometry = geometry
       s%mounting = geometry%mounting
 
       qb = ball_qs_model(b, geometry)
