@@ -12,7 +12,6 @@ from pathlib import Path
 
 import click
 
-from .api import BALL_STARTS
 from .errors import AdoreError
 from .options import click_options
 
@@ -220,11 +219,12 @@ def plot(run_file: Path, set_name: str, out: Path | None, compare: Path | None, 
               help="local worker processes [default: the number of CPUs]")
 @click.option("--scheduler", metavar="ADDRESS",
               help="run the cases on the Dask distributed scheduler at ADDRESS (e.g. tcp://127.0.0.1:8786)")
-@click.option("--ball-start", type=click.Choice(BALL_STARTS),
-              help="initial ball angular velocity of every case (as for `run`)")
+@click_options(skip=("steps",))
 def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None, out_dir: Path,
-          workers: int | None, scheduler: str | None, ball_start: str | None) -> None:
+          workers: int | None, scheduler: str | None, **options) -> None:
     """Run DECK over a grid of field values, one case folder each, into a summary table.
+
+    Every run option of `pyadore run` applies to every case.
 
     Every case deck is the deck with the varied fields changed (the other records copied
     verbatim), validated before it runs.  A failed case is recorded with its message and
@@ -247,7 +247,7 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
     signal.signal(signal.SIGTERM, _terminate)
     try:
         frame = run_sweep(deck, list(vary), out_dir, zip=zip_values, steps=steps, workers=workers,
-                          scheduler=scheduler, ball_start=ball_start)
+                          scheduler=scheduler, **options)
     except AdoreError as exc:
         _fail(exc)
     except OSError as exc:  # the sweep folder cannot be made or written

@@ -295,3 +295,25 @@ def test_cli_errors_have_no_traceback(tmp_path):
                 "--scheduler", "tcp://127.0.0.1:1")
     assert proc.returncode == 1 and "exclude each other" in proc.stderr
 
+
+
+def test_every_run_option_applies_to_every_case(tmp_path):
+    """The sweep takes the run options of `pyadore run` from the engine's one table: here
+    substeps (report 4.4.5), which the sweep never named before the table; the sweep folder
+    remembers them and refuses to resume with others; a bad option stops it before any case."""
+    from pyadore.sweeps import store
+
+    folder = tmp_path / "s"
+    proc = _cli("sweep", BALL, "--vary", "inner_race_speed=10000,12000", "--steps", "2", "--substeps", "2",
+                "-o", folder, "--workers", "1")
+    assert proc.returncode == 0, proc.stderr
+    assert json.loads((folder / store.SWEEP_FILE).read_text())["options"] == {"substeps": 2}
+    for case in ("case_0001", "case_0002"):
+        text = (folder / "cases" / case / store.CASE_PRINT).read_text()
+        assert "TIME INTEGRATION: 2 TIME STEPS\n  2 SUBSTEPS IN EACH TIME STEP (REPORT 4.4.5)" in text
+    again = _cli("sweep", BALL, "--vary", "inner_race_speed=10000,12000", "--steps", "2", "--substeps", "3",
+                 "-o", folder, "--workers", "1")
+    assert again.returncode == 1 and "it differs in the run options" in again.stderr
+    with pytest.raises(pyadore.AdoreInputError, match="unknown run option 'colour'"):
+        pyadore.sweep(ROLLER, {"applied_force_z": [1000]}, tmp_path / "t", steps=0, colour="red", progress=False)
+    assert not (tmp_path / "t").exists()

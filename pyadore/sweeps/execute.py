@@ -24,11 +24,12 @@ from typing import Callable, Iterable
 __all__ = ["run_case", "run_local", "run_dask"]
 
 
-def run_case(case_id: str, deck_text: str, steps: int | None, ball_start: str | None) -> dict:
+def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | None = None) -> dict:
     """Run one case deck (text) and return ``{case, status, error, notes, duration_s,
     print_text, results, worker, tmp_deck}``.  ``status`` is ``ok``, ``input-error`` (the
     engine refused the deck), ``engine-failure`` or ``error`` (anything else, e.g. a print
-    file that does not read).  Never raises."""
+    file that does not read).  options: the run options of every case (:func:`pyadore.run`'s
+    keywords, the engine's option table).  Never raises."""
     import tempfile
 
     start = time.perf_counter()
@@ -46,7 +47,8 @@ def run_case(case_id: str, deck_text: str, steps: int | None, ball_start: str | 
             deck.write_text(deck_text, encoding="utf-8")
             prt = Path(tmp) / "case.prt"
             try:
-                result = run(deck, steps=steps, out=prt, ball_start=ball_start, progress=False)  # the sweep has its bar
+                # the sweep has its own progress bar
+                result = run(deck, steps=steps, out=prt, progress=False, **(options or {}))
                 out["notes"] = list(result.notes)
                 out["results"] = key_results(read_print(prt))
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")

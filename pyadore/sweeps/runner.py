@@ -71,20 +71,20 @@ class _Sweep:
     """The state of one sweep folder while the sweep runs."""
 
     def __init__(self, deck_path: Path, base_text: str, varied: list[Varied], cases: list[Case],
-                 out_dir: Path, steps: int | None, zip_values: bool, ball_start: str | None):
+                 out_dir: Path, steps: int | None, zip_values: bool, options: dict):
         self.deck_path = deck_path
         self.base_text = base_text
         self.varied = varied
         self.cases = cases
         self.root = out_dir
         self.steps = steps
-        self.ball_start = ball_start
+        self.options = options
         self.definition = {
             "deck": str(deck_path),
             "deck_sha256": hashlib.sha256(base_text.encode("utf-8")).hexdigest(),
             "vary": [{"name": v.name, "records": list(v.records), "field": v.field, "unit": v.unit,
                       "values": list(v.values)} for v in varied],
-            "zip": zip_values, "steps": steps, "ball_start": ball_start,
+            "zip": zip_values, "steps": steps, "options": options,
         }
         self.entries: dict[str, dict] = {}
         self._manifest_written = 0.0
@@ -104,11 +104,14 @@ class _Sweep:
             old = store.read_json(path)
             if old is None:
                 raise SweepError(f"{path}: unreadable; this folder does not hold a sweep pyadore can resume")
-            keys = ("deck_sha256", "vary", "zip", "steps", "ball_start")
+            if "options" not in old:  # a sweep folder of before the option table: its one option
+                old["options"] = {} if old.get("ball_start") is None else {"ball_start": old["ball_start"]}
+            keys = ("deck_sha256", "vary", "zip", "steps", "options")
             diffs = [k for k in keys if old.get(k) != self.definition[k]]
             if diffs:
                 what = ", ".join({"deck_sha256": "the deck's content", "vary": "the varied fields or values",
-                                  "zip": "--zip", "steps": "--steps", "ball_start": "--ball-start"}[k] for k in diffs)
+                                  "zip": "--zip", "steps": "--steps", "options": "the run options"}[k]
+                                 for k in diffs)
                 raise SweepError(f"{self.root} holds another sweep (of {old.get('deck')}; it differs in {what}): "
                                  f"rerun the same command to resume it, or give another -o DIR")
         else:
@@ -228,7 +231,7 @@ def _progress(total: int, enabled: bool | None):
 
 
 def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, workers: int | None = None,
-          scheduler=None, ball_start: str | None = None, progress: bool | None = None):
+          scheduler=None, progress: bool | None = None, **options):
     """Run ``deck`` over the values of ``vary`` and return the summary as a pandas DataFrame.
 
     vary: ``{"inner_race_speed": [10000, 20000], "applied_force_z": [1000, 2000]}`` or a list of
@@ -241,6 +244,9 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
     workers: local worker processes [default: the CPU count]; scheduler: the address of a
     Dask distributed scheduler (or a ``distributed.Client``) to run the cases on instead.
     progress: ``None`` shows a progress bar on a terminal only.
+    options: the run options of every case, as :func:`pyadore.run` takes them (the engine's
+    option table, e.g. ``ball_start="outer-race-control"``, ``substeps=5``); checked before
+    any case runs.
     Raises :class:`~pyadore.sweeps.SweepError` (an ``AdoreInputError``) when the sweep cannot
     start; a case that fails is a row with its status and message, never an exception.
     """
@@ -258,7 +264,12 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
         raise DeckError(f"{deck_path}: {len(problems)} problem(s) reading the deck", problems)
     varied = [parse_vary(text, base) for text in _vary_specs(vary)]
     cases = make_cases(varied, zip_values=zip)
-    run = _Sweep(deck_path, base_text, varied, cases, Path(os.fspath(out_dir)), steps, zip, ball_start)
+    from ..options import options_text
+
+    options = {k: v for k, v in options.items() if v is not None}
+    options_text(**options)  # an unknown option or a value of the wrong type: before any case
+    options = {k: (os.fspath(v) if isinstance(v, os.PathLike) else v) for k, v in options.items()}
+    run = _Sweep(deck_path, base_text, varied, cases, Path(os.fspath(out_dir)), steps, zip, options)
     run.open_folder()
     run.load_finished()
     todo = [c for c in cases if c.case_id not in run.entries]
@@ -282,7 +293,7 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
                 if bar is not None:
                     bar.update(1)
                 continue
-            yield (case.case_id, text, steps, ball_start)
+            yield (case.case_id, text, steps, options)
 
     try:
         run.write_manifest()
