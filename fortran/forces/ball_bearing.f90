@@ -77,11 +77,11 @@ contains
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_race_pair_t) :: p(2)
-      p(RACE_OUTER) = ball_race_pair_t(SIDE_OUTER, g%element_diameter, b%dm, b%f_o, g%groove_radius(1), &
+      p(RACE_OUTER) = ball_race_pair_t(SIDE_OUTER, g%element_diameter, b%dm, b%ball%f_o, g%groove_radius(1), &
                                        g%groove_centre(:, 1), b%material(BODY_ELEMENT)%modulus, &
                                        b%material(BODY_ELEMENT)%poisson, b%material(BODY_OUTER)%modulus, &
                                        b%material(BODY_OUTER)%poisson)
-      p(RACE_INNER) = ball_race_pair_t(SIDE_INNER, g%element_diameter, b%dm, b%f_i, g%groove_radius(2), &
+      p(RACE_INNER) = ball_race_pair_t(SIDE_INNER, g%element_diameter, b%dm, b%ball%f_i, g%groove_radius(2), &
                                        g%groove_centre(:, 2), b%material(BODY_ELEMENT)%modulus, &
                                        b%material(BODY_ELEMENT)%poisson, b%material(BODY_INNER)%modulus, &
                                        b%material(BODY_INNER)%poisson)

@@ -72,9 +72,9 @@ contains
       g%element_diameter = b%d*(1.0_wp + b%material(BODY_ELEMENT)%expansion*d_t(1))
       g%thermal_growth = [b%material(BODY_OUTER)%expansion*d_t(2)*0.5_wp*b%outer_raceway_dia, &
                           b%material(BODY_INNER)%expansion*d_t(3)*0.5_wp*b%inner_raceway_dia]
-      g%groove_radius = [b%f_o*b%d*(1.0_wp + b%material(BODY_OUTER)%expansion*d_t(2)), &
-                         b%f_i*b%d*(1.0_wp + b%material(BODY_INNER)%expansion*d_t(3))]
-      g%groove_centre = ball_groove_centres(b%d, b%dm, b%f_o, b%f_i, b%alpha0, &
+      g%groove_radius = [b%ball%f_o*b%d*(1.0_wp + b%material(BODY_OUTER)%expansion*d_t(2)), &
+                         b%ball%f_i*b%d*(1.0_wp + b%material(BODY_INNER)%expansion*d_t(3))]
+      g%groove_centre = ball_groove_centres(b%d, b%dm, b%ball%f_o, b%ball%f_i, b%ball%alpha0, &
                                             g%mounting%inner_raceway_growth + g%thermal_growth(2), &
                                             g%mounting%outer_raceway_shrink - g%thermal_growth(1))
       g%raceway_radius = [0.5_wp*b%outer_raceway_dia - n_growth*g%mounting%outer_raceway_shrink + g%thermal_growth(1), &

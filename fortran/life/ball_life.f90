@@ -30,9 +30,9 @@ contains
       wi_rpm = b%speed_inner*30.0_wp/pi
       wo_rpm = b%speed_outer*30.0_wp/pi
       call ball_race_lp_life(lp, q_o, alpha_o, pass_cycles(speed_rpm, wo_rpm, wi_rpm, wo_rpm), &
-                             b%f_o, b%d, b%dm, .true., .false., lives_o, n_o)
+                             b%ball%f_o, b%d, b%dm, .true., .false., lives_o, n_o)
       call ball_race_lp_life(lp, q_i, alpha_i, pass_cycles(speed_rpm, wi_rpm, wi_rpm, wo_rpm), &
-                             b%f_i, b%d, b%dm, .false., .true., lives_i, n_i)
+                             b%ball%f_i, b%d, b%dm, .false., .true., lives_i, n_i)
       hours = [life_hours(bearing_life(n_o, n_i, lp%weibull_e_point), wi_rpm - wo_rpm), &
                life_hours(n_o, wi_rpm - wo_rpm), life_hours(n_i, wi_rpm - wo_rpm)]
    end subroutine ball_basic_life

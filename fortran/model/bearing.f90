@@ -10,7 +10,7 @@ module adore_model_bearing
    implicit none
    private
 
-   public :: material_t, bearing_t, run_controls_t
+   public :: material_t, bearing_t, run_controls_t, ball_data_t, roller_data_t
    public :: BALL_BEARING, ROLLER_BEARING
    public :: BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, BODY_SHAFT, BODY_HOUSING
    public :: TEMP_ROOM, TEMP_HOUSING, TEMP_SHAFT, TEMP_ELEMENT, TEMP_CAGE, TEMP_OUTER, TEMP_INNER
@@ -39,7 +39,6 @@ module adore_model_bearing
       real(wp) :: wear = 5.0e-6_wp             !< wear coefficient
    end type material_t
 
-   !> Everything the physics needs from the deck.
    !> The deck's time integration controls (Rec 1, Rec 2.1; steps in dimensionless time tau).
    type :: run_controls_t
       integer :: n_steps = 0                   !< Rec 1 n_steps (NUMBER OF STEPS)
@@ -49,6 +48,25 @@ module adore_model_bearing
       real(wp) :: error_limit = 0.0_wp         !< Rec 2.1 ERROR LIMIT
    end type run_controls_t
 
+   !> What only a ball bearing has (Rec 5A).
+   type :: ball_data_t
+      real(wp) :: alpha0 = 0.0_wp              !< free contact angle (rad)
+      real(wp) :: f_o = 0.0_wp, f_i = 0.0_wp   !< groove curvature factors
+      real(wp) :: end_play = 0.0_wp            !< unmounted end play (m)
+   end type ball_data_t
+
+   !> What only a cylindrical roller bearing has (Rec 5B).
+   type :: roller_data_t
+      real(wp) :: roller_length = 0.0_wp       !< (m)
+      real(wp) :: roller_land = 0.0_wp         !< central flat land length (m)
+      real(wp) :: crown_radius = 1.0e10_wp     !< roller crown radius (m)
+      real(wp) :: corner_radius(2) = 0.0_wp    !< roller corner radii, -x and +x end (m)
+      real(wp) :: race_crown(2) = 1.0e10_wp    !< outer, inner race crown radii (m)
+      real(wp) :: race_length(2) = 0.0_wp      !< outer, inner race length 1 (Rec 5B.1, m; 0 = none)
+   end type roller_data_t
+
+   !> Everything the physics needs from the deck: the data common to every bearing kind, the
+   !> kinds' own data (ball, roller) and the deck's run controls, each in its own record.
    type :: bearing_t
       character(len=:), allocatable :: run_id
       integer :: bearing_type = BALL_BEARING
@@ -62,16 +80,9 @@ module adore_model_bearing
       ! rolling elements, Rec 5A (ball) / 5B (roller)
       real(wp) :: d = 0.0_wp                   !< ball or roller diameter (m)
       real(wp) :: dm = 0.0_wp                  !< pitch diameter (m)
-      real(wp) :: alpha0 = 0.0_wp              !< free contact angle (rad), ball
-      real(wp) :: f_o = 0.0_wp, f_i = 0.0_wp   !< groove curvature factors, ball
-      real(wp) :: roller_length = 0.0_wp       !< (m), roller
-      real(wp) :: roller_land = 0.0_wp         !< central flat land length (m), roller
-      real(wp) :: crown_radius = 1.0e10_wp     !< roller crown radius (m), roller
-      real(wp) :: corner_radius(2) = 0.0_wp    !< roller corner radii, -x and +x end (m)
-      real(wp) :: race_crown(2) = 1.0e10_wp    !< outer, inner race crown radii (m)
-      real(wp) :: race_length(2) = 0.0_wp      !< outer, inner race length 1 (Rec 5B.1, m; 0 = none)
+      type(ball_data_t) :: ball                !< ball bearings' own data (Rec 5A)
+      type(roller_data_t) :: roller            !< cylindrical roller bearings' own data (Rec 5B)
       real(wp) :: dia_play = 0.0_wp            !< unmounted diametral play (m)
-      real(wp) :: end_play = 0.0_wp            !< unmounted end play (m), ball
       real(wp) :: outer_raceway_dia = 0.0_wp   !< outer groove bottom / raceway diameter (m)
       real(wp) :: inner_raceway_dia = 0.0_wp   !< inner groove bottom / raceway diameter (m)
       ! cage, Rec 7.1

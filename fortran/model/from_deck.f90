@@ -138,34 +138,34 @@ contains
          call deck_collect_real(deck, "5A", "ball_diameter", b%d, error)
          call deck_collect_real(deck, "5A", "pitch_diameter", b%dm, error)
          call deck_collect_real(deck, "5A", "free_contact_angle", deg, error)
-         call deck_collect_real(deck, "5A", "outer_curvature_factor", b%f_o, error)
-         call deck_collect_real(deck, "5A", "inner_curvature_factor", b%f_i, error)
+         call deck_collect_real(deck, "5A", "outer_curvature_factor", b%ball%f_o, error)
+         call deck_collect_real(deck, "5A", "inner_curvature_factor", b%ball%f_i, error)
          call deck_collect_real(deck, "10.1C", "traction_at_zero_slip", k(1), error)
          call deck_collect_real(deck, "10.1C", "max_traction", k(2), error)
          call deck_collect_real(deck, "10.1C", "traction_at_infinite_slip", k(3), error)
          call deck_collect_real(deck, "10.1C", "slip_at_max_traction", k(4), error)
          if (allocated(error)) return
-         b%alpha0 = deg*pi/180.0_wp
-         b%dia_play = ball_diametral_play(b%d, b%f_o, b%f_i, b%alpha0)
-         b%end_play = ball_end_play(b%d, b%f_o, b%f_i, b%alpha0)
-         call ball_groove_diameters(b%dm, b%d, b%f_o, b%f_i, b%alpha0, b%outer_raceway_dia, b%inner_raceway_dia)
+         b%ball%alpha0 = deg*pi/180.0_wp
+         b%dia_play = ball_diametral_play(b%d, b%ball%f_o, b%ball%f_i, b%ball%alpha0)
+         b%ball%end_play = ball_end_play(b%d, b%ball%f_o, b%ball%f_i, b%ball%alpha0)
+         call ball_groove_diameters(b%dm, b%d, b%ball%f_o, b%ball%f_i, b%ball%alpha0, b%outer_raceway_dia, b%inner_raceway_dia)
          call sphere_inertia(b%d, b%material(BODY_ELEMENT)%density, b%mass(BODY_ELEMENT), b%moments(:, BODY_ELEMENT))
          pocket = b%d + b%pocket_clearance(1)
          call ball_cage_inertia(b%cage_od, b%cage_id, b%cage_width, b%n_elements, pocket, &
                                 b%material(BODY_CAGE)%density, b%mass(BODY_CAGE), b%moments(:, BODY_CAGE))
       else
          call deck_collect_real(deck, "5B", "roller_diameter", b%d, error)
-         call deck_collect_real(deck, "5B", "roller_length", b%roller_length, error)
+         call deck_collect_real(deck, "5B", "roller_length", b%roller%roller_length, error)
          call deck_collect_real(deck, "5B", "pitch_diameter", b%dm, error)
          call deck_collect_real(deck, "5B", "diametral_play", b%dia_play, error)
-         call deck_collect_real(deck, "5B", "central_land_length", b%roller_land, error)
-         call deck_collect_real(deck, "5B", "crown_radius", b%crown_radius, error)
-         call deck_collect_real(deck, "5B", "corner_radius_1", b%corner_radius(1), error)
-         call deck_collect_real(deck, "5B", "corner_radius_2", b%corner_radius(2), error)
-         call deck_collect_real(deck, "5B", "outer_race_crown_radius", b%race_crown(1), error)
-         call deck_collect_real(deck, "5B", "inner_race_crown_radius", b%race_crown(2), error)
-         call deck_collect_real(deck, "5B.1", "outer_race_len1", b%race_length(1), error)
-         call deck_collect_real(deck, "5B.1", "inner_race_len1", b%race_length(2), error)
+         call deck_collect_real(deck, "5B", "central_land_length", b%roller%roller_land, error)
+         call deck_collect_real(deck, "5B", "crown_radius", b%roller%crown_radius, error)
+         call deck_collect_real(deck, "5B", "corner_radius_1", b%roller%corner_radius(1), error)
+         call deck_collect_real(deck, "5B", "corner_radius_2", b%roller%corner_radius(2), error)
+         call deck_collect_real(deck, "5B", "outer_race_crown_radius", b%roller%race_crown(1), error)
+         call deck_collect_real(deck, "5B", "inner_race_crown_radius", b%roller%race_crown(2), error)
+         call deck_collect_real(deck, "5B.1", "outer_race_len1", b%roller%race_length(1), error)
+         call deck_collect_real(deck, "5B.1", "inner_race_len1", b%roller%race_length(2), error)
          call deck_collect_real(deck, "10.1B", "traction_at_zero_slip", k(1), error)
          call deck_collect_real(deck, "10.1B", "max_traction", k(2), error)
          call deck_collect_real(deck, "10.1B", "traction_at_infinite_slip", k(3), error)
@@ -174,11 +174,11 @@ contains
          call roller_race_diameters(b%dm, b%d, b%dia_play, b%outer_raceway_dia, b%inner_raceway_dia)
          ! the crowned roller (land and crown arcs; adore_contact_line_slices): the same mass
          ! for the centrifugal force, the echo and the time scale
-         b%mass(BODY_ELEMENT) = roller_mass(roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, &
-                                                  b%corner_radius), b%d, b%material(BODY_ELEMENT)%density)
-         b%moments(:, BODY_ELEMENT) = roller_moments(b%mass(BODY_ELEMENT), b%d, b%roller_length)
+         b%mass(BODY_ELEMENT) = roller_mass(roller_profile_t(b%roller%roller_length, b%roller%roller_land, b%roller%crown_radius, &
+                                                  b%roller%corner_radius), b%d, b%material(BODY_ELEMENT)%density)
+         b%moments(:, BODY_ELEMENT) = roller_moments(b%mass(BODY_ELEMENT), b%d, b%roller%roller_length)
          call roller_cage_inertia(b%cage_od, b%cage_id, b%cage_width, b%n_elements, &
-                                  b%d + b%pocket_clearance(1), b%roller_length + b%pocket_clearance(2), &
+                                  b%d + b%pocket_clearance(1), b%roller%roller_length + b%pocket_clearance(2), &
                                   b%material(BODY_CAGE)%density, b%mass(BODY_CAGE), b%moments(:, BODY_CAGE))
       end if
       b%traction_input = k

@@ -53,13 +53,13 @@ contains
       if (b%bearing_type == BALL_BEARING) then
          e%bearing_type = "BALL"
          e%element_kind = ELEMENT_BALL
-         e%contact_angle = b%alpha0*180.0_wp/pi
-         e%cur_fac = [b%f_o, b%f_i]
-         e%end_play = b%end_play
+         e%contact_angle = b%ball%alpha0*180.0_wp/pi
+         e%cur_fac = [b%ball%f_o, b%ball%f_i]
+         e%end_play = b%ball%end_play
       else
          e%bearing_type = "ROLLER"
          e%element_kind = ELEMENT_ROLLER
-         e%roller_len = b%roller_length
+         e%roller_len = b%roller%roller_length
          call deck_collect_real(deck, "5B", "central_land_length", e%cen_land, error, if_present=.true.)
          call deck_collect_real(deck, "5B", "crown_radius", e%crown_rad, error, if_present=.true.)
          call deck_collect_real(deck, "5B", "corner_radius_1", e%cor_rad(1), error, if_present=.true.)

@@ -26,8 +26,8 @@ contains
       q%n_balls = b%n_elements
       q%d = b%d
       q%dm = b%dm
-      q%f_o = b%f_o
-      q%f_i = b%f_i
+      q%f_o = b%ball%f_o
+      q%f_i = b%ball%f_i
       q%ball_mass = b%mass(BODY_ELEMENT)
       q%e_ball = b%material(BODY_ELEMENT)%modulus
       q%nu_ball = b%material(BODY_ELEMENT)%poisson
@@ -53,16 +53,18 @@ contains
 
       q%n_rollers = b%n_elements
       q%d = b%d
-      q%profile = roller_profile_t(b%roller_length, b%roller_land, b%crown_radius, b%corner_radius)
+      q%profile = roller_profile_t(b%roller%roller_length, b%roller%roller_land, b%roller%crown_radius, b%roller%corner_radius)
       q%mass = b%mass(BODY_ELEMENT)   ! the crowned roller of the bearing model
-      q%race_crown = b%race_crown
+      q%race_crown = b%roller%race_crown
       q%r_o = g%raceway_radius(1)
       q%r_i = g%raceway_radius(2)
-      half = 0.5_wp*b%roller_length
+      half = 0.5_wp*b%roller%roller_length
       q%lim_o = [-half, half]
       q%lim_i = [-half, half]
-      if (b%race_length(1) > 0.0_wp) q%lim_o = max(-0.5_wp*b%race_length(1), min(0.5_wp*b%race_length(1), q%lim_o))
-      if (b%race_length(2) > 0.0_wp) q%lim_i = max(-0.5_wp*b%race_length(2), min(0.5_wp*b%race_length(2), q%lim_i))
+      associate (race_length => b%roller%race_length)
+         if (race_length(1) > 0.0_wp) q%lim_o = max(-0.5_wp*race_length(1), min(0.5_wp*race_length(1), q%lim_o))
+         if (race_length(2) > 0.0_wp) q%lim_i = max(-0.5_wp*race_length(2), min(0.5_wp*race_length(2), q%lim_i))
+      end associate
       q%e_o = contact_modulus(b%material(BODY_ELEMENT)%modulus, b%material(BODY_ELEMENT)%poisson, &
                               b%material(BODY_OUTER)%modulus, b%material(BODY_OUTER)%poisson)
       q%e_i = contact_modulus(b%material(BODY_ELEMENT)%modulus, b%material(BODY_ELEMENT)%poisson, &

@@ -127,7 +127,7 @@ contains
       end if
 
       if (b%bearing_type /= ROLLER_BEARING .or. b%n_elements < 1 .or. b%d <= 0.0_wp .or. &
-          b%dm <= b%d .or. b%roller_length <= 0.0_wp .or. b%crown_radius <= 0.0_wp) then
+          b%dm <= b%d .or. b%roller%roller_length <= 0.0_wp .or. b%roller%crown_radius <= 0.0_wp) then
          call input_error(error, "roller bearing: need rollers with 0 < diameter < pitch diameter, "// &
                           "a length and a crown radius > 0")
          return
