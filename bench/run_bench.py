@@ -16,7 +16,8 @@ docs/dynamics.md): best and median wall time of DYNAMIC_REPEAT runs, the least C
 (the process's own, or the child's for the executable: steadier than wall time on a shared
 machine), the print's "Total Derivative Calls" and final tau, and microseconds per
 derivative call (the whole run, start and print included, over the calls; of the best wall
-time and of the least CPU time).  Issue #20's budget: at most 10 s for
+time and of the least CPU time); and once, the run to the report's simulated time
+(`--duration REPORT_DURATION`, issue #30) with its steps, calls and final tau.  Issue #20's budget: at most 10 s for
 the full run (goal 2 s).  Results are printed, and written to bench/results/latest.json.
 """
 
@@ -40,6 +41,7 @@ ROOT = Path(__file__).resolve().parent.parent
 DECKS = [ROOT / "decks" / "appendix_c_ball.inp", ROOT / "decks" / "appendix_d_roller.inp"]
 REPEAT = 5
 DYNAMIC_STEPS = 2500        # Appendix C's last step
+REPORT_DURATION = 0.08612   # s: the simulated time of the report's Appendix C step 2500 (tau 353.4)
 DYNAMIC_REPEAT = 3
 
 
@@ -121,6 +123,18 @@ def _dynamic_rows(exe):
                 rows.append({"deck": deck.name, "case": f"{DYNAMIC_STEPS} steps, {traction}, {label}", "best_s": best,
                              "median_s": median, "cpu_s": min(cpu), "derivative_calls": calls, "final_tau": tau,
                              "us_per_call": best / calls * 1e6, "cpu_us_per_call": min(cpu) / calls * 1e6})
+        # the report's simulated time (Appendix C step 2500: 8.612E-02 s; issue #30), once
+        start_cpu = _cpu_time()
+        start = time.perf_counter()
+        subprocess.run([exe, str(deck), str(out), "--duration", str(REPORT_DURATION)], check=True, capture_output=True)
+        wall, cpu = time.perf_counter() - start, _cpu_time() - start_cpu
+        text = out.read_text()
+        calls = int(re.search(r"Total Derivative Calls\s*=\s*(\d+)", text).group(1))
+        tau = float(re.search(r"Final Time\s*=\s*(\S+)", text).group(1))
+        steps = int(re.search(r"Last Step Number\s*=\s*(\d+)", text).group(1))
+        rows.append({"deck": deck.name, "case": f"--duration {REPORT_DURATION} (the report's time), {steps} steps, "
+                     "executable", "best_s": wall, "median_s": wall, "cpu_s": cpu, "derivative_calls": calls,
+                     "final_tau": tau, "us_per_call": wall / calls * 1e6, "cpu_us_per_call": cpu / calls * 1e6})
     return rows
 
 

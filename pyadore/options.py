@@ -15,6 +15,7 @@ neither this module nor the command line changes.
 
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass
 from functools import lru_cache
@@ -23,11 +24,11 @@ from pathlib import Path
 from .errors import AdoreInputError
 
 __all__ = ["RunOption", "run_options", "options_text", "click_options", "INT", "TEXT", "FLAG", "FLAG_OFF",
-           "CHOICE"]
+           "CHOICE", "REAL"]
 
 #: Option kinds (the engine's OPTION_*): an integer, a text (a file), a flag that sets a
-#: logical true, a flag whose ``flag`` spelling sets it false, one of ``choices``.
-INT, TEXT, FLAG, FLAG_OFF, CHOICE = 1, 2, 3, 4, 5
+#: logical true, a flag whose ``flag`` spelling sets it false, one of ``choices``, a real.
+INT, TEXT, FLAG, FLAG_OFF, CHOICE, REAL = 1, 2, 3, 4, 5, 6
 
 
 @dataclass(frozen=True)
@@ -48,6 +49,8 @@ class RunOption:
         """The default as a Python value (None where the engine's default is blank)."""
         if self.kind == INT:
             return int(self.default)
+        if self.kind == REAL:
+            return float(self.default)
         if self.kind in (FLAG, FLAG_OFF):
             return self.default == "true"
         return self.default or None
@@ -76,6 +79,11 @@ def _value_text(opt: RunOption, value) -> str:
         if value < opt.minimum:
             raise AdoreInputError(f"{opt.name} must be an integer >= {opt.minimum} ({opt.help}), got {value!r}")
         return str(value)
+    if opt.kind == REAL:
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+                or value < opt.minimum:
+            raise AdoreInputError(f"{opt.name} must be a finite number >= {opt.minimum} ({opt.help}), got {value!r}")
+        return repr(float(value))
     if opt.kind in (FLAG, FLAG_OFF):
         if not isinstance(value, bool):
             raise AdoreInputError(f"{opt.name} must be True or False, got {value!r}")
@@ -122,6 +130,9 @@ def click_options(skip: tuple[str, ...] = ()):
             dashed = "--" + opt.name.replace("_", "-")
             if opt.kind == INT:
                 deco = click.option(dashed, opt.name, type=click.IntRange(min=opt.minimum), default=None,
+                                    metavar=opt.metavar or None, help=f"{opt.help} [default: {opt.default}]")
+            elif opt.kind == REAL:
+                deco = click.option(dashed, opt.name, type=click.FloatRange(min=opt.minimum), default=None,
                                     metavar=opt.metavar or None, help=f"{opt.help} [default: {opt.default}]")
             elif opt.kind == TEXT:
                 deco = click.option(dashed, opt.name, type=click.Path(dir_okay=False, path_type=Path), default=None,

@@ -11,6 +11,7 @@
 !> (adore_model_run_options).  No state outlives the call.
 module adore_driver_run
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error, ADORE_INPUT_ERROR
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
@@ -69,8 +70,9 @@ contains
       real(wp), allocatable :: y(:)
       character(len=:), allocatable :: part_path, table_path, start_title, hist_path, incomplete, run_note, listing
       character(len=256) :: iomsg
+      real(wp) :: duration, t_end
       integer :: unit, stat, start_method, n_dynamic
-      logical :: ok, table
+      logical :: ok, table, to_time
 
       if (present(integrated)) integrated = 0
       if (present(note)) note = ""
@@ -86,6 +88,16 @@ contains
       end if
       if (len_trim(out_path) == 0) then
          call input_error(error, "print file: no output path given")
+         return
+      end if
+      if (opts%duration > 0.0_wp .and. opts%revolutions > 0.0_wp) then
+         call input_error(error, "run options duration and revolutions: give one of them (both set the end of "// &
+                          "the time integration)")
+         return
+      end if
+      if ((opts%duration > 0.0_wp .or. opts%revolutions > 0.0_wp) .and. opts%steps /= STEPS_FROM_DECK) then
+         call input_error(error, "run options steps and duration/revolutions: give one of them (a run ends after "// &
+                          "a step count or at a simulated time)")
          return
       end if
 
@@ -118,10 +130,19 @@ contains
       ! The time integration: its integrator (Rec 1 int_method, Rec 2.1) and history are set
       ! up before the print file is opened (bad settings leave no output).
       n_dynamic = sys%dynamic_steps()
+      to_time = opts%duration > 0.0_wp .or. opts%revolutions > 0.0_wp
       if (n_dynamic > 0) then
-         call sys%new_history(hist, n_dynamic, error)
-         if (allocated(error)) return
          call sys%start_dynamics(it, y, error)
+         if (allocated(error)) return
+         if (to_time) then
+            ! a run to a simulated time: its end in tau, and a first estimate of its steps
+            ! (Rec 2.1's largest step) to size the history, which grows as needed
+            call run_end_time(opts, bearing, sys%time_scale, duration, error)
+            if (allocated(error)) return
+            t_end = duration/sys%time_scale
+            n_dynamic = max(1, ceiling(t_end/max(bearing%controls%step_max, tiny(1.0_wp))))
+         end if
+         call sys%new_history(hist, n_dynamic, error)
          if (allocated(error)) return
       end if
       call sys%run_note(n_dynamic, run_note)
@@ -144,14 +165,21 @@ contains
          return
       end if
 
-      call write_listing(unit, text, bearing%race_traction, table_path, start_title, opts%moment_equilibrium, &
-                         n_dynamic, opts%substeps, listing)
+      if (to_time .and. n_dynamic > 0) then
+         call write_listing(unit, text, bearing%race_traction, table_path, start_title, opts%moment_equilibrium, &
+                            n_dynamic, opts%substeps, listing, duration, duration*abs(bearing%speed_inner)/(2.0_wp*pi))
+      else
+         call write_listing(unit, text, bearing%race_traction, table_path, start_title, opts%moment_equilibrium, &
+                            n_dynamic, opts%substeps, listing)
+      end if
       call write_banner(unit)
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start; then the time steps.
       incomplete = ""
       call sys%write_start(unit)
-      if (n_dynamic > 0) then
+      if (n_dynamic > 0 .and. to_time) then
+         call run_time_loop(unit, sys, it, y, n_dynamic, hist, incomplete, run_error, progress, opts%substeps, t_end)
+      else if (n_dynamic > 0) then
          call run_time_loop(unit, sys, it, y, n_dynamic, hist, incomplete, run_error, progress, opts%substeps)
       end if
 
@@ -190,5 +218,27 @@ contains
          error%stat = run_error%stat
       end if
    end subroutine run_deck
+
+   !> The simulated time (s) a run to a time integrates: opts%duration, or opts%revolutions
+   !> of the shaft (inner race, Rec 9.1.2 speed); input error for revolutions of a shaft that
+   !> does not turn.
+   subroutine run_end_time(opts, b, time_scale, duration, error)
+      type(run_options_t), intent(in) :: opts
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: time_scale
+      real(wp), intent(out) :: duration
+      type(error_type), allocatable, intent(out) :: error
+      duration = opts%duration
+      if (opts%revolutions > 0.0_wp) then
+         if (.not. abs(b%speed_inner) > 0.0_wp) then
+            call input_error(error, "run option revolutions: the shaft (inner race, Rec 9.1.2) does not turn; "// &
+                             "give the simulated time with duration")
+            return
+         end if
+         duration = opts%revolutions*2.0_wp*pi/abs(b%speed_inner)
+      end if
+      if (.not. duration/time_scale < 1.0e12_wp) call input_error(error, "run option duration: the simulated "// &
+         "time is beyond 1e12 time units of the echo's TIME scale")
+   end subroutine run_end_time
 
 end module adore_driver_run

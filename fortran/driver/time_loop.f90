@@ -51,13 +51,15 @@ contains
    !> after every accepted step (run_progress).  substeps: integrator steps per nominal
    !> (printed, recorded, counted) step, report 4.4.5 (default 1); the time averages take
    !> every one of them.  At each of the system's event times a step ends exactly there and
-   !> sys%on_event is called after it.
+   !> sys%on_event is called after it.  t_end (tau), when present: the run goes on until tau =
+   !> t_end exactly (the last step landing on it, printed) instead of for n_steps steps;
+   !> n_steps is then only the estimate the progress callback starts from.
    !>
    !> A run that stops early (the integrator's error, a failed evaluation, an event's error,
    !> progress asking to stop) prints its last accepted step (when not printed yet) and the
    !> line INCOMPLETE_MARK//incomplete//" ***", and returns an engine error with the same
    !> reason; incomplete = " after step N (tau = T): <reason>" (blank when the run completed).
-   subroutine run_time_loop(unit, sys, it, y, n_steps, history, incomplete, error, progress, substeps)
+   subroutine run_time_loop(unit, sys, it, y, n_steps, history, incomplete, error, progress, substeps, t_end)
       integer, intent(in) :: unit
       class(bearing_system_t), intent(inout) :: sys
       type(integrator_t), intent(inout) :: it
@@ -68,13 +70,14 @@ contains
       type(error_type), allocatable, intent(out) :: error
       procedure(run_progress), optional :: progress
       integer, intent(in), optional :: substeps
+      real(wp), intent(in), optional :: t_end
 
       type(time_average_t) :: averages
       real(wp), allocatable :: dydt(:), values(:), mean(:)
-      real(wp) :: t, t_old, t_event
+      real(wp) :: t, t_old, t_event, t_stop
       character(len=:), allocatable :: reason
-      integer :: i, j, flag, stop, printed_last, n_sub, print_interval, n_events
-      logical :: print_now, events
+      integer :: i, j, flag, stop, printed_last, n_sub, print_interval, n_events, n_report
+      logical :: print_now, events, to_time, last
 
       incomplete = ""
       n_sub = 1
@@ -87,6 +90,9 @@ contains
       n_events = 0
       t_event = huge(1.0_wp)
       if (events) t_event = max(sys%event_start, 0.0_wp)/sys%time_scale
+      to_time = present(t_end)
+      t_stop = huge(1.0_wp)
+      if (to_time) t_stop = t_end
       ! the initial state: its loads start the averages and the history's first row
       call sys%eval(t, y, dydt, flag)
       if (flag == DERIV_FAIL) then
@@ -97,11 +103,14 @@ contains
       call averages%start(values)
       call averages%mean(mean)
       call record(0)
-      do i = 1, n_steps
+      i = 0
+      do
+         i = i + 1
+         if (.not. to_time .and. i > n_steps) exit
          do j = 1, n_sub                      ! substeps (4.4.5): nothing printed or recorded
             t_old = t
-            if (events) then
-               call it%step(sys, t, y, error, t_limit=t_event)
+            if (events .or. to_time) then
+               call it%step(sys, t, y, error, t_limit=min(t_event, t_stop))
             else
                call it%step(sys, t, y, error)
             end if
@@ -128,21 +137,31 @@ contains
                end if
                t_event = (max(sys%event_start, 0.0_wp) + n_events*sys%event_period)/sys%time_scale
             end if
+            if (to_time .and. t >= t_stop) exit
          end do
-         print_now = i == n_steps
+         if (to_time) then
+            last = t >= t_stop
+            n_report = i
+            if (.not. last) n_report = max(i + 1, nint(i*(t_stop/t)))
+         else
+            last = i == n_steps
+            n_report = n_steps
+         end if
+         print_now = last
          if (print_interval > 0) print_now = print_now .or. mod(i, print_interval) == 0
-         if (print_now .or. history_due(history, i, n_steps, print_now)) call averages%mean(mean)
-         if (history_due(history, i, n_steps, print_now)) call record(i)
+         if (print_now .or. history_due(history, i, n_report, print_now)) call averages%mean(mean)
+         if (history_due(history, i, n_report, print_now)) call record(i)
          if (print_now) call print_step(i)
          if (present(progress)) then
-            call progress(i, n_steps, t, t*sys%time_scale, stop)
+            call progress(i, n_report, t, t*sys%time_scale, stop)
             if (stop /= 0) then
                call stop_run(i, "interrupted", .false.)
                return
             end if
          end if
+         if (last) exit
       end do
-      call write_termination(unit, n_steps, t)
+      call write_termination(unit, i, t)
       write (unit, "(a)") ""
       call write_statistics(unit, [it%stats%h_min_used, it%stats%h_max_used, it%stats%h_last, &
                                    it%stats%max_truncation], it%stats%derivative_calls)

@@ -17,15 +17,17 @@ module adore_model_run_options
 
    public :: run_options_t, option_spec_t, OPTION_TABLE, N_OPTIONS, STEPS_FROM_DECK
    public :: set_run_option, run_options_from_text, option_index
-   public :: OPTION_INT, OPTION_TEXT, OPTION_FLAG, OPTION_FLAG_OFF, OPTION_CHOICE
+   public :: OPTION_INT, OPTION_TEXT, OPTION_FLAG, OPTION_FLAG_OFF, OPTION_CHOICE, OPTION_REAL
 
    !> `steps` value meaning "as many steps as the deck asks for" (Rec 1 n_steps).
    integer, parameter :: STEPS_FROM_DECK = -1
 
    !> Option kinds: an integer >= its minimum; a text (a file name); a flag that sets a
    !> logical .true. (`--name`); a flag that sets its logical .false. (its `flag` spelling,
-   !> e.g. --traction-1d for traction_2d); one of the listed choices.
-   integer, parameter :: OPTION_INT = 1, OPTION_TEXT = 2, OPTION_FLAG = 3, OPTION_FLAG_OFF = 4, OPTION_CHOICE = 5
+   !> e.g. --traction-1d for traction_2d); one of the listed choices; a finite real >= its
+   !> minimum.
+   integer, parameter :: OPTION_INT = 1, OPTION_TEXT = 2, OPTION_FLAG = 3, OPTION_FLAG_OFF = 4, OPTION_CHOICE = 5, &
+                         OPTION_REAL = 6
 
    !> What a run does beyond the deck.  Defaults: the deck's own run.
    type :: run_options_t
@@ -46,6 +48,11 @@ module adore_model_run_options
       logical :: moment_equilibrium = .false.
       !> two-dimensional race traction (report eqs 2-3); .false.: the 1-D developer option
       logical :: traction_2d = .true.
+      !> simulated time of the time integration (s): the run ends exactly there, its last
+      !> step printed, instead of after a step count; 0: the step count
+      real(wp) :: duration = 0.0_wp
+      !> the same in shaft (inner race) revolutions; 0: none
+      real(wp) :: revolutions = 0.0_wp
    end type run_options_t
 
    !> One row of the option table.
@@ -60,7 +67,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 7
+   integer, parameter :: N_OPTIONS = 9
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -82,7 +89,13 @@ module adore_model_run_options
                     "instead of prescribing it zero (ball decks)"), &
       option_spec_t("traction_2d", OPTION_FLAG_OFF, "true", 0, "traction_1d", "", "", &
                     "developer option: one-dimensional race traction (slip along the rolling direction "// &
-                    "only, report eq 1) instead of the two-dimensional default") &
+                    "only, report eq 1) instead of the two-dimensional default"), &
+      option_spec_t("duration", OPTION_REAL, "0", 0, "", "SECONDS", "", &
+                    "simulated time to integrate (s): the run ends exactly there, its last step printed "// &
+                    "(instead of a step count)"), &
+      option_spec_t("revolutions", OPTION_REAL, "0", 0, "", "N", "", &
+                    "shaft (inner race) revolutions to integrate: the run ends exactly there, its last step "// &
+                    "printed (instead of a step count)") &
       ]
 
 contains
@@ -109,6 +122,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(option_spec_t) :: spec
       character(len=:), allocatable :: names, flag_name
+      real(wp) :: x
       integer :: k, n, stat
       logical :: flag, ok
 
@@ -121,6 +135,7 @@ contains
       spec = OPTION_TABLE(k)
       flag_name = replaced(trim(spec%name), "_", "-")
       n = 0
+      x = 0.0_wp
       flag = .false.
       select case (spec%kind)
       case (OPTION_INT)
@@ -133,6 +148,18 @@ contains
          if (n < spec%minimum) then
             call input_error(error, trim(spec%name)//" (--"//flag_name//"): "//itoa(n)//" is below its minimum "// &
                              itoa(spec%minimum)//" ("//trim(spec%help)//")")
+            return
+         end if
+      case (OPTION_REAL)
+         read (value, *, iostat=stat) x
+         if (stat /= 0 .or. len_trim(value) == 0 .or. verify(trim(adjustl(value)), "+-.0123456789eEdD") /= 0) then
+            call input_error(error, trim(spec%name)//" (--"//flag_name//"): expected a number, got '"// &
+                             trim(value)//"'")
+            return
+         end if
+         if (.not. (x >= real(spec%minimum, wp) .and. x <= huge(x))) then
+            call input_error(error, trim(spec%name)//" (--"//flag_name//"): '"//trim(value)//"' is not a finite "// &
+                             "number >= "//itoa(spec%minimum)//" ("//trim(spec%help)//")")
             return
          end if
       case (OPTION_FLAG, OPTION_FLAG_OFF)
@@ -176,6 +203,10 @@ contains
          opts%moment_equilibrium = flag
       case ("traction_2d")
          opts%traction_2d = flag
+      case ("duration")
+         opts%duration = x
+      case ("revolutions")
+         opts%revolutions = x
       end select
    end subroutine set_run_option
 

@@ -3,6 +3,7 @@
 !> Writers only format: they take what to print and a unit, and compute nothing.
 !> Layout: docs/print-layout.md (transcribed from the report's Appendix C/D output).
 module adore_output_banner
+   use adore_core_kinds, only: wp
    use adore_deck_text, only: deck_text_t
    use adore_tribology_traction_law, only: traction_law_t, LAW_TABLE
    implicit none
@@ -20,7 +21,7 @@ contains
    !> slip in m/s) and the "Listing of input data records": every deck line, verbatim (ADORE
    !> prints the deck before its banner, report Appendix C/D).
    subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps, &
-                            substeps, dynamics_lines)
+                            substeps, dynamics_lines, duration, revolutions)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -34,13 +35,22 @@ contains
       integer, intent(in), optional :: substeps
       !> the bearing kind's lines on the physics of its time integration, each ending in LF
       character(len=*), intent(in), optional :: dynamics_lines
+      !> a run to a simulated time: that time (s) and the shaft's revolutions in it
+      real(wp), intent(in), optional :: duration, revolutions
+      character(len=16) :: num
       integer :: i
 
       write (unit, "(a)") "Input from optional user subroutines"
       write (unit, "(a)") ""
       if (present(dynamics_steps)) then
          if (dynamics_steps > 0) then
-            write (unit, "(a,i0,a)") "TIME INTEGRATION: ", dynamics_steps, " TIME STEPS"
+            if (present(duration) .and. present(revolutions)) then
+               write (num, "(f16.3)") revolutions
+               write (unit, "(a,es11.4,a)") "TIME INTEGRATION: TO", duration, " S SIMULATED TIME ("// &
+                  trim(adjustl(num))//" SHAFT REVOLUTIONS), THE LAST STEP ENDING THERE"
+            else
+               write (unit, "(a,i0,a)") "TIME INTEGRATION: ", dynamics_steps, " TIME STEPS"
+            end if
             if (present(substeps)) then
                if (substeps > 1) write (unit, "(a,i0,a)") "  ", substeps, " SUBSTEPS IN EACH TIME STEP (REPORT 4.4.5)"
             end if

@@ -122,7 +122,8 @@ contains
    !> the magnitudes of the contact force on the cage and on the ball (0 when the run has no
    !> cage contacts: ball_system_t%cage); cage whirl and radial velocity are the components
    !> of the mass-centre velocity across and along its radius in the transverse plane (0 on
-   !> the axis).  A row beyond the capacity is not recorded (history_shape counts them all).
+   !> the axis).  A row beyond the capacity doubles it (a run to a simulated time has no
+   !> step count to size it by; history_shape's count holds for a run of steps).
    subroutine record_ball_history(h, step, time, s, loads, wear, race_wear, clearance)
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
@@ -133,7 +134,7 @@ contains
       real(wp) :: r, nan
       integer :: row, j, k, c
 
-      if (h%rows >= size(h%values, 1)) return
+      if (h%rows >= size(h%values, 1)) call grow_history(h)
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
       h%rows = h%rows + 1
       row = h%rows
@@ -170,6 +171,15 @@ contains
          if (allocated(loads%pockets)) v(row, c + 7) = norm2(loads%pockets(k)%force_ball)
       end associate
    end subroutine record_ball_history
+
+   !> Double the row capacity of h, keeping its rows.
+   subroutine grow_history(h)
+      type(run_history_t), intent(inout) :: h
+      real(wp), allocatable :: values(:, :)
+      allocate (values(max(2*size(h%values, 1), 16), size(h%values, 2)))
+      values(1:h%rows, :) = h%values(1:h%rows, :)
+      call move_alloc(values, h%values)
+   end subroutine grow_history
 
    !> The plot-data file of print file print_path: its name with the extension (after the
    !> last dot of the file name) replaced by ".hist.csv".
