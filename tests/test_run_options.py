@@ -1,0 +1,54 @@
+"""The run options come from one table in the engine (fortran/model/run_options.f90,
+issue #24 item 2): `adore --help`, `pyadore run --help`, `pyadore sweep --help` and
+`pyadore.run(**options)` offer the same options, and the engine checks every value."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+import pyadore
+from pyadore.options import FLAG_OFF, options_text, run_options
+
+
+def _flag(opt) -> str:
+    return "--" + (opt.flag if opt.kind == FLAG_OFF else opt.name).replace("_", "-")
+
+
+def test_every_command_line_offers_every_option(adore_exe):
+    names = [o.name for o in run_options()]
+    assert names[:3] == ["steps", "substeps", "history_element"] and len(set(names)) == len(names)
+    adore = subprocess.run([str(adore_exe), "--help"], capture_output=True, text=True, timeout=60).stdout
+    run = subprocess.run([sys.executable, "-m", "pyadore", "run", "--help"], capture_output=True, text=True,
+                         timeout=120).stdout
+    sweep = subprocess.run([sys.executable, "-m", "pyadore", "sweep", "--help"], capture_output=True, text=True,
+                           timeout=120).stdout
+    for opt in run_options():
+        assert _flag(opt) in adore, opt.name
+        assert opt.help.split()[0] in adore
+        if opt.name != "steps":  # pyadore's own --steps (None: the deck's count)
+            assert _flag(opt) in run, opt.name
+            assert _flag(opt) in sweep, opt.name
+
+
+def test_options_text_is_what_the_engine_reads():
+    text = options_text(substeps=3, traction_2d=False, ball_start="outer-race-control", duration=1.5e-3)
+    assert text.splitlines() == ["substeps=3", "traction_2d=false", "ball_start=outer-race-control",
+                                 "duration=0.0015"]
+    with pytest.raises(pyadore.AdoreInputError, match="unknown run option 'colour'"):
+        options_text(colour="red")
+    with pytest.raises(pyadore.AdoreInputError, match="substeps must be an integer >= 1"):
+        options_text(substeps=True)
+
+
+def test_the_engine_checks_ranges_and_names_every_bad_option(tmp_path, ball_deck):
+    from pyadore import _core
+
+    with pytest.raises(pyadore.AdoreInputError) as info:
+        _core.run_file(ball_deck, tmp_path / "x.prt", "substeps=0\ncolour=red\nsteps")
+    message = str(info.value)
+    assert "substeps (--substeps): 0 is below its minimum 1" in message
+    assert "run option 'colour': unknown" in message and "run option 'steps': expected name=value" in message
+    assert not list(tmp_path.iterdir())
