@@ -16,7 +16,7 @@ module adore_bearings_ball
    use adore_model_condition, only: condition_of, default_constraints
    use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
-   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, unpack_state, pack_state
+   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name
@@ -117,8 +117,8 @@ contains
       type(integrator_t), intent(out) :: it
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, error, &
-                               two_d=self%options%traction_2d)
+      call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
+                               error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit")
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
       ! the run's degrees of freedom are the condition's from now on (report 4.4.6)
@@ -246,7 +246,6 @@ contains
       class(ball_kind_t), intent(inout) :: self
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      type(bearing_state_t) :: s
       if (.not. allocated(self%eom%state%elements)) then
          call engine_error(error, "ball bearing: mount before the dynamics started")
          return
@@ -256,10 +255,7 @@ contains
          self%eom%bearing%force = c%force
          self%eom%bearing%moment = c%moment
          self%eom%constraints = c%constraints
-         s = self%eom%state
-         call unpack_state(y, 0.0_wp, s)
-         s%temperature = c%temperature
-         call pack_state(s, y)
+         call set_packed_temperatures(y, self%bearing%n_elements, c%temperature)
          self%clearance = guide_clearance(self%bearing, self%eom%geometry, c%temperature)
       end associate
    end subroutine ball_mount

@@ -18,6 +18,7 @@ module adore_dynamics_ball_system
    use adore_model_condition, only: dof_constraints_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, state_size, pack_state, unpack_state, &
+                                        pack_rates, &
                                         RACE_OUTER, RACE_INNER, BODY_SIZE
    use adore_forces_ball_bearing, only: ball_bearing_loads_t
    use adore_dynamics_ball_motion, only: ball_bearing_rates
@@ -68,6 +69,10 @@ module adore_dynamics_ball_system
       !> Kotzalas; add_gyroscopic_restraint): the classical assumption, and what ADORE 5.0's
       !> Appendix C print shows (docs/dynamics.md, "Ball gyroscopic moment")
       logical :: gyro_restraint = .true.
+      !> the balls in the orbit-following coordinates of the report's eq 54 in the packed
+      !> state (adore_state_bearing_state's orbit): (x, r, phi) and their rates instead of
+      !> inertial position and velocity (issue #30); the physics is the same
+      logical :: orbit_frame = .false.
       !> (2, n): when allocated, every contact's Hertz stiffness frozen at these values
       !> (N/m**1.5) instead of K(alpha): a verification option, the normal loads then derive
       !> from an energy (fortran/tests/test_dynamics.f90)
@@ -109,7 +114,7 @@ contains
 
       self%calls = self%calls + 1
       if (allocated(self%failure_reason)) deallocate (self%failure_reason)   ! only the last eval's reason
-      call unpack_state(y, t*self%time_scale, self%state)
+      call unpack_state(y, t*self%time_scale, self%state, self%orbit_frame)
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
@@ -134,7 +139,7 @@ contains
          dydt = 0.0_wp
          return
       end if
-      call pack_state(self%rates, dydt)
+      call pack_rates(self%state, self%rates, dydt, self%orbit_frame)
       dydt = self%time_scale*dydt
       flag = DERIV_OK
       ! an abnormal cage contact (report 4.4.12): the integrator retries with a smaller step
@@ -207,15 +212,22 @@ contains
    !> The integrator's error scale of each unknown of a packed state of n elements: the
    !> report's dimensionless variables (4.4.5: ADORE integrates in units of the echo's
    !> scales) - positions in L (m), velocities in L/T, quaternions in 1, angular velocities
-   !> in 1/T, temperatures in K.
-   pure function state_error_scale(n, l, tt) result(scale)
+   !> in 1/T, temperatures in K.  orbit_radius (m), when present: the elements are packed in
+   !> the orbit frame, their azimuth scaled L / orbit_radius and its rate L / (T orbit_radius)
+   !> (the same arc length as a position).
+   pure function state_error_scale(n, l, tt, orbit_radius) result(scale)
       integer, intent(in) :: n
       real(wp), intent(in) :: l, tt
+      real(wp), intent(in), optional :: orbit_radius
       real(wp) :: scale(state_size(n))
       integer :: i
       do i = 0, n + 2
          scale(BODY_SIZE*i + 1:BODY_SIZE*(i + 1)) = [l, l, l, l/tt, l/tt, l/tt, 1.0_wp, 1.0_wp, 1.0_wp, 1.0_wp, &
                                                      1.0_wp/tt, 1.0_wp/tt, 1.0_wp/tt]
+         if (present(orbit_radius) .and. i < n) then
+            scale(BODY_SIZE*i + 3) = l/orbit_radius
+            scale(BODY_SIZE*i + 6) = l/(tt*orbit_radius)
+         end if
       end do
       scale(BODY_SIZE*(n + 3) + 1:) = 1.0_wp
    end function state_error_scale
@@ -227,7 +239,7 @@ contains
    !> accepted when the error test still fails there, as ADORE's Appendix C statistics
    !> show: docs/dynamics.md), the packed initial state y at tau = 0.  traction: race
    !> traction on (default); two_d: the two-dimensional race traction (default .true.).
-   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d)
+   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d, orbit_frame)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_start_t), intent(in) :: start
@@ -237,8 +249,11 @@ contains
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: traction, two_d
+      !> the balls in the orbit-following frame (ball_system_t%orbit_frame; default .false.)
+      logical, intent(in), optional :: orbit_frame
       real(wp) :: scales(3), l, tt
       type(bearing_state_t) :: st
+      type(integrator_settings_t) :: settings
 
       call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error)
       if (allocated(error)) return
@@ -246,6 +261,7 @@ contains
       tt = scales(3)
       sys = new_ball_system(b, g, tt, traction)
       if (present(two_d)) sys%traction_2d = two_d
+      if (present(orbit_frame)) sys%orbit_frame = orbit_frame
       allocate (y(state_size(b%n_elements)))
       st = initial_ball_state(b, g, start, cage)
       if (sys%cage_spin_only) then
@@ -255,13 +271,17 @@ contains
          st%cage%velocity = 0.0_wp
          st%cage%attitude = quat_from_rotation_vector([0.0_wp, 0.0_wp, 0.0_wp])
       end if
-      call pack_state(st, y)
+      call pack_state(st, y, sys%orbit_frame)
       associate (c => b%controls)
-         call it%init(size(y), integrator_settings_t(int_method=c%int_method, h_initial=c%step_initial, &
-                                                     h_min=c%step_min, h_max=c%step_max, error_limit=c%error_limit, &
-                                                     rel_weight=0.0_wp, accept_at_h_min=.true.), error, &
-                      scale=state_error_scale(b%n_elements, l, tt))
+         settings = integrator_settings_t(int_method=c%int_method, h_initial=c%step_initial, h_min=c%step_min, &
+                                          h_max=c%step_max, error_limit=c%error_limit, rel_weight=0.0_wp, &
+                                          accept_at_h_min=.true.)
       end associate
+      if (sys%orbit_frame) then
+         call it%init(size(y), settings, error, scale=state_error_scale(b%n_elements, l, tt, 0.5_wp*b%dm))
+      else
+         call it%init(size(y), settings, error, scale=state_error_scale(b%n_elements, l, tt))
+      end if
    end subroutine start_ball_dynamics
 
 end module adore_dynamics_ball_system

@@ -48,6 +48,9 @@ module adore_model_run_options
       logical :: moment_equilibrium = .false.
       !> two-dimensional race traction (report eqs 2-3); .false.: the 1-D developer option
       logical :: traction_2d = .true.
+      !> the coordinates of the balls in the integrated state: "cartesian" (inertial position
+      !> and velocity) or "orbit" (the report's eq 54: axial, radial, azimuth and their rates)
+      character(len=16) :: ball_frame = "cartesian"
       !> simulated time of the time integration (s): the run ends exactly there, its last
       !> step printed, instead of after a step count; 0: the step count
       real(wp) :: duration = 0.0_wp
@@ -67,7 +70,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 9
+   integer, parameter :: N_OPTIONS = 10
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -95,7 +98,10 @@ module adore_model_run_options
                     "(instead of a step count)"), &
       option_spec_t("revolutions", OPTION_REAL, "0", 0, "", "N", "", &
                     "shaft (inner race) revolutions to integrate: the run ends exactly there, its last step "// &
-                    "printed (instead of a step count)") &
+                    "printed (instead of a step count)"), &
+      option_spec_t("ball_frame", OPTION_CHOICE, "cartesian", 0, "", "NAME", "cartesian,orbit", &
+                    "coordinates of the balls in the integrated state: inertial cartesian, or orbit-following "// &
+                    "(report eq 54: axial, radial, azimuth)") &
       ]
 
 contains
@@ -207,6 +213,9 @@ contains
          opts%duration = x
       case ("revolutions")
          opts%revolutions = x
+      case ("ball_frame")
+         opts%ball_frame = "cartesian"
+         if (len_trim(value) > 0) opts%ball_frame = trim(adjustl(value))
       end select
    end subroutine set_run_option
 

@@ -71,7 +71,10 @@ program test_dynamics
    call get_decks_dir(decks)
    call test_free_body("ball", [1.0_wp, 1.0_wp, 1.0_wp]*2.8e-7_wp, [1200.0_wp, -300.0_wp, 2500.0_wp])
    call test_free_body("cage", [3.1e-5_wp, 1.7e-5_wp, 1.7e-5_wp]*[1.0_wp, 1.1_wp, 0.9_wp], [900.0_wp, 40.0_wp, -25.0_wp])
-   call test_energy_without_traction()
+   call test_energy_without_traction(.false., 10.0_wp)
+   call test_energy_without_traction(.true., 5.0_wp)
+   call test_orbit_frame_rates()
+   call test_orbit_frame_is_the_same_motion()
    call test_run_balances_the_applied_load()
    call test_orbit_averages_match_the_quasi_static_equilibrium()
    call finish("dynamics")
@@ -126,7 +129,7 @@ contains
       real(wp) :: e, y(state_size(size(s%elements))), dydt(state_size(size(s%elements)))
       integer :: k, j, flag
 
-      call pack_state(s, y)
+      call pack_state(s, y, sys%orbit_frame)
       call sys%eval(s%time/sys%time_scale, y, dydt, flag)   ! fills sys%loads (the contacts at s)
       associate (b => sys%bearing)
          e = 0.0_wp
@@ -147,7 +150,12 @@ contains
       end associate
    end function total_energy
 
-   subroutine test_energy_without_traction()
+   !> The conservative ball bearing (no traction, cage or damping; K frozen) conserves its
+   !> energy, its balls integrated in inertial coordinates or (orbit) in the orbit-following
+   !> frame of eq 54, to tau_end.
+   subroutine test_energy_without_traction(orbit, tau_end)
+      logical, intent(in) :: orbit
+      real(wp), intent(in) :: tau_end
       type(bearing_t) :: b
       type(mounted_geometry_t) :: g
       type(ball_step0_t) :: s0
@@ -156,7 +164,7 @@ contains
       type(integrator_t) :: it
       type(error_type), allocatable :: error
       real(wp), allocatable :: y(:)
-      real(wp) :: l, tt, t, e0, e1, tau_end, hertz0, hertz
+      real(wp) :: l, tt, t, e0, e1, hertz0, hertz
       integer :: n
 
       call read_bearing(decks//"/appendix_c_ball.inp", b, error)
@@ -170,6 +178,7 @@ contains
       tt = time_scale(b%mass(BODY_ELEMENT), l, load_scale(b%force))
       sys = new_ball_system(b, g, tt, traction=.false., cage=.false.)   ! cage friction dissipates
       sys%contact_damping = 0.0_wp                                       ! so does contact damping
+      sys%orbit_frame = orbit
       s = initial_ball_state(b, g, s0%start, s0%cage)
       n = b%n_elements
       allocate (y(state_size(n)))
@@ -178,10 +187,14 @@ contains
       e0 = total_energy(sys, s, hertz0)
       sys%frozen_stiffness = sys%loads%contacts%stiffness
       e0 = total_energy(sys, s, hertz0)
-      call pack_state(s, y)
-      tau_end = 10.0_wp
-      call it%init(size(y), integrator_settings_t(h_initial=1.0e-3_wp, h_min=1.0e-9_wp, h_max=0.05_wp, &
-                   error_limit=1.0e-10_wp, rel_weight=0.0_wp), error, scale=state_error_scale(n, l, tt))
+      call pack_state(s, y, orbit)
+      if (orbit) then
+         call it%init(size(y), integrator_settings_t(h_initial=1.0e-3_wp, h_min=1.0e-9_wp, h_max=0.05_wp, &
+                      error_limit=1.0e-10_wp, rel_weight=0.0_wp), error, scale=state_error_scale(n, l, tt, 0.5_wp*b%dm))
+      else
+         call it%init(size(y), integrator_settings_t(h_initial=1.0e-3_wp, h_min=1.0e-9_wp, h_max=0.05_wp, &
+                      error_limit=1.0e-10_wp, rel_weight=0.0_wp), error, scale=state_error_scale(n, l, tt))
+      end if
       call check(.not. allocated(error), "energy: integrator set up")
       if (allocated(error)) return
       t = 0.0_wp
@@ -189,13 +202,14 @@ contains
          call it%step(sys, t, y, error, t_limit=tau_end)
          if (allocated(error)) exit
       end do
-      call check(.not. allocated(error), "energy: integration to tau = 10 without error")
+      call check(.not. allocated(error), "energy: integration to tau_end without error")
       if (allocated(error)) then
          write (*, "(a)") error%message
          return
       end if
-      call unpack_state(y, t*tt, s)
+      call unpack_state(y, t*tt, s, orbit)
       e1 = total_energy(sys, s, hertz)
+      if (orbit) write (*, "(a)", advance="no") "orbit frame, "
       write (*, "(a,es10.3,a,es10.3,a,es10.3,a,i0,a,i0)") "no traction, frozen K: energy ", e0, &
          " J (contacts ", hertz0, " J), change ", e1 - e0, " J; steps ", it%stats%accepted, &
          ", derivative calls ", sys%calls
@@ -355,5 +369,100 @@ contains
       call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error)
       call check(.not. allocated(error), what//": dynamics set up from the deck")
    end subroutine appendix_c_dynamics
+
+   !> The orbit frame's rates (pack_rates) against central differences of unpack_state: the
+   !> inertial velocity and acceleration rebuilt from (x, r, phi)' and (x, r, phi)'' of every
+   !> ball at Appendix C's start are the equations of motion's, to 1e-7 of their size.
+   subroutine test_orbit_frame_rates()
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(ball_system_t) :: sys
+      type(bearing_state_t) :: s, plus, minus
+      type(error_type), allocatable :: error
+      real(wp), allocatable :: y(:), dydt(:)
+      real(wp) :: h, worst_v, worst_a
+      integer :: k, flag
+
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      if (allocated(error)) return
+      g = mount_geometry(b, b%temperature)
+      call solve_ball_step0(b, s0, error, CONTROL_OUTER)
+      if (allocated(error)) return
+      sys = new_ball_system(b, g, 1.0_wp)
+      sys%orbit_frame = .true.
+      s = initial_ball_state(b, g, s0%start, s0%cage)
+      allocate (y(state_size(b%n_elements)), dydt(state_size(b%n_elements)))
+      call pack_state(s, y, .true.)
+      call sys%eval(0.0_wp, y, dydt, flag)          ! time scale 1: tau = t (s)
+      h = 1.0e-7_wp
+      plus = s
+      minus = s
+      call unpack_state(y + h*dydt, h, plus, .true.)
+      call unpack_state(y - h*dydt, -h, minus, .true.)
+      worst_v = 0.0_wp
+      worst_a = 0.0_wp
+      do k = 1, b%n_elements
+         associate (v => sys%rates%elements(k)%position, a => sys%rates%elements(k)%velocity)
+            worst_v = max(worst_v, norm2((plus%elements(k)%position - minus%elements(k)%position)/(2.0_wp*h) - v)/norm2(v))
+            worst_a = max(worst_a, norm2((plus%elements(k)%velocity - minus%elements(k)%velocity)/(2.0_wp*h) - a)/norm2(a))
+         end associate
+      end do
+      write (*, "(a,2es10.2)") "orbit frame rates against central differences: velocity, acceleration ", worst_v, worst_a
+      call check(flag == 0 .and. worst_v < 1.0e-7_wp .and. worst_a < 1.0e-7_wp, &
+                 "orbit frame: (x, r, phi) rates give back the inertial velocity and acceleration")
+   end subroutine test_orbit_frame_rates
+
+   !> The full ball system (traction, cage, damping as the run has them) from Appendix C's
+   !> start to tau = 2 at error limit 1e-9, its balls integrated in inertial and in
+   !> orbit-following coordinates: the same motion (every ball within 1e-9 m, every race
+   !> contact load within 1e-6 of the larger), in fewer steps in the orbit frame.
+   subroutine test_orbit_frame_is_the_same_motion()
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(ball_system_t) :: sys(2)
+      type(bearing_state_t) :: s(2)
+      type(integrator_t) :: it(2)
+      type(error_type), allocatable :: error
+      real(wp), allocatable :: y(:)
+      real(wp) :: tt, t, worst_x, worst_q, q_max
+      integer :: i, k, n, steps(2)
+
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      if (allocated(error)) return
+      g = mount_geometry(b, b%temperature)
+      call solve_ball_step0(b, s0, error)
+      if (allocated(error)) return
+      n = b%n_elements
+      do i = 1, 2
+         call start_ball_dynamics(b, g, s0%start, s0%cage, sys(i), it(i), y, error, orbit_frame=i == 2)
+         call check(.not. allocated(error), "orbit frame: start")
+         if (allocated(error)) return
+         tt = sys(i)%time_scale
+         it(i)%settings%error_limit = 1.0e-9_wp
+         t = 0.0_wp
+         do while (t < 2.0_wp)
+            call it(i)%step(sys(i), t, y, error, t_limit=2.0_wp)
+            if (allocated(error)) exit
+         end do
+         call check(.not. allocated(error), "orbit frame: integration to tau = 2")
+         if (allocated(error)) return
+         s(i) = sys(i)%state                         ! the last stage is at (t, y): first-same-as-last
+         call unpack_state(y, t*tt, s(i), i == 2)
+         steps(i) = it(i)%stats%accepted
+      end do
+      worst_x = 0.0_wp
+      worst_q = 0.0_wp
+      q_max = maxval(sys(1)%loads%contacts%load)
+      do k = 1, n
+         worst_x = max(worst_x, norm2(s(1)%elements(k)%position - s(2)%elements(k)%position))
+      end do
+      worst_q = maxval(abs(sys(1)%loads%contacts%load - sys(2)%loads%contacts%load))/q_max
+      write (*, "(a,es10.2,a,es10.2,a,2i6)") "orbit frame against inertial at tau = 2: positions ", worst_x, &
+         " m, contact loads ", worst_q, " of the largest; steps ", steps
+      call check(worst_x < 1.0e-9_wp .and. worst_q < 1.0e-6_wp, "orbit frame: the same motion as the inertial frame")
+      call check(steps(2) < steps(1), "orbit frame: fewer steps than the inertial frame")
+   end subroutine test_orbit_frame_is_the_same_motion
 
 end program test_dynamics
