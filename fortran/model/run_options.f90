@@ -48,9 +48,10 @@ module adore_model_run_options
       logical :: moment_equilibrium = .false.
       !> two-dimensional race traction (report eqs 2-3); .false.: the 1-D developer option
       logical :: traction_2d = .true.
-      !> the coordinates of the balls in the integrated state: "cartesian" (inertial position
-      !> and velocity) or "orbit" (the report's eq 54: axial, radial, azimuth and their rates)
-      character(len=16) :: ball_frame = "cartesian"
+      !> the coordinates of the balls in the integrated state: "orbit" (the report's eq 54:
+      !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
+      !> and velocity, the runs before issue #30)
+      character(len=16) :: ball_frame = "orbit"
       !> simulated time of the time integration (s): the run ends exactly there, its last
       !> step printed, instead of after a step count; 0: the step count
       real(wp) :: duration = 0.0_wp
@@ -99,9 +100,9 @@ module adore_model_run_options
       option_spec_t("revolutions", OPTION_REAL, "0", 0, "", "N", "", &
                     "shaft (inner race) revolutions to integrate: the run ends exactly there, its last step "// &
                     "printed (instead of a step count)"), &
-      option_spec_t("ball_frame", OPTION_CHOICE, "cartesian", 0, "", "NAME", "cartesian,orbit", &
-                    "coordinates of the balls in the integrated state: inertial cartesian, or orbit-following "// &
-                    "(report eq 54: axial, radial, azimuth)") &
+      option_spec_t("ball_frame", OPTION_CHOICE, "orbit", 0, "", "NAME", "orbit,cartesian", &
+                    "coordinates of the balls in the integrated state: orbit-following (report eq 54: axial, "// &
+                    "radial, azimuth) or inertial cartesian") &
       ]
 
 contains
@@ -214,7 +215,7 @@ contains
       case ("revolutions")
          opts%revolutions = x
       case ("ball_frame")
-         opts%ball_frame = "cartesian"
+         opts%ball_frame = "orbit"
          if (len_trim(value) > 0) opts%ball_frame = trim(adjustl(value))
       end select
    end subroutine set_run_option
