@@ -185,17 +185,22 @@ def test_f2py_and_standalone_write_identical_files(runs, build_dir):
         assert _same_to_the_printed_digit(exe_path.read_text(), runs["short"].print_path.read_text())
     else:
         assert exe_path.read_bytes() == runs["short"].print_path.read_bytes()
-    # the plot-data file holds 17 digits: the same numbers, to the round-off of two builds
-    # (`make debug` pairs a debug `adore` with the release extension)
+    # the plot-data file holds 17 digits: within one build the same file; `make debug` pairs
+    # a debug `adore` (-O0) with the release extension, whose round-off (1e-16) grows through
+    # the pocket impacts of the centred cage over the 60 steps, the same step sequence and
+    # derivative calls: measured 1.2e-6 relative at most (total power loss; 1.5e-10 with the
+    # balls in inertial coordinates, whose shorter steps resolve the impacts finer)
     a, b = (history_path(exe_path).read_text().splitlines(),
             runs["short"].history_path.read_text().splitlines())
+    if not _checks_build(build_dir):
+        assert a == b
     assert len(a) == len(b) and [x for x in a if x.startswith("#")] == [x for x in b if x.startswith("#")]
     assert a[0] == b[0]                                          # the header line
     rows = [(x.split(","), y.split(",")) for x, y in zip(a, b) if x and x[0].isdigit()]
     assert rows and all(len(x) == len(y) for x, y in rows)
     va = np.array([[float(v) for v in x] for x, _ in rows])
     vb = np.array([[float(v) for v in y] for _, y in rows])
-    np.testing.assert_allclose(va, vb, rtol=1e-9, atol=1e-300)
+    np.testing.assert_allclose(va, vb, rtol=1e-5, atol=1e-300)
 
 
 def test_explicit_steps_override_the_deck(runs):
