@@ -3,21 +3,44 @@
 ``pyadore.run(deck)`` runs an ADORE deck through the Fortran engine; ``pyadore.deck``
 reads, validates and writes decks; ``pyadore.printout`` and ``pyadore.diff`` read and
 compare print files; ``pyadore.sweep(deck, vary, out_dir)`` runs parametric studies.
-Importing pyadore does not load the engine extension.
+Importing pyadore does not load the engine extension, nor numpy or pandas: ``run``,
+``sweep`` and the other names below are imported when first used, so that the
+``pyadore`` command installs its signal handlers before any heavy import (pyadore/cli.py).
 """
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version as _dist_version
+from importlib import import_module
 
-from .api import BALL_STARTS, Result, read_traction_table, run
-from .errors import AdoreEngineError, AdoreError, AdoreInputError
-from .sweeps import sweep
-
-try:
-    __version__ = _dist_version("pyadore")
-except PackageNotFoundError:  # running from a source tree that is not installed
-    __version__ = "0+unknown"
+from .errors import AdoreEngineError, AdoreError, AdoreInputError, AdoreInterrupted
 
 __all__ = ["run", "sweep", "read_traction_table", "Result", "BALL_STARTS", "AdoreError", "AdoreInputError",
-           "AdoreEngineError", "__version__"]
+           "AdoreEngineError", "AdoreInterrupted", "__version__"]
+
+#: name -> module of the names imported when first used
+_LAZY = {"run": ".api", "Result": ".api", "read_traction_table": ".api", "BALL_STARTS": ".api", "sweep": ".sweeps"}
+
+
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("pyadore")
+    except PackageNotFoundError:  # running from a source tree that is not installed
+        return "0+unknown"
+
+
+def __getattr__(name: str):
+    if name == "__version__":
+        globals()[name] = value = _version()
+        return value
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'pyadore' has no attribute {name!r}")
+    value = getattr(import_module(module, __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_LAZY) | {"__version__"})

@@ -93,13 +93,21 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, **options)
     misalignment solved for moment equilibrium in the quasi-static start, ADORE kFS4 =
     kFS5 = 0; ball decks), ``traction_2d=False`` (the one-dimensional race traction, a
     developer option).  ``None`` for an option means its default.
-    Ctrl-C during the time steps (main thread) stops the run after its current step.
+    The paths are checked before anything is read or written (a deck or traction table
+    that is not a regular file, an output that is an input or a directory:
+    AdoreInputError), then the print file, its plot-data file and their ``.part`` files
+    left at ``out`` by an earlier run are removed: a run that is refused, fails or is
+    stopped never leaves an older print posing as its own.
     Raises :class:`~pyadore.errors.AdoreInputError` for bad input (an unknown option
     included) and :class:`~pyadore.errors.AdoreEngineError` when the engine fails.  A time
-    integration that stops early (Ctrl-C, a failed integration, a non-finite state) raises
+    integration that stops early (a failed integration, a non-finite state) raises
     AdoreEngineError naming the step and time; its print is kept and ends with the line
     ``*** RUN INCOMPLETE ...`` (the error's ``print_path``; ``time_history``: the steps
-    done).
+    done).  A stop signal (main thread: SIGINT/Ctrl-C; SIGTERM and SIGHUP where the process
+    has a handler for them, as the ``pyadore`` command has) stops the run at its next time
+    step and raises :class:`~pyadore.errors.AdoreInterrupted` (an
+    AdoreEngineError): the print kept and marked incomplete, or no print when the run had
+    not ended its first time step (pyadore/progress.py).
     """
     from .options import options_text
 
@@ -121,18 +129,17 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, **options)
             raise AdoreInputError(f"{out_path}: the output directory {out_path.parent} does not exist")
     from .progress import RunProgress
 
-    watch = RunProgress(progress, label=deck.name)
-    try:
-        with watch:
+    # a stop signal while the run and the reading of its files last: AdoreInterrupted (progress.py)
+    with RunProgress(progress, label=deck.name, print_path=out_path) as watch:
+        try:
             output = _core.run_file(deck, out_path, text, watch.callback)
-    except AdoreEngineError as exc:
-        done = getattr(exc, "output", None)
-        exc.print_path = out_path if out_path.exists() else None
-        exc.time_history = _written_history(out_path, done)
-        raise
-    watch.raise_pending_interrupt()
-    text = out_path.read_text(encoding="utf-8", errors="replace")
-    history = _written_history(out_path, output)
+        except AdoreEngineError as exc:
+            done = getattr(exc, "output", None)
+            exc.print_path = out_path if out_path.exists() else None
+            exc.time_history = _written_history(out_path, done)
+            raise
+        text = out_path.read_text(encoding="utf-8", errors="replace")
+        history = _written_history(out_path, output)
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
                   notes=[output.note] if output.note else [], steps_integrated=output.integrated,
                   time_history=history)

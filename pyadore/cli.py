@@ -2,25 +2,73 @@
 
 Bad input never shows a traceback: the message goes to stderr as one paragraph and
 the exit status is 1 (2 when the engine fails on a valid deck, or for ``diff`` when
-an input is unreadable).
+an input is unreadable).  A stop signal - SIGINT (Ctrl-C), SIGTERM, SIGHUP - at any
+moment ends the command with one line saying what became of its files, and then by the
+signal itself (a shell shows exit status 128 + its number: 130, 143, 129); a run stops at
+its next time step first (pyadore/progress.py).  The handlers (pyadore/_signals.py) are
+installed by the entry point (pyadore/__main__.py) before this module's imports.
 """
 
 from __future__ import annotations
 
+import stat
 import sys
 from pathlib import Path
 
 import click
 
-from .errors import AdoreError
+from ._signals import (SignalInterrupt, exit_by_signal, hold_signals, install_command_handlers, raised_signal,
+                       signal_label)
+from .errors import AdoreError, AdoreInputError, AdoreInterrupted
 from .options import click_options
 
 CONTEXT = {"help_option_names": ["-h", "--help"]}
 
+#: True when this is the process's command (main()): a stop signal then ends the process
+#: by the signal; under click's test runner a command exits with status 128 + the signal.
+_COMMAND = {"process": False}
+
+
+def _say(text: str) -> None:
+    """A line on stderr; a terminal gone (SIGHUP) or closed pipe is not an error here."""
+    try:
+        click.echo(text, err=True)
+    except (OSError, ValueError):
+        pass
+
+
+def _end_by_signal(signum: int, message: str) -> None:
+    """Say what a stop signal left and end by it (exit_by_signal), or exit 128 + signum when
+    this is not the process's command."""
+    if _COMMAND["process"]:
+        hold_signals()
+    _say(message)
+    if _COMMAND["process"]:
+        exit_by_signal(signum)
+    sys.exit(128 + signum)
+
 
 def _fail(exc: AdoreError) -> None:
+    if isinstance(exc, AdoreInterrupted):
+        _end_by_signal(exc.signal, f"pyadore: {exc}")
     click.echo(f"pyadore: error: {exc}", err=True)
     sys.exit(exc.status)
+
+
+_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a device"),
+          (stat.S_ISBLK, "a device"), (stat.S_ISSOCK, "a socket"))
+
+
+def _check_input_file(path: Path, what: str) -> None:
+    """AdoreInputError when ``path`` exists but is not a regular file (a FIFO would make the
+    reader wait for a writer for ever); a missing file is left to its reader."""
+    try:
+        mode = path.stat().st_mode
+    except OSError:
+        return
+    if not stat.S_ISREG(mode):
+        kind = next((words for test, words in _KINDS if test(mode)), "a special file")
+        raise AdoreInputError(f"{path}: the {what} is {kind}, not a regular file: give the {what} file itself")
 
 
 def _version() -> str:
@@ -49,28 +97,41 @@ def run(deck: Path, out: Path | None, steps: int | None, **options) -> None:
     A run with time steps also writes its plot-data file (time histories) beside the print,
     <print stem>.hist.csv, and shows a progress bar when stderr is a terminal.  Ctrl-C stops
     the time integration after its current step: the print is kept, marked incomplete on
-    its last line, and the exit status is 2."""
+    its last line; stopped before its first time step ended, it leaves no print.  Ctrl-C,
+    SIGTERM and SIGHUP all do so, and the command then ends by the signal (exit status
+    128 + its number: 130, 143, 129).  The print file, its plot-data file and their .part
+    files at OUT are removed as the run starts: a refused, failed or stopped run never
+    leaves an older print there."""
+    import signal
+
     from .api import run as run_deck
 
     if out is None:
         out = Path("out") / (deck.stem + ".prt")
+    finished = False
     try:
-        out.parent.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        click.echo(f"pyadore: error: cannot create the output directory {out.parent}: {exc.strerror}", err=True)
-        sys.exit(1)
-    try:
-        result = run_deck(deck, steps=steps, out=out, **options)
-    except AdoreError as exc:
-        _fail(exc)
-    except KeyboardInterrupt:
-        click.echo("pyadore: interrupted", err=True)
-        sys.exit(130)
-    click.echo(f"print file written: {result.print_path}")
-    if result.history_path is not None:
-        click.echo(f"plot-data file written: {result.history_path}")
-    for note in result.notes:
-        click.echo(f"pyadore: note: {note}", err=True)
+        try:
+            out.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            click.echo(f"pyadore: error: cannot create the output directory {out.parent}: {exc.strerror}", err=True)
+            sys.exit(1)
+        try:
+            result = run_deck(deck, steps=steps, out=out, **options)
+        except AdoreError as exc:
+            _fail(exc)
+        finished = True
+        click.echo(f"print file written: {result.print_path}")
+        if result.history_path is not None:
+            click.echo(f"plot-data file written: {result.history_path}")
+        for note in result.notes:
+            click.echo(f"pyadore: note: {note}", err=True)
+    except (SignalInterrupt, KeyboardInterrupt) as exc:  # outside the engine run (its own: AdoreInterrupted)
+        signum = getattr(exc, "signum", signal.SIGINT)
+        if finished:
+            _end_by_signal(signum, f"pyadore: {signal_label(signum)} came after the run had ended: its files are "
+                                   "complete")
+        _end_by_signal(signum, f"pyadore: stopped by {signal_label(signum)} before the run started: no file "
+                               f"written ({out})")
 
 
 @cli.command()
@@ -81,6 +142,12 @@ def validate(deck: Path, traction_table: Path | None) -> None:
     """Check DECK against the record schema; list every problem at once."""
     from .deck import check_deck
 
+    try:
+        _check_input_file(deck, "deck")
+        if traction_table is not None:
+            _check_input_file(traction_table, "traction-slip table")
+    except AdoreError as exc:
+        _fail(exc)
     parsed, problems = check_deck(deck)
     table_error = None
     table = None
@@ -113,7 +180,8 @@ def validate(deck: Path, traction_table: Path | None) -> None:
               help="tolerance file [default: golden/tolerances.toml]")
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
 def diff(run_file: Path, golden: Path, tolerances: Path | None, fmt: str) -> None:
-    """Compare print file RUN with GOLDEN within tolerances (exit 0 within, 1 outside, 2 unreadable)."""
+    """Compare print file RUN with GOLDEN within tolerances (exit 0 within, 1 outside, 2 unreadable or not
+    comparable: an empty or misspelt tolerance file, prints of different bearing types)."""
     from .diff import diff_command
 
     sys.exit(diff_command(run_file, golden, tolerances, fmt))
@@ -126,6 +194,7 @@ def _plot_input(path: Path, what: str, tmpdir: Path):
     from .errors import AdoreInputError
     from .printout.layout import BANNER_LINE
 
+    _check_input_file(path, {"run": "print file (or deck)"}.get(what, "compared print file (or deck)"))
     try:
         with open(path, encoding="utf-8", errors="replace") as handle:
             is_print = any(line.strip() == BANNER_LINE for line in handle)
@@ -174,6 +243,8 @@ def plot(run_file: Path, set_name: str, out: Path | None, compare: Path | None, 
                    f"{exc.strerror}", err=True)
         sys.exit(1)
     try:
+        if traction_table is not None:
+            _check_input_file(traction_table, "traction-slip table")
         with tempfile.TemporaryDirectory(prefix="pyadore-plot-") as tmp:
             run_print = _plot_input(run_file, "run", Path(tmp))
             other = _plot_input(compare, "compare", Path(tmp)) if compare is not None else None
@@ -230,7 +301,8 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
     verbatim), validated before it runs.  A failed case is recorded with its message and
     never stops the others.  Rerunning the same command keeps the finished cases and runs
     only the missing and failed ones.  Exit status 0 when every case finished, 1 when some
-    failed or the sweep could not start, 130 when interrupted.
+    failed or the sweep could not start; a stop signal (Ctrl-C, SIGTERM, SIGHUP) ends the
+    workers and then the command by that signal (exit status 128 + its number).
     """
     import signal
 
@@ -240,11 +312,6 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
         click.echo("pyadore: error: --workers and --scheduler exclude each other (the Dask cluster has its "
                    "own workers)", err=True)
         sys.exit(1)
-
-    def _terminate(signum, frame):
-        raise KeyboardInterrupt
-
-    signal.signal(signal.SIGTERM, _terminate)
     try:
         frame = run_sweep(deck, list(vary), out_dir, zip=zip_values, steps=steps, workers=workers,
                           scheduler=scheduler, **options)
@@ -254,10 +321,10 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
         click.echo(f"pyadore: error: {out_dir}: {exc.strerror or exc}"
                    + (f" ({exc.filename})" if exc.filename else ""), err=True)
         sys.exit(1)
-    except KeyboardInterrupt:
-        click.echo(f"pyadore: sweep interrupted; finished cases are kept in {out_dir}: rerun the same "
-                   "command to run the rest", err=True)
-        sys.exit(130)
+    except (SignalInterrupt, KeyboardInterrupt) as exc:  # the workers are ended (sweeps/execute.py)
+        signum = getattr(exc, "signum", signal.SIGINT)
+        _end_by_signal(signum, f"pyadore: sweep interrupted by {signal_label(signum)}; finished cases are kept "
+                               f"in {out_dir}: rerun the same command to run the rest")
     counts = frame["status"].value_counts()
     done = int(counts.get("ok", 0))
     click.echo(f"{len(frame)} cases: {done} finished" + "".join(
@@ -310,8 +377,21 @@ def plot_sweep(sweep_dir: Path, x: str, y: str, by: str | None, where: tuple[str
 
 
 def main() -> None:
-    """Entry point of the ``pyadore`` script."""
-    cli(prog_name="pyadore")
+    """The ``pyadore`` command (the entry point pyadore/__main__.py calls it once its signal
+    handlers are in place; installed here too for a direct call)."""
+    _COMMAND["process"] = True
+    install_command_handlers()
+    try:
+        cli(prog_name="pyadore")
+    except SignalInterrupt as exc:
+        _end_by_signal(exc.signum, f"pyadore: stopped by {signal_label(exc.signum)}")
+    except Exception:
+        # raised after a stop signal interrupted something (an import a C extension turned
+        # into ImportError, a library's clean-up): the signal's doing, not an error to show
+        signum = raised_signal()
+        if signum is None:
+            raise
+        _end_by_signal(signum, f"pyadore: stopped by {signal_label(signum)}")
 
 
 if __name__ == "__main__":

@@ -40,7 +40,8 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
 
 REPO_TOLERANCES = Path(__file__).resolve().parent.parent / "golden" / "tolerances.toml"
 
-__all__ = ["diff_prints", "diff_command", "DiffReport", "Comparison", "load_tolerances", "PrintFormatError"]
+__all__ = ["diff_prints", "diff_command", "DiffReport", "Comparison", "load_tolerances", "bearing_kind",
+           "PrintFormatError"]
 
 
 @dataclass
@@ -257,24 +258,53 @@ class _Rule:
         return "*" in self.columns or column in self.columns
 
 
+#: the keys of a tolerance file and of its rules (golden/tolerances.toml explains them)
+TOLERANCE_KEYS = ("defaults", "rule")
+DEFAULTS_KEYS = ("rel",)
+RULE_KEYS = ("step", "table", "columns", "rel", "abs", "match", "deviation", "deviation_max")
+
+
+def _unknown_keys(found, known, where: str) -> None:
+    extra = [k for k in found if k not in known]
+    if extra:
+        raise ValueError(f"{where}: unknown key{'s' if len(extra) > 1 else ''} "
+                         f"{', '.join(repr(k) for k in extra)} (expected {', '.join(known)})")
+
+
 def load_tolerances(path) -> tuple[float, list]:
     """Read a tolerance file: (default relative tolerance, rules in file order).
 
-    Raises PrintFormatError naming the file when it is unreadable or malformed.
+    Raises PrintFormatError naming the file when it is unreadable or malformed, when a key
+    is unknown (a misspelt ``[[rules]]`` or ``colums`` would silently compare at other
+    tolerances) or when it holds no tolerance at all (an empty file, or comments only:
+    every value would be compared at the built-in 1 % without anyone choosing it).
     """
     p = Path(path)
     if tomllib is None:  # pragma: no cover
         raise PrintFormatError(f"{p}: reading tolerance files needs Python 3.11 (tomllib)")
     try:
+        if p.exists() and not p.is_file():
+            raise PrintFormatError(f"{p}: the tolerance file is not a regular file")
         data = tomllib.loads(p.read_text(encoding="utf-8"))
     except OSError as exc:
         raise PrintFormatError(f"{p}: cannot read the tolerance file: {exc.strerror or exc}") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise PrintFormatError(f"{p}: not a valid TOML tolerance file: {exc}") from None
+    if not data.get("defaults") and not data.get("rule"):
+        raise PrintFormatError(f"{p}: no tolerances in the tolerance file (neither [defaults] rel nor a [[rule]]"
+                               + ("" if not data else f"; it has {', '.join(repr(k) for k in data)}")
+                               + "): give a tolerance file with its rules, e.g. golden/tolerances.toml")
     try:
+        _unknown_keys(data, TOLERANCE_KEYS, "top level")
+        if not isinstance(data.get("defaults", {}), dict):
+            raise ValueError("defaults: expected a table [defaults] with rel = ...")
+        _unknown_keys(data.get("defaults", {}), DEFAULTS_KEYS, "[defaults]")
         default = float(data.get("defaults", {}).get("rel", 0.01))
         rules = []
         for k, r in enumerate(data.get("rule", []), 1):
+            if not isinstance(r, dict):
+                raise ValueError(f"rule {k}: expected a table [[rule]]")
+            _unknown_keys(r, RULE_KEYS, f"rule {k}")
             step = r.get("step", "any")
             if step not in ("initial", "final", "any"):
                 raise ValueError(f"rule {k}: step must be initial, final or any, not {step!r}")
@@ -366,8 +396,30 @@ def _compare_scalars(report, table, gvals, gmarks, rvals, rmarks, rule_of) -> No
                                                  rule, abs(g) if isinstance(g, (int, float)) and not math.isnan(g) else 0.0))
 
 
+def bearing_kind(run: PrintRun) -> str:
+    """``"ball"``, ``"roller"`` or ``""`` (unknown) of a parsed print: its banner's bearing
+    type, else (a golden file's ``?``) its tables: a roller print lists its contact slices
+    (``slices_<n>``), a ball print has rolling-element contacts and no slices."""
+    text = str(run.bearing_type or "").strip().upper()
+    if "ROLLER" in text or "CYL" in text:
+        return "roller"
+    if "BALL" in text:
+        return "ball"
+    tables = {name for step in run.steps.values() for name in step.tables}
+    if any(name.startswith("slices_") for name in tables):
+        return "roller"
+    if "re_contact" in tables:
+        return "ball"
+    return ""
+
+
 def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None) -> DiffReport:
     """Compare two parsed print files; see :func:`diff_prints`."""
+    kinds = bearing_kind(run), bearing_kind(golden)
+    if all(kinds) and kinds[0] != kinds[1]:
+        raise PrintFormatError(f"{run.path} is a {kinds[0]} bearing print and {golden.path} a {kinds[1]} "
+                               "bearing print: prints of different bearing types cannot be compared (give the "
+                               f"golden file of a {kinds[0]} bearing)")
     tpath = Path(tolerances_path) if tolerances_path else _default_tolerances(Path(golden.path))
     default, rules = load_tolerances(tpath)
     report = DiffReport(run.path, golden.path, str(tpath), run_incomplete=run.incomplete)
@@ -495,8 +547,13 @@ def diff_prints(run_path, golden_path, tolerances_path=None) -> DiffReport:
 
     The tolerance file defaults to ``tolerances.toml`` next to the golden file, else the
     repository's ``golden/tolerances.toml``.  Raises PrintFormatError for an unreadable or
-    malformed print or tolerance file.
+    malformed print or tolerance file (an empty one included), an input that is not a
+    regular file (a FIFO would wait for a writer), or prints of different bearing types.
     """
+    for path, what in ((golden_path, "golden print"), (run_path, "run's print")):
+        p = Path(path)
+        if p.exists() and not p.is_file():
+            raise PrintFormatError(f"{p}: the {what} is not a regular file")
     golden = read_print(golden_path)
     run = read_print(run_path)
     return diff_runs(run, golden, tolerances_path)

@@ -7,8 +7,8 @@ so ``except pyadore.AdoreError`` catches everything pyadore raises on purpose.
 
 from __future__ import annotations
 
-__all__ = ["AdoreError", "AdoreInputError", "AdoreEngineError", "MissingSeriesError", "MissingSeriesWarning",
-           "STATUS_OK", "STATUS_INPUT", "STATUS_ENGINE"]
+__all__ = ["AdoreError", "AdoreInputError", "AdoreEngineError", "AdoreInterrupted", "MissingSeriesError",
+           "MissingSeriesWarning", "STATUS_OK", "STATUS_INPUT", "STATUS_ENGINE"]
 
 #: Status codes shared with the Fortran engine (fortran/core/error.f90) and used as
 #: process exit codes by the ``adore`` executable and the ``pyadore`` CLI.
@@ -33,6 +33,22 @@ class AdoreEngineError(AdoreError):
     """The engine failed on an input it accepted (no convergence, numerical breakdown)."""
 
     status = STATUS_ENGINE
+
+
+class AdoreInterrupted(AdoreEngineError):
+    """A run stopped by a stop signal: SIGINT (Ctrl-C), SIGTERM or SIGHUP (docs/dynamics.md,
+    "Signals").  ``signal``: its number; ``status``: 128 + that number, the exit status a
+    shell shows for ``pyadore run`` and ``adore`` stopped by it; ``print_path``: the print
+    file kept (marked incomplete, or complete when the signal came after the last time
+    step), None when the run stopped before its first time step ended and left no file;
+    ``time_history``: the steps recorded in the kept plot-data file, or None."""
+
+    def __init__(self, message: str, signal: int, print_path=None, time_history=None):
+        super().__init__(message)
+        self.signal = int(signal)
+        self.status = 128 + int(signal)
+        self.print_path = print_path
+        self.time_history = time_history
 
 
 class MissingSeriesError(AdoreInputError):

@@ -80,16 +80,28 @@ def read_history_csv(path) -> tuple[pd.DataFrame, str]:
 
 def history_beside(run) -> tuple[pd.DataFrame | None, str]:
     """The plot-data file beside a parsed print ``run`` (:class:`pyadore.printout.PrintRun`):
-    (its table, "") when the file exists and belongs to the print - it holds every printed
-    step with the printed time (within the print's 4 digits) - else (None, a note saying why
-    it was not used; "" when there is no such file)."""
+    (its table, "") when the file exists and belongs to the print - it ends at the print's
+    last printed step (a run records its last step, and a print without time steps, such as
+    a roller run's, has no plot-data file), it is incomplete exactly when the print is, and
+    it holds every printed step with the printed time (within the print's 4 digits) - else
+    (None, a note saying why it was not used; "" when there is no such file)."""
     path = history_path(run.path)
     if not path.is_file():
         return None, ""
     try:
-        frame, _incomplete = read_history_csv(path)
+        frame, incomplete = read_history_csv(path)
     except AdoreInputError as exc:
         return None, f"{path} not used: {exc}"
+    other = "(a plot-data file of another run)"
+    last_printed = run.step_numbers[-1] if run.step_numbers else None
+    last_recorded = int(frame["step"].iloc[-1]) if len(frame) else None
+    if last_printed is not None and last_recorded != last_printed:
+        what = ("the print has no time steps" if last_printed == 0 else
+                f"the print's last step is {last_printed}")
+        return None, f"{path} not used: it ends at step {last_recorded}, {what} {other}"
+    if bool(incomplete) != bool(run.incomplete):
+        return None, (f"{path} not used: " + ("it says its run stopped early, the print does not " if incomplete
+                                               else "the print says its run stopped early, it does not ") + other)
     recorded = dict(zip(frame["step"].tolist(), frame.index.to_numpy()))
     for number in run.step_numbers:
         printed = run.steps[number].header.get("time_s", math.nan)

@@ -528,15 +528,18 @@ def _interrupt(cmd, part, tmp_path):
 
 
 @pytest.mark.parametrize("front_end", ["adore", "pyadore"])
-def test_ctrl_c_stops_the_run_with_exit_2_and_an_incomplete_print(tmp_path, ball_deck, adore_exe, front_end):
-    """A real SIGINT during a run of Appendix C (2500 steps): exit status 2, one message
-    without traceback, the print kept and marked incomplete."""
+def test_ctrl_c_stops_the_run_by_the_signal_with_an_incomplete_print(tmp_path, ball_deck, adore_exe, front_end):
+    """A real SIGINT during a run of Appendix C (2500 steps): the program ends by SIGINT (a
+    shell's exit status 130; docs/dynamics.md "Signals"), one message without traceback,
+    the print kept and marked incomplete (tests/test_signals_and_files.py: every moment,
+    every stop signal)."""
     out = tmp_path / "c.prt"
     cmd = ([str(adore_exe), str(ball_deck), str(out)] if front_end == "adore" else
            [sys.executable, "-m", "pyadore", "run", str(ball_deck), "-o", str(out)])
     code, _stdout, stderr = _interrupt(cmd, tmp_path / "c.prt.part", tmp_path)
-    assert code == 2, stderr
-    assert "Traceback" not in stderr and ": interrupted; kept: the print file" in stderr
+    assert code == -signal.SIGINT, stderr
+    assert "Traceback" not in stderr and "stopped by SIGINT (Ctrl-C)" in stderr
+    assert ": interrupted; kept: the print file" in stderr
     assert out.read_text().splitlines()[-1].endswith(": interrupted ***")
     assert read_print(out).incomplete
     assert sorted(p.name for p in tmp_path.iterdir()) == ["c.hist.csv", "c.prt"]

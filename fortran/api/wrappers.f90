@@ -6,11 +6,14 @@
 !> process.  The interface seen by Python is declared in _engine.pyf.
 
 !> The run of a deck behind adore_run_file and adore_run_file_progress: the run options
-!> from their text, run_deck, its outputs as status, message, counts and note.
+!> from their text, the run's paths checked and the output path cleared
+!> (adore_output_run_files, as the standalone program does), run_deck, its outputs as
+!> status, message, counts and note.
 module adore_api_run
    use adore_core_error, only: error_type, ADORE_OK
    use adore_api_status, only: set_error
    use adore_driver_run, only: run_deck, run_progress
+   use adore_output_run_files, only: check_run_paths, clear_run_outputs
    use adore_model_run_options, only: run_options_t, run_options_from_text
    use adore_output_run_history, only: run_history_t
    implicit none
@@ -39,7 +42,11 @@ contains
       integrated = 0
       history_rows = 0
       call run_options_from_text(options, opts, error)
-      if (.not. allocated(error)) call run_deck(deck_path, out_path, opts, error, integrated, history, run_note, progress)
+      if (.not. allocated(error)) call check_run_paths(deck_path, out_path, opts%traction_table, error)
+      if (.not. allocated(error)) then
+         call clear_run_outputs(out_path)
+         call run_deck(deck_path, out_path, opts, error, integrated, history, run_note, progress)
+      end if
       status = ADORE_OK
       message = ""
       note = ""

@@ -1,4 +1,5 @@
-!> Small file-system helpers bound to the C library (rename, remove, whole-file read).
+!> Small file-system helpers bound to the C library (rename, remove, whole-file read, what
+!> a path is, its canonical name).
 !>
 !> Used to publish an output file atomically: the print file is written under a
 !> temporary name and renamed only when complete, so a failed run never leaves a
@@ -6,11 +7,22 @@
 !> Fortran unit: the Fortran runtime refuses to connect one file to two units at once,
 !> which made two threads reading the same deck fail.
 module adore_core_os
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_size_t, c_associated, c_loc
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_size_t, c_associated, &
+                                          c_loc, c_f_pointer
    implicit none
    private
 
-   public :: rename_file, delete_file, read_whole_file
+   public :: rename_file, delete_file, read_whole_file, path_kind, canonical_path, writable_directory
+   public :: PATH_MISSING, PATH_REGULAR, PATH_DIRECTORY, PATH_FIFO, PATH_DEVICE, PATH_SOCKET, PATH_OTHER
+
+   !> What a path names (path_kind), after following symbolic links.
+   integer, parameter :: PATH_MISSING = 0     !< nothing (or a path that cannot be looked at)
+   integer, parameter :: PATH_REGULAR = 1     !< a regular file
+   integer, parameter :: PATH_DIRECTORY = 2   !< a directory
+   integer, parameter :: PATH_FIFO = 3        !< a named pipe (FIFO): reading it waits for a writer
+   integer, parameter :: PATH_DEVICE = 4      !< a character or block device
+   integer, parameter :: PATH_SOCKET = 5      !< a socket
+   integer, parameter :: PATH_OTHER = 6       !< anything else
 
    interface
       function c_rename(old, new) result(rc) bind(c, name="rename")
@@ -44,6 +56,21 @@ module adore_core_os
          type(c_ptr), value :: fp
          integer(c_int) :: rc
       end function c_fclose
+      function c_realpath(path, resolved) result(p) bind(c, name="realpath")
+         import :: c_char, c_ptr
+         character(kind=c_char), intent(in) :: path(*)
+         type(c_ptr), value :: resolved
+         type(c_ptr) :: p
+      end function c_realpath
+      function c_strlen(s) result(n) bind(c, name="strlen")
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: s
+         integer(c_size_t) :: n
+      end function c_strlen
+      subroutine c_free(p) bind(c, name="free")
+         import :: c_ptr
+         type(c_ptr), value :: p
+      end subroutine c_free
    end interface
 
 contains
@@ -92,5 +119,69 @@ contains
       rc = c_fclose(fp)
       if (err /= 0) message = "cannot read the file (a directory?)"
    end subroutine read_whole_file
+
+   !> What `path` names, following symbolic links (PATH_MISSING, PATH_REGULAR, PATH_DIRECTORY,
+   !> PATH_FIFO, PATH_DEVICE, PATH_SOCKET, PATH_OTHER); the path is looked at, never opened
+   !> (opening a FIFO would wait for a writer).
+   integer function path_kind(path) result(kind)
+      character(len=*), intent(in) :: path
+      integer :: values(13), rc, fmt
+
+      kind = PATH_MISSING
+      if (len_trim(path) == 0) return
+      call stat(path, values, rc)            ! GNU extension: values(3) = st_mode
+      if (rc /= 0) return
+      fmt = iand(values(3), int(o'170000'))
+      select case (fmt)
+      case (int(o'100000'))
+         kind = PATH_REGULAR
+      case (int(o'040000'))
+         kind = PATH_DIRECTORY
+      case (int(o'010000'))
+         kind = PATH_FIFO
+      case (int(o'020000'), int(o'060000'))
+         kind = PATH_DEVICE
+      case (int(o'140000'))
+         kind = PATH_SOCKET
+      case default
+         kind = PATH_OTHER
+      end select
+   end function path_kind
+
+   !> The canonical absolute name of the existing `path` (symbolic links, "." and ".."
+   !> resolved: C realpath); ok is .false. (resolved = "") when it cannot be resolved.
+   subroutine canonical_path(path, resolved, ok)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable, intent(out) :: resolved
+      logical, intent(out) :: ok
+      type(c_ptr) :: p
+      character(kind=c_char), pointer :: chars(:)
+      integer :: n, i
+
+      resolved = ""
+      ok = .false.
+      if (len_trim(path) == 0) return
+      p = c_realpath(path//c_null_char, c_null_ptr)
+      if (.not. c_associated(p)) return
+      n = int(c_strlen(p))
+      call c_f_pointer(p, chars, [n])
+      resolved = repeat(" ", n)
+      do i = 1, n
+         resolved(i:i) = chars(i)
+      end do
+      call c_free(p)
+      ok = .true.
+   end subroutine canonical_path
+
+   !> .true. when `dir` is a directory the process may create files in (GNU ACCESS, W_OK
+   !> and X_OK of access(2)).
+   logical function writable_directory(dir) result(ok)
+      character(len=*), intent(in) :: dir
+      integer :: kind
+
+      kind = path_kind(dir)
+      ok = .false.
+      if (kind == PATH_DIRECTORY) ok = access(dir, "wx") == 0
+   end function writable_directory
 
 end module adore_core_os

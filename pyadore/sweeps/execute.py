@@ -26,15 +26,20 @@ __all__ = ["run_case", "run_local", "run_dask"]
 
 def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | None = None) -> dict:
     """Run one case deck (text) and return ``{case, status, error, notes, duration_s,
-    print_text, results, worker, tmp_deck}``.  ``status`` is ``ok``, ``input-error`` (the
-    engine refused the deck), ``engine-failure`` or ``error`` (anything else, e.g. a print
-    file that does not read).  options: the run options of every case (:func:`pyadore.run`'s
-    keywords, the engine's option table).  Never raises."""
+    print_text, results, worker, tmp_deck, tmp_print, incomplete_text, incomplete_history}``.
+    ``status`` is ``ok``, ``input-error`` (the engine refused the deck), ``engine-failure``
+    or ``error`` (anything else, e.g. a print file that does not read).  A failed run that
+    kept its print and plot-data file (a time integration that stopped early) returns their
+    texts as ``incomplete_text`` and ``incomplete_history``: the worker's folder is removed,
+    the client keeps them in the case folder (``tmp_deck`` and ``tmp_print``: the paths
+    the message names in the worker's folder).  options: the run options of every case
+    (:func:`pyadore.run`'s keywords, the engine's option table).  Never raises."""
     import tempfile
 
     start = time.perf_counter()
     out = {"case": case_id, "status": "ok", "error": "", "notes": [], "print_text": None, "results": {},
-           "worker": f"{socket.gethostname()}:{os.getpid()}", "tmp_deck": ""}
+           "worker": f"{socket.gethostname()}:{os.getpid()}", "tmp_deck": "", "tmp_print": "",
+           "incomplete_text": None, "incomplete_history": None}
     try:
         from ..api import run
         from ..errors import AdoreEngineError, AdoreInputError
@@ -46,6 +51,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
             out["tmp_deck"] = str(deck)
             deck.write_text(deck_text, encoding="utf-8")
             prt = Path(tmp) / "case.prt"
+            out["tmp_print"] = str(prt)
             try:
                 # the sweep has its own progress bar
                 result = run(deck, steps=steps, out=prt, progress=False, **(options or {}))
@@ -59,6 +65,14 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                 out.update(status="input-error", error=str(exc))
             except AdoreEngineError as exc:
                 out.update(status="engine-failure", error=str(exc))
+                kept = getattr(exc, "print_path", None)
+                if kept is not None and Path(kept).is_file():
+                    from ..timehistory import history_path
+
+                    out["incomplete_text"] = Path(kept).read_text(encoding="utf-8", errors="replace")
+                    hist = history_path(kept)
+                    if hist.is_file():
+                        out["incomplete_history"] = hist.read_text(encoding="utf-8", errors="replace")
     except Exception as exc:  # a case's failure is a row of the manifest, never the sweep's end
         out.update(status="error", error=f"{type(exc).__name__}: {exc}", print_text=None, results={})
     out["duration_s"] = time.perf_counter() - start
@@ -67,7 +81,8 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
 
 def _died(case_id: str, why: str) -> dict:
     return {"case": case_id, "status": "error", "error": why, "notes": [], "print_text": None, "results": {},
-            "worker": "", "tmp_deck": "", "duration_s": float("nan")}
+            "worker": "", "tmp_deck": "", "tmp_print": "", "incomplete_text": None, "incomplete_history": None,
+            "duration_s": float("nan")}
 
 
 def _start_process():

@@ -24,9 +24,15 @@ from .results import RESULT_COLUMNS, key_results
 
 __all__ = ["sweep", "read_summary", "read_summary_file"]
 
-#: While cases finish, manifest.json is rewritten at most this often (s); it is always
-#: written at the end.  Each case's own result.json is what a resume reads.
+#: While cases finish, manifest.json is rewritten after a case when the last rewrite is
+#: MANIFEST_COST_FACTOR times its own duration ago, and at least every MANIFEST_INTERVAL (s):
+#: after every case for a small sweep, at most 1/MANIFEST_COST_FACTOR of the time for a large
+#: one (the file grows with the cases).  Each rewrite is followed by the events.log lines of
+#: the cases it added, so the events log is never ahead of the manifest, even in a sweep
+#: killed at any moment; both are written at the end.  Each case's own result.json is what a
+#: resume reads.
 MANIFEST_INTERVAL = 1.0
+MANIFEST_COST_FACTOR = 20.0
 
 
 def _vary_specs(vary) -> list[str]:
@@ -88,6 +94,8 @@ class _Sweep:
         }
         self.entries: dict[str, dict] = {}
         self._manifest_written = 0.0
+        self._manifest_cost = 0.0      # how long the last manifest rewrite took (s)
+        self._events: list[str] = []   # events.log lines of cases the manifest does not list yet
 
     # -- folder -------------------------------------------------------------------------------
     def case_dir(self, case_id: str) -> Path:
@@ -146,24 +154,36 @@ class _Sweep:
                 "finished_at": _now(), "results": {k: _jsonable(v) for k, v in results.items()}}
 
     def record(self, case: Case, status: str, error: str = "", duration=None, notes=(), worker: str = "",
-               results=None, print_text: str | None = None) -> None:
-        """Write a finished case: its print (when ok), then result.json, the event and the manifest."""
+               results=None, print_text: str | None = None, incomplete_text: str | None = None,
+               incomplete_history: str | None = None) -> None:
+        """Write a finished case: its print (when ok; an incomplete print of a failed case
+        as incomplete.prt), then result.json; its event and the manifest follow
+        (MANIFEST_INTERVAL)."""
         cdir = self.case_dir(case.case_id)
         prt = cdir / store.CASE_PRINT
         if status == "ok":
             store.write_atomic(prt, print_text)
         elif prt.exists():
             prt.unlink()  # no print from an earlier run may pose as this case's result
+        for name, text in ((store.CASE_INCOMPLETE, incomplete_text), (store.CASE_INCOMPLETE_HISTORY,
+                                                                      incomplete_history)):
+            path = cdir / name
+            if text is not None:
+                store.write_atomic(path, text)
+            elif path.exists():
+                path.unlink()  # of an earlier failed run of this case
         entry = self._entry(case, status, error, duration, notes, worker, results or {})
         store.write_atomic(cdir / store.CASE_RESULT, json.dumps(entry, indent=1))
         self.entries[case.case_id] = entry
         dur = "-" if duration is None or not math.isfinite(duration) else f"{duration:.3f}s"
-        store.append_event(self.root, f"{entry['finished_at']} {case.case_id} {status} {dur} {worker}".rstrip())
-        if time.monotonic() - self._manifest_written > MANIFEST_INTERVAL:
+        self._events.append(f"{entry['finished_at']} {case.case_id} {status} {dur} {worker}".rstrip())
+        since = time.monotonic() - self._manifest_written
+        if since >= min(MANIFEST_INTERVAL, MANIFEST_COST_FACTOR * self._manifest_cost):
             self.write_manifest()
 
     def write_manifest(self) -> None:
-        """Write manifest.json: every case with its parameters, status, duration and error."""
+        """Write manifest.json - every case with its parameters, status, duration and error -
+        then the events.log lines of the cases finished since the last one."""
         self._manifest_written = time.monotonic()
         rows = []
         for case in self.cases:
@@ -177,6 +197,10 @@ class _Sweep:
             counts[e["status"]] = counts.get(e["status"], 0) + 1
         doc = {"sweep": self.definition, "updated_at": _now(), "counts": counts, "cases": rows}
         store.write_atomic(self.root / store.MANIFEST, json.dumps(doc, indent=1))
+        if self._events:
+            store.append_event(self.root, "\n".join(self._events))
+            self._events = []
+        self._manifest_cost = time.monotonic() - self._manifest_written
 
     def summary(self):
         """The summary frame: case, the varied parameters, status, the key results."""
@@ -255,6 +279,8 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
         raise SweepError(f"steps must be None or an integer >= 0, got {steps!r}")
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise SweepError(f"workers must be an integer >= 1, got {workers!r}")
+    if deck_path.exists() and not deck_path.is_file():  # a FIFO would wait for a writer for ever
+        raise SweepError(f"{deck_path}: the deck is not a regular file: give the deck file itself")
     try:
         base_text = deck_path.read_bytes().decode("utf-8")
     except (OSError, UnicodeDecodeError) as exc:
@@ -279,10 +305,23 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
     def on_result(res: dict) -> None:
         case = by_id[res["case"]]
         error = res["error"]
+        cdir = run.case_dir(case.case_id)
+        incomplete = res.get("incomplete_text")
+        history = res.get("incomplete_history")
+        # the paths the message names in the worker's folder (gone) -> the case folder's
+        if res.get("tmp_print"):
+            from ..timehistory import history_path
+
+            tmp_print = res["tmp_print"]
+            error = error.replace(str(history_path(tmp_print)), str(cdir / store.CASE_INCOMPLETE_HISTORY)
+                                  if history is not None else "(not kept)")
+            error = error.replace(tmp_print, str(cdir / store.CASE_INCOMPLETE) if incomplete is not None
+                                  else "(not kept)")
         if res.get("tmp_deck"):
-            error = error.replace(res["tmp_deck"], str(run.case_dir(case.case_id) / store.CASE_DECK))
+            error = error.replace(res["tmp_deck"], str(cdir / store.CASE_DECK))
         run.record(case, res["status"], error=error, duration=res["duration_s"], notes=res["notes"],
-                   worker=res["worker"], results=res["results"], print_text=res["print_text"])
+                   worker=res["worker"], results=res["results"], print_text=res["print_text"],
+                   incomplete_text=incomplete, incomplete_history=history)
         if bar is not None:
             bar.update(1)
 

@@ -10,6 +10,10 @@ Layout of ``DIR``::
     cases/<case>/case.prt the case's print file, present only when the run finished
     cases/<case>/result.json  status, message and key results; a case counts as done only
                           when this says ``ok`` and its print file is present
+    cases/<case>/incomplete.prt, incomplete.hist.csv
+                          a failed case's print and plot-data file when its run kept them
+                          (a time integration that stopped early, marked incomplete): the
+                          files its message names
 
 A killed sweep leaves at most temporary files (``.<name>.tmp-*``), removed by the next run.
 """
@@ -22,7 +26,8 @@ import tempfile
 from pathlib import Path
 
 __all__ = ["SWEEP_FILE", "MANIFEST", "SUMMARY", "EVENTS", "CASES", "CASE_DECK", "CASE_PRINT", "CASE_RESULT",
-           "write_atomic", "read_json", "remove_stale_temporaries", "append_event"]
+           "CASE_INCOMPLETE", "CASE_INCOMPLETE_HISTORY", "write_atomic", "read_json", "remove_stale_temporaries",
+           "append_event"]
 
 SWEEP_FILE = "sweep.json"
 MANIFEST = "manifest.json"
@@ -32,6 +37,8 @@ CASES = "cases"
 CASE_DECK = "deck.inp"
 CASE_PRINT = "case.prt"
 CASE_RESULT = "result.json"
+CASE_INCOMPLETE = "incomplete.prt"
+CASE_INCOMPLETE_HISTORY = "incomplete.hist.csv"
 _TMP_TAG = ".tmp-"
 
 
@@ -85,7 +92,7 @@ def remove_stale_temporaries(root: Path) -> int:
 
 
 def append_event(root: Path, line: str) -> None:
-    """Append one line to ``events.log`` (one write call, so a line is whole or absent
-    unless the process dies within that call)."""
+    """Append a line (or several, joined by newlines) to ``events.log`` (one write call, so
+    the lines are whole or absent unless the process dies within that call)."""
     with open(Path(root) / EVENTS, "a", encoding="utf-8") as fh:
         fh.write(line.rstrip("\n") + "\n")

@@ -2,7 +2,8 @@
 
 It reads one job a line on stdin (JSON: the arguments of
 :func:`pyadore.sweeps.execute.run_case`) and writes one result a line (JSON) on its
-protocol channel, until stdin closes.  The channel is the original stdout; fd 1 is
+protocol channel, until stdin closes; when the channel is gone (its client was killed) it
+ends quietly, without a BrokenPipeError traceback.  The channel is the original stdout; fd 1 is
 pointed at stderr so that nothing else (a stray print) can mix into it.  A fresh
 interpreter: nothing of the client's state (threads, its ``__main__``) is inherited.
 """
@@ -28,8 +29,11 @@ def main() -> int:
             continue
         job = json.loads(line)
         result = run_case(*job)
-        channel.write(json.dumps(result) + "\n")
-        channel.flush()
+        try:
+            channel.write(json.dumps(result) + "\n")
+            channel.flush()
+        except OSError:  # BrokenPipeError: the client is gone (killed); nobody to report to
+            os._exit(0)  # at once: closing the channel at exit would raise the same error again
     return 0
 
 
