@@ -121,11 +121,10 @@ contains
       type(integrator_t), intent(inout) :: it
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      associate (unused => time, unused_it => it%n, unused_y => size(y), unused_self => self%time_scale)
-      end associate
    end subroutine on_event
 
-   ! --- a kind without a time integration (its run ends after step 0) ---------------------
+   ! --- a kind without a time integration (its run ends after step 0); the defaults leave
+   ! --- their arguments unused (the compiler's unused-argument notes are expected here) ---
 
    !> No equations of motion: DERIV_FAIL.
    subroutine no_eval(self, t, y, dydt, flag)
@@ -143,7 +142,6 @@ contains
    integer function no_dynamic_steps(self) result(n)
       class(bearing_system_t), intent(in) :: self
       n = 0
-      if (.false.) n = self%options%steps
    end function no_dynamic_steps
 
    !> An engine error: the kind has no time integration.
@@ -164,14 +162,12 @@ contains
       integer, intent(in) :: n_steps
       character(len=:), allocatable, intent(out) :: text
       text = ""
-      if (n_steps < 0 .and. self%options%steps < -1) text = "never"
    end subroutine no_text
 
    !> No averaged quantities.
    integer function no_values(self) result(n)
       class(bearing_system_t), intent(in) :: self
       n = 0
-      if (.false.) n = self%options%steps
    end function no_values
 
    subroutine no_averaged_values(self, v)
@@ -182,14 +178,12 @@ contains
 
    subroutine no_accepted(self)
       class(bearing_system_t), intent(inout) :: self
-      if (.false.) self%time_scale = 1.0_wp
    end subroutine no_accepted
 
    subroutine no_write_step(self, unit, step, t, mean)
       class(bearing_system_t), intent(in) :: self
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: t, mean(:)
-      if (.false.) write (unit, *) step, t, mean, self%time_scale
    end subroutine no_write_step
 
    !> An engine error: the kind has no time history.
@@ -208,7 +202,6 @@ contains
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
       real(wp), intent(in) :: t, mean(:)
-      if (.false.) h%rows = step + size(mean) + int(t + self%time_scale)
    end subroutine no_record_row
 
    !> An engine error: nothing to mount without a time integration.
@@ -216,7 +209,6 @@ contains
       class(bearing_system_t), intent(inout) :: self
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      if (.false.) y = self%time_scale
       call engine_error(error, NO_DYNAMICS)
    end subroutine no_mount
 
