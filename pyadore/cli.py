@@ -141,6 +141,7 @@ def run(deck: Path, out: Path | None, steps: int | None, **options) -> None:
 def validate(deck: Path, traction_table: Path | None) -> None:
     """Check DECK against the record schema; list every problem at once."""
     from .deck import check_deck
+    from .deck.problems import format_problems
 
     try:
         _check_input_file(deck, "deck")
@@ -159,14 +160,20 @@ def validate(deck: Path, traction_table: Path | None) -> None:
         except AdoreError as exc:
             table_error = exc
     if problems:
-        for problem in problems:
-            click.echo(problem.format(), err=True)
+        for text in format_problems(problems):
+            click.echo(text, err=True)
         click.echo(f"{deck}: {len(problems)} problem(s)", err=True)
     if table_error is not None:
         click.echo(f"pyadore: error: {table_error}", err=True)
     if problems or table_error is not None:
         sys.exit(1)
-    click.echo(parsed.summary())
+    from .deck.validate import deck_warnings
+
+    warnings = deck_warnings(parsed)
+    for text in format_problems(warnings):
+        click.echo("warning: " + text, err=True)
+    summary = parsed.summary()
+    click.echo(summary + (f" ({len(warnings)} warning(s))" if warnings else ""))
     if table is not None:
         click.echo(f"{traction_table}: traction-slip table, {len(table)} points, slip 0 to "
                    f"{table.slip_m_s.iloc[-1]:.5g} m/s, coefficient {table.kappa.min():.5g} to "

@@ -76,14 +76,17 @@ def test_odd_values_never_crash_the_engine(tmp_path, run_exe, deck_name, n, seed
     assert outcomes[0] > 0          # the sample is not all refused at reading
 
 
-def test_no_ehd_film_is_a_clear_input_error(tmp_path):
+def test_no_ehd_film_is_a_clear_model_range_error(tmp_path):
     """A ball 320 K colder than its races: at the 163 K inlet the oil is so viscous that
     Gupta's thermal reduction factor reaches 0, and traction model 3 has no film to shear.
     The run stops with the contact, the film, the factor and the temperatures that set it
-    (it used to stop on an internal "need film h > 0" check)."""
+    (it used to stop on an internal "need film h > 0" check).  The deck is legal (validate
+    warns about the 3.23 K temperature); the operating point lies outside the EHD model's
+    range, an engine error (exit 2), not a refusal of the input (issue #28: what run
+    refuses, validate refuses first)."""
     deck, _ = _deck_with(tmp_path, "appendix_c_ball.inp", "Rec 2.7", 34, " 3.2300E+00",  # rolling_element_temperature
                          "cold.inp")
-    with pytest.raises(pyadore.AdoreInputError) as info:
+    with pytest.raises(pyadore.AdoreEngineError) as info:
         pyadore.run(deck, steps=0, out=tmp_path / "cold.prt")
     message = str(info.value)
     # the run names the deck first (a sweep runs many)

@@ -9,7 +9,7 @@
 !> in the bearing model's TEMP_* order (K); race: BODY_OUTER or BODY_INNER.  Units SI.
 module adore_forces_race_contact
    use adore_core_kinds, only: wp
-   use adore_core_error, only: error_type, input_error
+   use adore_core_error, only: error_type, engine_error
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, major_axis_nodes, contact_slip, &
                                    print_slip_node
@@ -130,7 +130,7 @@ contains
          "_race_temperature ", temperature(race_t), " K"
       if (stat /= 0) buf = "a race contact has no film for the EHD traction (Rec 10.0 traction_model 3) "// &
                            "at the temperatures of Rec 2.7"
-      call input_error(error, trim(buf))
+      call engine_error(error, trim(buf))
    end subroutine check_ehd_film
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):
