@@ -56,14 +56,20 @@ contains
       real(wp), intent(in) :: temperature(:)
       type(bearing_t) :: bt
       bt = b
-      bt%fit_inner = b%fit_inner + b%shaft_od*(growth(BODY_SHAFT, TEMP_SHAFT) - growth(BODY_INNER, TEMP_INNER))
-      bt%fit_outer = b%fit_outer + b%bearing_od*(growth(BODY_OUTER, TEMP_OUTER) - growth(BODY_HOUSING, TEMP_HOUSING))
-   contains
-      pure real(wp) function growth(body, it)
-         integer, intent(in) :: body, it
-         growth = b%material(body)%expansion*(temperature(it) - b%temperature(it))
-      end function growth
+      bt%fit_inner = b%fit_inner + b%shaft_od*(strain(b, temperature, BODY_SHAFT, TEMP_SHAFT) - &
+                                               strain(b, temperature, BODY_INNER, TEMP_INNER))
+      bt%fit_outer = b%fit_outer + b%bearing_od*(strain(b, temperature, BODY_OUTER, TEMP_OUTER) - &
+                                                 strain(b, temperature, BODY_HOUSING, TEMP_HOUSING))
    end function distorted_bearing
+
+   !> Free thermal strain alpha (T - T0) of body `body` (BODY_*) whose bulk temperature is
+   !> temperature(it) (it: TEMP_*), T0 the deck's initial temperature.
+   pure real(wp) function strain(b, temperature, body, it)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      integer, intent(in) :: body, it
+      strain = b%material(body)%expansion*(temperature(it) - b%temperature(it))
+   end function strain
 
    !> Geometry of bearing b at bulk temperatures temperature(7) (K, TEMP_* order): fits,
    !> element size, mounted raceways and clearance, cage clearances (ADRC2, module header).
@@ -82,10 +88,10 @@ contains
       dist%element_diameter = dist%mounted%element_diameter
       dist%clearance = dist%mounted%mounting%clearance + 2.0_wp*(dist%mounted%thermal_growth(1) - &
                        dist%mounted%thermal_growth(2)) - 2.0_wp*(dist%element_diameter - b%d)
-      e_cage = growth(BODY_CAGE, TEMP_CAGE)
-      e_el = growth(BODY_ELEMENT, TEMP_ELEMENT)
-      e_in = growth(BODY_INNER, TEMP_INNER)
-      e_out = growth(BODY_OUTER, TEMP_OUTER)
+      e_cage = strain(b, temperature, BODY_CAGE, TEMP_CAGE)
+      e_el = strain(b, temperature, BODY_ELEMENT, TEMP_ELEMENT)
+      e_in = strain(b, temperature, BODY_INNER, TEMP_INNER)
+      e_out = strain(b, temperature, BODY_OUTER, TEMP_OUTER)
       dist%pocket_clearance = b%pocket_clearance(1) + e_cage*(b%d + b%pocket_clearance(1)) - e_el*b%d
       dist%cage_od = b%cage_od*(1.0_wp + e_cage)
       dist%cage_id = b%cage_id*(1.0_wp + e_cage)
@@ -97,11 +103,6 @@ contains
             dist%land_clearance(k) = b%lands(k)%clearance + (e_cage - e_in)*b%lands(k)%diameter
          end if
       end do
-   contains
-      pure real(wp) function growth(body, it)
-         integer, intent(in) :: body, it
-         growth = b%material(body)%expansion*(temperature(it) - b%temperature(it))
-      end function growth
    end function thermal_distortion
 
 end module adore_thermal_distortion
