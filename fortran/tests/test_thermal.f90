@@ -15,7 +15,7 @@ program test_thermal
       heat_transfer_coefficient, reynolds_number, prandtl_number, SHAPE_SPHERE, SHAPE_CYLINDER, &
       FLUID_LIQUID, AIR_TABLE_T, AIR_TABLE_CP, AIR_TABLE_MU, AIR_TABLE_K, CYL_TABLE_RE, CYL_TABLE_C, CYL_TABLE_N
    use adore_thermal_conduction, only: cylinder_temperature, cylinder_bulk, cylinder_conductance, &
-      cylinder_bulk_weight, element_core_area, element_conductance, element_bulk
+      cylinder_bulk_weight, cylinder_bulk_mirrored, element_core_area, element_conductance, element_bulk
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, &
       coolant_capacity_rate
    use adore_thermal_distortion, only: distortion_t, thermal_distortion
@@ -41,6 +41,7 @@ program test_thermal
    call test_network_closed_form()
    call test_free_growth()
    call test_report_fits()
+   call test_report_bulk_conventions()
    call test_drag()
 
    call finish("thermal")
@@ -243,6 +244,14 @@ contains
       ! housing: eq 12 between its surfaces, heat through it = G_h dT
       call check(f%housing(3) > f%housing(1) .and. f%housing(1) > f%housing(2), "housing: inner > bulk > outer")
       call check(abs(f%housing(2) - 323.0_wp) < 1.0e-9_wp, "housing outer surface held at the reference")
+      call check(f%shaft(2) > f%shaft(1) .and. f%shaft(1) > f%shaft(3), "shaft drained at the bore: outer > bulk > bore")
+      opt%shaft_bulk_as_printed = .true.
+      call solve_thermal_network(ball, h, opt, f, error)
+      call check(.not. allocated(error), "network solves (shaft bulk as printed)")
+      if (allocated(error)) return
+      call check(abs(f%shaft(1) - cylinder_bulk_mirrored(0.5_wp*ball%shaft_od, 0.5_wp*ball%shaft_id, f%shaft(2), &
+                 f%shaft(3))) < 1.0e-12_wp, "shaft bulk as printed: weight from the outer surface")
+      opt%shaft_bulk_as_printed = .false.
       ! doubling the heat doubles every rise above the reference when the fluid properties are fixed
       ! is not exact (viscosity follows temperature); the no-heat field is exact:
       h%outer = 0.0_wp; h%inner = 0.0_wp; h%pocket = 0.0_wp; h%drag = 0.0_wp; h%land = 0.0_wp
@@ -325,13 +334,32 @@ contains
       t(TEMP_OUTER) = 349.0_wp
       t(TEMP_INNER) = 351.4_wp
       t(TEMP_CAGE) = 342.0_wp
-      t(TEMP_ELEMENT) = 343.0_wp
+      t(TEMP_ELEMENT) = 341.9_wp   ! mean of the 18 printed ball bulk temperatures
       d = thermal_distortion(ball, t)
       call check(close(d%mounted%mounting%outer_fit, 1.458e-5_wp, 0.01_wp), "report: outer race fit 1.458e-5 within 1 %")
       call check(close(d%mounted%mounting%inner_fit, -2.484e-5_wp, 0.01_wp), "report: inner race fit -2.484e-5 within 1 %")
-      write (*, "(a,3es12.4)") "  step-2500 temperatures -> fits, clearance: ", d%mounted%mounting%outer_fit, &
-         d%mounted%mounting%inner_fit, d%clearance
+      write (*, "(a,3es12.4,a)") "  step-2500 temperatures -> fits, clearance: ", d%mounted%mounting%outer_fit, &
+         d%mounted%mounting%inner_fit, d%clearance, "  (report 1.458e-5 -2.484e-5 1.537e-4)"
+      ! step 0: the initial temperatures change nothing (report clearance 1.525e-4)
+      d = thermal_distortion(ball, ball%temperature)
+      call check(close(d%clearance, 1.525e-4_wp, 0.001_wp), "initial temperatures: report's step-0 clearance 1.525e-4")
+      call check(d%fit_outer == ball%fit_outer .and. d%fit_inner == ball%fit_inner, "initial temperatures: fits unchanged")
    end subroutine test_report_fits
+
+   !> The report's printed step-2500 housing and shaft temperatures: the housing's bulk is
+   !> eq 12 as written (surfaces 348.0 inside, 345.7 K outside -> 346.8 K); the shaft's is
+   !> eq 12's weight taken from its outer surface (349.6 outside, 317.4 K at the bore ->
+   !> 329.3 K; eq 12 as written gives 337.6 K).  Within print precision (0.05 K + the
+   !> surfaces' rounding, 0.1 K).
+   subroutine test_report_bulk_conventions()
+      real(wp) :: tb
+      tb = 348.0_wp + cylinder_bulk_weight(0.5_wp*ball%housing_od, 0.5_wp*ball%bearing_od)*(345.7_wp - 348.0_wp)
+      call check(abs(tb - 346.8_wp) < 0.1_wp, "report housing bulk 346.8 K = eq 12 of its surfaces")
+      tb = cylinder_bulk_mirrored(0.5_wp*ball%shaft_od, 0.5_wp*ball%shaft_id, 349.6_wp, 317.4_wp)
+      call check(abs(tb - 329.3_wp) < 0.1_wp, "report shaft bulk 329.3 K = eq 12's weight from the outer surface")
+      tb = 317.4_wp + cylinder_bulk_weight(0.5_wp*ball%shaft_od, 0.5_wp*ball%shaft_id)*(349.6_wp - 317.4_wp)
+      call check(abs(tb - 337.6_wp) < 0.1_wp, "eq 12 as written gives 337.6 K for the report's shaft")
+   end subroutine test_report_bulk_conventions
 
    !> Sphere drag: Stokes (C_D Re/24 -> 1, F = 3 pi mu D V) at low Re; Newton's regime
    !> C_D 0.44-0.47; the two branches meet at Re = 1000.

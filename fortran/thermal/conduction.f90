@@ -17,7 +17,7 @@ module adore_thermal_conduction
    implicit none
    private
 
-   public :: cylinder_temperature, cylinder_bulk, cylinder_conductance, cylinder_bulk_weight
+   public :: cylinder_temperature, cylinder_bulk, cylinder_conductance, cylinder_bulk_weight, cylinder_bulk_mirrored
    public :: element_core_area, element_conductance, element_bulk
 
 contains
@@ -53,6 +53,17 @@ contains
       real(wp) :: w
       w = r1/(r1 - r2) - 1.0_wp/log(r1/r2)
    end function cylinder_bulk_weight
+
+   !> The bulk temperature ADORE 5.0 prints for the shaft (Appendix C step 2500: surfaces
+   !> 349.6 K outside, 317.4 K at the bore, bulk 329.3 K): eq 12's weight taken from the
+   !> outer surface, T_av = T1 + w (T2 - T1), w of cylinder_bulk_weight(r1, r2) - eq 12 as
+   !> written is T2 + w (T1 - T2) = 337.6 K there (docs/thermal.md).  Radii m, r2 < r1;
+   !> t1 at r1, t2 at r2 (K).
+   elemental function cylinder_bulk_mirrored(r1, r2, t1, t2) result(t)
+      real(wp), intent(in) :: r1, r2, t1, t2
+      real(wp) :: t
+      t = t1 + cylinder_bulk_weight(r1, r2)*(t2 - t1)
+   end function cylinder_bulk_mirrored
 
    !> Cross-section (m**2) of the rolling element's conduction core of length d: the
    !> element's volume over d.  Ball (length <= 0): pi d**2/6 (eq 13); roller of length

@@ -45,7 +45,8 @@ module adore_thermal_network
    use adore_cage_step0, only: GUIDE_OUTER
    use adore_thermal_convection, only: fluid_properties_t, air_properties, lubricant_properties, &
                                        heat_transfer_coefficient, SHAPE_SPHERE, SHAPE_CYLINDER, FLUID_AIR, FLUID_LIQUID
-   use adore_thermal_conduction, only: cylinder_conductance, cylinder_bulk_weight, element_conductance, element_bulk
+   use adore_thermal_conduction, only: cylinder_conductance, cylinder_bulk_weight, cylinder_bulk_mirrored, &
+                                       element_conductance, element_bulk
    implicit none
    private
 
@@ -71,6 +72,9 @@ module adore_thermal_network
       real(wp) :: race_fluid_conductance(2) = 0.0_wp
       !> velocity of each element's surface relative to the coolant (m/s), eq 18's V
       real(wp), allocatable :: element_velocity(:)
+      !> the shaft's bulk temperature as ADORE 5.0 prints it (cylinder_bulk_mirrored) instead of
+      !> eq 12 as written (docs/thermal.md); also what its step-2500 fits follow
+      logical :: shaft_bulk_as_printed = .false.
       real(wp) :: tolerance = 1.0e-9_wp           !< K, on the temperature change between passes
       integer :: max_passes = 60
    end type thermal_options_t
@@ -297,8 +301,13 @@ contains
       field%shaft(2) = x(iib)
       field%shaft(3) = x(isb)
       field%shaft(1) = x(iib)
-      if (g_s > 0.0_wp) field%shaft(1) = x(isb) + cylinder_bulk_weight(0.5_wp*b%shaft_od, 0.5_wp*b%shaft_id)* &
-                                         (x(iib) - x(isb))
+      if (g_s > 0.0_wp) then
+         if (opt%shaft_bulk_as_printed) then
+            field%shaft(1) = cylinder_bulk_mirrored(0.5_wp*b%shaft_od, 0.5_wp*b%shaft_id, x(iib), x(isb))
+         else
+            field%shaft(1) = x(isb) + cylinder_bulk_weight(0.5_wp*b%shaft_od, 0.5_wp*b%shaft_id)*(x(iib) - x(isb))
+         end if
+      end if
       ! race sectors: eq 12 between raceway and the other surface
       allocate (field%race_bulk(n, 2))
       field%race_bulk(:, 1) = field%contact_outer + cylinder_bulk_weight(0.5_wp*b%bearing_od, &
