@@ -3,6 +3,7 @@
 !> "Contact Loss (W)"; balls 12 and 18 are illegible in the text copy and get the mean of
 !> the 16 printed balls - an experiment assumption, printed as such), compared with the
 !> report's printed temperatures.  Not a test: it measures how far the network is.
+!> Also Appendix D step 4000 (roller, air, no coolant flow), all its losses legible.
 !> Build and run (from the repository root, after `make exe`):
 !>   gfortran -O2 -Ibuild/native/libadore_engine.a.p tools/thermal_step2500.f90 \
 !>     build/native/libadore_engine.a -o /tmp/thermal_step2500 && /tmp/thermal_step2500 decks
@@ -63,6 +64,7 @@ program thermal_step2500
       opt%bore_conductance = bore(k)
       call run_case()
    end do
+   call roller_step4000()
 
 contains
 
@@ -92,5 +94,43 @@ contains
       print "(a,3es11.3,a)", "  ADRC2: outer fit, inner fit, clearance ", d%mounted%mounting%outer_fit, &
          d%mounted%mounting%inner_fit, d%clearance, "  (report 1.458e-5 -2.484e-5 1.537e-4)"
    end subroutine run_case
+
+   !> Appendix D step 4000 (golden/appendix_d_roller.prt): the printed roller contact losses
+   !> (all 16 legible, 0.97 W), air, no flow, housing OD at the room 294 K, spin 1.817e5 rpm.
+   subroutine roller_step4000()
+      real(wp), parameter :: qo(8) = [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
+      real(wp), parameter :: lo(8) = [1.331e-2_wp, 1.331e-2_wp, 8.355e-2_wp, 2.700e-1_wp, 1.996e-1_wp, 2.793e-2_wp, &
+                                      1.331e-2_wp, 1.331e-2_wp]
+      real(wp), parameter :: li(8) = [0.0_wp, 0.0_wp, 2.412e-2_wp, 1.913e-1_wp, 1.173e-1_wp, 6.026e-4_wp, 0.0_wp, 0.0_wp]
+      type(bearing_t) :: r
+      type(thermal_heat_t) :: hr
+      type(thermal_options_t) :: o
+      type(thermal_field_t) :: f
+      integer :: i
+      call read_bearing(trim(decks)//"/appendix_d_roller.inp", r, error)
+      if (allocated(error)) then
+         print "(a)", error%message
+         return
+      end if
+      hr%outer = lo + qo
+      hr%inner = li
+      allocate (hr%pocket(8), hr%drag(8))
+      hr%pocket = 0.0_wp
+      hr%drag = 0.0_wp
+      o%reference_temperature = r%temperature(TEMP_HOUSING)
+      o%element_velocity = [(1.817e5_wp*pi/30.0_wp*0.5_wp*r%d, i = 1, 8)]
+      call solve_thermal_network(r, hr, o, f, error)
+      if (allocated(error)) then
+         print "(a)", error%message
+         return
+      end if
+      print "(/,a,f8.4,a)", "Appendix D step 4000: heat ", f%q_generated, " W (report total power loss 0.9677 W)"
+      print "(a,3f9.3)", "  exit, housing bulk, shaft bulk (report 293.9, 294.0, 293.9): ", f%exit_temperature, &
+         f%housing(1), f%shaft(1)
+      print "(a,3f9.3)", "  outer race, inner race, cage (report -, -, 293.9): ", f%temperature(TEMP_OUTER), &
+         f%temperature(TEMP_INNER), f%temperature(TEMP_CAGE)
+      print "(a,8f8.3)", "  roller bulk (report 294.0 294.0 294.0 293.9 293.6 293.6 293.9 294.0): ", f%element_bulk
+      print "(a,es10.3,a)", "  mean HTC ", sum(f%htc)/8, " W/(m^2 K) (report 4.18e5)"
+   end subroutine roller_step4000
 
 end program thermal_step2500
