@@ -19,7 +19,8 @@ program test_thermal
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, &
       coolant_capacity_rate
    use adore_thermal_distortion, only: distortion_t, thermal_distortion
-   use adore_thermal_drag, only: sphere_drag_coefficient, cylinder_drag_coefficient, element_drag, churning_moment
+   use adore_thermal_drag, only: sphere_drag_coefficient, cylinder_drag_coefficient, element_drag, churning_moment, &
+                                 element_fluid_loss_t, element_fluid_loss
    implicit none
 
    character(len=:), allocatable :: decks
@@ -391,6 +392,18 @@ contains
       call check(ok .and. close(m, 8.0_wp*pi*0.1_wp*0.005_wp**3*1.0e-3_wp, 1.0e-14_wp), "creeping spin: 8 pi mu R^3 w")
       call churning_moment(0.01_wp, 0.0_wp, 1.0e4_wp, 900.0_wp, 0.01_wp, 1.0_wp, m, ok)
       call check(.not. ok, "churning beyond creeping flow flagged")
+      block
+         type(element_fluid_loss_t) :: r
+         r = element_fluid_loss(0.01905_wp, 0.0_wp, 66.0_wp, 7970.0_wp, fluid_properties_t(945.0_wp, 5.0e-3_wp, &
+                                0.14_wp, 1836.0_wp), 0.05_wp)
+         call element_drag(0.01905_wp, 0.0_wp, 66.0_wp, 945.0_wp, 5.0e-3_wp, 0.05_wp, f, ok)
+         call churning_moment(0.01905_wp, 0.0_wp, 7970.0_wp, 945.0_wp, 5.0e-3_wp, 0.05_wp, m, ok)
+         call check(r%drag == f .and. r%moment == m .and. close(r%loss, f*66.0_wp + m*7970.0_wp, 1.0e-14_wp), &
+                    "net loss = drag V + churning moment omega")
+         r = element_fluid_loss(0.01905_wp, 0.0_wp, 66.0_wp, 7970.0_wp, fluid_properties_t(945.0_wp, 5.0e-3_wp, &
+                                0.14_wp, 1836.0_wp), 0.0_wp)
+         call check(r%loss == 0.0_wp, "no lubricant in the free space: no drag, no churning")
+      end block
    end subroutine test_drag
 
 end program test_thermal

@@ -23,10 +23,20 @@
 module adore_thermal_drag
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
+   use adore_thermal_convection, only: fluid_properties_t
    implicit none
    private
 
    public :: sphere_drag_coefficient, cylinder_drag_coefficient, element_drag, churning_moment
+   public :: element_fluid_loss_t, element_fluid_loss
+
+   !> One element's losses in the lubricant: the print's Drag, Chrn Mom and Net Loss.
+   type :: element_fluid_loss_t
+      real(wp) :: drag = 0.0_wp        !< N
+      real(wp) :: moment = 0.0_wp      !< churning moment (N m)
+      real(wp) :: loss = 0.0_wp        !< drag power + churning power (W)
+      logical :: in_range = .true.     !< both models within their ranges
+   end type element_fluid_loss_t
 
 contains
 
@@ -105,5 +115,19 @@ contains
       end if
       in_range = abs(omega)*r*r*rho/mu <= 1.0_wp
    end subroutine churning_moment
+
+   !> Drag, churning moment and their loss (W) of an element of diameter d, length length (m;
+   !> 0: ball) whose centre moves at v (m/s) and which spins at omega (rad/s) relative to a
+   !> lubricant of properties props filling the fraction fraction of the free space: F V + M omega.
+   pure function element_fluid_loss(d, length, v, omega, props, fraction) result(r)
+      real(wp), intent(in) :: d, length, v, omega, fraction
+      type(fluid_properties_t), intent(in) :: props
+      type(element_fluid_loss_t) :: r
+      logical :: ok_d, ok_m
+      call element_drag(d, length, v, props%density, props%viscosity, fraction, r%drag, ok_d)
+      call churning_moment(d, length, omega, props%density, props%viscosity, fraction, r%moment, ok_m)
+      r%loss = r%drag*abs(v) + r%moment*abs(omega)
+      r%in_range = ok_d .and. ok_m
+   end function element_fluid_loss
 
 end module adore_thermal_drag
