@@ -17,7 +17,7 @@ program test_thermal
    use adore_thermal_conduction, only: cylinder_temperature, cylinder_bulk, cylinder_conductance, &
       cylinder_bulk_weight, cylinder_bulk_mirrored, element_core_area, element_conductance, element_bulk
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, &
-      coolant_capacity_rate
+      coolant_capacity_rate, default_thermal_options, new_thermal_heat
    use adore_thermal_distortion, only: distortion_t, thermal_distortion
    use adore_thermal_drag, only: sphere_drag_coefficient, cylinder_drag_coefficient, element_drag, churning_moment, &
                                  element_fluid_loss_t, element_fluid_loss
@@ -209,7 +209,7 @@ contains
       integer, intent(in) :: n
       type(thermal_heat_t) :: h
       integer :: j
-      allocate (h%outer(n), h%inner(n), h%pocket(n), h%drag(n))
+      h = new_thermal_heat(n)
       do j = 1, n
          h%outer(j) = 13.0_wp + 4.0_wp*cos(2.0_wp*pi*(j - 1)/n)
          h%inner(j) = 15.0_wp + 12.0_wp*cos(2.0_wp*pi*(j - 1)/n)
@@ -228,7 +228,9 @@ contains
       real(wp) :: out
       integer :: i
       h = sample_heat(ball%n_elements)
-      opt%reference_temperature = 323.0_wp
+      opt = default_thermal_options(ball)
+      call check(opt%reference_temperature == 323.0_wp .and. size(opt%element_velocity) == 18, &
+                 "default options: reference at Rec 2.7's housing temperature")
       opt%bore_conductance = 2.0_wp
       opt%race_fluid_conductance = [5.0_wp, 3.0_wp]
       opt%element_velocity = [(75.0_wp, i = 1, ball%n_elements)]

@@ -51,6 +51,7 @@ module adore_thermal_network
    private
 
    public :: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, coolant_capacity_rate
+   public :: default_thermal_options, new_thermal_heat
 
    !> Heat of the interactions averaged over the interval (W), per rolling element.
    type :: thermal_heat_t
@@ -100,6 +101,23 @@ module adore_thermal_network
    end type thermal_field_t
 
 contains
+
+   !> The options a run starts from: the reference at Rec 2.7's housing temperature on the
+   !> housing's outer surface, adiabatic shaft bore, no race convection, elements at rest
+   !> relative to the coolant (the caller sets their velocities).
+   pure function default_thermal_options(b) result(opt)
+      type(bearing_t), intent(in) :: b
+      type(thermal_options_t) :: opt
+      opt%reference_temperature = b%temperature(TEMP_HOUSING)
+      allocate (opt%element_velocity(b%n_elements), source=0.0_wp)
+   end function default_thermal_options
+
+   !> A heat record of n elements, all zero (W).
+   pure function new_thermal_heat(n) result(h)
+      integer, intent(in) :: n
+      type(thermal_heat_t) :: h
+      allocate (h%outer(n), h%inner(n), h%pocket(n), h%drag(n), source=0.0_wp)
+   end function new_thermal_heat
 
    !> Heat capacity rate W = rho c_p Q (W/K) of bearing b's coolant (Rec 2.4, 2.5): the
    !> lubricant's at coolant type 1, air (eq 27, Table 2) at the inlet temperature otherwise.
