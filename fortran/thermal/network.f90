@@ -245,23 +245,15 @@ contains
          rhs(ih) = g_ref*opt%reference_temperature
          do j = 1, n
             associate (io => 1 + j, im => 1 + n + j, ii => 1 + 2*n + j)
-               ! outer contact node
-               a(io, io) = g_o + g_e + g_of
-               a(io, ih) = -g_o
-               a(io, im) = -g_e
-               a(io, if_) = -g_of
-               rhs(io) = heat%outer(j)
+               ! contact nodes: heat in, conduction into the race sector and the element,
+               ! convection of the race's wetted face
+               call contact_row(io, ih, g_o, g_of, heat%outer(j))
+               call contact_row(ii, iib, g_i, g_if, heat%inner(j))
                ! element mid point: conduction from both contacts, convection from its bulk (eq 17)
                a(im, im) = 2.0_wp*g_e + 0.5_wp*c(j)
                a(im, io) = -g_e + 0.25_wp*c(j)
                a(im, ii) = -g_e + 0.25_wp*c(j)
                a(im, if_) = -c(j)
-               ! inner contact node
-               a(ii, ii) = g_i + g_e + g_if
-               a(ii, iib) = -g_i
-               a(ii, im) = -g_e
-               a(ii, if_) = -g_if
-               rhs(ii) = heat%inner(j)
                ! coolant: convection from the element and the race sectors
                a(if_, if_) = a(if_, if_) + c(j) + g_of + g_if
                a(if_, im) = a(if_, im) - 0.5_wp*c(j)
@@ -353,6 +345,20 @@ contains
       field%temperature(TEMP_ELEMENT) = sum(field%element_bulk)/n
       field%temperature(TEMP_OUTER) = sum(field%race_bulk(:, 1))/n
       field%temperature(TEMP_INNER) = sum(field%race_bulk(:, 2))/n
+   contains
+
+      !> The equation (row `row` of a, rhs) of a contact node of element j: conductance
+      !> g_race to node `race`, g_e to the element's mid point, g_fluid to the coolant, heat q in.
+      subroutine contact_row(row, race, g_race, g_fluid, q)
+         integer, intent(in) :: row, race
+         real(wp), intent(in) :: g_race, g_fluid, q
+         a(row, row) = g_race + g_e + g_fluid
+         a(row, race) = -g_race
+         a(row, 1 + n + j) = -g_e
+         a(row, if_) = -g_fluid
+         rhs(row) = q
+      end subroutine contact_row
+
    end subroutine solve_thermal_network
 
    !> Whether bearing b's cage is guided on the outer race (at its OD): its first land's type.
