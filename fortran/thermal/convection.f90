@@ -2,12 +2,12 @@
 !> dimensionless groups (eqs 18-20), the Nusselt correlations for spheres and cylinders in
 !> air and in liquids (eqs 21-26, Table 1) and the properties of air (eq 27, Table 2).
 !>
-!> Table 1 (report p. 11, "Coefficients of Heat Transfer Coefficients for Cylinders in
+!> Table 1 (report 2.6.3, "Coefficients of Heat Transfer Coefficients for Cylinders in
 !> Air") is Hilpert's cylinder-in-crossflow table, Nu = C Re**n, in its original air form
 !> (no Pr factor): 0.4-4: 0.891/0.330, 4-40: 0.821/0.385, 40-4000: 0.615/0.466,
 !> 4000-40000: 0.174/0.618, 40000-400000: 0.0239/0.805 (Kreith, Principles of Heat
 !> Transfer; Incropera & DeWitt's Table 7.2 is the same table with C divided by Pr**(1/3)).
-!> Table 2 ("Physical Properties of Air", ref [10] p. 483 in SI) gives c_p, mu and k at 16
+!> Table 2 (report 2.6.5, "Physical Properties of Air", its ref [10] p. 483 in SI) gives c_p, mu and k at 16
 !> temperatures 88.88 ... 922.22 K; they are interpolated linearly in T here.  Air density:
 !> eq 27, rho = 353/T (ideal gas at one atmosphere).
 !>
