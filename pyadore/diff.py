@@ -150,6 +150,8 @@ def _compare_value(name, table, column, g, gmark, r, rmark, rule: _Rule, scale: 
     tol = f"rel {rule.rel:g}" + (f", abs {rule.abs:g}" if rule.abs is not None else "")
     if gmark == UNKNOWN:
         return Comparison(name, table, column, "?", r, "unknown", tolerance=tol)
+    if rmark == NOT_COMPUTED and gmark == NOT_COMPUTED:   # two runs, neither computes it: no difference
+        return Comparison(name, table, column, "NaN", "NaN", "nan_both", tolerance=tol)
     if rmark == NOT_COMPUTED:
         return Comparison(name, table, column, g, "NaN", "not_computed", tolerance=tol)
     if rmark == UNKNOWN or r is None:
@@ -174,6 +176,9 @@ def _compare_echo(report: DiffReport, golden: PrintRun, run: PrintRun) -> None:
         r = run.echo.get(key)
         if g is UNKNOWN_VALUE:
             report.comparisons.append(Comparison(name, "echo", key, "?", r, "unknown", tolerance="printed"))
+            continue
+        if r is NOT_COMPUTED_VALUE and g is NOT_COMPUTED_VALUE:
+            report.comparisons.append(Comparison(name, "echo", key, "NaN", "NaN", "nan_both", tolerance="printed"))
             continue
         if r is NOT_COMPUTED_VALUE:
             report.comparisons.append(Comparison(name, "echo", key, g, "NaN", "not_computed", tolerance="printed"))

@@ -23,8 +23,9 @@ class Comparison:
     ``missing`` (the run lacks the value: counted as outside), ``not_computed`` (the
     run prints ``NaN``: the engine does not compute it; a failure of its own),
     ``deviation`` (outside the tolerance of a rule that documents a known deviation; not a
-    failure; ``reason`` says why) or ``text`` (a text field of the echo that differs, such
-    as the run title: listed on its own, never a numeric offender).
+    failure; ``reason`` says why), ``text`` (a text field of the echo that differs, such
+    as the run title: listed on its own, never a numeric offender) or ``nan_both`` (two
+    runs compared, both print ``NaN``: no difference, counted, not compared).
     """
 
     name: str
@@ -116,6 +117,11 @@ class DiffReport:
         return [c for c in self.text_differences() if c.column not in FREE_TEXT]
 
     @property
+    def nan_both(self) -> int:
+        """Values both prints give as ``NaN`` (two runs compared): counted, not compared."""
+        return self._count("nan_both")
+
+    @property
     def unknown(self) -> int:
         """Golden values marked unknown (``?``): skipped, not compared."""
         return self._count("unknown")
@@ -148,7 +154,7 @@ class DiffReport:
         worst relative error first."""
         groups: dict = {}
         for c in self.comparisons:
-            if c.status in ("unknown", "text"):
+            if c.status in ("unknown", "text", "nan_both"):
                 continue
             key = f"{c.table}.{c.column}"
             g = groups.setdefault(key, [0, 0, 0, None])
@@ -167,14 +173,24 @@ class DiffReport:
         lines = [f"{a}: {self.run_path}", f"{b}: {self.golden_path}", f"tolerances: {self.tolerances_path}",
                  f"compared {self.compared}  within {self.within}  outside {self.outside}  "
                  f"not computed {self.not_computed}  text fields differing {len(self.text_differences())}"]
-        rows = [r for r in self.column_summary() if r[2] or r[3]]
+        summary = self.column_summary()
+        rows = [r for r in summary if r[2]]
         if rows:
-            lines += ["", f"columns with values outside tolerance or not computed ({len(rows)}), worst first:",
-                      f"  {'column':<40} {'outside':>9} {'NaN':>5}  worst ({a} vs {b}, relative)"]
-            for key, n, out, nc, worst in rows:
+            lines += ["", f"columns with values outside tolerance ({len(rows)}), worst first:",
+                      f"  {'column':<44} {'outside':>9}  worst ({a} vs {b}, relative difference)"]
+            for key, n, out, _nc, worst in rows[:BRIEF_ROWS]:
                 text = "-" if worst is None else (f"{worst.name}: {_show(worst.run)} vs {_show(worst.golden)}, "
                                                   f"{_percent(worst.rel_error)}")
-                lines.append(f"  {key:<40} {f'{out}/{n}':>9} {nc:>5}  {text}")
+                lines.append(f"  {key:<44} {f'{out}/{n}':>9}  {text}")
+            if len(rows) > BRIEF_ROWS:
+                lines.append(f"  ... and {len(rows) - BRIEF_ROWS} more column(s) (the full report: without --brief)")
+        nan = [(r[0], r[3]) for r in summary if r[3]]
+        if nan:
+            shown = ", ".join(f"{k} ({n})" for k, n in nan[:6]) + (f", ... ({len(nan) - 6} more)" if len(nan) > 6 else "")
+            lines += ["", f"not computed by the engine (NaN in {a}): {self.not_computed} value(s) in {len(nan)} "
+                          f"column(s): {shown}"]
+        if self.nan_both:
+            lines += ["", f"NaN in both (not computed by the engine in either run; not compared): {self.nan_both}"]
         texts = self.text_differences()
         if texts:
             lines += ["", "text fields that differ:"]
@@ -215,7 +231,7 @@ class DiffReport:
                 "compared": self.compared, "within": self.within, "outside": self.outside,
                 "missing": self.missing, "not_computed": self.not_computed,
                 "not_computed_columns": self.not_computed_columns(),
-                "unknown": self.unknown, "deviations": self.deviations,
+                "unknown": self.unknown, "deviations": self.deviations, "nan_both": self.nan_both,
                 "deviation_columns": {k: {"count": n, "max_rel_error": num(w), "reason": why}
                                       for k, (n, w, why) in self.deviation_columns().items()},
                 "exit_code": self.exit_code,
@@ -232,7 +248,8 @@ class DiffReport:
                  f"compared {self.compared}  within {self.within}  outside {self.outside}"
                  f" (missing {self.missing})  not computed by the engine {self.not_computed}"
                  f"  unknown {self.unknown} ({b} '?', not compared)"
-                 f"  known deviations {self.deviations}"]
+                 f"  known deviations {self.deviations}"
+                 + (f"  NaN in both {self.nan_both} (not compared)" if self.nan_both else "")]
         off = self.offenders(20)
         if off:
             lines.append("")
@@ -277,6 +294,9 @@ class DiffReport:
 #: Text fields of the echo that name a run rather than result from it: a difference is
 #: listed, never a failure (the run title: a variant of a deck is often titled anew).
 FREE_TEXT = ("banner.run_id",)
+
+#: Columns listed by the brief report (the worst first); the rest are counted.
+BRIEF_ROWS = 25
 
 
 def _percent(rel: float) -> str:

@@ -71,6 +71,9 @@ def figure_types(chosen) -> list[FigureType]:
     ints or texts), in page order; AdoreInputError naming the types for an unknown one."""
     picked = set()
     for item in chosen:
+        if isinstance(item, FigureType):
+            picked.add(item.number)
+            continue
         text = str(item).strip()
         hit = next((t for t in FIGURE_TYPES if text in (str(t.number), f"{t.number:02d}", t.name)), None)
         if hit is None:
