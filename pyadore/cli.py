@@ -77,8 +77,18 @@ def _version() -> str:
     return __version__
 
 
+def _show_version(ctx, _param, value) -> None:
+    """``--version``: the version is looked up only when asked for (importlib.metadata costs
+    a tenth of a second at every start otherwise)."""
+    if not value or ctx.resilient_parsing:
+        return
+    click.echo(f"pyadore {_version()}")
+    ctx.exit()
+
+
 @click.group(context_settings=CONTEXT)
-@click.version_option(version=_version(), prog_name="pyadore", message="%(prog)s %(version)s")
+@click.option("--version", is_flag=True, expose_value=False, is_eager=True, callback=_show_version,
+              help="Show the version and exit.")
 def cli() -> None:
     """pyadore: run ADORE 5.0 decks, validate them, compare print files, plot them, sweep parameters."""
 
