@@ -106,6 +106,6 @@ class DerivedField:
 
 DERIVED_FIELDS = {
     "diametral_clearance": DerivedField(
-        "diametral_clearance", "m", "diametral clearance of a ball bearing (sets the free contact angle, Rec 5A)",
+        "diametral_clearance", "m", "diametral clearance (ball bearings; sets the free contact angle, Rec 5A)",
         "5A", "free_contact_angle", _get_clearance, _set_clearance),
 }

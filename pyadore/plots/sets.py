@@ -133,8 +133,8 @@ def make_set(source, set_name: str = "report", *, compare=None, step: int | None
 def skipped_lines(skipped) -> list[str]:
     """The reasons of ``skipped`` ([(FigureType, reason)], :attr:`FigureSet.skipped`) as
     lines: figure types skipped for the same reason (a print of step 0 alone has no time
-    history for types 2-9) share one line, ``figure types 2-9 (total power loss vs time,
-    ...): <reason>``."""
+    history for types 2-9) share one line, ``figure types 2-9 (power-loss, wear-rates,
+    ...): <reason>`` (the types by name)."""
     groups: dict[str, list] = {}
     for ftype, reason in skipped:
         head, sep, rest = reason.partition("): ")
@@ -148,7 +148,7 @@ def skipped_lines(skipped) -> list[str]:
         numbers = [t.number for t, _r in items]
         span = (f"{numbers[0]}-{numbers[-1]}" if numbers == list(range(numbers[0], numbers[-1] + 1))
                 else ", ".join(map(str, numbers)))
-        lines.append(f"figure types {span} ({'; '.join(t.caption for t, _r in items)}): {key}")
+        lines.append(f"figure types {span} ({', '.join(t.name for t, _r in items)}): {key}")
     return lines
 
 
