@@ -58,11 +58,12 @@ def si_scale(unit: str, values) -> tuple[float, str]:
 
 def field_title(name: str) -> str:
     """The human name of deck field ``name`` (``FIELD`` or ``REC/FIELD``) from the record
-    table (docs/deck-format.md), e.g. ``Inner race (shaft) speed``; ``name`` itself when the
+    table (docs/deck-format.md) without its remarks in brackets, e.g. ``Inner race speed``;
+    ``name`` itself when the
     table has no meaning for it."""
     spec = _spec(name)
     text = getattr(spec, "meaning", "") or ""
-    text = re.sub(r"\s*\((?:echo|Rec|table|report)[^)]*\)", "", text).strip().rstrip(".;,")
+    text = re.sub(r"\s*\([^()]*\)", "", text).strip().rstrip(".;,")   # the table's remarks in brackets
     text = re.split(r";", text)[0].strip()
     if not text:
         return name
