@@ -292,7 +292,7 @@ def _deprecated_element(ctx, param, value):
 @click.option("--step", type=int, help="printed step of the load distribution [default: the first printed step]")
 @click.option("--steps", type=click.IntRange(min=0),
               help="a deck given as RUN or --compare: time steps to run after step 0 [default: as the deck says]")
-@click.option("--history-element", "history_element", type=click.IntRange(min=1), default=None,
+@click.option("--history-element", "history_element", type=click.IntRange(min=1), default=None, metavar="N",
               help="rolling element of the race-contact and pocket-force figures (a deck is run with it) "
                    "[default: 1]")
 @click.option("--element", "element_alias", type=click.IntRange(min=1), default=None, hidden=True,
