@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from . import _core
-from .errors import AdoreEngineError, AdoreInputError
+from .errors import AdoreEngineError, AdoreError, AdoreInputError
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -132,7 +132,13 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
     if not isinstance(deck_path, (str, os.PathLike)) or overrides:
         with tempfile.TemporaryDirectory(prefix="pyadore-deck-") as tmp:
             written, shown = _deck_file(deck_path, overrides, Path(tmp))
-            result = run(written, steps=steps, out=out, progress=progress, **options)
+            try:
+                result = run(written, steps=steps, out=out, progress=progress, **options)
+            except AdoreError as exc:  # name the deck as the caller knows it, not the temporary file
+                if exc.args and isinstance(exc.args[0], str):
+                    what = f"{shown} ({'with overrides' if overrides else 'a Deck'})"
+                    exc.args = (exc.args[0].replace(str(written), what),) + exc.args[1:]
+                raise
         result.deck_path = shown
         return result
     deck = Path(os.fspath(deck_path))

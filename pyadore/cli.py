@@ -223,6 +223,10 @@ def _plot_input(path: Path, what: str, tmpdir: Path, steps: int | None = None, o
     except OSError as exc:
         raise AdoreInputError(f"{path}: cannot read the {what} ({exc.strerror or exc})") from None
     if is_print:
+        if steps is not None or any(v is not None for k, v in (options or {}).items()
+                                    if k not in ("history_element", "traction_table")):
+            click.echo(f"pyadore: note: {path} is a print file: --steps and the run options apply to a deck "
+                       "only", err=True)
         return path
     click.echo(f"pyadore: {path} is not a print file: running it as a deck", err=True)
     result = run_deck(path, steps=steps, out=tmpdir / f"{what}-{path.stem}.prt", **(options or {}))
