@@ -265,3 +265,16 @@ def test_run_steps_0_imports_no_table_or_figure_library(ball_deck, tmp_path):
     heavy = sorted(m for m in imported if m.split(".")[0] in ("pandas", "matplotlib", "xarray", "scipy"))
     assert heavy == []
     assert "importlib.metadata" not in imported                           # --version only when asked
+
+
+def test_sweep_takes_a_deck_object_and_a_range(tmp_path):
+    deck = read_deck(RADIAL)
+    deck.set("applied_force_z", 2000.0)
+    frame = pyadore.sweep(deck, {"diametral_clearance": "0:20e-6:2"}, tmp_path / "s", steps=0, workers=1,
+                          progress=False)
+    assert list(frame["status"]) == ["ok", "ok"] and list(frame["diametral_clearance"]) == [0.0, 20e-6]
+    case = read_deck(tmp_path / "s" / "cases" / "case_0002" / "deck.inp")
+    assert case.lookup("applied_force_z") == 2000.0          # the Deck's own change is in every case
+    assert case.lookup("diametral_clearance") == pytest.approx(20e-6, rel=1e-4)
+    # a larger clearance at the same radial load: fewer balls carry it, the largest load grows
+    assert frame["max_contact_load_N"].iloc[1] > frame["max_contact_load_N"].iloc[0]
