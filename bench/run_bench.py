@@ -18,7 +18,9 @@ machine), the print's "Total Derivative Calls" and final tau, and microseconds p
 derivative call (the whole run, start and print included, over the calls; of the best wall
 time and of the least CPU time); and once, the run to the report's simulated time
 (`--duration REPORT_DURATION`, issue #30) with its steps, calls and final tau.  Issue #20's budget: at most 10 s for
-the full run (goal 2 s).  Results are printed, and written to bench/results/latest.json.
+the full run (goal 2 s).  The command's start-up (`startup`, issue #29): `pyadore run DECK --steps 0` in a fresh
+interpreter against `adore DECK --steps 0`, budget STARTUP_BUDGET over the engine, and the heavy modules
+(HEAVY_MODULES) the command imported (none expected).  Results are printed, and written to bench/results/latest.json.
 """
 
 from __future__ import annotations
