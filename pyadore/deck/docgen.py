@@ -193,9 +193,22 @@ def _unknowns() -> list[str]:
             "identifies them: " + ", ".join(names) + ".", ""]
 
 
+def _derived() -> list[str]:
+    from .derived import DERIVED_FIELDS
+
+    rows = [f"| `{d.name}` | {d.unit} | {d.meaning} | Rec {d.record} `{d.sets}` |" for d in DERIVED_FIELDS.values()]
+    return ["## Derived fields", "",
+            "Inputs that the deck stores as another field (`pyadore/deck/derived.py`). `Deck.set`, "
+            "`Deck.lookup`, `pyadore.run(..., overrides=)` and `pyadore sweep --vary` take them like a deck "
+            "field; the deck file holds the field they set.  `diametral_clearance`: "
+            "`cos alpha0 = 1 - P_d / (2 (f_o + f_i - 1) D)` (Harris & Kotzalas, *Essential Concepts of "
+            "Bearing Technology*, 5th ed., 2.3), alpha0 rounded to the digits its 11 columns hold.",
+            "", "| name | unit | meaning | sets |", "|---|---|---|---|", *rows, ""]
+
+
 def generate() -> str:
     """The full text of docs/deck-format.md."""
-    parts = [_INTRO, *_records(), *_validation(), *_provenance(), *_unknowns()]
+    parts = [_INTRO, *_records(), *_validation(), *_derived(), *_provenance(), *_unknowns()]
     return "\n".join(parts).rstrip() + "\n"
 
 
