@@ -531,7 +531,7 @@ contains
    end function field_width
 
    !> Field spec `f` with text `tok` (starting in column `col`) left unread, with no problem of
-   !> its own: its line holds a non-ASCII character (already reported).
+   !> its own (its line holds a non-ASCII character, already reported); read_field's start.
    subroutine unread_field(f, tok, lineno, col, fv)
       integer, intent(in) :: f, lineno, col
       character(len=*), intent(in) :: tok
@@ -557,12 +557,7 @@ contains
       logical :: blank
       integer :: lead
 
-      fv%kind = FLD_KIND(f)
-      fv%spec = f
-      fv%line = lineno
-      fv%col = col
-      fv%raw = tok
-      fv%text_value = ""
+      call unread_field(f, tok, lineno, col, fv)
       msg = ""
       select case (FLD_KIND(f))
       case (KIND_TEXT)
