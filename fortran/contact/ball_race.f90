@@ -123,7 +123,7 @@ contains
       if (ok) c%stiffness = g%stiffness
       if (present(stiffness)) c%stiffness = stiffness
       if (c%delta > 0.0_wp .and. ok) then
-         c%load = c%stiffness*c%delta**1.5_wp
+         c%load = c%stiffness*(c%delta*sqrt(c%delta))   ! delta**1.5 without pow
          c%ellipse = hertz_contact(g, c%load)
       end if
 

@@ -83,7 +83,7 @@ contains
       logical, intent(out) :: ok
       logical, intent(in), optional :: exhaustive
 
-      real(wp) :: f, lo, hi, mid, k, e, k2
+      real(wp) :: f, lo, hi, mid, k, e, k2, y
       logical :: found
       integer :: iter
 
@@ -122,12 +122,13 @@ contains
       end if
 
       k2 = geo%kappa**2
+      ! one cube root: b* = a* / kappa, delta* = (2 K / pi) / a*
       geo%a_star = (2.0_wp*k2*e/pi)**(1.0_wp/3.0_wp)
-      geo%b_star = (2.0_wp*e/(pi*geo%kappa))**(1.0_wp/3.0_wp)
-      geo%delta_star = (2.0_wp*k/pi)*(pi/(2.0_wp*k2*e))**(1.0_wp/3.0_wp)
-      ! delta = delta* (3 Q c / (2 S))**(2/3) S/2  =>  Q = K_n delta**1.5
-      geo%stiffness = (2.0_wp*geo%curvature_sum/3.0_wp/geo%compliance) &
-                      *(2.0_wp/(geo%delta_star*geo%curvature_sum))**1.5_wp
+      geo%b_star = geo%a_star/geo%kappa
+      geo%delta_star = (2.0_wp*k/pi)/geo%a_star
+      ! delta = delta* (3 Q c / (2 S))**(2/3) S/2  =>  Q = K_n delta**1.5 (y**1.5 = y sqrt(y))
+      y = 2.0_wp/(geo%delta_star*geo%curvature_sum)
+      geo%stiffness = (2.0_wp*geo%curvature_sum/3.0_wp/geo%compliance)*(y*sqrt(y))
       ok = .true.
    end subroutine hertz_geometry
 
@@ -212,7 +213,7 @@ contains
       real(wp) :: q
 
       q = 0.0_wp
-      if (delta > 0.0_wp) q = geo%stiffness*delta**1.5_wp
+      if (delta > 0.0_wp) q = geo%stiffness*(delta*sqrt(delta))
    end function hertz_load
 
 end module adore_contact_hertz
