@@ -75,14 +75,22 @@ contains
    pure function ball_race_curvatures(d, dm, f, alpha, outer) result(rho)
       real(wp), intent(in) :: d, dm, f, alpha
       logical, intent(in) :: outer
+      real(wp) :: rho(4)
+      rho = curvatures_of_cosine(d, dm, f, cos(alpha), outer)
+   end function ball_race_curvatures
+
+   !> ball_race_curvatures for cos(alpha) (-) given.
+   pure function curvatures_of_cosine(d, dm, f, cos_alpha, outer) result(rho)
+      real(wp), intent(in) :: d, dm, f, cos_alpha
+      logical, intent(in) :: outer
       real(wp) :: rho(4), gamma
-      gamma = d*cos(alpha)/dm
+      gamma = d*cos_alpha/dm
       if (outer) then
          rho = [2.0_wp/d, 2.0_wp/d, -2.0_wp*gamma/(d*(1.0_wp + gamma)), -1.0_wp/(f*d)]
       else
          rho = [2.0_wp/d, 2.0_wp/d, 2.0_wp*gamma/(d*(1.0_wp - gamma)), -1.0_wp/(f*d)]
       end if
-   end function ball_race_curvatures
+   end function curvatures_of_cosine
 
    !> The contact of `ball` with the race `race` (body states, adore_state_bearing_state)
    !> for the pair p: geometry, Hertz load and slip (module header).  stiffness, when
@@ -92,7 +100,7 @@ contains
       type(body_state_t), intent(in) :: ball, race
       type(ball_race_geometry_t), intent(out) :: c
       real(wp), intent(in), optional :: stiffness
-      real(wp) :: rot(3, 3), b_rel(3), phi, e_r(3), e_t(3), a(3), la, n(3), alpha_s, e_m(3)
+      real(wp) :: rot(3, 3), b_rel(3), e_r(3), e_t(3), a(3), la, n(3), alpha_s, e_m(3), nr, ln
       real(wp) :: w_b(3), w_r(3), dv(3), dw(3), v_ball(3), v_race(3), u(3), side
       type(hertz_geometry_t) :: g
       logical :: ok
@@ -100,30 +108,39 @@ contains
       side = real(p%side, wp)
       rot = quat_matrix(race%attitude)
       b_rel = matmul(transpose(rot), ball%position - race%position)
-      phi = atan2(-b_rel(2), b_rel(3))
-      e_r = [0.0_wp, -sin(phi), cos(phi)]
-      e_t = [0.0_wp, -cos(phi), -sin(phi)]
+      ! the ball's azimuth phi' = atan2(-b_2, b_3): e_r = (0, -sin phi', cos phi') and
+      ! e_t = (0, -cos phi', -sin phi') from b' itself (no trigonometric call)
+      c%ball_radius = hypot(b_rel(2), b_rel(3))
+      if (c%ball_radius > 0.0_wp) then
+         e_r = [0.0_wp, b_rel(2)/c%ball_radius, b_rel(3)/c%ball_radius]
+      else
+         e_r = [0.0_wp, 0.0_wp, 1.0_wp]       ! atan2(0, 0) = 0
+      end if
+      e_t = [0.0_wp, -e_r(3), e_r(2)]
       a = b_rel - ([p%groove_centre(1), 0.0_wp, 0.0_wp] + p%groove_centre(2)*e_r)
       la = norm2(a)
       n = a/la
-      c%ball_radius = hypot(b_rel(2), b_rel(3))
       c%delta = la - (p%groove_radius - 0.5_wp*p%d)
-      ! planar angle: n = side (sin alpha, cos alpha) in (axial, radial)
-      alpha_s = atan2(side*n(1), side*dot_product(n, e_r))
-      e_m = side*(cos(alpha_s)*[1.0_wp, 0.0_wp, 0.0_wp] - sin(alpha_s)*e_r)
+      ! planar angle: n = side (sin alpha, cos alpha) in (axial, radial); n is a unit
+      ! vector in the plane of e_x and e_r, so cos, sin alpha are its components there
+      nr = dot_product(n, e_r)
+      alpha_s = atan2(side*n(1), side*nr)
+      ln = hypot(n(1), nr)
+      e_m = (nr/ln)*[1.0_wp, 0.0_wp, 0.0_wp] - (n(1)/ln)*e_r
       c%alpha = alpha_s
       c%normal = matmul(rot, n)
       c%rolling = matmul(rot, e_t)
       c%transverse = matmul(rot, e_m)
       c%point = ball%position + 0.5_wp*p%d*c%normal
 
-      call hertz_geometry(ball_race_curvatures(p%d, p%dm, p%f, atan(abs(n(1))/abs(dot_product(n, e_r))), &
-                                               p%side == SIDE_OUTER), p%e_ball, p%nu_ball, p%e_race, p%nu_race, g, ok)
+      ! the Hertz contact angle atan(|n_x| / |n_r|) by its cosine |n_r| / |n|
+      call hertz_geometry(curvatures_of_cosine(p%d, p%dm, p%f, abs(nr)/ln, p%side == SIDE_OUTER), &
+                          p%e_ball, p%nu_ball, p%e_race, p%nu_race, g, ok)
       c%stiffness = 0.0_wp
       if (ok) c%stiffness = g%stiffness
       if (present(stiffness)) c%stiffness = stiffness
       if (c%delta > 0.0_wp .and. ok) then
-         c%load = c%stiffness*c%delta**1.5_wp
+         c%load = c%stiffness*(c%delta*sqrt(c%delta))   ! delta**1.5 without pow
          c%ellipse = hertz_contact(g, c%load)
       end if
 
