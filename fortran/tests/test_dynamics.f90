@@ -57,7 +57,7 @@ program test_dynamics
    use adore_contact_ball_race, only: contact_energy
    use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state, start_ball_dynamics, &
                                          state_error_scale
-   use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
+   use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, INT_METHOD_DP54
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0
    use adore_quasistatic_ball_equilibrium, only: ball_qs_load_t, ball_qs_solution_t, solve_ball_equilibrium
    use adore_quasistatic_models, only: ball_qs_model
@@ -69,6 +69,14 @@ program test_dynamics
    character(len=:), allocatable :: decks
 
    call get_decks_dir(decks)
+   block
+      integer :: st
+      call get_environment_variable("ADORE_ONLY_ACC", status=st)
+      if (st == 0) then
+         call test_accuracy_against_a_tight_run()
+         call finish("dynamics")
+      end if
+   end block
    call test_free_body("ball", [1.0_wp, 1.0_wp, 1.0_wp]*2.8e-7_wp, [1200.0_wp, -300.0_wp, 2500.0_wp])
    call test_free_body("cage", [3.1e-5_wp, 1.7e-5_wp, 1.7e-5_wp]*[1.0_wp, 1.1_wp, 0.9_wp], [900.0_wp, 40.0_wp, -25.0_wp])
    call test_energy_without_traction(.false., 10.0_wp)
@@ -77,6 +85,7 @@ program test_dynamics
    call test_orbit_frame_is_the_same_motion()
    call test_run_balances_the_applied_load()
    call test_orbit_averages_match_the_quasi_static_equilibrium()
+   call test_accuracy_against_a_tight_run()
    call finish("dynamics")
 
 contains
@@ -436,7 +445,8 @@ contains
       if (allocated(error)) return
       n = b%n_elements
       do i = 1, 2
-         call start_ball_dynamics(b, g, s0%start, s0%cage, sys(i), it(i), y, error, orbit_frame=i == 2)
+         call start_ball_dynamics(b, g, s0%start, s0%cage, sys(i), it(i), y, error, orbit_frame=i == 2, &
+                                  int_method=INT_METHOD_DP54)
          call check(.not. allocated(error), "orbit frame: start")
          if (allocated(error)) return
          tt = sys(i)%time_scale
@@ -464,5 +474,74 @@ contains
       call check(worst_x < 1.0e-9_wp .and. worst_q < 1.0e-6_wp, "orbit frame: the same motion as the inertial frame")
       call check(steps(2) < steps(1), "orbit frame: fewer steps than the inertial frame")
    end subroutine test_orbit_frame_is_the_same_motion
+
+   !> Issue #30's accuracy check, independent of the controller: Appendix C as the run
+   !> integrates it (orbit frame, the deck's INT METHOD and error limit 1e-4) against the same
+   !> start integrated by Dormand-Prince 5(4) at error limit 1e-8, at tau = 30: every ball's
+   !> outer and inner contact load within 1 % and its position within 2 um.
+   subroutine test_accuracy_against_a_tight_run()
+      real(wp), parameter :: t_end = 30.0_wp
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(ball_system_t) :: sys(2)
+      type(bearing_state_t) :: s(2)
+      type(integrator_t) :: it(2)
+      type(error_type), allocatable :: error
+      real(wp), allocatable :: y(:)
+      real(wp) :: t, worst_q(2), worst_x
+      integer :: i, k, n, steps(2), calls(2)
+
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      if (allocated(error)) return
+      g = mount_geometry(b, b%temperature)
+      call solve_ball_step0(b, s0, error)
+      if (allocated(error)) return
+      n = b%n_elements
+      do i = 1, 2
+         if (i == 1) then
+            call start_ball_dynamics(b, g, s0%start, s0%cage, sys(i), it(i), y, error, orbit_frame=.true.)
+            block
+               character(len=32) :: env
+               integer :: st
+               call get_environment_variable("ADORE_TEST_TOL", env, status=st)
+               if (st == 0) read (env, *) it(i)%settings%error_limit
+            end block
+         else
+            call start_ball_dynamics(b, g, s0%start, s0%cage, sys(i), it(i), y, error, orbit_frame=.true., &
+                                     int_method=INT_METHOD_DP54)
+            it(i)%settings%error_limit = 1.0e-8_wp
+         end if
+         call check(.not. allocated(error), "accuracy: start")
+         if (allocated(error)) return
+         t = 0.0_wp
+         do while (t < t_end)
+            call it(i)%step(sys(i), t, y, error, t_limit=t_end)
+            if (allocated(error)) exit
+         end do
+         call check(.not. allocated(error), "accuracy: integration to tau = 30")
+         if (allocated(error)) return
+         s(i) = sys(i)%state                     ! the last evaluation is at (t, y)
+         call unpack_state(y, t*sys(i)%time_scale, s(i), .true.)
+         steps(i) = it(i)%stats%accepted
+         calls(i) = it(i)%stats%derivative_calls
+      end do
+      worst_x = 0.0_wp
+      worst_q = 0.0_wp
+      do k = 1, n
+         worst_x = max(worst_x, norm2(s(1)%elements(k)%position - s(2)%elements(k)%position))
+         do i = 1, 2
+            worst_q(i) = max(worst_q(i), abs(sys(1)%loads%contacts(i, k)%load/sys(2)%loads%contacts(i, k)%load - 1.0_wp))
+         end do
+      end do
+      do k = 1, n
+         write (*, "(i3,3es12.3,2f9.4)") k, s(1)%elements(k)%position - s(2)%elements(k)%position, &
+            100*(sys(1)%loads%contacts(:, k)%load/sys(2)%loads%contacts(:, k)%load - 1.0_wp)
+      end do
+      write (*, "(a,2f8.4,a,es10.2,a,2i6,a,2i7)") "accuracy at tau = 30 against error limit 1e-8: worst |Q/Q_ref - 1| "// &
+         "outer, inner (%) ", 100.0_wp*worst_q, "; worst position ", worst_x, " m; steps ", steps, "; calls ", calls
+      call check(all(worst_q <= 0.01_wp), "accuracy: every ball's contact loads within 1 % of the tight run")
+      call check(worst_x <= 2.0e-6_wp, "accuracy: every ball's position within 2 um of the tight run")
+   end subroutine test_accuracy_against_a_tight_run
 
 end program test_dynamics
