@@ -485,8 +485,7 @@ contains
             if (tab%e(j) /= 0.0_wp) self%y_err = self%y_err + (h*tab%e(j))*k(:, j)
          end do
       end associate
-      err = maxval(abs(self%y_err)/(self%settings%error_limit* &
-                                    (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))))
+      err = weighted_error(self, y)
    end subroutine attempt
 
    !> Rosenbrock-W: the system's Jacobian blocks (adore_dynamics_block_jacobian): nb blocks of
@@ -597,14 +596,7 @@ contains
             self%y_err = self%y_err + ros%e(i)*u(:, i)
          end do
       end associate
-      if (.not. all(ieee_is_finite(self%y_new))) return
-      err = maxval(abs(self%y_err)/(self%settings%error_limit* &
-                                    (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))))
-      if (.not. (err <= 1.0_wp .or. accept) .or. .not. ieee_is_finite(err)) return
-      call deriv%eval(t + h, self%y_new, self%k(:, self%last), flag)
-      self%stats%derivative_calls = self%stats%derivative_calls + 1
-      if (flag /= DERIV_OK) return
-      if (.not. all(ieee_is_finite(self%k(:, self%last)))) err = ieee_value(err, ieee_positive_inf)
+      call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
    end subroutine attempt_rosenbrock
 
    !> One attempt of the additive (IMEX) method of size h from (t, y), k(:, 1) = f(t, y) given:
@@ -659,15 +651,36 @@ contains
             if (ark%e(j) /= 0.0_wp) self%y_err = self%y_err + (h*ark%e(j))*k(:, j)
          end do
       end associate
+      call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
+   end subroutine attempt_imex
+
+   !> The end of a linearly implicit attempt (y_new and y_err set): the weighted error err
+   !> (infinite when y_new is not finite) and, when the step will be accepted (err <= 1 or
+   !> accept), f at (t + h, y_new) into k(:, last), the first stage of the next step.
+   subroutine end_of_attempt(self, deriv, t, y, h, flag, err, accept)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t, h
+      real(wp), intent(in) :: y(:)
+      integer, intent(inout) :: flag
+      real(wp), intent(inout) :: err
+      logical, intent(in) :: accept
       if (.not. all(ieee_is_finite(self%y_new))) return
-      err = maxval(abs(self%y_err)/(self%settings%error_limit* &
-                                    (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))))
+      err = weighted_error(self, y)
       if (.not. (err <= 1.0_wp .or. accept) .or. .not. ieee_is_finite(err)) return
       call deriv%eval(t + h, self%y_new, self%k(:, self%last), flag)
       self%stats%derivative_calls = self%stats%derivative_calls + 1
       if (flag /= DERIV_OK) return
       if (.not. all(ieee_is_finite(self%k(:, self%last)))) err = ieee_value(err, ieee_positive_inf)
-   end subroutine attempt_imex
+   end subroutine end_of_attempt
+
+   !> The error test's norm of y_err (Rec 2.1 ERROR LIMIT; 1 = at the limit) for a step from y to y_new.
+   real(wp) function weighted_error(self, y) result(err)
+      class(integrator_t), intent(in) :: self
+      real(wp), intent(in) :: y(:)
+      err = maxval(abs(self%y_err)/(self%settings%error_limit* &
+                                    (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))))
+   end function weighted_error
 
    !> An engine error "integration stopped: <what> at time t = .. (step h = .., after N accepted
    !> steps)<tail>" (t and h in the unit of t); with deriv, ": <its failure reason>" after it.
