@@ -23,7 +23,7 @@ module adore_dynamics_ball_system
    use adore_forces_ball_bearing, only: ball_bearing_loads_t
    use adore_dynamics_ball_motion, only: ball_bearing_rates
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
-                                        DERIV_REJECT_STEP
+                                        DERIV_REJECT_STEP, INT_METHOD_DP54, INT_METHOD_ARK436
    use adore_quasistatic_ball_start, only: ball_start_t
    use adore_cage_step0, only: cage_step0_t
    use adore_model_scales, only: scale_factors
@@ -31,6 +31,13 @@ module adore_dynamics_ball_system
    private
 
    public :: ball_system_t, new_ball_system, initial_ball_state, state_error_scale, start_ball_dynamics
+   public :: ball_int_method, BALL_JACOBIAN_COLUMNS
+
+   !> The columns of each ball's block of the Jacobian of the linearly implicit methods (of its
+   !> 13 state values): position and velocity, where the race contacts' normal stiffness and
+   !> damping act, and angular velocity, where the traction's slip damping acts
+   !> (docs/dynamics.md, "The stiff-aware method")
+   integer, parameter :: BALL_JACOBIAN_COLUMNS(9) = [1, 2, 3, 4, 5, 6, 11, 12, 13]
 
    !> The ball bearing's equations of motion dy/dtau (integrator's derivative_t).
    type, extends(derivative_t) :: ball_system_t
@@ -209,6 +216,16 @@ contains
       end associate
    end function initial_ball_state
 
+   !> The integration method of the ball dynamics for the deck's Rec 1 int_method (INT METHOD):
+   !> 5, the value of both of the report's decks, is the additive (IMEX) Runge-Kutta method
+   !> ARK4(3)6L[2]SA with the balls' blocks of the Jacobian taken implicitly (docs/dynamics.md,
+   !> "INT METHOD"); other codes as the integrator reads them.
+   pure integer function ball_int_method(deck_code) result(method)
+      integer, intent(in) :: deck_code
+      method = deck_code
+      if (deck_code == INT_METHOD_DP54) method = INT_METHOD_ARK436
+   end function ball_int_method
+
    !> The integrator's error scale of each unknown of a packed state of n elements: the
    !> report's dimensionless variables (4.4.5: ADORE integrates in units of the echo's
    !> scales) - positions in L (m), velocities in L/T, quaternions in 1, angular velocities
@@ -239,7 +256,7 @@ contains
    !> accepted when the error test still fails there, as ADORE's Appendix C statistics
    !> show: docs/dynamics.md), the packed initial state y at tau = 0.  traction: race
    !> traction on (default); two_d: the two-dimensional race traction (default .true.).
-   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d, orbit_frame)
+   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d, orbit_frame, int_method)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_start_t), intent(in) :: start
@@ -251,7 +268,11 @@ contains
       logical, intent(in), optional :: traction, two_d
       !> the balls in the orbit-following frame (ball_system_t%orbit_frame; default .false.)
       logical, intent(in), optional :: orbit_frame
+      !> the integration method (adore_dynamics_integrator's INT_METHOD_*) instead of the
+      !> deck's (ball_int_method of Rec 1 int_method)
+      integer, intent(in), optional :: int_method
       real(wp) :: scales(3), l, tt
+      integer :: k
       type(bearing_state_t) :: st
       type(integrator_settings_t) :: settings
 
@@ -273,15 +294,27 @@ contains
       end if
       call pack_state(st, y, sys%orbit_frame)
       associate (c => b%controls)
-         settings = integrator_settings_t(int_method=c%int_method, h_initial=c%step_initial, h_min=c%step_min, &
-                                          h_max=c%step_max, error_limit=c%error_limit, rel_weight=0.0_wp, &
-                                          accept_at_h_min=.true.)
+         settings = integrator_settings_t(int_method=ball_int_method(c%int_method), h_initial=c%step_initial, &
+                                          h_min=c%step_min, h_max=c%step_max, error_limit=c%error_limit, &
+                                          rel_weight=0.0_wp, accept_at_h_min=.true.)
       end associate
+      if (present(int_method)) settings%int_method = int_method
+      if (settings%int_method == INT_METHOD_ARK436) then
+         ! the IMEX method's tuning on Appendix C (docs/dynamics.md, "The stiff-aware method"):
+         ! a new block Jacobian every 20 steps (and after a rejected step); safety factor 0.8
+         ! (0.9 rejected 29 % of the attempts)
+         settings%jacobian_every = 20
+         settings%safety = 0.8_wp
+      end if
       if (sys%orbit_frame) then
          call it%init(size(y), settings, error, scale=state_error_scale(b%n_elements, l, tt, 0.5_wp*b%dm))
       else
          call it%init(size(y), settings, error, scale=state_error_scale(b%n_elements, l, tt))
       end if
+      if (allocated(error)) return
+      ! each ball's block of the Jacobian (used by the Rosenbrock-W method only): the balls
+      ! touch the races and the cage, never another ball
+      call it%set_jacobian_blocks([(BODY_SIZE*(k - 1) + 1, k=1, b%n_elements)], BODY_SIZE, BALL_JACOBIAN_COLUMNS, error)
    end subroutine start_ball_dynamics
 
 end module adore_dynamics_ball_system

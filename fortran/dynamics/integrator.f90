@@ -8,7 +8,11 @@
 !>
 !> Methods (Rec 1 field int_method, echo INT METHOD; see docs/dynamics.md for what is known
 !> and what is assumed): 5 = Dormand-Prince 5(4), 3 = Bogacki-Shampine 3(2), both explicit,
-!> embedded, FSAL, propagating the higher order.  Step control (Rec 2.1): initial, minimum and
+!> embedded, FSAL, propagating the higher order; 34 = ROS34PW2 (pyadore's code, not an ADORE
+!> value), a linearly implicit Rosenbrock-W method whose W uses the system's block-diagonal
+!> Jacobian (set_jacobian_blocks: each block by finite differences, all blocks at once,
+!> adore_dynamics_block_jacobian), which takes the stiff per-ball contact modes implicitly;
+!> without blocks it is an explicit 4-stage method of order 3.  Step control (Rec 2.1): initial, minimum and
 !> maximum step and ERROR LIMIT; weighted max-norm of the embedded error estimate,
 !>     err = max_i |e_i| / (ERROR LIMIT * (scale_i + rel_weight * max(|y_i|, |y_new,i|))),
 !> step accepted when err <= 1; PI step-size controller (Hairer, Norsett & Wanner, Solving ODEs I,
@@ -22,13 +26,15 @@ module adore_dynamics_integrator
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_strings, only: itoa
    use adore_deck_tokenizer, only: show_real
-   use adore_dynamics_rk_tableau, only: rk_tableau_t, dormand_prince_54, bogacki_shampine_32
+   use adore_dynamics_rk_tableau, only: rk_tableau_t, dormand_prince_54, bogacki_shampine_32, &
+                                        rosenbrock_tableau_t, ros34pw2, ark_tableau_t, ark436l2sa
+   use adore_dynamics_block_jacobian, only: block_jacobian_t
    implicit none
    private
 
    public :: derivative_t, integrator_t, integrator_settings_t, integrator_stats_t
    public :: DERIV_OK, DERIV_REJECT_STEP, DERIV_FAIL
-   public :: INT_METHOD_BS32, INT_METHOD_DP54
+   public :: INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436
 
    !> Flags a derivative returns: the values are good; the step must be rejected and retried
    !> smaller (report 4.4.12, abnormal cage contact); the model failed (the run stops).
@@ -36,10 +42,11 @@ module adore_dynamics_integrator
 
    !> INT METHOD codes pyadore knows (Rec 1 field int_method): 3 Bogacki-Shampine 3(2),
    !> 5 Dormand-Prince 5(4).  Only 5 is attested (both decks); its meaning in ADORE is not.
-   integer, parameter :: INT_METHOD_BS32 = 3, INT_METHOD_DP54 = 5
+   !> pyadore's own codes: 34 ROS34PW2, 43 ARK4(3)6L[2]SA (docs/dynamics.md, "INT METHOD").
+   integer, parameter :: INT_METHOD_BS32 = 3, INT_METHOD_DP54 = 5, INT_METHOD_ROS34PW2 = 34, INT_METHOD_ARK436 = 43
 
-   !> Step-size controller constants (DOPRI5's: safety factor, bounds of h_new/h).
-   real(wp), parameter :: safety = 0.9_wp, fac_min = 0.2_wp, fac_max = 10.0_wp
+   !> Step-size controller constants (DOPRI5's bounds of h_new/h; the safety factor is a setting).
+   real(wp), parameter :: fac_min = 0.2_wp, fac_max = 10.0_wp
    !> Step reduction after a derivative refused the step (4.4.12 says "a reduced step").
    real(wp), parameter :: flag_cut = 0.5_wp
    !> Lower bound of the previous error in the PI controller (DOPRI5's facold floor).
@@ -77,6 +84,11 @@ module adore_dynamics_integrator
       !> counts it (stats%forced_at_h_min), as ADORE's Appendix C statistics suggest it does.
       logical :: accept_at_h_min = .false.
       integer :: max_rejections = 100           !< consecutive rejections of one step before an error
+      !> Rosenbrock-W with Jacobian blocks: accepted steps a block Jacobian is kept (a W-method
+      !> keeps its order with any W; a new one is also taken after a rejected step)
+      integer :: jacobian_every = 10
+      !> safety factor of the step-size controller (DOPRI5's 0.9; in (0, 1])
+      real(wp) :: safety = 0.9_wp
    end type integrator_settings_t
 
    !> Counts for "Statistics of this Run" (Appendix C) and diagnostics.
@@ -91,17 +103,28 @@ module adore_dynamics_integrator
       real(wp) :: h_max_used = 0.0_wp       !< Maximum Step Size (idem)
       real(wp) :: h_last = 0.0_wp           !< Last Step Size
       real(wp) :: max_truncation = 0.0_wp   !< Max Truncation: largest err * error_limit accepted
+      integer :: jacobians = 0              !< block Jacobians evaluated (Rosenbrock-W)
+      integer :: jacobian_calls = 0         !< derivative calls spent on them (in derivative_calls)
    end type integrator_stats_t
 
    !> The integrator: settings, method, workspace, step proposal and statistics.
    type :: integrator_t
       type(integrator_settings_t) :: settings
       type(rk_tableau_t) :: tab
+      type(rosenbrock_tableau_t) :: ros       !< the linearly implicit method (when rosenbrock)
+      logical :: rosenbrock = .false.
+      type(ark_tableau_t) :: ark              !< the additive (IMEX) method (when imex)
+      logical :: imex = .false.
+      type(block_jacobian_t) :: jac           !< Rosenbrock-W: the system's block Jacobian
+      integer :: jac_age = -1                 !< accepted steps since jac was evaluated; < 0: none
+      integer :: last = 0                     !< column of k holding f at the end of an attempt
       type(integrator_stats_t) :: stats
       integer :: n = 0                        !< number of unknowns
       real(wp) :: h_next = 0.0_wp             !< size of the next attempt
       real(wp), allocatable :: scale(:)       !< error scale per unknown (units of y), > 0
       real(wp), allocatable :: k(:, :)        !< stage derivatives, n x stages
+      real(wp), allocatable :: u(:, :)        !< Rosenbrock stages (transformed, units of y);
+                                              !< IMEX: J z_i of the stages (units of y per unit of t)
       real(wp), allocatable :: y_stage(:), y_new(:), y_err(:)
       real(wp), allocatable :: y_fsal(:)      !< the state at which k(:, 1) = f(t_fsal, y_fsal)
       real(wp) :: t_fsal = 0.0_wp
@@ -114,6 +137,7 @@ module adore_dynamics_integrator
       procedure :: step
       procedure :: advance
       procedure :: restart
+      procedure :: set_jacobian_blocks
    end type integrator_t
 
 contains
@@ -135,10 +159,16 @@ contains
             self%tab = dormand_prince_54()
          case (INT_METHOD_BS32)
             self%tab = bogacki_shampine_32()
+         case (INT_METHOD_ROS34PW2)
+            self%ros = ros34pw2()
+            self%rosenbrock = .true.
+         case (INT_METHOD_ARK436)
+            self%ark = ark436l2sa()
+            self%imex = .true.
          case default
             call input_error(error, "Rec 1 field int_method = "//itoa(s%int_method)// &
                              ": unknown integration method (INT METHOD); pyadore knows 5 (Dormand-Prince 5(4)) "// &
-                             "and 3 (Bogacki-Shampine 3(2))")
+                             "and 3 (Bogacki-Shampine 3(2)), and its own 34 (ROS34PW2) and 43 (ARK4(3)6L[2]SA)")
             return
          end select
          if (.not. (s%h_min > 0.0_wp .and. s%h_min < huge(1.0_wp))) then
@@ -166,9 +196,11 @@ contains
             call input_error(error, msg)
             return
          end if
-         if (.not. (s%rel_weight >= 0.0_wp .and. s%max_rejections >= 1 .and. n >= 1)) then
-            call engine_error(error, "integrator: expected rel_weight >= 0, max_rejections >= 1 and n >= 1 "// &
-                              "(n = "//itoa(n)//", max_rejections = "//itoa(s%max_rejections)//")")
+         if (.not. (s%rel_weight >= 0.0_wp .and. s%max_rejections >= 1 .and. n >= 1 .and. s%jacobian_every >= 1 .and. &
+                   s%safety > 0.0_wp .and. s%safety <= 1.0_wp)) then
+            call engine_error(error, "integrator: expected rel_weight >= 0, max_rejections >= 1, "// &
+                              "jacobian_every >= 1, 0 < safety <= 1 and n >= 1 (n = "//itoa(n)// &
+                              ", max_rejections = "//itoa(s%max_rejections)//")")
          end if
          if (allocated(error)) return
       end associate
@@ -191,11 +223,25 @@ contains
          end do
          self%scale = scale
       end if
-      allocate (self%k(n, self%tab%stages), self%y_stage(n), self%y_new(n), self%y_err(n), self%y_fsal(n))
+      if (self%rosenbrock) then
+         ! k(:, 1): f at the start; k(:, 2): a stage's f; k(:, s + 1): f at y_new; u: the stages
+         self%last = self%ros%stages + 1
+         allocate (self%u(n, self%ros%stages))
+         k = self%ros%error_order
+      else if (self%imex) then
+         ! k(:, i): f at stage i; k(:, s + 1): f at y_new; u(:, i): J z_i
+         self%last = self%ark%stages + 1
+         allocate (self%u(n, self%ark%stages))
+         k = self%ark%error_order
+      else
+         self%last = self%tab%stages
+         k = self%tab%error_order
+      end if
+      allocate (self%k(n, self%last), self%y_stage(n), self%y_new(n), self%y_err(n), self%y_fsal(n))
       ! PI exponents for an error of order k = error_order: beta = 0.2/k, alpha = 1/k - 0.75 beta
       ! (for k = 5 these are DOPRI5's beta = 0.04, expo1 = 0.17)
-      self%beta = 0.2_wp/self%tab%error_order
-      self%alpha = 1.0_wp/self%tab%error_order - 0.75_wp*self%beta
+      self%beta = 0.2_wp/k
+      self%alpha = 1.0_wp/k - 0.75_wp*self%beta
       self%h_next = settings%h_initial
       self%ready = .true.
    end subroutine init
@@ -207,6 +253,7 @@ contains
       real(wp), intent(in), optional :: h
       self%fsal_valid = .false.
       self%err_old = err_floor
+      self%jac_age = -1
       if (present(h)) self%h_next = min(max(h, self%settings%h_min), self%settings%h_max)
    end subroutine restart
 
@@ -240,6 +287,10 @@ contains
       end if
       call first_stage(self, deriv, t, y, error)
       if (allocated(error)) return
+      if (self%jac%active() .and. (self%jac_age < 0 .or. self%jac_age >= self%settings%jacobian_every)) then
+         call block_jacobian(self, deriv, t, y, error)
+         if (allocated(error)) return
+      end if
 
       h_min = self%settings%h_min
       h_plan = min(self%h_next, self%settings%h_max)
@@ -260,7 +311,14 @@ contains
       rejected_before = .false.
       forced = .false.
       do tries = 0, self%settings%max_rejections
-         call attempt(self, deriv, t, y, h, flag, err)
+         if (self%rosenbrock) then
+            call attempt_rosenbrock(self, deriv, t, y, h, flag, err, &
+                                    self%settings%accept_at_h_min .and. h <= h_min)
+         else if (self%imex) then
+            call attempt_imex(self, deriv, t, y, h, flag, err, self%settings%accept_at_h_min .and. h <= h_min)
+         else
+            call attempt(self, deriv, t, y, h, flag, err)
+         end if
          if (flag == DERIV_FAIL) then
             call stop_error(self, error, "the derivative failed", t, h, deriv=deriv)
             return
@@ -285,10 +343,15 @@ contains
             call put_real(why, err*self%settings%error_limit)
             why = why//" above the error limit "
             call put_real(why, self%settings%error_limit)
-            fac = max(fac_min, safety/err**self%alpha)
+            fac = max(fac_min, self%settings%safety/err**self%alpha)
          end if
-         ! rejected: retry smaller, never below h_min
+         ! rejected: retry smaller, never below h_min; a Rosenbrock-W method with an old
+         ! Jacobian takes a new one first
          rejected_before = .true.
+         if (self%jac%active() .and. self%jac_age > 0) then
+            call block_jacobian(self, deriv, t, y, error)
+            if (allocated(error)) return
+         end if
          if (h <= h_min) then
             call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min)", &
                             t, h, ": "//why, deriv=deriv)
@@ -325,11 +388,12 @@ contains
          t = t + h
       end if
       y = self%y_new
-      self%k(:, 1) = self%k(:, self%tab%stages)
+      self%k(:, 1) = self%k(:, self%last)
+      if (self%jac_age >= 0) self%jac_age = self%jac_age + 1
       self%y_fsal = y
       self%t_fsal = t
       fac_err = err**self%alpha
-      fac = max(1.0_wp/fac_max, min(1.0_wp/fac_min, fac_err/self%err_old**self%beta/safety))
+      fac = max(1.0_wp/fac_max, min(1.0_wp/fac_min, fac_err/self%err_old**self%beta/self%settings%safety))
       h = h/fac
       if (rejected_before) h = min(h, self%stats%h_last)
       self%err_old = max(err, err_floor)
@@ -421,9 +485,202 @@ contains
             if (tab%e(j) /= 0.0_wp) self%y_err = self%y_err + (h*tab%e(j))*k(:, j)
          end do
       end associate
+      err = weighted_error(self, y)
+   end subroutine attempt
+
+   !> Rosenbrock-W: the system's Jacobian blocks (adore_dynamics_block_jacobian): nb blocks of
+   !> m unknowns starting at first(:), whose rates depend on their own block and the unknowns
+   !> outside the blocks only; columns cols(:) (1..m) of each block are differenced (one
+   !> derivative call per column for all blocks).  Ignored by the explicit methods.
+   subroutine set_jacobian_blocks(self, first, m, cols, error)
+      class(integrator_t), intent(inout) :: self
+      integer, intent(in) :: first(:), m, cols(:)
+      type(error_type), allocatable, intent(out) :: error
+      logical :: ok
+      if (.not. (self%rosenbrock .or. self%imex)) return
+      call self%jac%setup(self%n, first, m, cols, ok)
+      if (.not. ok) call engine_error(error, "integrator: Jacobian blocks outside the state, overlapping, or "// &
+                                      "columns outside the block (m = "//itoa(m)//")")
+      self%jac_age = -1
+   end subroutine set_jacobian_blocks
+
+   !> The block Jacobian at (t, y), k(:, 1) = f(t, y): forward differences, column c of every
+   !> block perturbed at once by sqrt(eps) max(|y_i|, scale_i).  A column whose perturbed
+   !> evaluation is refused or not finite is left zero (any W keeps a W-method's order).
+   subroutine block_jacobian(self, deriv, t, y, error)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: d(size(self%jac%first))
+      integer :: c, b, i, i0, m, flag
+
+      m = self%jac%m
+      do c = 1, size(self%jac%cols)
+         self%y_stage = y
+         do b = 1, size(self%jac%first)
+            i = self%jac%first(b) + self%jac%cols(c) - 1
+            d(b) = sqrt(epsilon(1.0_wp))*max(abs(y(i)), self%scale(i))
+            self%y_stage(i) = y(i) + d(b)
+            d(b) = self%y_stage(i) - y(i)
+         end do
+         call deriv%eval(t, self%y_stage, self%k(:, 2), flag)
+         self%stats%derivative_calls = self%stats%derivative_calls + 1
+         self%stats%jacobian_calls = self%stats%jacobian_calls + 1
+         if (flag == DERIV_FAIL) then
+            call stop_error(self, error, "the derivative failed (Jacobian)", t, self%h_next, deriv=deriv)
+            return
+         end if
+         do b = 1, size(self%jac%first)
+            i0 = self%jac%first(b) - 1
+            if (flag == DERIV_OK .and. all(ieee_is_finite(self%k(i0 + 1:i0 + m, 2)))) then
+               self%jac%j(:, self%jac%cols(c), b) = (self%k(i0 + 1:i0 + m, 2) - self%k(i0 + 1:i0 + m, 1))/d(b)
+            else
+               self%jac%j(:, self%jac%cols(c), b) = 0.0_wp
+            end if
+         end do
+      end do
+      self%jac%hg = -1.0_wp
+      self%jac_age = 0
+      self%stats%jacobians = self%stats%jacobians + 1
+   end subroutine block_jacobian
+
+   !> One Rosenbrock-W attempt of size h from (t, y), k(:, 1) = f(t, y) given (HNW II, IV.7
+   !> eq 7.25 with the block Jacobian): stages u, y_new, the weighted error err (infinite when
+   !> not finite or W is singular); when the step will be accepted (err <= 1 or accept), f at
+   !> (t + h, y_new) into k(:, last), the first stage of the next step; flag from the derivative.
+   subroutine attempt_rosenbrock(self, deriv, t, y, h, flag, err, accept)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t, h
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: flag
+      real(wp), intent(out) :: err
+      logical, intent(in) :: accept
+      real(wp) :: hg
+      integer :: i, j
+      logical :: ok
+
+      err = ieee_value(err, ieee_positive_inf)
+      flag = DERIV_OK
+      associate (ros => self%ros, k => self%k, u => self%u, ys => self%y_stage)
+         hg = h*ros%gamma
+         if (self%jac%active() .and. self%jac%hg /= hg) then
+            call self%jac%factor(hg, ok)
+            if (.not. ok) return
+         end if
+         do i = 1, ros%stages
+            if (i == 1) then
+               u(:, 1) = hg*k(:, 1)
+            else
+               ys = y
+               do j = 1, i - 1
+                  if (ros%a(i, j) /= 0.0_wp) ys = ys + ros%a(i, j)*u(:, j)
+               end do
+               call deriv%eval(t + ros%c(i)*h, ys, k(:, 2), flag)
+               self%stats%derivative_calls = self%stats%derivative_calls + 1
+               if (flag /= DERIV_OK) return
+               if (.not. (all(ieee_is_finite(k(:, 2))) .and. all(ieee_is_finite(ys)))) return
+               u(:, i) = hg*k(:, 2)
+               do j = 1, i - 1
+                  if (ros%cc(i, j) /= 0.0_wp) u(:, i) = u(:, i) + (ros%gamma*ros%cc(i, j))*u(:, j)
+               end do
+            end if
+            if (self%jac%active()) call self%jac%solve(u(:, i))
+         end do
+         self%y_new = y
+         self%y_err = 0.0_wp
+         do i = 1, ros%stages
+            self%y_new = self%y_new + ros%m(i)*u(:, i)
+            self%y_err = self%y_err + ros%e(i)*u(:, i)
+         end do
+      end associate
+      call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
+   end subroutine attempt_rosenbrock
+
+   !> One attempt of the additive (IMEX) method of size h from (t, y), k(:, 1) = f(t, y) given:
+   !> f split as J y + (f - J y) with J the block Jacobian (taken implicitly, the rest
+   !> explicitly; Kennedy & Carpenter 2003).  Written for the increments z_i = Y_i - y:
+   !>     (I - h gamma J) z_i = h sum_j<i ae_ij F_j + h sum_j<i (ai_ij - ae_ij) J z_j,
+   !> (both tables' rows sum to c_i, the implicit one's with gamma), F_j = f(t + c_j h, y + z_j),
+   !> y_new = y + h sum b_j F_j, error h sum e_j F_j; when the step will be accepted (err <= 1
+   !> or accept) f at (t + h, y_new) into k(:, last).
+   subroutine attempt_imex(self, deriv, t, y, h, flag, err, accept)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t, h
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: flag
+      real(wp), intent(out) :: err
+      logical, intent(in) :: accept
+      integer :: i, j
+      logical :: ok, implicit
+
+      err = ieee_value(err, ieee_positive_inf)
+      flag = DERIV_OK
+      implicit = self%jac%active()
+      associate (ark => self%ark, k => self%k, jz => self%u, z => self%y_err, ys => self%y_stage)
+         if (implicit .and. self%jac%hg /= h*ark%gamma) then
+            call self%jac%factor(h*ark%gamma, ok)
+            if (.not. ok) return
+         end if
+         jz(:, 1) = 0.0_wp
+         do i = 2, ark%stages
+            z = 0.0_wp
+            do j = 1, i - 1
+               if (ark%ae(i, j) /= 0.0_wp) z = z + (h*ark%ae(i, j))*k(:, j)
+               if (implicit .and. j > 1) z = z + (h*(ark%ai(i, j) - ark%ae(i, j)))*jz(:, j)
+            end do
+            if (implicit) then
+               call self%jac%solve(z)
+               call self%jac%multiply(z, jz(:, i))
+            else
+               jz(:, i) = 0.0_wp
+            end if
+            ys = y + z
+            call deriv%eval(t + ark%c(i)*h, ys, k(:, i), flag)
+            self%stats%derivative_calls = self%stats%derivative_calls + 1
+            if (flag /= DERIV_OK) return
+            if (.not. (all(ieee_is_finite(k(:, i))) .and. all(ieee_is_finite(ys)))) return
+         end do
+         self%y_new = y
+         self%y_err = 0.0_wp
+         do j = 1, ark%stages
+            if (ark%b(j) /= 0.0_wp) self%y_new = self%y_new + (h*ark%b(j))*k(:, j)
+            if (ark%e(j) /= 0.0_wp) self%y_err = self%y_err + (h*ark%e(j))*k(:, j)
+         end do
+      end associate
+      call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
+   end subroutine attempt_imex
+
+   !> The end of a linearly implicit attempt (y_new and y_err set): the weighted error err
+   !> (infinite when y_new is not finite) and, when the step will be accepted (err <= 1 or
+   !> accept), f at (t + h, y_new) into k(:, last), the first stage of the next step.
+   subroutine end_of_attempt(self, deriv, t, y, h, flag, err, accept)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t, h
+      real(wp), intent(in) :: y(:)
+      integer, intent(inout) :: flag
+      real(wp), intent(inout) :: err
+      logical, intent(in) :: accept
+      if (.not. all(ieee_is_finite(self%y_new))) return
+      err = weighted_error(self, y)
+      if (.not. (err <= 1.0_wp .or. accept) .or. .not. ieee_is_finite(err)) return
+      call deriv%eval(t + h, self%y_new, self%k(:, self%last), flag)
+      self%stats%derivative_calls = self%stats%derivative_calls + 1
+      if (flag /= DERIV_OK) return
+      if (.not. all(ieee_is_finite(self%k(:, self%last)))) err = ieee_value(err, ieee_positive_inf)
+   end subroutine end_of_attempt
+
+   !> The error test's norm of y_err (Rec 2.1 ERROR LIMIT; 1 = at the limit) for a step from y to y_new.
+   real(wp) function weighted_error(self, y) result(err)
+      class(integrator_t), intent(in) :: self
+      real(wp), intent(in) :: y(:)
       err = maxval(abs(self%y_err)/(self%settings%error_limit* &
                                     (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))))
-   end subroutine attempt
+   end function weighted_error
 
    !> An engine error "integration stopped: <what> at time t = .. (step h = .., after N accepted
    !> steps)<tail>" (t and h in the unit of t); with deriv, ": <its failure reason>" after it.

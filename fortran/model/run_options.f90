@@ -52,6 +52,10 @@ module adore_model_run_options
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
       character(len=16) :: ball_frame = "orbit"
+      !> the integration method: "deck" (Rec 1 INT METHOD: 5 is the Rosenbrock-W method
+      !> ROS34PW2 for ball decks, docs/dynamics.md), "ros34pw2", "dp5" (Dormand-Prince 5(4))
+      !> or "bs3" (Bogacki-Shampine 3(2))
+      character(len=16) :: integrator = "deck"
       !> simulated time of the time integration (s): the run ends exactly there, its last
       !> step printed, instead of after a step count; 0: the step count
       real(wp) :: duration = 0.0_wp
@@ -71,7 +75,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 10
+   integer, parameter :: N_OPTIONS = 11
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -102,7 +106,10 @@ module adore_model_run_options
                     "printed (instead of a step count)"), &
       option_spec_t("ball_frame", OPTION_CHOICE, "orbit", 0, "", "NAME", "orbit,cartesian", &
                     "coordinates of the balls in the integrated state: orbit-following (report eq 54: axial, "// &
-                    "radial, azimuth) or inertial cartesian") &
+                    "radial, azimuth) or inertial cartesian"), &
+      option_spec_t("integrator", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,ark4,ros34pw2,dp5,bs3", &
+                    "integration method: the deck's INT METHOD (5: ros34pw2 for balls), the Rosenbrock-W "// &
+                    "ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)") &
       ]
 
 contains
@@ -217,6 +224,9 @@ contains
       case ("ball_frame")
          opts%ball_frame = "orbit"
          if (len_trim(value) > 0) opts%ball_frame = trim(adjustl(value))
+      case ("integrator")
+         opts%integrator = "deck"
+         if (len_trim(value) > 0) opts%integrator = trim(adjustl(value))
       end select
    end subroutine set_run_option
 

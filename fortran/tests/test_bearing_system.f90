@@ -420,6 +420,8 @@ contains
       y_fresh = y
       t_fresh = t
       call it_fresh%init(size(y), it%settings, error, scale=it%scale)
+      ! the same method: the linearly implicit ones with the system's Jacobian blocks
+      if (it%jac%active()) call it_fresh%set_jacobian_blocks(it%jac%first, it%jac%m, it%jac%cols, error)
       call it_fresh%restart(h)
       call it%step(sys, t, y, error)
       call it_fresh%step(fresh, t_fresh, y_fresh, error)

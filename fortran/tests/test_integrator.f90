@@ -8,6 +8,7 @@ module integrator_test_problems
    private
 
    public :: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
+   public :: driven_oscillators_t, driven_exact
 
    !> y' = -lambda y (exact: y0 exp(-lambda t)).
    type, extends(derivative_t) :: decay_t
@@ -71,7 +72,53 @@ module integrator_test_problems
       procedure :: eval => bad_eval
    end type bad_t
 
+   !> Damped oscillators k = 1..n driven through their spring at 1 rad per unit of t, each a
+   !> block (x_k, v_k) of the state: x' = v, v' = -omega_k**2 (x - sin t) - 2 zeta omega_k v
+   !> (a stand-in for a ball on its race contacts), and a last unknown s' = x_1 - s outside
+   !> every block.  Exact from the particular solution (driven_exact).
+   type, extends(derivative_t) :: driven_oscillators_t
+      real(wp), allocatable :: omega(:)
+      real(wp) :: zeta = 0.143_wp
+   contains
+      procedure :: eval => driven_eval
+   end type driven_oscillators_t
+
 contains
+
+   subroutine driven_eval(self, t, y, dydt, flag)
+      class(driven_oscillators_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      integer :: k
+      do k = 1, size(self%omega)
+         associate (w => self%omega(k), x => y(2*k - 1), v => y(2*k))
+            dydt(2*k - 1) = v
+            dydt(2*k) = -w**2*(x - sin(t)) - 2.0_wp*self%zeta*w*v
+         end associate
+      end do
+      dydt(size(y)) = y(1) - y(size(y))
+      flag = DERIV_OK
+   end subroutine driven_eval
+
+   !> The exact state of driven_oscillators_t at t on its particular solution: x_k = Im(H e**it),
+   !> H = omega**2/(omega**2 - 1 + 2 i zeta omega); s from s' = x_1 - s on its own particular
+   !> solution Im(H/(1 + i) e**it).
+   pure function driven_exact(sys, t) result(y)
+      type(driven_oscillators_t), intent(in) :: sys
+      real(wp), intent(in) :: t
+      real(wp) :: y(2*size(sys%omega) + 1)
+      complex(wp) :: h, e
+      integer :: k
+      e = exp(cmplx(0.0_wp, t, wp))
+      do k = 1, size(sys%omega)
+         h = sys%omega(k)**2/cmplx(sys%omega(k)**2 - 1.0_wp, 2.0_wp*sys%zeta*sys%omega(k), wp)
+         y(2*k - 1) = aimag(h*e)
+         y(2*k) = aimag(cmplx(0.0_wp, 1.0_wp, wp)*h*e)
+         if (k == 1) y(size(y)) = aimag(h/cmplx(1.0_wp, 1.0_wp, wp)*e)
+      end do
+   end function driven_exact
 
    subroutine decay_eval(self, t, y, dydt, flag)
       class(decay_t), intent(inout) :: self
@@ -185,8 +232,9 @@ program test_integrator
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR, ADORE_ENGINE_ERROR
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, derivative_t, &
-      INT_METHOD_BS32, INT_METHOD_DP54
-   use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
+      INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436
+   use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t, &
+      driven_oscillators_t, driven_exact
    implicit none
 
    call test_settings_errors()
@@ -202,6 +250,8 @@ program test_integrator
    call test_rejection_by_derivative()
    call test_minimum_step()
    call test_failures()
+   call test_rosenbrock_order()
+   call test_rosenbrock_stiff_oscillators()
 
    call finish("integrator")
 
@@ -328,12 +378,13 @@ contains
    !> Fixed steps (h_min = h_max = h, the error test out of the way): the global error at t = 2 of
    !> y' = y cos t falls as h**p, p = 5 (DP5) and 3 (BS3); slope from h = 0.1 -> 0.05 -> 0.025.
    subroutine test_order_of_convergence()
-      integer, parameter :: method(2) = [INT_METHOD_DP54, INT_METHOD_BS32], expected(2) = [5, 3]
+      integer, parameter :: method(4) = [INT_METHOD_DP54, INT_METHOD_BS32, INT_METHOD_ROS34PW2, INT_METHOD_ARK436], &
+                            expected(4) = [5, 3, 3, 4]
       integer :: m, j
       real(wp) :: e(4), slope(3)
       character(len=120) :: line
 
-      do m = 1, 2
+      do m = 1, 4
          do j = 1, 4
             e(j) = fixed_step_error(method(m), 0.1_wp/2**(j - 1), 20*2**(j - 1))
          end do
@@ -345,6 +396,111 @@ contains
          call check(abs(slope(3) - expected(m)) < 0.1_wp, "order of convergence: "//trim(line))
       end do
    end subroutine test_order_of_convergence
+
+   !> The linearly implicit methods with fixed steps on the driven oscillators (omega = 2 and
+   !> 3, a linear, non-autonomous problem): the global error at t = 2 falls as h**p whatever
+   !> block Jacobian they are given - the exact blocks (both columns), one column of them, none:
+   !> ROS34PW2 p = 3 (a W-method, Rang & Angermann 2005), ARK4(3)6L[2]SA p = 4 (any split
+   !> f = J y + (f - J y) is an additive split, Kennedy & Carpenter 2003).
+   subroutine test_rosenbrock_order()
+      character(len=*), parameter :: what(3) = [character(len=12) :: "exact J", "one column", "no J"]
+      integer, parameter :: method(2) = [INT_METHOD_ROS34PW2, INT_METHOD_ARK436], expected(2) = [3, 4]
+      integer :: m, j, l
+      real(wp) :: e(4), slope(3)
+      character(len=140) :: line
+
+      do l = 1, 2
+         do m = 1, 3
+            do j = 1, 4
+               e(j) = driven_fixed_step_error(method(l), m, 0.1_wp/2**(j - 1), 20*2**(j - 1))
+            end do
+            slope = log(e(1:3)/e(2:4))/log(2.0_wp)
+            write (line, "(a,i0,a,3f7.3,a,4es9.2)") "INT METHOD ", method(l), ", "//trim(what(m))// &
+               ": observed order ", slope, "; errors", e
+            write (*, "(a)") trim(line)
+            call check(abs(slope(3) - expected(l)) < 0.15_wp, "linearly implicit order: "//trim(line))
+         end do
+      end do
+   end subroutine test_rosenbrock_order
+
+   !> The error of method at t = h nsteps on the driven oscillators (omega 2 and 3) with
+   !> the Jacobian blocks: 1 exact, 2 their first column only, 3 none.
+   real(wp) function driven_fixed_step_error(method, jac, h, nsteps) result(err)
+      integer, intent(in) :: method, jac, nsteps
+      real(wp), intent(in) :: h
+      type(integrator_t) :: it
+      type(integrator_settings_t) :: s
+      type(driven_oscillators_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(5)
+      integer :: i
+
+      f%omega = [2.0_wp, 3.0_wp]
+      s%int_method = method
+      s%h_initial = h
+      s%h_min = h
+      s%h_max = h
+      s%error_limit = 0.5_wp
+      s%rel_weight = 0.0_wp
+      call it%init(5, s, error, scale=[(1.0e10_wp, i=1, 5)])
+      if (jac == 1) call it%set_jacobian_blocks([1, 3], 2, [1, 2], error)
+      if (jac == 2) call it%set_jacobian_blocks([1, 3], 2, [1], error)
+      t = 0.0_wp
+      y = driven_exact(f, t)
+      do i = 1, nsteps
+         call it%step(f, t, y, error)
+      end do
+      call check(.not. allocated(error) .and. it%stats%accepted == nsteps, "Rosenbrock: fixed steps of size h")
+      err = maxval(abs(y - driven_exact(f, t)))
+   end function driven_fixed_step_error
+
+   !> Stiff: oscillators of omega = 1000 and 3000 (zeta 0.143; eigenvalues -143 +- 990 i and
+   !> -429 +- 2969 i) driven slowly, to t = 10 at error limit 1e-3.  ROS34PW2 and ARK4(3)6L
+   !> with the block Jacobian follow the slow particular solution with steps far beyond DP5's
+   !> stability limit (|h lambda| <= 3.3: h <= 1.1e-3), accurate to 10 times the limit; DP5
+   !> on the same problem is held at its stability limit and needs many times the steps.
+   !> (Measured: ROS34PW2 139 steps up to 0.18; ARK4 2519 steps up to 0.025 - its embedded
+   !> ESDIRK is A- but not L-stable, so its error estimate, not its stability, holds it at
+   !> |h lambda| ~ 25 on modes this stiff; DP5 10574 steps.)
+   subroutine test_rosenbrock_stiff_oscillators()
+      type(integrator_t) :: it
+      type(driven_oscillators_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(5), ex(5), worst
+      integer :: m, steps(3), calls(3)
+      integer, parameter :: method(3) = [INT_METHOD_ROS34PW2, INT_METHOD_ARK436, INT_METHOD_DP54]
+
+      f%omega = [1000.0_wp, 3000.0_wp]
+      do m = 1, 3
+         call it%init(5, settings_of(method(m), 1.0e-3_wp), error, scale=[1.0_wp, 1.0e3_wp, 1.0_wp, 3.0e3_wp, 1.0_wp])
+         it%settings%h_max = 10.0_wp
+         it%settings%h_initial = 1.0e-3_wp
+         it%settings%rel_weight = 0.0_wp
+         call it%set_jacobian_blocks([1, 3], 2, [1, 2], error)
+         t = 0.0_wp
+         y = driven_exact(f, t)
+         worst = 0.0_wp
+         do while (t < 10.0_wp .and. .not. allocated(error))
+            call it%step(f, t, y, error, t_limit=10.0_wp)
+            ex = driven_exact(f, t)
+            worst = max(worst, maxval(abs(y([1, 3, 5]) - ex([1, 3, 5]))))
+         end do
+         call check(.not. allocated(error), "stiff oscillators: integrated to t = 10")
+         steps(m) = it%stats%accepted
+         calls(m) = it%stats%derivative_calls
+         if (m < 3) then
+            write (*, "(a,i0,a,i0,a,i0,a,i0,a,es9.2,a,es9.2)") "stiff oscillators, INT METHOD ", method(m), &
+               " + block J: ", steps(m), " steps, ", calls(m), " calls (", it%stats%jacobian_calls, &
+               " for J), largest step ", it%stats%h_max_used, ", worst position error ", worst
+            call check(it%stats%h_max_used > 20.0_wp*1.1e-3_wp, "stiff oscillators: steps 20 times DP5's limit")
+            call check(worst < 1.0e-2_wp, "stiff oscillators: positions within 10 times the error limit")
+         else
+            write (*, "(a,i0,a,i0,a,es9.2)") "stiff oscillators, DP5: ", steps(m), " steps, ", calls(m), &
+               " calls, worst position error ", worst
+         end if
+      end do
+      call check(all(steps(3) > 4*steps(1:2)), "stiff oscillators: DP5 needs more than 4 times the steps")
+   end subroutine test_rosenbrock_stiff_oscillators
 
    real(wp) function fixed_step_error(method, h, nsteps) result(err)
       integer, intent(in) :: method, nsteps
