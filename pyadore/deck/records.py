@@ -78,7 +78,8 @@ RECORDS: tuple[RecordSpec, ...] = (
           "", "echo", lo=0),
         F("rec1_flag_13", "int", "-", "unknown; 0 in both decks, not echoed", "", "unknown", default=0),
         F("int_method", "int", "-", "integration method (echo INT METHOD; 5 in both decks): 5 = "
-          "Dormand-Prince 5(4), 3 = Bogacki-Shampine 3(2) (docs/dynamics.md)", "", "echo", choices=(3, 5)),
+          "the deck's production method (ball dynamics: ARK4(3)6L[2]SA with the balls' contact blocks "
+          "implicit), 3 = Bogacki-Shampine 3(2); assumed (docs/dynamics.md)", "", "echo", choices=(3, 5)),
     ), section="4.4.5, 4.4.6; echo: SCALE FACTORS AND OUTPUT CONTROLS",
         notes="The last three fields stand apart from the first eleven in the text copy of both listings."),
     RecordSpec("2.1", "Step size information", (
