@@ -615,16 +615,17 @@ def _fixed_step_5(text):
 
 
 def test_unknown_int_method_leaves_no_print(tmp_path, ball_deck, adore_exe):
-    """INT METHOD 4 is used only by the time integration: an input error naming the field
-    before any print is written; the step-0 run of the same deck still succeeds."""
+    """INT METHOD 4 is no method of the engine: refused when the deck is read, naming the
+    field, before any print is written - for a step-0 run too, as `pyadore validate` refuses
+    it (one rule set for input, issue #28)."""
     deck = tmp_path / "edited.inp"
     deck.write_text(_int_method_4(ball_deck.read_text()))
     proc = _exe(adore_exe, deck, tmp_path / "exe.prt", "--steps", 5)
-    assert proc.returncode == 1 and "Rec 1 field int_method = 4" in proc.stderr
-    with pytest.raises(AdoreInputError, match="Rec 1 field int_method = 4"):
+    assert proc.returncode == 1 and "Rec 1  field int_method = 4: expected 3, 5" in proc.stderr
+    with pytest.raises(AdoreInputError, match="Rec 1  field int_method = 4"):
         pyadore.run(deck, steps=5, out=tmp_path / "py.prt")
+    assert _exe(adore_exe, deck, tmp_path / "s0.prt", "--steps", 0).returncode == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["edited.inp"]
-    assert _exe(adore_exe, deck, tmp_path / "s0.prt", "--steps", 0).returncode == 0
 
 
 def test_failed_integration_gives_exit_2_and_an_incomplete_print(tmp_path, ball_deck, adore_exe):
