@@ -1,7 +1,7 @@
 """A run's full results as an :class:`xarray.Dataset`, its netCDF file, and time averages.
 
 A ball run with time steps writes, beside its print and plot-data file, the element file
-``<print stem>.elements.csv`` (the engine's element record, every value to its last digit:
+``<print stem>.elements.bin`` (the engine's element record, every value exactly:
 every ball's race contacts, speeds and positions, the cage and the races, at every recorded
 step; docs/results.md).  :func:`results_dataset` turns it and the plot-data file into one
 dataset with dimensions ``time``, ``element`` and ``race``; :func:`write_netcdf` writes it as
@@ -22,14 +22,11 @@ import numpy as np
 
 from .errors import AdoreInputError
 
-__all__ = ["element_path", "results_path", "read_element_csv", "results_dataset", "write_netcdf",
+__all__ = ["element_path", "results_path", "read_element_file", "results_dataset", "write_netcdf",
            "read_results", "time_mean", "RACES"]
 
 #: The race dimension's labels, in the engine's order (RACE_OUTER = 1, RACE_INNER = 2).
 RACES = ("outer", "inner")
-
-#: First words of the last line of a file whose run stopped early.
-_INCOMPLETE = "# RUN INCOMPLETE"
 
 #: Units of a column name's last underscore-separated words (the engine's `quantity_unit`).
 _UNITS = (("_rad_s", "rad/s"), ("_m_s", "m/s"), ("_m3_s", "m**3/s"), ("_rad", "rad"), ("_deg", "deg"),
@@ -42,8 +39,8 @@ def _beside(print_path, suffix: str) -> Path:
 
 
 def element_path(print_path) -> Path:
-    """The element file of print file ``print_path``: ``<stem>.elements.csv``."""
-    return _beside(print_path, ".elements.csv")
+    """The element file of print file ``print_path``: ``<stem>.elements.bin``."""
+    return _beside(print_path, ".elements.bin")
 
 
 def results_path(print_path) -> Path:
@@ -58,33 +55,30 @@ def _unit(name: str) -> str:
     return "1"
 
 
-def read_element_csv(path):
-    """The element file at ``path``: (values array rows x columns, column names, "" or the
-    reason the run stopped early).  Raises AdoreInputError naming the file when it is not
-    an element file."""
-    import pandas as pd
-
+def read_element_file(path):
+    """The element file at ``path`` (docs/results.md): (values array rows x columns, column
+    names, "" or the reason the run stopped early: ``RUN INCOMPLETE after step ...``).
+    Raises AdoreInputError naming the file when it is not a complete element file."""
     p = Path(os.fspath(path))
     try:
-        with p.open(encoding="ascii") as f:
-            header = f.readline().rstrip("\n")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise AdoreInputError(f"{p}: cannot read the element file ({getattr(exc, 'strerror', None) or exc})") from None
-    if not header.startswith("time_s,step,"):
-        raise AdoreInputError(f"{p}: line 1: not an element file (expected the header 'time_s,step,...')")
-    columns = header.split(",")
-    incomplete = ""
-    with p.open("rb") as f:
-        f.seek(0, os.SEEK_END)
-        size = f.tell()
-        f.seek(max(0, size - 4096))
-        tail = f.read().decode("ascii", "replace").rstrip("\n").rsplit("\n", 1)[-1]
-    if tail.startswith(_INCOMPLETE):
-        incomplete = tail[len("# "):].strip()
-    frame = pd.read_csv(p, comment="#", dtype=float)
-    if list(frame.columns) != columns:
-        raise AdoreInputError(f"{p}: the rows do not match the header's {len(columns)} columns")
-    return frame.to_numpy(dtype=float), columns, incomplete
+        data = p.read_bytes()
+    except OSError as exc:
+        raise AdoreInputError(f"{p}: cannot read the element file ({exc.strerror or exc})") from None
+    lines = data.split(b"\n", 3)
+    head = lines[0].decode("ascii", "replace").split() if lines else []
+    if len(lines) < 4 or head[:4] != ["ADORE", "ELEMENT", "RECORD", "1"] or len(head) != 7 or \
+            head[6] not in ("LE", "BE"):
+        raise AdoreInputError(f"{p}: not an element file (expected the first line 'ADORE ELEMENT RECORD 1 ...')")
+    rows, cols = int(head[4]), int(head[5])
+    columns = lines[1].decode("ascii").split(",")
+    state = lines[2].decode("ascii", "replace")
+    body = lines[3]
+    if len(columns) != cols or columns[:2] != ["time_s", "step"] or len(body) != 8 * rows * cols:
+        raise AdoreInputError(f"{p}: the element file is cut short or inconsistent ({len(body)} bytes of values, "
+                              f"{rows} x {cols} doubles announced)")
+    values = np.frombuffer(body, dtype="<f8" if head[6] == "LE" else ">f8").reshape(rows, cols).astype(float)
+    incomplete = "" if state == "COMPLETE" else state.strip()
+    return values, columns, incomplete
 
 
 def results_dataset(print_path, title: str = ""):
@@ -103,7 +97,7 @@ def results_dataset(print_path, title: str = ""):
     if not path.is_file():
         raise AdoreInputError(f"{path}: no element file (a run without time steps, or of a bearing kind without "
                               "element results)")
-    values, columns, incomplete = read_element_csv(path)
+    values, columns, incomplete = read_element_file(path)
     time = values[:, 0]
     step = np.rint(values[:, 1]).astype(np.int64)
     n = max((int(c.rsplit(":", 1)[1]) for c in columns if ":" in c), default=0)

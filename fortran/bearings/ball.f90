@@ -231,7 +231,8 @@ contains
    end subroutine ball_new_history
 
    !> A history row and its element row (ball_element_row, with the printed tribology of
-   !> the race contacts) at the last evaluated state.
+   !> the race contacts; the flash temperature rise at printed rows only, h%printed) at the
+   !> last evaluated state.
    subroutine ball_record_row(self, h, step, t, mean)
       class(ball_kind_t), intent(in) :: self
       type(run_history_t), intent(inout) :: h
@@ -240,7 +241,8 @@ contains
       type(contact_print_t) :: tribology
       call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, mean(AVG_BALL_WEAR:), &
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
-      call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology)
+      call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
+                              flash=h%printed)
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
    end subroutine ball_record_row
 

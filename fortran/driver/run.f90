@@ -25,7 +25,7 @@ module adore_driver_run
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo
    use adore_output_echo_fill, only: fill_echo
-   use adore_output_run_history, only: run_history_t, write_history_csv, history_file_name, write_element_csv, &
+   use adore_output_run_history, only: run_history_t, write_history_csv, history_file_name, write_element_file, &
                                        element_file_name
    use adore_quasistatic_ball_start, only: start_method_from_name, start_method_title, MIN_DISSIPATION
    use adore_dynamics_integrator, only: integrator_t
@@ -196,7 +196,7 @@ contains
       call element_file_name(trim(out_path), element_path)
       if (n_dynamic > 0) then
          call write_history_csv(hist, hist_path, incomplete, error)
-         if (.not. allocated(error)) call write_element_csv(hist, element_path, incomplete, error)
+         if (.not. allocated(error)) call write_element_file(hist, element_path, incomplete, error)
          if (allocated(error)) then
             call delete_file(part_path)
             call delete_file(hist_path)

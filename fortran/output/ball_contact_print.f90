@@ -41,20 +41,23 @@ contains
    !> film traction for the coefficient, the flash temperature of the run's model; all at
    !> the bulk temperatures of s, as the force assembly evaluates them).  A contact whose
    !> film or flash temperature cannot be computed keeps NaN there (the state's forces were
-   !> computed, so this does not happen in a run that got here).
-   subroutine ball_contact_print(b, g, s, loads, p)
+   !> computed, so this does not happen in a run that got here).  flash = .false.: the flash
+   !> temperature rise is left NaN (it costs about four times the rest of a time step with
+   !> the EHD traction: the element record computes it at printed steps only).
+   subroutine ball_contact_print(b, g, s, loads, p, flash)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(in) :: loads
       type(contact_print_t), intent(out) :: p
+      logical, intent(in), optional :: flash
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: tk
       type(error_type), allocatable :: error
       real(wp) :: nan, b_minor, p_h, h, phi
       integer :: n, k, j, race
-      logical :: ehd
+      logical :: ehd, with_flash
 
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
       n = size(loads%contacts, 2)
@@ -62,6 +65,8 @@ contains
                 source=nan)
       pairs = ball_race_pairs(b, g)
       ehd = ehd_traction_model(b)
+      with_flash = .true.
+      if (present(flash)) with_flash = flash
       do k = 1, n
          do j = 1, 2
             associate (c => loads%contacts(j, k))
@@ -82,9 +87,9 @@ contains
                if (ehd) then
                   call check_ehd_film(b, s%temperature, k, j, p%film(j, k), p%thermal_factor(j, k), error)
                   if (allocated(error)) cycle
-                  call ehd_flash(b, s%temperature, cj, b_minor, race, h, abs(tk%rolling_speed), p%temp_rise(j, k), &
-                                 error)
-               else
+                  if (with_flash) call ehd_flash(b, s%temperature, cj, b_minor, race, h, abs(tk%rolling_speed), &
+                                                 p%temp_rise(j, k), error)
+               else if (with_flash) then
                   call law_flash(b, cj, b_minor, p_h, race, abs(tk%rolling_speed), p%temp_rise(j, k), error)
                end if
                if (allocated(error)) p%temp_rise(j, k) = nan

@@ -38,7 +38,7 @@ module adore_output_run_history
    private
 
    public :: run_history_t, history_shape, new_ball_history, history_due, record_ball_history, &
-             write_history_csv, history_file_name, history_columns_text, element_file_name, write_element_csv, &
+             write_history_csv, history_file_name, history_columns_text, element_file_name, write_element_file, &
              ball_element_row
 
    !> Regular rows of a history at most (the stride grows beyond HISTORY_ROWS steps).
@@ -77,6 +77,9 @@ module adore_output_run_history
       integer :: stride = 1                  !< every stride-th step is a row (and printed ones, the last)
       integer :: rows = 0                    !< rows recorded so far
       integer :: n_lands = 0                 !< guide lands (one force column each)
+      !> the row being recorded is a printed step (the time loop sets it before each row):
+      !> the element record's costly columns are computed only there (ball_element_row)
+      logical :: printed = .false.
       character(len=HISTORY_NAME_LEN), allocatable :: names(:)   !< column names (docs/plots.md)
       real(wp), allocatable :: values(:, :)  !< (row capacity, column): rows 1..rows are recorded
       !> the element record at the same rows (empty for a kind without one): column names
@@ -166,7 +169,8 @@ contains
    !> position azimuth(k) unwrapped since the start (rad) and the printed tribology p of
    !> its race contacts (adore_output_ball_contact_print).  Values as the print shows them,
    !> in SI units and at full precision: contact angle |alpha| (rad), Hertz load, pressure
-   !> and semi-axes as computed (0 where unloaded), the tribology NaN where unloaded;
+   !> and semi-axes as computed (0 where unloaded), the tribology NaN where unloaded (and
+   !> the flash temperature rise NaN but at printed rows, h%printed: it is the costly one);
    !> positions and velocities inertial (m, m/s, rad/s; ball angular velocity in body =
    !> inertial components at the start's attitude: body frame rotated to inertial); spin
    !> amplitude = |omega - omega_orbit e_x| (rad/s); cage whirl speed (r x v)_x / r**2.
@@ -345,13 +349,13 @@ contains
    end subroutine history_columns_text
 
    !> The element file of print file print_path (docs/results.md): its name with the
-   !> extension replaced by ".elements.csv".
+   !> extension replaced by ".elements.bin".
    subroutine element_file_name(print_path, path)
       character(len=*), intent(in) :: print_path
       character(len=:), allocatable, intent(out) :: path
       character(len=:), allocatable :: hist
       call history_file_name(print_path, hist)
-      path = hist(:len(hist) - len(".hist.csv"))//".elements.csv"
+      path = hist(:len(hist) - len(".hist.csv"))//".elements.bin"
    end subroutine element_file_name
 
    !> Write the plot-data file `path` (docs/plots.md): the header line of column names, then
@@ -364,39 +368,81 @@ contains
       type(run_history_t), intent(in) :: h
       character(len=*), intent(in) :: path, incomplete
       type(error_type), allocatable, intent(out) :: error
-      call write_table(h%names, h%values, h%rows, h%values(:, C_TIME), h%values(:, C_STEP), path, "plot-data file", &
-                       incomplete, error)
+      call write_table(h%names, h%values, h%rows, path, "plot-data file", incomplete, error)
    end subroutine write_history_csv
 
-   !> Write the element file `path` (docs/results.md) of history h as write_history_csv
-   !> writes the plot-data file: the columns time_s, step, then the element record's.
-   !> Nothing is written for a history without an element record.
-   subroutine write_element_csv(h, path, incomplete, error)
+   !> Write the element file `path` (docs/results.md) of history h, under path.part renamed
+   !> onto path when complete: three text lines - "ADORE ELEMENT RECORD 1 <rows> <columns>
+   !> <LE|BE>" (format version, byte order of the values), the column names joined by
+   !> commas (time_s, step, then the element record's), "COMPLETE" or "RUN
+   !> INCOMPLETE<incomplete>" for a run that stopped early - each ended by a line feed, then
+   !> rows x columns IEEE doubles, row after row: every recorded value exactly (a text
+   !> table of them would cost more than the run's time steps to format).  Nothing is
+   !> written for a history without an element record.
+   subroutine write_element_file(h, path, incomplete, error)
+      use, intrinsic :: iso_fortran_env, only: int8, int32
       type(run_history_t), intent(in) :: h
       character(len=*), intent(in) :: path, incomplete
       type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: lf = achar(10)
+      character(len=:), allocatable :: header
+      character(len=256) :: iomsg
+      integer :: unit, stat, i, k, bad
+      logical :: ok
+
       if (.not. allocated(h%elements)) return
       if (size(h%elements, 2) == 0) return
-      call write_table([h%names(C_TIME), h%names(C_STEP), h%element_names], h%elements, h%rows, h%values(:, C_TIME), &
-                       h%values(:, C_STEP), path, "element file", incomplete, error)
-   end subroutine write_element_csv
+      header = "ADORE ELEMENT RECORD 1 "//itoa(h%rows)//" "//itoa(size(h%elements, 2) + 2)//" "// &
+               merge("LE", "BE", transfer(1_int32, 1_int8) == 1_int8)//lf//trim(h%names(C_TIME))//","// &
+               trim(h%names(C_STEP))
+      do k = 1, size(h%element_names)
+         header = header//","//trim(h%element_names(k))
+      end do
+      if (len_trim(incomplete) > 0) then
+         header = header//lf//"RUN INCOMPLETE"//trim(incomplete)//lf
+      else
+         header = header//lf//"COMPLETE"//lf
+      end if
+      open (newunit=unit, file=path//".part", status="replace", action="write", access="stream", &
+            form="unformatted", iostat=stat, iomsg=iomsg)
+      if (stat /= 0) then
+         call input_error(error, path//": cannot write the element file: "//trim(iomsg))
+         return
+      end if
+      write (unit, iostat=stat) header
+      bad = stat
+      do i = 1, h%rows
+         write (unit, iostat=stat) h%values(i, C_TIME), h%values(i, C_STEP), h%elements(i, :)
+         if (stat /= 0) bad = stat
+      end do
+      close (unit, iostat=stat, iomsg=iomsg)
+      if (stat /= 0 .or. bad /= 0) then
+         if (stat == 0) iomsg = "write error"
+         call delete_file(path//".part")
+         call engine_error(error, path//": cannot write the element file: "//trim(iomsg))
+         return
+      end if
+      call rename_file(path//".part", path, ok)
+      if (.not. ok) then
+         call delete_file(path//".part")
+         call engine_error(error, path//": cannot move the finished element file into place")
+      end if
+   end subroutine write_element_file
 
-   !> Write the table of column names [time, step, names...] (when names does not start
-   !> with them: time and step first) to `path` under path.part (write_history_csv).
-   subroutine write_table(names, values, rows, time, step, path, what, incomplete, error)
+   !> Write the table of column names `names` (time and step among them, columns C_TIME and
+   !> C_STEP) to `path` under path.part (write_history_csv).
+   subroutine write_table(names, values, rows, path, what, incomplete, error)
       character(len=*), intent(in) :: names(:)
-      real(wp), intent(in) :: values(:, :), time(:), step(:)
+      real(wp), intent(in) :: values(:, :)
       integer, intent(in) :: rows
       character(len=*), intent(in) :: path, what, incomplete
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: header
-      character(len=32) :: cell
+      character(len=:), allocatable :: header, line
+      character(len=24) :: cell
       character(len=256) :: iomsg
-      integer :: unit, stat, i, k, bad, first
-      logical :: ok, own_time
+      integer :: unit, stat, i, k, bad, pos
+      logical :: ok
 
-      own_time = size(names) == size(values, 2)      ! the plot-data file: time and step are columns
-      first = merge(3, 1, own_time)
       open (newunit=unit, file=path//".part", status="replace", action="write", form="formatted", &
             iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
@@ -409,16 +455,19 @@ contains
       end do
       write (unit, "(a)", iostat=stat) header
       bad = stat
+      ! one line of at most 25 characters a value, filled in place and written at once
+      allocate (character(len=25*size(values, 2)) :: line)
       do i = 1, rows
-         write (cell, "(es24.16e3)") time(i)
-         write (unit, "(a)", advance="no", iostat=stat) trim(adjustl(cell))
-         write (cell, "(i0)") nint(step(i))
-         write (unit, "(a)", advance="no", iostat=stat) ","//trim(adjustl(cell))
-         do k = first, size(values, 2)
-            write (cell, "(es24.16e3)") values(i, k)
-            write (unit, "(a)", advance="no", iostat=stat) ","//trim(adjustl(cell))
+         pos = 0
+         do k = 1, size(values, 2)
+            if (k == C_STEP) then
+               write (cell, "(i0)") nint(values(i, k))
+            else
+               write (cell, "(es24.16e3)") values(i, k)
+            end if
+            call put(cell)
          end do
-         write (unit, "(a)", iostat=stat) ""
+         write (unit, "(a)", iostat=stat) line(:pos - 1)
          if (stat /= 0) bad = stat
       end do
       if (len_trim(incomplete) > 0) write (unit, "(a)", iostat=stat) "# RUN INCOMPLETE"//trim(incomplete)
@@ -435,6 +484,19 @@ contains
          call delete_file(path//".part")
          call engine_error(error, path//": cannot move the finished "//what//" into place")
       end if
+
+   contains
+
+      !> Append the value text c (blanks removed) and a comma to the line.
+      subroutine put(c)
+         character(len=*), intent(in) :: c
+         integer :: a, n
+         a = verify(c, " ")
+         n = len_trim(c) - a + 1
+         line(pos + 1:pos + n + 1) = c(a:a + n - 1)//","
+         pos = pos + n + 1
+      end subroutine put
+
    end subroutine write_table
 
 end module adore_output_run_history
