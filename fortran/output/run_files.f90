@@ -3,8 +3,8 @@
 !> A run reads its deck (and, as a run option, a traction-slip table) and writes its print
 !> file OUT and, with time steps, its plot-data file and element file beside it
 !> (history_file_name, element_file_name), each first under its ".part" name; pyadore
-!> writes the run's netCDF file (results_file_name) beside them after the run.  check_run_paths refuses, before anything is read or
-!> written, the paths a run cannot use:
+!> writes the run's netCDF file (results_file_name) beside them after the run.
+!> check_run_paths refuses, before anything is read or written, the paths a run cannot use:
 !>
 !> * an input that exists but is not a regular file: a FIFO (the reader would wait for a
 !>   writer for ever), a directory, a device;
@@ -22,7 +22,7 @@ module adore_output_run_files
    use adore_core_error, only: error_type, input_error
    use adore_core_os, only: path_kind, canonical_path, writable_directory, delete_file, &
                             PATH_MISSING, PATH_REGULAR, PATH_DIRECTORY, PATH_FIFO, PATH_DEVICE, PATH_SOCKET
-   use adore_output_run_history, only: history_file_name, element_file_name
+   use adore_output_run_history, only: history_file_name, element_file_name, beside_file_name
    implicit none
    private
 
@@ -72,9 +72,7 @@ contains
    subroutine results_file_name(print_path, path)
       character(len=*), intent(in) :: print_path
       character(len=:), allocatable, intent(out) :: path
-      character(len=:), allocatable :: hist
-      call history_file_name(print_path, hist)
-      path = hist(:len(hist) - len(".hist.csv"))//".nc"
+      call beside_file_name(print_path, ".nc", path)
    end subroutine results_file_name
 
    !> Input error when the run of deck_path into out_path (table_path: the traction-slip

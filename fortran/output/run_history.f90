@@ -38,8 +38,8 @@ module adore_output_run_history
    private
 
    public :: run_history_t, history_shape, new_ball_history, history_due, record_ball_history, &
-             write_history_csv, history_file_name, history_columns_text, element_file_name, write_element_file, &
-             ball_element_row
+             write_history_csv, history_file_name, history_columns_text, element_file_name, beside_file_name, &
+             write_element_file, ball_element_row
 
    !> Regular rows of a history at most (the stride grows beyond HISTORY_ROWS steps).
    integer, parameter, public :: HISTORY_ROWS = 10000
@@ -328,14 +328,22 @@ contains
    subroutine history_file_name(print_path, path)
       character(len=*), intent(in) :: print_path
       character(len=:), allocatable, intent(out) :: path
+      call beside_file_name(print_path, ".hist.csv", path)
+   end subroutine history_file_name
+
+   !> The file of print file print_path with the extension (after the last dot of the file
+   !> name; none: at its end) replaced by `suffix` (".hist.csv", ".elements.bin", ".nc").
+   subroutine beside_file_name(print_path, suffix, path)
+      character(len=*), intent(in) :: print_path, suffix
+      character(len=:), allocatable, intent(out) :: path
       integer :: dot
       dot = index(print_path, ".", back=.true.)
       if (dot > index(print_path, "/", back=.true.) + 1) then
-         path = print_path(:dot - 1)//".hist.csv"
+         path = print_path(:dot - 1)//suffix
       else
-         path = trim(print_path)//".hist.csv"
+         path = trim(print_path)//suffix
       end if
-   end subroutine history_file_name
+   end subroutine beside_file_name
 
    !> The column names joined by commas (the plot-data file's header line).
    subroutine history_columns_text(h, text)
@@ -353,9 +361,7 @@ contains
    subroutine element_file_name(print_path, path)
       character(len=*), intent(in) :: print_path
       character(len=:), allocatable, intent(out) :: path
-      character(len=:), allocatable :: hist
-      call history_file_name(print_path, hist)
-      path = hist(:len(hist) - len(".hist.csv"))//".elements.bin"
+      call beside_file_name(print_path, ".elements.bin", path)
    end subroutine element_file_name
 
    !> Write the plot-data file `path` (docs/plots.md): the header line of column names, then

@@ -28,8 +28,8 @@ import os
 import tempfile
 from pathlib import Path
 
-__all__ = ["SWEEP_FILE", "MANIFEST", "SUMMARY", "EVENTS", "CASES", "CASE_DECK", "CASE_PRINT", "CASE_HISTORY", "CASE_RESULTS", "CASE_RESULT",
-           "CASE_INCOMPLETE", "CASE_INCOMPLETE_HISTORY", "write_atomic", "read_json", "remove_stale_temporaries",
+__all__ = ["SWEEP_FILE", "MANIFEST", "SUMMARY", "EVENTS", "CASES", "CASE_DECK", "CASE_PRINT", "CASE_HISTORY",
+           "CASE_RESULTS", "CASE_RESULT", "CASE_INCOMPLETE", "CASE_INCOMPLETE_HISTORY", "write_atomic", "read_json", "remove_stale_temporaries",
            "append_event"]
 
 SWEEP_FILE = "sweep.json"
