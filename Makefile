@@ -19,6 +19,8 @@ ENGINE_TESTS := test_deck_text test_deck_reader test_model test_life test_print 
 VPATH_ENV := PATH="$(CURDIR)/$(VENV)/bin:$$PATH"
 # the run loop's bookkeeping (time averages, time history rows; issue #20)
 ENGINE_TESTS += test_run_loop
+# the thermal model's physics modules (issue #27)
+ENGINE_TESTS += test_thermal
 
 .PHONY: help setup gfortran run test bench debug clean distclean exe
 

@@ -18,7 +18,9 @@ machine), the print's "Total Derivative Calls" and final tau, and microseconds p
 derivative call (the whole run, start and print included, over the calls; of the best wall
 time and of the least CPU time); and once, the run to the report's simulated time
 (`--duration REPORT_DURATION`, issue #30) with its steps, calls and final tau.  Issue #20's budget: at most 10 s for
-the full run (goal 2 s).  Results are printed, and written to bench/results/latest.json.
+the full run (goal 2 s).  The command's start-up (`startup`, issue #29): `pyadore run DECK --steps 0` in a fresh
+interpreter against `adore DECK --steps 0`, budget STARTUP_BUDGET over the engine, and the heavy modules
+(HEAVY_MODULES) the command imported (none expected).  Results are printed, and written to bench/results/latest.json.
 """
 
 from __future__ import annotations
@@ -138,10 +140,42 @@ def _dynamic_rows(exe):
     return rows
 
 
+#: Issue #29: `pyadore run --steps 0` at most this much wall time (s) over the standalone engine.
+STARTUP_BUDGET = 0.35
+#: Modules `pyadore run --steps 0` must not import (imported on demand only).
+HEAVY_MODULES = ("pandas", "matplotlib", "xarray", "scipy")
+
+
+def _startup_rows(exe):
+    """The command's start-up: best of REPEAT wall times of `pyadore run DECK --steps 0` (a
+    fresh interpreter each time) and of `adore DECK --steps 0`, their difference against
+    STARTUP_BUDGET, and the heavy modules the command imported (python -X importtime)."""
+    deck = DECKS[0]
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "startup.prt"
+        py = [sys.executable, "-m", "pyadore", "run", str(deck), "--steps", "0", "-o", str(out)]
+        engine = [exe, str(deck), str(out), "--steps", "0"]
+        best_py, med_py = _time(lambda: subprocess.run(py, check=True, capture_output=True))
+        best_exe, med_exe = _time(lambda: subprocess.run(engine, check=True, capture_output=True))
+        trace = subprocess.run([sys.executable, "-X", "importtime"] + py[1:], check=True, capture_output=True,
+                               text=True).stderr
+    imported = sorted({line.split("|")[-1].strip().split(".")[0] for line in trace.splitlines()
+                       if line.startswith("import time:")} & set(HEAVY_MODULES))
+    over = best_py - best_exe
+    verdict = "met" if over <= STARTUP_BUDGET else "NOT met"
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    print(f"start-up: pyadore run --steps 0 {best_py:.3f} s best, adore --steps 0 {best_exe:.3f} s best: "
+          f"{over:.3f} s over the engine (budget {STARTUP_BUDGET} s: {verdict}; load average {load:.1f}); heavy "
+          f"modules imported: {', '.join(imported) or 'none'}")
+    return [{"deck": deck.name, "case": "pyadore run --steps 0 (CLI)", "best_s": best_py, "median_s": med_py},
+            {"deck": deck.name, "case": "adore --steps 0", "best_s": best_exe, "median_s": med_exe},
+            {"deck": deck.name, "case": "CLI start-up over the engine", "best_s": over, "median_s": med_py - med_exe}]
+
+
 def main() -> int:
-    """`run_bench.py [runs] [sweep] [dynamics]`: the runs of the appendix decks, the sweep bench
-    and/or the full dynamic run of Appendix C [default: all]."""
-    names = sys.argv[1:] or ["runs", "sweep", "dynamics"]
+    """`run_bench.py [runs] [startup] [sweep] [dynamics]`: the runs of the appendix decks, the
+    command's start-up, the sweep bench and/or the full dynamic run of Appendix C [default: all]."""
+    names = sys.argv[1:] or ["runs", "startup", "sweep", "dynamics"]
     exe = os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore"))
     rows = []
     decks = DECKS if "runs" in names else []
@@ -160,6 +194,8 @@ def main() -> int:
             best, median = _time(lambda: _core.ball_step0_from_deck(deck), repeat=20)
             rows.append({"deck": deck.name, "case": "step-0 solve (ball)", "best_s": best, "median_s": median})
             rows += _ehd_contact_rows(deck)
+    if "startup" in names:
+        rows += _startup_rows(exe)
     if "sweep" in names:
         sys.path.insert(0, str(Path(__file__).resolve().parent))
         from sweep_bench import bench_sweep

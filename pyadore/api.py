@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from . import _core
-from .errors import AdoreEngineError, AdoreInputError
+from .errors import AdoreEngineError, AdoreError, AdoreInputError
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -96,8 +96,17 @@ def read_traction_table(path):
     return pd.DataFrame({"slip_m_s": slip, "kappa": kappa})
 
 
-def run(deck_path, steps: int | None = None, out=None, progress=None, **options) -> Result:
+def run(deck_path, steps: int | None = None, out=None, progress=None, overrides: dict | None = None,
+        **options) -> Result:
     """Run the ADORE deck at ``deck_path`` and return its :class:`Result`.
+
+    deck_path: a deck file, or a :class:`pyadore.deck.Deck` (written to a temporary file for
+    the run; the Deck itself is not changed).
+    overrides: ``{field: value}`` changes to the deck for this run, fields named as
+    :meth:`pyadore.deck.Deck.set` takes them (``"inner_race_speed"``, or ``"REC/FIELD"``
+    where several records have the field), values in the deck's units (rpm, N, m, K); the
+    deck file is not changed.  An unknown or ambiguous field, or a value that does not fit
+    its field, raises AdoreInputError.
 
     steps: ``None`` runs as many time steps as the deck asks for (Rec 1; Appendix C: 2500),
     ``0`` only the quasi-static start, ``n`` integrates ``n`` time steps after step 0.
@@ -147,6 +156,18 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, **options)
     if "steps" in options:
         raise AdoreInputError("steps is run()'s own argument; pass it once")
     text = options_text(steps=engine_steps, **options)
+    if not isinstance(deck_path, (str, os.PathLike)) or overrides:
+        with tempfile.TemporaryDirectory(prefix="pyadore-deck-") as tmp:
+            written, shown = _deck_file(deck_path, overrides, Path(tmp))
+            try:
+                result = run(written, steps=steps, out=out, progress=progress, **options)
+            except AdoreError as exc:  # name the deck as the caller knows it, not the temporary file
+                if exc.args and isinstance(exc.args[0], str):
+                    what = f"{shown} ({'with overrides' if overrides else 'a Deck'})"
+                    exc.args = (exc.args[0].replace(str(written), what),) + exc.args[1:]
+                raise
+        result.deck_path = shown
+        return result
     deck = Path(os.fspath(deck_path))
     if out is None:
         out_path = Path(tempfile.mkdtemp(prefix="pyadore-")) / (deck.stem + ".prt")
@@ -199,6 +220,51 @@ def _written_dataset(deck_path: Path, print_path: Path, output) -> "xr.Dataset |
     ds = results_dataset(print_path, title=run_title(deck_path))
     write_netcdf(ds, results_path(print_path))
     return ds
+
+
+def _deck_file(deck, overrides, tmp: Path) -> tuple[Path, Path]:
+    """The deck (a Deck, or a deck file) with ``overrides`` applied, written into ``tmp``:
+    (that file, the path the Result names: the deck's own)."""
+    import copy
+
+    from .deck import Deck, DeckError, read_deck, write_deck
+
+    if isinstance(deck, Deck):
+        deck = copy.deepcopy(deck)
+    elif isinstance(deck, (str, os.PathLike)):
+        deck = read_deck(Path(os.fspath(deck)))
+    else:
+        raise AdoreInputError(f"run: expected a deck file path or a pyadore.deck.Deck, got {type(deck).__name__}")
+    if overrides is not None and not isinstance(overrides, dict):
+        raise AdoreInputError(f"overrides: expected a dict {{field: value}}, got {type(overrides).__name__}")
+
+    for name, value in (overrides or {}).items():
+        if deck._derived(str(name)) is not None:
+            try:
+                deck.set(str(name), value)
+            except DeckError as exc:
+                raise AdoreInputError(f"overrides: {exc}") from None
+            continue
+        try:
+            records, field = deck.locate(str(name))
+        except DeckError as exc:
+            raise AdoreInputError(f"overrides: {exc}") from None
+        kind = records[0].fields[field].spec.kind
+        ok = (isinstance(value, str) if kind == "text" else
+              isinstance(value, int) and not isinstance(value, bool) if kind == "int" else
+              isinstance(value, (int, float)) and not isinstance(value, bool))
+        if not ok:
+            what = {"text": "a text", "int": "an integer"}.get(kind, "a real")
+            raise AdoreInputError(f"overrides: {name} is {what} field ({records[0].fields[field].spec.unit}), "
+                                  f"got {value!r}")
+        deck.set(str(name), value)
+    shown = Path(str(deck.path))
+    target = tmp / ((shown.stem if shown.stem and not shown.stem.startswith("<") else "deck") + ".inp")
+    try:
+        write_deck(deck, target)
+    except DeckError as exc:
+        raise AdoreInputError(f"overrides: {exc}") from None
+    return target, shown
 
 
 def _written_history(print_path: Path, output) -> "pd.DataFrame | None":

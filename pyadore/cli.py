@@ -77,8 +77,18 @@ def _version() -> str:
     return __version__
 
 
+def _show_version(ctx, _param, value) -> None:
+    """``--version``: the version is looked up only when asked for (importlib.metadata costs
+    a tenth of a second at every start otherwise)."""
+    if not value or ctx.resilient_parsing:
+        return
+    click.echo(f"pyadore {_version()}")
+    ctx.exit()
+
+
 @click.group(context_settings=CONTEXT)
-@click.version_option(version=_version(), prog_name="pyadore", message="%(prog)s %(version)s")
+@click.option("--version", is_flag=True, expose_value=False, is_eager=True, callback=_show_version,
+              help="Show the version and exit.")
 def cli() -> None:
     """pyadore: run ADORE 5.0 decks, validate them, compare print files, plot them, sweep parameters."""
 
@@ -143,6 +153,7 @@ def run(deck: Path, out: Path | None, steps: int | None, **options) -> None:
 def validate(deck: Path, traction_table: Path | None) -> None:
     """Check DECK against the record schema; list every problem at once."""
     from .deck import check_deck
+    from .deck.problems import format_problems
 
     try:
         _check_input_file(deck, "deck")
@@ -161,14 +172,20 @@ def validate(deck: Path, traction_table: Path | None) -> None:
         except AdoreError as exc:
             table_error = exc
     if problems:
-        for problem in problems:
-            click.echo(problem.format(), err=True)
+        for text in format_problems(problems):
+            click.echo(text, err=True)
         click.echo(f"{deck}: {len(problems)} problem(s)", err=True)
     if table_error is not None:
         click.echo(f"pyadore: error: {table_error}", err=True)
     if problems or table_error is not None:
         sys.exit(1)
-    click.echo(parsed.summary())
+    from .deck.validate import deck_warnings
+
+    warnings = deck_warnings(parsed)
+    for text in format_problems(warnings):
+        click.echo("warning: " + text, err=True)
+    summary = parsed.summary()
+    click.echo(summary + (f" ({len(warnings)} warning(s))" if warnings else ""))
     if table is not None:
         click.echo(f"{traction_table}: traction-slip table, {len(table)} points, slip 0 to "
                    f"{table.slip_m_s.iloc[-1]:.5g} m/s, coefficient {table.kappa.min():.5g} to "
@@ -176,22 +193,34 @@ def validate(deck: Path, traction_table: Path | None) -> None:
 
 
 @cli.command()
-@click.argument("run_file", metavar="RUN", type=click.Path(dir_okay=False, path_type=Path))
-@click.argument("golden", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("run_file", metavar="A", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("golden", metavar="B", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--tolerances", type=click.Path(dir_okay=False, path_type=Path),
               help="tolerance file [default: golden/tolerances.toml]")
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
-def diff(run_file: Path, golden: Path, tolerances: Path | None, fmt: str) -> None:
-    """Compare print file RUN with GOLDEN within tolerances (exit 0 within, 1 outside, 2 unreadable or not
-    comparable: an empty or misspelt tolerance file, prints of different bearing types)."""
+@click.option("--brief", is_flag=True,
+              help="one line per column with values outside tolerance: counts and its worst value")
+def diff(run_file: Path, golden: Path, tolerances: Path | None, fmt: str, brief: bool) -> None:
+    """Compare print file A (a run) with B (a golden print, or another run) within tolerances.
+
+    B's values are the reference of the relative differences.  The files are called "run"
+    and "golden" when B is a golden print (a transcription of the report), else by their
+    file names.  Text fields (the run title, ...) are listed on their own, never as numeric
+    offenders; the run title never fails the comparison.  Exit 0 within, 1 outside, 2
+    unreadable or not comparable (an empty or misspelt tolerance file, prints of different
+    bearing types)."""
     from .diff import diff_command
 
-    sys.exit(diff_command(run_file, golden, tolerances, fmt))
+    if brief and fmt == "json":
+        click.echo("pyadore: error: --brief is a text report; the JSON report is always complete", err=True)
+        sys.exit(2)
+    sys.exit(diff_command(run_file, golden, tolerances, fmt, brief=brief))
 
 
-def _plot_input(path: Path, what: str, tmpdir: Path):
+def _plot_input(path: Path, what: str, tmpdir: Path, steps: int | None = None, options: dict | None = None):
     """A print file to plot: ``path`` itself when it is one (it has the banner line), else
-    ``path`` run as a deck (as many steps as it asks for) into ``tmpdir``."""
+    ``path`` run as a deck (``steps`` time steps, as it asks for when None, with the run
+    ``options``) into ``tmpdir``."""
     from .api import run as run_deck
     from .errors import AdoreInputError
     from .printout.layout import BANNER_LINE
@@ -203,74 +232,173 @@ def _plot_input(path: Path, what: str, tmpdir: Path):
     except OSError as exc:
         raise AdoreInputError(f"{path}: cannot read the {what} ({exc.strerror or exc})") from None
     if is_print:
+        if steps is not None or any(v is not None for k, v in (options or {}).items()
+                                    if k not in ("history_element", "traction_table")):
+            click.echo(f"pyadore: note: {path} is a print file: --steps and the run options apply to a deck "
+                       "only", err=True)
         return path
     click.echo(f"pyadore: {path} is not a print file: running it as a deck", err=True)
-    result = run_deck(path, out=tmpdir / f"{what}-{path.stem}.prt")
+    result = run_deck(path, steps=steps, out=tmpdir / f"{what}-{path.stem}.prt", **(options or {}))
     for note in result.notes:
         click.echo(f"pyadore: note: {note}", err=True)
     return result.print_path
+
+
+def _run_labels(run_file: Path, compare: Path | None) -> tuple[str, str | None]:
+    """Legend names of the plotted and the compared run: their file stems, with their
+    folder when the stems are the same (``out/appendix_c_ball``, ``golden/appendix_c_ball``)."""
+    if compare is None:
+        return run_file.stem, None
+    if run_file.stem != compare.stem:
+        return run_file.stem, compare.stem
+    a = f"{run_file.parent.name}/{run_file.stem}" if run_file.parent.name else run_file.stem
+    b = f"{compare.parent.name}/{compare.stem}" if compare.parent.name else compare.stem
+    return (a, b) if a != b else (str(run_file), str(compare))
+
+
+def _pair(text: str | None, what: str, unit: str) -> tuple | None:
+    """``LOW:HIGH`` (either may be empty: open) as a (low, high) pair of floats."""
+    if text is None:
+        return None
+    low, sep, high = text.partition(":")
+    try:
+        if not sep:
+            raise ValueError
+        pair = (float(low) if low.strip() else None, float(high) if high.strip() else None)
+    except ValueError:
+        raise AdoreInputError(f"{what} {text!r}: expected LOW:HIGH in {unit} (either may be left out, e.g. "
+                              f"{'0.01:' if what == '--window' else '0:1000'})") from None
+    if pair[0] is not None and pair[1] is not None and not pair[1] > pair[0]:
+        raise AdoreInputError(f"{what} {text!r}: the high end must be above the low end")
+    return pair
+
+
+def _deprecated_element(ctx, param, value):
+    if value is not None:
+        click.echo("pyadore: note: --element is deprecated; use --history-element (the name `run` and "
+                   "`sweep` use)", err=True)
+    return value
 
 
 @cli.command()
 @click.argument("run_file", metavar="RUN", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--set", "set_name", default="report", show_default=True,
               help="figure set: 'report' = every figure type of the report that the data supports")
+@click.option("--figure", "figures", multiple=True, metavar="N",
+              help="only figure type N (1-10, or its name, e.g. power-loss); repeat for several. With one "
+                   "figure, -o may name an image file (.png, .svg, .pdf)")
 @click.option("-o", "--out", type=click.Path(path_type=Path),
-              help="a .pdf file (one page per figure) or a directory (one PNG per figure) "
-                   "[default: out/<RUN name>-report.pdf]")
+              help="a .pdf file (one page per figure), a directory (one PNG per figure), or with one --figure "
+                   "an image file [default: out/<RUN name>-report.pdf]")
 @click.option("--compare", type=click.Path(dir_okay=False, path_type=Path),
               help="a second print file (or deck) overlaid on every figure, e.g. the golden print")
+@click.option("--label", metavar="TEXT", help="the run's name in legends [default: its file name]")
+@click.option("--compare-label", metavar="TEXT",
+              help="the compared run's name in legends [default: its file name]")
+@click.option("--t-start", type=float, metavar="SECONDS",
+              help="time-history figures start here (s); their value axes scale to the window")
+@click.option("--t-end", type=float, metavar="SECONDS", help="time-history figures end here (s)")
+@click.option("--window", metavar="START:END",
+              help="both ends of the time window at once, in s (either may be left out: 0.01:)")
+@click.option("--ylim", metavar="LOW:HIGH",
+              help="value-axis limits of every figure made (either may be left out), in the axis' unit")
 @click.option("--step", type=int, help="printed step of the load distribution [default: the first printed step]")
-@click.option("--element", type=click.IntRange(min=1), default=1, show_default=True,
-              help="rolling element of the race-contact and pocket-force figures")
+@click.option("--steps", type=click.IntRange(min=0),
+              help="a deck given as RUN or --compare: time steps to run after step 0 [default: as the deck says]")
+@click.option("--history-element", "history_element", type=click.IntRange(min=1), default=None, metavar="N",
+              help="rolling element of the race-contact and pocket-force figures (a deck is run with it) "
+                   "[default: 1]")
+@click.option("--element", "element_alias", type=click.IntRange(min=1), default=None, hidden=True,
+              callback=_deprecated_element, expose_value=True)
 @click.option("--traction-table", type=click.Path(dir_okay=False, path_type=Path),
-              help="traction-slip table file (ADRX7) drawn in the traction-slip figure")
-def plot(run_file: Path, set_name: str, out: Path | None, compare: Path | None, step: int | None, element: int,
-         traction_table: Path | None) -> None:
+              help="traction-slip table file (ADRX7) drawn in the traction-slip figure (a deck is run with it)")
+@click_options(skip=("steps", "history_element", "traction_table"))
+def plot(run_file: Path, set_name: str, figures: tuple[str, ...], out: Path | None, compare: Path | None,
+         label: str | None, compare_label: str | None, t_start: float | None, t_end: float | None,
+         window: str | None, ylim: str | None, step: int | None, steps: int | None, history_element: int | None,
+         element_alias: int | None, traction_table: Path | None, **options) -> None:
     """Write the report's figures (figure types 1-10) from RUN, a print file or a deck.
 
-    Figures the data cannot support are skipped with one line each on stderr; exit 1 if
-    none can be made.  A PDF is written whole or not at all."""
+    A deck is run first (with --steps and the run options of `pyadore run`).  Figures the
+    data cannot support are skipped with one line per reason on stderr; exit 1 if none can
+    be made.  A PDF is written whole or not at all."""
     import tempfile
 
-    from .plots import make_set, write_pdf, write_pngs
+    from .plots import figure_types, make_set, skipped_lines, write_image, write_pdf, write_pngs
 
+    if history_element is not None and element_alias is not None and history_element != element_alias:
+        click.echo("pyadore: error: --element and --history-element disagree; give --history-element only",
+                   err=True)
+        sys.exit(1)
+    element = history_element or element_alias or 1
+    try:
+        span = _pair(window, "--window", "s")
+        if span is not None and (t_start is not None or t_end is not None):
+            raise AdoreInputError("--window and --t-start/--t-end say the same thing: give one of them")
+        if span is None and (t_start is not None or t_end is not None):
+            span = _pair(f"{'' if t_start is None else repr(t_start)}:{'' if t_end is None else repr(t_end)}",
+                         "--t-start/--t-end", "s")
+        limits = _pair(ylim, "--ylim", "the axis' unit")
+        chosen = figure_types(figures) if figures else None
+    except AdoreError as exc:
+        _fail(exc)
     if out is None:
         out = Path("out") / f"{run_file.stem}-{set_name}.pdf"
     to_pdf = out.suffix.lower() == ".pdf"
-    try:
-        (out.parent if to_pdf else out).mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        click.echo(f"pyadore: error: cannot create the output directory {out.parent if to_pdf else out}: "
-                   f"{exc.strerror}", err=True)
+    one_image = bool(out.suffix) and not to_pdf and chosen is not None and len(chosen) == 1
+    if out.suffix and not to_pdf and not one_image and not out.is_dir():
+        click.echo(f"pyadore: error: {out}: an image file holds one figure: choose it with --figure N, or give "
+                   "a .pdf file or a directory", err=True)
         sys.exit(1)
+    if one_image or (to_pdf and chosen is not None and len(chosen) == 1):
+        from matplotlib.figure import Figure
+
+        kinds = Figure().canvas.get_supported_filetypes()
+        if out.suffix.lower().lstrip(".") not in kinds:
+            click.echo(f"pyadore: error: {out}: unknown image type; use one of {', '.join(sorted(kinds))}", err=True)
+            sys.exit(1)
+    folder = out.parent if (to_pdf or one_image) else out
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        click.echo(f"pyadore: error: cannot create the output directory {folder}: {exc.strerror}", err=True)
+        sys.exit(1)
+    default_label, default_compare = _run_labels(run_file, compare)
+    run_options = dict(options, history_element=element, traction_table=traction_table)
     try:
         if traction_table is not None:
             _check_input_file(traction_table, "traction-slip table")
         with tempfile.TemporaryDirectory(prefix="pyadore-plot-") as tmp:
-            run_print = _plot_input(run_file, "run", Path(tmp))
-            other = _plot_input(compare, "compare", Path(tmp)) if compare is not None else None
+            run_print = _plot_input(run_file, "run", Path(tmp), steps, run_options)
+            other = (_plot_input(compare, "compare", Path(tmp), steps, run_options) if compare is not None
+                     else None)
             made = make_set(run_print, set_name, compare=other, step=step, element=element, table=traction_table,
-                            label=str(run_file), compare_label=str(compare) if compare is not None else None)
+                            label=label or default_label, compare_label=compare_label or default_compare,
+                            figures=chosen, window=span, ylim=limits)
     except AdoreError as exc:
         _fail(exc)
-    for _ftype, reason in made.skipped:
-        click.echo(f"pyadore: skipped {reason}", err=True)
+    for line in skipped_lines(made.skipped):
+        click.echo(f"pyadore: skipped {line}", err=True)
     for note in made.notes:
         click.echo(f"pyadore: note: {note}", err=True)
     if not made.figures:
-        click.echo(f"pyadore: error: {run_file}: no figure of set {set_name!r} can be made from its data", err=True)
+        which = f"figure(s) {', '.join(figures)}" if figures else f"set {set_name!r}"
+        click.echo(f"pyadore: error: {run_file}: no figure of {which} can be made from its data", err=True)
         sys.exit(1)
     types = ", ".join(str(t.number) for t, _fig in made.figures)
     try:
-        if to_pdf:
+        if one_image:
+            write_image(made.figures[0][1], out)
+        elif to_pdf:
             write_pdf(made.figures, out)
         else:
             paths = write_pngs(made.figures, out)
     except OSError as exc:
         click.echo(f"pyadore: error: cannot write {exc.filename or out}: {exc.strerror or exc}", err=True)
         sys.exit(1)
-    if to_pdf:
+    if one_image:
+        click.echo(f"figure written: {out} (figure type {types})")
+    elif to_pdf:
         click.echo(f"figures written: {out} ({len(made.figures)} pages: figure types {types})")
     else:
         click.echo(f"figures written: {len(paths)} PNG files in {out} (figure types {types})")
@@ -280,8 +408,9 @@ def plot(run_file: Path, set_name: str, out: Path | None, compare: Path | None, 
 @click.argument("deck", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--vary", "vary", multiple=True, required=True, metavar="FIELD=V1,V2,...",
               help="a deck field and its values, in the deck's units (rpm for speeds, N for forces, m for "
-                   "lengths and fits, K for temperatures); FIELD as in docs/deck-format.md, REC/FIELD where "
-                   "several records have it (e.g. 8.2/density). Repeat for a grid.")
+                   "lengths and fits, K for temperatures); a value may be a range START:STOP:COUNT (both ends "
+                   "included); FIELD as in docs/deck-format.md, REC/FIELD where several records have it (e.g. "
+                   "8.2/density), or diametral_clearance (m) of a ball deck. Repeat for a grid.")
 @click.option("--zip", "zip_values", is_flag=True,
               help="pair the i-th values of every --vary instead of the full grid")
 @click.option("--steps", type=click.IntRange(min=0),

@@ -22,12 +22,12 @@ values of that rule as a known deviation: outside its tolerance it is counted as
 
 from __future__ import annotations
 
-import json
 import math
 import sys
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
+from .diff_report import FREE_TEXT, Comparison, DiffReport
 from .errors import AdoreInputError
 from .printout import PrintFormatError, read_print
 from .printout.model import (NOT_COMPUTED, NOT_COMPUTED_VALUE, OVERFLOW, OVERFLOW_VALUE, UNKNOWN, UNKNOWN_VALUE,
@@ -41,201 +41,7 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
 REPO_TOLERANCES = Path(__file__).resolve().parent.parent / "golden" / "tolerances.toml"
 
 __all__ = ["diff_prints", "diff_command", "DiffReport", "Comparison", "load_tolerances", "bearing_kind",
-           "PrintFormatError"]
-
-
-@dataclass
-class Comparison:
-    """One compared (or skipped) golden value.
-
-    ``name`` is ``step <n> <table> <row> <column>`` (``echo <name>`` for the echo);
-    ``status`` is ``within``, ``outside``, ``unknown`` (golden marker, skipped),
-    ``missing`` (the run lacks the value: counted as outside), ``not_computed`` (the
-    run prints ``NaN``: the engine does not compute it; a failure of its own) or
-    ``deviation`` (outside the tolerance of a rule that documents a known deviation; not a
-    failure; ``reason`` says why).
-    """
-
-    name: str
-    table: str
-    column: str
-    golden: object
-    run: object
-    status: str
-    rel_error: float = float("nan")
-    tolerance: str = ""
-    reason: str = ""
-
-
-@dataclass
-class DiffReport:
-    """Outcome of a comparison: every Comparison plus counts; ``exit_code`` 0 (all within) or 1
-    (some value outside tolerance, missing or not computed by the engine)."""
-
-    run_path: str
-    golden_path: str
-    tolerances_path: str
-    comparisons: list = field(default_factory=list)
-    #: "" when the run's print is complete; else why not (PrintRun.incomplete): its time
-    #: integration stopped early, so its later steps are missing - never a match
-    run_incomplete: str = ""
-
-    def _count(self, *status: str) -> int:
-        return sum(1 for c in self.comparisons if c.status in status)
-
-    @property
-    def compared(self) -> int:
-        """Values compared (within + outside + missing + not computed + known deviations)."""
-        return self._count("within", "outside", "missing", "not_computed", "deviation")
-
-    @property
-    def within(self) -> int:
-        """Compared values within tolerance."""
-        return self._count("within")
-
-    @property
-    def outside(self) -> int:
-        """Compared values outside tolerance, including values missing from the run."""
-        return self._count("outside", "missing")
-
-    @property
-    def missing(self) -> int:
-        """Golden values the run does not print (counted in ``outside``)."""
-        return self._count("missing")
-
-    @property
-    def not_computed(self) -> int:
-        """Golden values the run prints as ``NaN``: not computed by the engine (a failure, not in ``outside``)."""
-        return self._count("not_computed")
-
-    def not_computed_columns(self) -> dict:
-        """Count of not-computed values per ``table.column`` (echo values per name)."""
-        out: dict = {}
-        for c in self.comparisons:
-            if c.status == "not_computed":
-                key = f"{c.table}.{c.column}"
-                out[key] = out.get(key, 0) + 1
-        return out
-
-    @property
-    def deviations(self) -> int:
-        """Values outside the tolerance of a known-deviation rule (not failures)."""
-        return self._count("deviation")
-
-    def deviation_columns(self) -> dict:
-        """Per ``table.column`` with known deviations: (count, largest relative error, reason)."""
-        out: dict = {}
-        for c in self.comparisons:
-            if c.status == "deviation":
-                key = f"{c.table}.{c.column}"
-                n, worst, _ = out.get(key, (0, 0.0, c.reason))
-                out[key] = (n + 1, max(worst, c.rel_error), c.reason)
-        return out
-
-    @property
-    def unknown(self) -> int:
-        """Golden values marked unknown (``?``): skipped, not compared."""
-        return self._count("unknown")
-
-    @property
-    def exit_code(self) -> int:
-        """0 when every compared value is within tolerance, 1 otherwise (outside, missing, not
-        computed, or an incomplete run print)."""
-        return 0 if self.outside == 0 and self.not_computed == 0 and not self.run_incomplete else 1
-
-    def offenders(self, limit: int | None = 10) -> list:
-        """Values outside tolerance, worst relative error first (missing ones last)."""
-        bad = [c for c in self.comparisons if c.status in ("outside", "missing")]
-        bad.sort(key=lambda c: (c.status == "missing", -(c.rel_error if not math.isnan(c.rel_error) else math.inf)))
-        return bad if limit is None else bad[:limit]
-
-    def column_max(self) -> dict:
-        """Largest relative error per ``table.column`` over the compared values."""
-        out: dict = {}
-        for c in self.comparisons:
-            if c.status in ("within", "outside", "deviation") and not math.isnan(c.rel_error):
-                key = f"{c.table}.{c.column}"
-                out[key] = max(out.get(key, 0.0), c.rel_error)
-        return out
-
-    def render(self, fmt: str = "text") -> str:
-        """The report as ``text`` (counts, worst offenders, per-column maxima) or ``json``."""
-        if fmt == "json":
-            def num(v):
-                if isinstance(v, float) and (math.isnan(v) or math.isinf(v)):
-                    return None
-                return v if isinstance(v, (int, float, str)) or v is None else repr(v)
-            return json.dumps({
-                "run": self.run_path, "golden": self.golden_path, "tolerances": self.tolerances_path,
-                "run_incomplete": self.run_incomplete,
-                "compared": self.compared, "within": self.within, "outside": self.outside,
-                "missing": self.missing, "not_computed": self.not_computed,
-                "not_computed_columns": self.not_computed_columns(),
-                "unknown": self.unknown, "deviations": self.deviations,
-                "deviation_columns": {k: {"count": n, "max_rel_error": num(w), "reason": why}
-                                      for k, (n, w, why) in self.deviation_columns().items()},
-                "exit_code": self.exit_code,
-                "offenders": [{"name": c.name, "golden": num(c.golden), "run": num(c.run), "status": c.status,
-                               "rel_error": num(c.rel_error), "tolerance": c.tolerance}
-                              for c in self.offenders(None)],
-                "column_max_rel_error": self.column_max(),
-            }, indent=2)
-        if fmt != "text":
-            raise ValueError(f"unknown report format {fmt!r} (text or json)")
-        lines = [f"run:        {self.run_path}", f"golden:     {self.golden_path}",
-                 f"tolerances: {self.tolerances_path}",
-                 f"compared {self.compared}  within {self.within}  outside {self.outside}"
-                 f" (missing {self.missing})  not computed by the engine {self.not_computed}"
-                 f"  unknown {self.unknown} (golden '?', not compared)"
-                 f"  known deviations {self.deviations}"]
-        off = self.offenders(20)
-        if off:
-            lines.append("")
-            lines.append(f"worst offenders ({len(off)} of {self.outside}):")
-            lines.append(f"  {'name':<60} {'golden':>12} {'run':>12} {'rel err':>10}  tolerance")
-            for c in off:
-                g = _show(c.golden)
-                r = _show(c.run)
-                e = "-" if math.isnan(c.rel_error) else f"{c.rel_error:.3%}"
-                lines.append(f"  {c.name:<60} {g:>12} {r:>12} {e:>10}  {c.tolerance}")
-        nc = self.not_computed_columns()
-        if nc:
-            lines.append("")
-            lines.append(f"not computed by the engine ({self.not_computed} value(s) printed NaN), per column:")
-            for key in sorted(nc):
-                lines.append(f"  {key:<52} {nc[key]}")
-        dv = self.deviation_columns()
-        if dv:
-            lines.append("")
-            lines.append(f"known deviations ({self.deviations} value(s) outside tolerance, documented in the tolerance file):")
-            for key in sorted(dv):
-                n, worst, why = dv[key]
-                lines.append(f"  {key:<52} {n:4d}  worst {worst:.3%}  {why}")
-        cm = self.column_max()
-        if cm:
-            lines.append("")
-            lines.append("largest relative error per column:")
-            for key in sorted(cm):
-                lines.append(f"  {key:<52} {cm[key]:.3%}")
-        lines.append("")
-        if self.exit_code == 0:
-            result = "all compared values within tolerance"
-        else:
-            parts = ["the run's print is incomplete"] if self.run_incomplete else []
-            parts += [f"{self.outside} value(s) outside tolerance"] if self.outside else []
-            if self.not_computed:
-                parts.append(f"{self.not_computed} value(s) not computed by the engine")
-            result = ", ".join(parts)
-        lines.append("result: " + result)
-        if self.run_incomplete:
-            lines.insert(0, f"INCOMPLETE RUN: {self.run_path}: {self.run_incomplete}; the steps after it are missing")
-        return "\n".join(lines)
-
-
-def _show(v) -> str:
-    if isinstance(v, float):
-        return "nan" if math.isnan(v) else f"{v:.4E}"
-    return str(v)
+           "report_names", "PrintFormatError", "FREE_TEXT"]
 
 
 # ----------------------------------------------------------------------------- tolerances
@@ -344,6 +150,8 @@ def _compare_value(name, table, column, g, gmark, r, rmark, rule: _Rule, scale: 
     tol = f"rel {rule.rel:g}" + (f", abs {rule.abs:g}" if rule.abs is not None else "")
     if gmark == UNKNOWN:
         return Comparison(name, table, column, "?", r, "unknown", tolerance=tol)
+    if rmark == NOT_COMPUTED and gmark == NOT_COMPUTED:   # two runs, neither computes it: no difference
+        return Comparison(name, table, column, "NaN", "NaN", "nan_both", tolerance=tol)
     if rmark == NOT_COMPUTED:
         return Comparison(name, table, column, g, "NaN", "not_computed", tolerance=tol)
     if rmark == UNKNOWN or r is None:
@@ -369,6 +177,9 @@ def _compare_echo(report: DiffReport, golden: PrintRun, run: PrintRun) -> None:
         if g is UNKNOWN_VALUE:
             report.comparisons.append(Comparison(name, "echo", key, "?", r, "unknown", tolerance="printed"))
             continue
+        if r is NOT_COMPUTED_VALUE and g is NOT_COMPUTED_VALUE:
+            report.comparisons.append(Comparison(name, "echo", key, "NaN", "NaN", "nan_both", tolerance="printed"))
+            continue
         if r is NOT_COMPUTED_VALUE:
             report.comparisons.append(Comparison(name, "echo", key, g, "NaN", "not_computed", tolerance="printed"))
             continue
@@ -381,8 +192,13 @@ def _compare_echo(report: DiffReport, golden: PrintRun, run: PrintRun) -> None:
             diff = abs(float(r) - g)
             ok = diff <= half_ulp * (1 + 1e-9)
             rel = diff / abs(g) if g else (0.0 if diff == 0 else math.inf)
+        elif isinstance(g, str) or isinstance(r, str):
+            ok = str(r).split() == str(g).split()
+            report.comparisons.append(Comparison(name, "echo", key, g, r, "within" if ok else "text",
+                                                 0.0 if ok else float("nan"), "text"))
+            continue
         else:
-            ok = (g == r) if not isinstance(g, str) else str(r).split() == g.split()
+            ok = g == r
             rel = 0.0 if ok else math.inf
         report.comparisons.append(Comparison(name, "echo", key, g, r, "within" if ok else "outside", rel, "printed"))
 
@@ -413,8 +229,9 @@ def bearing_kind(run: PrintRun) -> str:
     return ""
 
 
-def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None) -> DiffReport:
-    """Compare two parsed print files; see :func:`diff_prints`."""
+def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None, names: tuple | None = None) -> DiffReport:
+    """Compare two parsed print files; see :func:`diff_prints`.  ``names``: the two files'
+    names in the report [default: :func:`report_names`]."""
     kinds = bearing_kind(run), bearing_kind(golden)
     if all(kinds) and kinds[0] != kinds[1]:
         raise PrintFormatError(f"{run.path} is a {kinds[0]} bearing print and {golden.path} a {kinds[1]} "
@@ -422,7 +239,8 @@ def diff_runs(run: PrintRun, golden: PrintRun, tolerances_path=None) -> DiffRepo
                                f"golden file of a {kinds[0]} bearing)")
     tpath = Path(tolerances_path) if tolerances_path else _default_tolerances(Path(golden.path))
     default, rules = load_tolerances(tpath)
-    report = DiffReport(run.path, golden.path, str(tpath), run_incomplete=run.incomplete)
+    report = DiffReport(run.path, golden.path, str(tpath), run_incomplete=run.incomplete,
+                        names=tuple(names) if names else report_names(run.path, golden.path))
     _compare_echo(report, golden, run)
     numbers = golden.step_numbers
     for n in numbers:
@@ -542,6 +360,34 @@ def _default_tolerances(golden_path: Path) -> Path:
     return local if local.is_file() else REPO_TOLERANCES
 
 
+def is_engine_print(path) -> bool:
+    """True when the print at ``path`` is an engine's print (it lists its deck before the
+    banner), False for a transcription of the report (a golden print starts at the banner)."""
+    from .printout.layout import BANNER_LINE
+
+    try:
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            for line in handle:
+                text = line.strip()
+                if text == BANNER_LINE:
+                    return False
+                if text == "Listing of input data records":
+                    return True
+    except OSError:
+        return False
+    return False
+
+
+def report_names(first, second) -> tuple[str, str]:
+    """The names of two compared prints in a report: ``("run", "golden")`` when the second
+    is a golden print (a transcription of the report: :func:`is_engine_print` is False),
+    else neutral ones: the file stems, or ``a`` and ``b`` when the stems are the same."""
+    if not is_engine_print(second):
+        return "run", "golden"
+    a, b = Path(str(first)).stem, Path(str(second)).stem
+    return (a, b) if a and b and a != b else ("a", "b")
+
+
 def diff_prints(run_path, golden_path, tolerances_path=None) -> DiffReport:
     """Compare print file ``run_path`` with ``golden_path`` within tolerances.
 
@@ -559,14 +405,15 @@ def diff_prints(run_path, golden_path, tolerances_path=None) -> DiffReport:
     return diff_runs(run, golden, tolerances_path)
 
 
-def diff_command(run, golden, tolerances=None, fmt: str = "text") -> int:
-    """CLI body of ``pyadore diff``: print the report, return 0 (within), 1 (outside) or 2 (unreadable).
+def diff_command(run, golden, tolerances=None, fmt: str = "text", brief: bool = False) -> int:
+    """CLI body of ``pyadore diff``: print the report (``brief``: one line per column with
+    values outside tolerance), return 0 (within), 1 (outside) or 2 (unreadable).
 
     Never raises for bad input: the message goes to stderr as one paragraph.
     """
     try:
         report = diff_prints(run, golden, tolerances)
-        text = report.render(fmt)
+        text = report.render(fmt, brief=brief)
     except AdoreInputError as exc:
         print(f"pyadore: error: {exc}", file=sys.stderr)
         return 2

@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from pyadore.deck import PROBLEM_KINDS, DeckError, check_deck, read_deck, run_validate
+from pyadore.deck.problems import SOURCE_WINDOW, shown_source
 
 BAD = Path(__file__).resolve().parent / "data" / "bad_decks"
 EXPECTED = json.loads((BAD / "expected.json").read_text())
@@ -38,7 +39,11 @@ def test_bad_deck_reported(name):
         if p.line and p.source_line is not None:
             head, shown, caret = text.split("\n")
             assert head.startswith(f"{path}:{p.line}:{p.col}  ")
-            assert caret.index("^") - 4 == p.col - 1
+            shown_line, caret_col = shown_source(p.source_line.replace("\t", " "), p.col)
+            assert shown == "    " + shown_line and len(shown_line) <= SOURCE_WINDOW + 6
+            assert caret.index("^") - 4 == caret_col - 1
+            if p.col <= len(p.source_line):
+                assert shown_line[caret_col - 1] == p.source_line.replace("\t", " ")[p.col - 1]
         if p.record:
             assert f"  Rec {p.record}" in text.split("\n")[0]
         if p.field:

@@ -19,12 +19,13 @@ BALL = ROOT / "decks" / "appendix_c_ball.inp"
 
 def test_engine_names_the_fields_and_rules():
     fields = _core.cross_field_fields()
-    assert len(fields) == len(set(fields)) == 23
+    assert len(fields) == len(set(fields)) == 31
     assert fields[:5] == ("shaft_inner_diameter", "shaft_outer_diameter", "bearing_outer_diameter",
                           "housing_outer_diameter", "pitch_diameter")
     rules = _core.cross_field_rules()
-    assert len(rules) == 12 and rules[-2].startswith("max_traction > traction_at_zero_slip")
-    assert rules[-1].startswith("applied_force_x, applied_force_y, applied_force_z not all 0")
+    assert len(rules) == 16 and rules[10].startswith("max_traction > traction_at_zero_slip")
+    assert rules[11].startswith("applied_force_x, applied_force_y, applied_force_z not all 0")
+    assert all(r.startswith("warning: ") for r in rules[12:])
 
 
 def test_appendix_deck_values_pass_and_a_changed_value_fails():
@@ -34,7 +35,7 @@ def test_appendix_deck_values_pass_and_a_changed_value_fails():
     values["pitch_diameter"] = 0.5          # beyond the bearing OD (0.18 m)
     out = _core.cross_field_problems(values)
     assert out[0] == ("pitch_diameter", "expected between the bore (shaft_outer_diameter = 0.1) and "
-                      f"bearing_outer_diameter = {values['bearing_outer_diameter']:.6G}")
+                      f"bearing_outer_diameter = {values['bearing_outer_diameter']:.6G}", False)
     # a missing value skips the rules that need it
     values["pitch_diameter"] = None
     assert _core.cross_field_problems(values) == []
@@ -83,6 +84,6 @@ def test_validate_and_the_run_refuse_the_same_deck_at_the_same_field(tmp_path, r
 
 def test_wrong_number_of_values_is_an_engine_error():
     from pyadore._core.base import _engine, check
-    n, fields, messages, status, message = _engine().adore_deck_cross_checks([0.0] * 3, [1] * 3, 30)
-    with pytest.raises(pyadore.AdoreEngineError, match="3 values given, the rules read 23"):
+    n, fields, warning, messages, status, message = _engine().adore_deck_cross_checks([0.0] * 3, [1] * 3, 30)
+    with pytest.raises(pyadore.AdoreEngineError, match="3 values given, the rules read 31"):
         check(int(status), message)

@@ -76,25 +76,6 @@ def test_odd_values_never_crash_the_engine(tmp_path, run_exe, deck_name, n, seed
     assert outcomes[0] > 0          # the sample is not all refused at reading
 
 
-def test_no_ehd_film_is_a_clear_input_error(tmp_path):
-    """A ball 320 K colder than its races: at the 163 K inlet the oil is so viscous that
-    Gupta's thermal reduction factor reaches 0, and traction model 3 has no film to shear.
-    The run stops with the contact, the film, the factor and the temperatures that set it
-    (it used to stop on an internal "need film h > 0" check)."""
-    deck, _ = _deck_with(tmp_path, "appendix_c_ball.inp", "Rec 2.7", 34, " 3.2300E+00",  # rolling_element_temperature
-                         "cold.inp")
-    with pytest.raises(pyadore.AdoreInputError) as info:
-        pyadore.run(deck, steps=0, out=tmp_path / "cold.prt")
-    message = str(info.value)
-    # the run names the deck first (a sweep runs many)
-    assert message.startswith(f"{deck}: ball 1 outer race contact: no film for the EHD traction "
-                              "(Rec 10.0 traction_model 3)")
-    assert "thermal reduction factor  0.000E+00" in message
-    assert ("MIL-L-7808 at 163.12 K, the mean of Rec 2.7 rolling_element_temperature 3.23 K and "
-            "outer_race_temperature 323.00 K") in message
-    assert not (tmp_path / "cold.prt").exists()
-
-
 @pytest.mark.parametrize("record, col, value, name, where", [
     # a solid shaft whose bore equals its OD passed the reader, and the mounting's Lame formula
     # divided by zero (SIGFPE in the checked build, a fit pressure of 0 without traps)

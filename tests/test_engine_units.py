@@ -85,3 +85,27 @@ def test_engine_folders_depend_one_way():
         return any(t == goal or (t not in seen and reaches(t, goal, seen + (t,))) for t in edges.get(start, ()))
 
     assert [d for d in sorted(edges) if reaches(d, d)] == []
+
+
+# folders allowed to use fortran/thermal/ (docs/architecture.md: the thermal model sits above geometry)
+THERMAL_USERS = {"start", "dynamics", "bearings", "driver", "output", "api"}
+
+
+def test_thermal_folder_is_used_only_above_it():
+    """fortran/thermal/ may use core, tribology, cage, model, geometry; only start/, dynamics/,
+    bearings/, driver/, output/ (and the f2py boundary) may use it."""
+    allowed_below = {"core", "tribology", "cage", "model", "geometry", "thermal"}
+    mod_dir = {}
+    for path in _library_sources():
+        for name in re.findall(r"^\s*module\s+(\w+)\s*$", path.read_text(), re.M | re.I):
+            mod_dir[name.lower()] = path.parent.name
+    users, uses = [], []
+    for path in _library_sources():
+        folder = path.parent.name
+        for name in re.findall(r"^\s*use\s+(\w+)", path.read_text(), re.M | re.I):
+            target = mod_dir.get(name.lower())
+            if target == "thermal" and folder not in THERMAL_USERS | {"thermal"}:
+                users.append(f"{path.relative_to(ROOT)} uses {name}")
+            if folder == "thermal" and target and target not in allowed_below:
+                uses.append(f"{path.relative_to(ROOT)} uses {name} ({target})")
+    assert users == [] and uses == []

@@ -121,11 +121,12 @@ def test_plot_sweep(ball_sweep, tmp_path):
     folder, frame = ball_sweep
     fig = plot_sweep(folder, x="inner_race_speed", y="total_power_loss_W", by="applied_force_z")
     ax = fig.axes[0]
-    assert [line.get_label() for line in ax.lines] == ["applied_force_z = 1000 N", "applied_force_z = 3000 N"]
+    # the fields in words from the record table (issue #29)
+    assert [line.get_label() for line in ax.lines] == ["Applied force z = 1000 N", "Applied force z = 3000 N"]
     low = frame[frame["applied_force_z"] == 1000].sort_values("inner_race_speed")
     assert list(ax.lines[0].get_xdata()) == list(low["inner_race_speed"])
     assert list(ax.lines[0].get_ydata()) == list(low["total_power_loss_W"])
-    assert ax.get_xlabel() == "inner_race_speed (rpm)" and ax.get_ylabel() == "Total power loss (W)"
+    assert ax.get_xlabel() == "Inner race speed (rpm)" and ax.get_ylabel() == "Total power loss (W)"
     with pytest.raises(SweepError, match="also varies applied_force_z"):
         plot_sweep(folder, x="inner_race_speed", y="total_power_loss_W")
     with pytest.raises(SweepError, match="choose one of inner_race_speed, applied_force_z"):

@@ -5,8 +5,9 @@
 !> values given by the caller: values(k) is the first field named CHECK_FIELDS(k) in the
 !> deck (schema SI units, integers as reals), have(k) /= 0 when it is present and readable.
 !> Returns the n violated relations (at most nmax) in rule order: fields(i) the 1-based
-!> index of the field each is reported at, messages the n messages, one a line.
-subroutine adore_deck_cross_checks(nfield, values, have, nmax, n, fields, messages, status, message)
+!> index of the field each is reported at, warning(i) 1 for a warning (a legal but
+!> implausible value; the run goes on) and 0 for an error, messages the n messages, one a line.
+subroutine adore_deck_cross_checks(nfield, values, have, nmax, n, fields, warning, messages, status, message)
    use adore_core_kinds, only: wp
    use adore_core_error, only: ADORE_OK, ADORE_ENGINE_ERROR
    use adore_core_strings, only: itoa
@@ -18,6 +19,7 @@ subroutine adore_deck_cross_checks(nfield, values, have, nmax, n, fields, messag
    integer, intent(in) :: nmax                        !< room in fields
    integer, intent(out) :: n
    integer, intent(out) :: fields(nmax)
+   integer, intent(out) :: warning(nmax)
    character(len=16384), intent(out) :: messages
    integer, intent(out) :: status                     !< 0 ok, 2 engine failure (wrong sizes)
    character(len=2048), intent(out) :: message
@@ -30,6 +32,7 @@ subroutine adore_deck_cross_checks(nfield, values, have, nmax, n, fields, messag
    message = ""
    messages = ""
    fields = 0
+   warning = 0
    n = 0
    if (nfield /= N_CHECK_FIELDS) then
       status = ADORE_ENGINE_ERROR
@@ -46,6 +49,7 @@ subroutine adore_deck_cross_checks(nfield, values, have, nmax, n, fields, messag
    text = ""
    do k = 1, n
       fields(k) = problems(k)%field
+      warning(k) = merge(1, 0, problems(k)%warning)
       if (k > 1) text = text//new_line("a")
       text = text//problems(k)%message
    end do

@@ -15,6 +15,7 @@ module adore_core_strings
 
    public :: is_space, is_blank, lstrip_count, strip, rstrip, itoa, quoted
    public :: join_words, trim_zeros, strip_inner, replaced
+   public :: first_non_ascii, utf8_chars, utf8_char_start, utf8_code_point
 
 contains
 
@@ -191,5 +192,76 @@ contains
          if (s(i:i) == from) t(i:i) = to
       end do
    end function replaced
+
+   !> Byte index of the first non-ASCII byte of `s` at or after byte `from`, 0 if none.
+   pure integer function first_non_ascii(s, from)
+      character(len=*), intent(in) :: s
+      integer, intent(in) :: from
+      integer :: i
+      first_non_ascii = 0
+      do i = max(from, 1), len(s)
+         if (iachar(s(i:i)) > 127) then
+            first_non_ascii = i
+            return
+         end if
+      end do
+   end function first_non_ascii
+
+   !> Number of characters of the UTF-8 text `s` (bytes that are not continuation bytes),
+   !> the length Python's len() gives.
+   pure integer function utf8_chars(s)
+      character(len=*), intent(in) :: s
+      integer :: i
+      utf8_chars = 0
+      do i = 1, len(s)
+         if (iand(iachar(s(i:i)), 192) /= 128) utf8_chars = utf8_chars + 1
+      end do
+   end function utf8_chars
+
+   !> Byte index where character `k` (1-based) of the UTF-8 text `s` starts; len(s) + 1
+   !> when `s` has fewer than k characters.
+   pure integer function utf8_char_start(s, k)
+      character(len=*), intent(in) :: s
+      integer, intent(in) :: k
+      integer :: i, n
+      n = 0
+      do i = 1, len(s)
+         if (iand(iachar(s(i:i)), 192) /= 128) then
+            n = n + 1
+            if (n == k) then
+               utf8_char_start = i
+               return
+            end if
+         end if
+      end do
+      utf8_char_start = len(s) + 1
+   end function utf8_char_start
+
+   !> Unicode code point of the UTF-8 character starting at byte `i` of `s` (valid UTF-8,
+   !> checked when the deck was read); `nbytes` its length in bytes.
+   pure subroutine utf8_code_point(s, i, code, nbytes)
+      character(len=*), intent(in) :: s
+      integer, intent(in) :: i
+      integer, intent(out) :: code, nbytes
+      integer :: b, k
+      b = iachar(s(i:i))
+      if (b < 128) then
+         nbytes = 1
+         code = b
+      else if (b >= 240) then
+         nbytes = 4
+         code = iand(b, 7)
+      else if (b >= 224) then
+         nbytes = 3
+         code = iand(b, 15)
+      else
+         nbytes = 2
+         code = iand(b, 31)
+      end if
+      nbytes = min(nbytes, len(s) - i + 1)
+      do k = i + 1, i + nbytes - 1
+         code = ior(ishft(code, 6), iand(iachar(s(k:k)), 63))
+      end do
+   end subroutine utf8_code_point
 
 end module adore_core_strings

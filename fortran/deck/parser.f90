@@ -25,7 +25,7 @@ module adore_deck_parser
                                 FLD_REQUIRED, FLD_DEFAULT_INT, FLD_DEFAULT_REAL, FLD_COUNT
    use adore_deck_tokenizer, only: split_label, cut_field, parse_int_field, parse_real_field, &
                                    is_blank, strip, lstrip_count, itoa
-   use adore_core_strings, only: rstrip, quoted
+   use adore_core_strings, only: rstrip, quoted, first_non_ascii, utf8_code_point
    use adore_deck_deck_type, only: deck_t, deck_record_t, deck_field_t, deck_find_first
    use adore_deck_problems, only: problem_list_t, add_problem, problems_error
    use adore_deck_ranges, only: check_ranges
@@ -413,8 +413,9 @@ contains
       type(deck_record_t) :: rec
       type(deck_field_t), allocatable :: fields(:)
       character(len=:), allocatable :: rest, full
-      integer :: lineno, pos, f, s, n, i, j, nf, width, last_text
+      integer :: lineno, pos, f, s, n, i, j, nf, width, last_text, foreign, code, nbytes
       logical :: found, counted
+      character(len=8) :: hex
 
       lineno = rd%idx + 1
       s = want%spec
@@ -422,6 +423,20 @@ contains
       if (index(line, achar(9)) > 0) &
          call add_problem(rd%problems, text, lineno, index(line, achar(9)), record=want%rid, kind="format", &
                           message="tab character: expected blanks (fields are fixed columns)")
+      ! Numbers live in fixed ASCII columns (ADORE reads bytes): a non-ASCII character in a
+      ! record without text fields is one problem, and its fields are left unread (their
+      ! columns cannot be told apart); pyadore/deck/reader.py applies the same rule.
+      foreign = 0
+      if (.not. any(FLD_KIND(REC_FIRST_FIELD(s):REC_FIRST_FIELD(s) + REC_N_FIELDS(s) - 1) == KIND_TEXT)) &
+         foreign = first_non_ascii(line, offset + 1)
+      if (foreign > 0) then
+         call utf8_code_point(line, foreign, code, nbytes)
+         write (hex, "(z0.4)") code
+         call add_problem(rd%problems, text, lineno, foreign, record=want%rid, kind="format", &
+                          message="non-ASCII character '"//line(foreign:foreign + nbytes - 1)//"' (U+"// &
+                          trim(hex)//"): expected ASCII digits, signs, points, exponent letters and blanks "// &
+                          "(fields are fixed columns of ASCII characters)")
+      end if
       allocate (fields(max(REC_N_FIELDS(s), 1)))
       nf = 0
       pos = offset
@@ -430,6 +445,7 @@ contains
          counted = len_trim(FLD_COUNT(f)) > 0
          n = 1
          if (counted) then
+            if (foreign > 0) exit specs
             found = .false.
             do j = 1, nf
                if (fields(j)%name == trim(FLD_COUNT(f))) then
@@ -451,7 +467,11 @@ contains
             fields(nf)%name = trim(FLD_NAME(f))
             if (counted) fields(nf)%name = trim(FLD_NAME(f))//"["//itoa(i)//"]"
             width = field_width(f)
-            call read_field(rd, text, want%rid, f, cut_field(line, pos, width), lineno, pos + 1, fields(nf))
+            if (foreign > 0) then
+               call unread_field(f, cut_field(line, pos, width), lineno, pos + 1, fields(nf))
+            else
+               call read_field(rd, text, want%rid, f, cut_field(line, pos, width), lineno, pos + 1, fields(nf))
+            end if
             if (FLD_KIND(f) == KIND_TEXT) last_text = nf
             pos = pos + width
          end do
@@ -462,7 +482,7 @@ contains
       else
          rest = ""
       end if
-      if (.not. is_blank(rest)) then
+      if (.not. is_blank(rest) .and. foreign == 0) then
          i = pos + lstrip_count(rest) + 1
          if (last_text > 0) then
             full = strip(fields(last_text)%raw//rest)
@@ -509,6 +529,22 @@ contains
       case default; field_width = TEXT_WIDTH
       end select
    end function field_width
+
+   !> Field spec `f` with text `tok` (starting in column `col`) left unread, with no problem of
+   !> its own: its line holds a non-ASCII character (already reported).
+   subroutine unread_field(f, tok, lineno, col, fv)
+      integer, intent(in) :: f, lineno, col
+      character(len=*), intent(in) :: tok
+      type(deck_field_t), intent(inout) :: fv
+      fv%kind = FLD_KIND(f)
+      fv%spec = f
+      fv%line = lineno
+      fv%col = col
+      fv%raw = tok
+      fv%text_value = ""
+      fv%blank = .false.
+      fv%valid = .false.
+   end subroutine unread_field
 
    !> Convert the text `tok` (starting in column `col`) of field spec `f` into `fv`.
    subroutine read_field(rd, text, rid, f, tok, lineno, col, fv)

@@ -12,12 +12,20 @@ module adore_deck_problems
    use adore_deck_schema, only: KIND_INT, KIND_REAL
    use adore_deck_deck_type, only: deck_t, record_matches
    use adore_deck_tokenizer, only: is_blank, lstrip_count, show_real, itoa
-   use adore_core_strings, only: quoted
+   use adore_core_strings, only: quoted, utf8_chars, utf8_char_start
    implicit none
    private
 
    public :: problem_t, problem_list_t
    public :: add_problem, format_problem, problems_error, deck_field_problem
+   public :: MAX_SHOWN_PROBLEMS, SOURCE_WINDOW
+
+   !> At most this many problems are listed in one message, the rest counted
+   !> (pyadore/deck/problems.py: the same number).
+   integer, parameter :: MAX_SHOWN_PROBLEMS = 50
+   !> A source line longer than this many characters is shown as a window of this width
+   !> around the caret, each cut end marked "..." (pyadore/deck/problems.py shown_source).
+   integer, parameter :: SOURCE_WINDOW = 160
 
    !> One problem found in the deck (fields of pyadore.deck.model.Problem).
    type :: problem_t
@@ -126,16 +134,22 @@ contains
    end subroutine append_problem
 
    !> One problem as Python's Problem.format(): location, record, field = value, message,
-   !> then the offending line and a caret under the column.
+   !> then the offending line and a caret under the column.  Columns are counted in
+   !> characters (p%col is a byte column of the source line: they differ after a non-ASCII
+   !> character); a line longer than SOURCE_WINDOW characters is shown as a window around
+   !> the caret (Python's shown_source).
    subroutine format_problem(path, p, s)
       character(len=*), intent(in) :: path
       type(problem_t), intent(in) :: p
       character(len=:), allocatable, intent(out) :: s
-      character(len=:), allocatable :: shown
-      integer :: i
+      character(len=:), allocatable :: shown, head, tail
+      integer :: i, col, n, first, last
 
+      col = p%col
+      if (p%has_source .and. p%col > 1) col = utf8_chars(p%source(1:min(p%col - 1, len(p%source)))) + 1 + &
+                                                max(p%col - 1 - len(p%source), 0)
       if (p%line > 0) then
-         s = path//":"//itoa(p%line)//":"//itoa(p%col)
+         s = path//":"//itoa(p%line)//":"//itoa(col)
       else
          s = path
       end if
@@ -149,7 +163,19 @@ contains
       do i = 1, len(shown)
          if (shown(i:i) == achar(9)) shown(i:i) = " "
       end do
-      s = s//new_line("a")//"    "//shown//new_line("a")//"    "//repeat(" ", max(p%col - 1, 0))//"^"
+      n = utf8_chars(shown)
+      if (n > SOURCE_WINDOW) then
+         first = max(0, col - 1 - SOURCE_WINDOW/2)       ! characters cut at the start
+         last = min(n, first + SOURCE_WINDOW)            ! last character shown
+         first = max(0, last - SOURCE_WINDOW)
+         head = ""
+         tail = ""
+         if (first > 0) head = "..."
+         if (last < n) tail = "..."
+         shown = head//shown(utf8_char_start(shown, first + 1):utf8_char_start(shown, last + 1) - 1)//tail
+         col = col - first + len(head)
+      end if
+      s = s//new_line("a")//"    "//shown//new_line("a")//"    "//repeat(" ", max(col - 1, 0))//"^"
    end subroutine format_problem
 
    !> Sort the problems by line (line 0 last) and column, stably, and build the input error.
@@ -171,10 +197,12 @@ contains
          list%items(j + 1) = p
       end do
       msg = list%path//": "//itoa(list%n)//" problem(s) reading the deck"
-      do i = 1, list%n
+      do i = 1, min(list%n, MAX_SHOWN_PROBLEMS)
          call format_problem(list%path, list%items(i), line)
          msg = msg//new_line("a")//line
       end do
+      if (list%n > MAX_SHOWN_PROBLEMS) &
+         msg = msg//new_line("a")//"... and "//itoa(list%n - MAX_SHOWN_PROBLEMS)//" more problem(s) not shown"
       call input_error(error, msg)
    end subroutine problems_error
 

@@ -42,7 +42,7 @@ module adore_deck_schema
 
    integer, parameter :: N_RECORDS = 33
    integer, parameter :: N_FIELDS = 225
-   integer, parameter :: N_CHOICES = 20
+   integer, parameter :: N_CHOICES = 22
    integer, parameter :: ID_LEN = 7, NAME_LEN = 29, TITLE_LEN = 58
    integer, parameter :: RANGE_LEN = 21, MEANING_LEN = 170
 
@@ -257,7 +257,7 @@ module adore_deck_schema
       ]
    logical, parameter :: FLD_HAS_LO(N_FIELDS) = [&
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .true., .false., .true., .true., .true., .true., .false., .true., .true., &
+      .false., .true., .false., .false., .true., .true., .true., .false., .true., .true., &
       .true., .false., .false., .false., .true., .true., .false., .true., .true., .true., &
       .true., .true., .true., .true., .true., .false., .false., .false., .true., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
@@ -283,7 +283,7 @@ module adore_deck_schema
       -2.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 3.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
@@ -314,7 +314,7 @@ module adore_deck_schema
       .true., .true., .true., .false., .true., .true., .false., .false., .false., .true., &
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .true., .true., .true., .false., .false., &
-      .false., .false., .false., .true., .true., .true., .false., .false., .true., .true., &
+      .true., .false., .false., .true., .true., .true., .false., .true., .true., .true., &
       .true., .false., .true., .true., .true., .false., .false., .true., .true., .true., &
       .false., .true., .true., .true., .false., .false., .true., .true., .true., .false., &
       .true., .true., .true., .false., .false., .true., .true., .true., .false., .true., &
@@ -329,7 +329,7 @@ module adore_deck_schema
       ]
    logical, parameter :: FLD_HAS_HI(N_FIELDS) = [&
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .false., .false., .true., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .true., .true., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .true., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
@@ -354,7 +354,7 @@ module adore_deck_schema
       ]
    real(wp), parameter :: FLD_HI(N_FIELDS) = [&
       2.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 999.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
@@ -377,7 +377,7 @@ module adore_deck_schema
       ]
    logical, parameter :: FLD_HI_OPEN(N_FIELDS) = [&
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .true., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
@@ -401,19 +401,19 @@ module adore_deck_schema
       .false., .false., .false., .false., .false. &
       ]
    integer, parameter :: FLD_FIRST_CHOICE(N_FIELDS) = [&
-      1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, &
-      1, 1, 1, 1, 1, 1, 1, 1, 3, 3, 5, 7, 9, 11, 13, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, &
-      15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, &
-      15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, &
-      15, 15, 15, 15, 15, 15, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
+      1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, &
+      3, 3, 3, 3, 3, 3, 3, 3, 5, 5, 7, 9, 11, 13, 15, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
       17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
       17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
-      17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
-      17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 19, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, &
-      21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21, 21 &
+      17, 17, 17, 17, 17, 17, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
+      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
+      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
+      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
+      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 21, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, &
+      23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23 &
       ]
    integer, parameter :: FLD_N_CHOICES(N_FIELDS) = [&
-      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
+      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 2, 0, 2, 2, 2, 2, 2, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
@@ -423,7 +423,7 @@ module adore_deck_schema
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 &
       ]
    integer, parameter :: CHOICES(N_CHOICES) = [&
-      1, 2, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 1, 2, 2, 3, 0, 1 &
+      3, 5, 1, 2, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 1, 2, 2, 3, 0, 1 &
       ]
    character(len=NAME_LEN), parameter :: FLD_COUNT(N_FIELDS) = [character(len=NAME_LEN) :: &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
@@ -440,25 +440,25 @@ module adore_deck_schema
       ]
    character(len=RANGE_LEN), parameter :: FLD_RANGE_TEXT(N_FIELDS) = [character(len=RANGE_LEN) :: &
       "[-2, 2]", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", ">= 0", &
-      "any", ">= 0", "> 0", "> 0", "> 0", "any", "> 0", "[0, 1]", ">= 0", "any", "any", "any", &
-      ">= 0", ">= 0", "any", ">= 0", ">= 0", "> 0", "> 0", "> 0", "> 0", "> 0", "> 0", &
-      "at most 36 characters", "any", "1, 2", "[1, 999]", "0, 1", "0, 1", "0, 1", "0, 1", &
+      "any", "3, 5", "> 0", "> 0", "> 0", "any", "(0, 1)", "[0, 1]", ">= 0", "any", "any", &
+      "any", ">= 0", ">= 0", "any", ">= 0", ">= 0", "> 0", "> 0", "> 0", "> 0", "> 0", "> 0", &
+      "at most 36 characters", "any", "1, 2", "[3, 999]", "0, 1", "0, 1", "0, 1", "0, 1", &
       "0, 1", "0, 1", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", &
       "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", &
       "any", "any", "> 0", "> 0", ">= 0", "> 0", "> 0", "> 0", "> 0", "> 0", "[0, 90)", "any", &
       "> 0.5", "> 0.5", "> 0", "> 0", ">= 0", "> 0", "> 0", ">= 0", ">= 0", "any", "> 0", &
       "> 0", ">= 0", ">= 0", ">= 0", ">= 0", "any", "any", "any", "any", "any", "any", "any", &
-      "any", "[1, 10]", "1, 2", "> 0", "> 0", "> 0", ">= 0", ">= 0", ">= 0", ">= 0", &
-      "[0, 360]", "(-90, 90)", "> 0", "> 0", "any", ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", &
-      "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", &
+      "any", "[1, 10]", "1, 2", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", ">= 0", "[0, 360]", &
+      "(-90, 90)", "> 0", "> 0", "any", "> 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", &
       "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", &
       ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", &
       "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", &
-      ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "any", "any", "any", "any", "any", &
-      "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", ">= 0", "any", &
-      "any", "any", "any", "any", "any", "any", "any", "2, 3", "0, 1", "any", "any", "any", &
-      ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", "any", "any", ">= 0", "any", &
-      "any", "any", "any", ">= 0", "any", "any", "any", "any", "any", "any", "any" &
+      ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", &
+      "> 0", "> 0", ">= 0", ">= 0", "> 0", "any", "any", "any", "any", "any", "any", "any", &
+      "any", "any", "any", "any", "any", "any", "any", "any", ">= 0", "any", "any", "any", &
+      "any", "any", "any", "any", "any", "2, 3", "0, 1", "any", "any", "any", ">= 0", "> 0", &
+      ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", "any", "any", ">= 0", "any", "any", "any", &
+      "any", ">= 0", "any", "any", "any", "any", "any", "any", "any" &
       ]
    character(len=MEANING_LEN), parameter :: FLD_MEANING(N_FIELDS) = [character(len=MEANING_LEN) :: &
       "program mode MODE (1 in both decks", "unknown", "unknown", "unknown", "unknown", &

@@ -12,7 +12,7 @@
 module adore_driver_run
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
-   use adore_core_error, only: error_type, input_error, engine_error, ADORE_INPUT_ERROR
+   use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_os, only: rename_file, delete_file
    use adore_deck_text, only: deck_text_t, read_deck_text
    use adore_deck_deck_type, only: deck_t
@@ -20,6 +20,7 @@ module adore_driver_run
    use adore_deck_traction_table, only: read_traction_table
    use adore_model_bearing, only: bearing_t
    use adore_model_from_deck, only: build_bearing
+   use adore_model_checks, only: check_warnings
    use adore_model_run_options, only: run_options_t, STEPS_FROM_DECK
    use adore_output_banner, only: write_listing, write_banner
    use adore_output_echo_data, only: echo_data_t
@@ -71,6 +72,7 @@ contains
       real(wp), allocatable :: y(:)
       character(len=:), allocatable :: part_path, table_path, start_title, hist_path, incomplete, run_note, listing, &
                                        element_path
+      character(len=:), allocatable :: deck_warnings
       character(len=256) :: iomsg
       real(wp) :: duration, t_end
       integer :: unit, stat, start_method, n_dynamic
@@ -113,6 +115,7 @@ contains
       ! a deck the physics cannot use fails without leaving any output behind.
       call build_bearing(deck, bearing, error)
       if (allocated(error)) return
+      call check_warnings(deck, deck_warnings)
       table = len_trim(opts%traction_table) > 0
       if (table) then
          call read_traction_table(trim(opts%traction_table), bearing%race_traction, error)
@@ -125,7 +128,7 @@ contains
       call sys%solve_start(error)
       if (allocated(error)) then
          ! name the deck (a sweep runs many)
-         if (error%stat == ADORE_INPUT_ERROR .and. index(error%message, trim(deck_path)) == 0) &
+         if (index(error%message, trim(deck_path)) == 0) &
             error%message = trim(deck_path)//": "//error%message
          return
       end if
@@ -148,6 +151,7 @@ contains
          if (allocated(error)) return
       end if
       call sys%run_note(n_dynamic, run_note)
+      if (len(deck_warnings) > 0) run_note = "deck warnings: "//deck_warnings//"; "//run_note
       call sys%listing_lines(n_dynamic, listing)
       ! the run options that replace deck models: a traction table, a non-default start
       table_path = ""

@@ -43,7 +43,7 @@ module adore_forces_ball_bearing
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_OUTER, SIDE_INNER, &
                                    contact_kinematics
    use adore_forces_race_contact, only: PRINT_GAUSS, EHD_GAUSS, ehd_traction_model, lubricant_film, &
-                                           check_ehd_film, ehd_traction
+                                           ehd_film_present, ehd_traction
    implicit none
    private
 
@@ -266,7 +266,7 @@ contains
                loads%races(j)%moment = loads%races(j)%moment + cross(c%point - race, f_n)
                if (.not. with_traction) cycle
                cj = planar_contact(pairs(j), c)
-               call race_traction(k, j, cj, c%transverse_coeff, c%ellipse%semi_minor, c%ellipse%max_pressure, t, &
+               call race_traction(j, cj, c%transverse_coeff, c%ellipse%semi_minor, c%ellipse%max_pressure, t, &
                                   error)
                if (allocated(error)) then   ! name the contact (the integrator adds time and step)
                   error%message = "ball "//itoa(k)//", "//trim(merge("outer", "inner", j == RACE_OUTER))// &
@@ -353,8 +353,8 @@ contains
       !> the bulk temperatures of s; one- or two-dimensional (with_2d: tc used), by the fast
       !> or (with_reference) the reference EHD quadrature.  The film needs only the
       !> contact's centre kinematics (entraining speed, R_x, centre slip).
-      subroutine race_traction(k, j, cj, tc, b_minor, p_h, t, error)
-         integer, intent(in) :: k, j
+      subroutine race_traction(j, cj, tc, b_minor, p_h, t, error)
+         integer, intent(in) :: j
          type(ball_race_contact_t), intent(in) :: cj
          real(wp), intent(in) :: tc(3), b_minor, p_h
          type(contact_traction_t), intent(out) :: t
@@ -363,7 +363,17 @@ contains
          real(wp) :: h, phi
          integer :: race
 
-         if (.not. ehd_traction_model(b)) then
+         race = merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER)
+         h = 0.0_wp
+         phi = 0.0_wp
+         if (ehd_traction_model(b)) then
+            call contact_kinematics(cj, tk)
+            call lubricant_film(b, s%temperature, tk, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
+            if (allocated(error)) return
+         end if
+         if (.not. ehd_film_present(h, phi)) then
+            ! the deck's traction curve: traction model 1, or model 3's contacts without an EHD
+            ! film (no entraining speed, or Gupta's thermal reduction at 0; docs/tribology.md)
             if (with_2d) then
                ! the slip vector turns across the contact: the EHD traction's nodes per zone
                call contact_traction(cj, b%race_traction, 1.0_wp, EHD_GAUSS, t, error, transverse=tc)
@@ -372,12 +382,6 @@ contains
             end if
             return
          end if
-         race = merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER)
-         call contact_kinematics(cj, tk)
-         call lubricant_film(b, s%temperature, tk, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
-         if (allocated(error)) return
-         call check_ehd_film(b, s%temperature, k, j, h, phi, error)
-         if (allocated(error)) return
          if (with_2d) then
             call ehd_traction(b, s%temperature, cj, b_minor, race, h*phi, t, error, with_reference, tc)
          else

@@ -9,7 +9,7 @@
 !> in the bearing model's TEMP_* order (K); race: BODY_OUTER or BODY_INNER.  Units SI.
 module adore_forces_race_contact
    use adore_core_kinds, only: wp
-   use adore_core_error, only: error_type, input_error
+   use adore_core_error, only: error_type, engine_error
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, major_axis_nodes, contact_slip, &
                                    print_slip_node
@@ -27,7 +27,7 @@ module adore_forces_race_contact
    private
 
    public :: ehd_traction_model, wall_temperature, wall_rheology, thermal_properties, lubricant_film, &
-             check_ehd_film, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip
+             ehd_film_present, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip
 
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
@@ -98,6 +98,12 @@ contains
       t_in = wall_temperature(temperature, race)
       eta = dynamic_viscosity(b%lubricant, t_in, 0.0_wp)
       u = abs(t%rolling_speed)
+      if (u == 0.0_wp) then
+         ! no entraining speed (a shaft at rest): no film
+         h = 0.0_wp
+         phi = 1.0_wp
+         return
+      end if
       call central_film_thickness(t%rx, k_ell, u, q, e_prime, eta, b%lubricant%alpha, h, error)
       if (allocated(error)) return
       phi = thermal_reduction_factor(p_h, e_prime, THERMAL_LOADING_SCALE*thermal_loading(eta, &
@@ -105,33 +111,15 @@ contains
                                      b%lubricant%conductivity), t%centre_slip/t%rolling_speed)
    end subroutine lubricant_film
 
-   !> Input error unless race contact j (1 outer, 2 inner) of ball k has an EHD film, the
-   !> isothermal film h (m) times the thermal reduction factor phi: Gupta's fit of phi
-   !> reaches 0 beyond its range of thermal loading (a lubricant far too viscous at the
-   !> current temperatures for the speed), where traction model 3 has no film to shear.
-   subroutine check_ehd_film(b, temperature, k, j, h, phi, error)
-      type(bearing_t), intent(in) :: b
-      real(wp), intent(in) :: temperature(:)
-      integer, intent(in) :: k, j
+   !> True when a race contact has an EHD film to shear: the isothermal film h (m) times
+   !> the thermal reduction factor phi is positive and finite.  Without one (no entraining
+   !> speed: a shaft at rest; or Gupta's fit at 0 beyond its range of thermal loading, a
+   !> lubricant far too viscous for the speed) traction model 3 takes the deck's traction
+   !> curve for that contact (docs/tribology.md, "No EHD film").
+   pure logical function ehd_film_present(h, phi)
       real(wp), intent(in) :: h, phi
-      type(error_type), allocatable, intent(out) :: error
-      character(len=2000) :: buf     ! f0.2 of any finite temperature fits (<= 312 characters)
-      character(len=5) :: side
-      integer :: stat, race_t
-
-      if (h*phi > 0.0_wp .and. h*phi < huge(1.0_wp)) return
-      side = merge("outer", "inner", j == 1)
-      race_t = merge(TEMP_OUTER, TEMP_INNER, j == 1)
-      write (buf, "(a,i0,3a,es10.3,a,es10.3,3a,f0.2,a,f0.2,3a,f0.2,a)", iostat=stat) "ball ", k, " ", trim(side), &
-         " race contact: no film for the EHD traction (Rec 10.0 traction_model 3): isothermal film ", h, &
-         " m times thermal reduction factor ", phi, " (Gupta's fit is 0 beyond its range of thermal loading); ", &
-         trim(b%lubricant%name), " at ", 0.5_wp*(temperature(TEMP_ELEMENT) + temperature(race_t)), &
-         " K, the mean of Rec 2.7 rolling_element_temperature ", temperature(TEMP_ELEMENT), " K and ", trim(side), &
-         "_race_temperature ", temperature(race_t), " K"
-      if (stat /= 0) buf = "a race contact has no film for the EHD traction (Rec 10.0 traction_model 3) "// &
-                           "at the temperatures of Rec 2.7"
-      call input_error(error, trim(buf))
-   end subroutine check_ehd_film
+      ehd_film_present = h*phi > 0.0_wp .and. h*phi < huge(1.0_wp)
+   end function ehd_film_present
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):
    !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the
@@ -219,6 +207,8 @@ contains
       type(contact_traction_t) :: t
       real(wp), allocatable :: x(:), w(:), u(:)
 
+      rise = 0.0_wp
+      if (u_e == 0.0_wp) return      ! surfaces at rest: the flash model has no moving heat source
       call major_axis_nodes(cj, EHD_GAUSS, t, x, w)
       u = contact_slip(cj, x)
       call contact_temperature_rise(cj%a, b_minor, p0, x, w, law_kappa(b%race_traction, u)*abs(u), u_e, u_e, &

@@ -10,7 +10,7 @@ module adore_model_bearing
    implicit none
    private
 
-   public :: material_t, bearing_t, run_controls_t, ball_data_t, roller_data_t
+   public :: material_t, bearing_t, run_controls_t, ball_data_t, roller_data_t, coolant_data_t
    public :: BALL_BEARING, ROLLER_BEARING
    public :: BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, BODY_SHAFT, BODY_HOUSING
    public :: TEMP_ROOM, TEMP_HOUSING, TEMP_SHAFT, TEMP_ELEMENT, TEMP_CAGE, TEMP_OUTER, TEMP_INNER
@@ -47,6 +47,15 @@ module adore_model_bearing
       real(wp) :: step_initial = 0.0_wp, step_min = 0.0_wp, step_max = 0.0_wp   !< Rec 2.1 (tau)
       real(wp) :: error_limit = 0.0_wp         !< Rec 2.1 ERROR LIMIT
    end type run_controls_t
+
+   !> The coolant and the thermal model's times (Rec 2.4, 2.5; docs/thermal.md for how each
+   !> field was identified).
+   type :: coolant_data_t
+      integer :: coolant_type = 0              !< Rec 2.4 field 1: 1 = lubricant, 0 = no coolant (air)
+      real(wp) :: inlet_temperature = 0.0_wp   !< Rec 2.5 field 1 (K)
+      real(wp) :: flow_rate = 0.0_wp           !< Rec 2.5 field 2 (m**3/s)
+      real(wp) :: thermal_time(2) = 0.0_wp     !< Rec 2.5 fields 4, 5 (s): one and ten revolutions (Appendix C)
+   end type coolant_data_t
 
    !> What only a ball bearing has (Rec 5A).
    type :: ball_data_t
@@ -109,6 +118,8 @@ module adore_model_bearing
       !> lubricant of the library (Rec 10.0 lubricant_code; 0: none, lubricant unset)
       integer :: lubricant_code = 0
       type(lubricant_t) :: lubricant
+      !> the coolant and the thermal times (Rec 2.4, 2.5)
+      type(coolant_data_t) :: coolant
       !> cage friction coefficients, RE/cage pocket (Rec 10.5.1B coefficient A) and race/cage
       !> guide land (Rec 10.5.2B coefficient A): the constant Coulomb friction of the cage
       !> contacts (0.05 in both decks, report Table 5 "Cage Friction Coefficient"; the default

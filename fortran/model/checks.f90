@@ -23,24 +23,35 @@ module adore_model_checks
    implicit none
    private
 
-   public :: check_values, cross_field_checks, check_problem_t
+   public :: check_values, check_warnings, cross_field_checks, check_problem_t
    public :: N_CHECK_FIELDS, CHECK_FIELDS, N_CHECK_RULES, CHECK_RULES
 
    !> The deck fields the rules read, by name; v(k) / have(k) of cross_field_checks is field k.
-   integer, parameter :: N_CHECK_FIELDS = 23
-   character(len=*), parameter :: CHECK_FIELDS(N_CHECK_FIELDS) = [character(len=26) :: &
+   integer, parameter :: N_CHECK_FIELDS = 31
+   character(len=*), parameter :: CHECK_FIELDS(N_CHECK_FIELDS) = [character(len=27) :: &
       "shaft_inner_diameter", "shaft_outer_diameter", "bearing_outer_diameter", "housing_outer_diameter", &
       "pitch_diameter", "ball_diameter", "roller_diameter", "n_rolling_elements", "cage_inner_diameter", &
       "cage_outer_diameter", "outer_curvature_factor", "inner_curvature_factor", "free_contact_angle", &
       "diametral_play", "step_min", "step_initial", "step_max", "traction_at_zero_slip", "max_traction", &
-      "traction_at_infinite_slip", "applied_force_x", "applied_force_y", "applied_force_z"]
+      "traction_at_infinite_slip", "applied_force_x", "applied_force_y", "applied_force_z", &
+      "error_limit", "room_temperature", "housing_temperature", "shaft_temperature", &
+      "rolling_element_temperature", "outer_race_temperature", "inner_race_temperature", "cage_whirl_radius"]
    integer, parameter :: SHAFT_ID = 1, SHAFT_OD = 2, BEARING_OD = 3, HOUSING_OD = 4, PITCH = 5, BALL_D = 6, &
                          ROLLER_D = 7, N_ELEMENTS = 8, CAGE_ID = 9, CAGE_OD = 10, F_OUTER = 11, F_INNER = 12, &
                          ALPHA0 = 13, DIA_PLAY = 14, STEP_MIN = 15, STEP_INITIAL = 16, STEP_MAX = 17, &
-                         K_ZERO = 18, K_MAX = 19, K_INFINITE = 20, FORCE_X = 21, FORCE_Y = 22, FORCE_Z = 23
+                         K_ZERO = 18, K_MAX = 19, K_INFINITE = 20, FORCE_X = 21, FORCE_Y = 22, FORCE_Z = 23, &
+                         ERROR_LIMIT = 24, ROOM_T = 25, LAST_T = 30, WHIRL_R = 31
+
+   !> The plausible range of a temperature (K): the lubricant and material data of the
+   !> engine (the oils of tribology/film.f90, steels and ceramics) are those of bearings
+   !> running between these bounds.
+   real(wp), parameter :: PLAUSIBLE_T_MIN = 200.0_wp, PLAUSIBLE_T_MAX = 600.0_wp
+   !> The largest plausible step_max (dimensionless time; the appendix decks use 0.3) and
+   !> error_limit (the appendix decks use 1e-4).
+   real(wp), parameter :: PLAUSIBLE_STEP_MAX = 10.0_wp, PLAUSIBLE_ERROR_LIMIT = 1.0e-2_wp
 
    !> What each rule requires, in the order the rules are applied.
-   integer, parameter :: N_CHECK_RULES = 12
+   integer, parameter :: N_CHECK_RULES = 16
    character(len=*), parameter :: CHECK_RULES(N_CHECK_RULES) = [character(len=190) :: &
       "shaft_inner_diameter < shaft_outer_diameter: a hollow shaft's bore is inside its OD", &
       "shaft_outer_diameter < bearing_outer_diameter: bore inside the bearing OD", &
@@ -56,12 +67,19 @@ module adore_model_checks
       "max_traction > traction_at_zero_slip and > traction_at_infinite_slip (the traction-slip curve "// &
       "has its maximum at a positive slip).", &
       "applied_force_x, applied_force_y, applied_force_z not all 0: the echo's load scale (the largest "// &
-      "applied load) is undefined for an unloaded bearing; ADORE's rule for one is not known."]
+      "applied load) is undefined for an unloaded bearing; ADORE's rule for one is not known.", &
+      "warning: room_temperature and the Rec 2.7 temperatures between 200 K and 600 K (the lubricant and "// &
+      "material data hold there).", &
+      "warning: step_max <= 10 (dimensionless time; the appendix decks use 0.3).", &
+      "warning: error_limit <= 1e-2 (the appendix decks use 1e-4).", &
+      "warning: cage_whirl_radius below the cage's radial thickness (cage_outer_diameter - "// &
+      "cage_inner_diameter) / 2 (report 4.4.4: a whirl inside the cage's clearances)."]
 
    !> One violated relation: the field it is reported at (index into CHECK_FIELDS) and why.
    type :: check_problem_t
       integer :: field = 0
       character(len=:), allocatable :: message
+      logical :: warning = .false.   !< a legal but implausible value: reported, the run goes on
    end type check_problem_t
 
 contains
@@ -74,7 +92,7 @@ contains
       logical, intent(in) :: have(N_CHECK_FIELDS)
       type(check_problem_t), allocatable, intent(out) :: problems(:)
       character(len=:), allocatable :: dname
-      integer :: n, n_max, de
+      integer :: n, n_max, de, k
       real(wp) :: chord, d_outer, d_inner, worst
 
       allocate (problems(0))
@@ -132,6 +150,29 @@ contains
                      "applied_force_z are all 0): the echo's LOAD scale factor, the largest applied load, is "// &
                      "undefined for an unloaded bearing (ADORE's rule for one is not known)")
       end if
+      ! warnings: legal values no bearing runs at
+      do k = ROOM_T, LAST_T
+         if (.not. have(k)) cycle
+         if (v(k) < PLAUSIBLE_T_MIN .or. v(k) > PLAUSIBLE_T_MAX) &
+            call warn(k, "implausible temperature: outside "//show_real(PLAUSIBLE_T_MIN)//" to "// &
+                      show_real(PLAUSIBLE_T_MAX)//" K, where the lubricant and material data hold")
+      end do
+      if (have(STEP_MAX)) then
+         if (v(STEP_MAX) > PLAUSIBLE_STEP_MAX) &
+            call warn(STEP_MAX, "implausible: a largest step above "//show_real(PLAUSIBLE_STEP_MAX)// &
+                      " (dimensionless time; the appendix decks use 0.3) lets the error control alone limit the step")
+      end if
+      if (have(ERROR_LIMIT)) then
+         if (v(ERROR_LIMIT) > PLAUSIBLE_ERROR_LIMIT) &
+            call warn(ERROR_LIMIT, "implausible: an error limit above "//show_real(PLAUSIBLE_ERROR_LIMIT)// &
+                      " (the appendix decks use 1e-4) lets the integration error, not the physics, shape the motion")
+      end if
+      if (all(have([WHIRL_R, CAGE_ID, CAGE_OD]))) then
+         if (v(CAGE_OD) > v(CAGE_ID) .and. v(WHIRL_R) >= 0.5_wp*(v(CAGE_OD) - v(CAGE_ID))) &
+            call warn(WHIRL_R, "implausible: the prescribed cage whirl orbit (report 4.4.4) is not below the "// &
+                      "cage's radial thickness (cage_outer_diameter - cage_inner_diameter)/2 = "// &
+                      show_real(0.5_wp*(v(CAGE_OD) - v(CAGE_ID)))//" m; a whirl lies inside the cage's clearances")
+      end if
 
    contains
 
@@ -172,6 +213,13 @@ contains
          call append(problems, field, message)
       end subroutine add
 
+      subroutine warn(field, message)
+         integer, intent(in) :: field
+         character(len=*), intent(in) :: message
+         call append(problems, field, message)
+         problems(size(problems))%warning = .true.
+      end subroutine warn
+
    end subroutine cross_field_checks
 
    !> Append the problem (field, message) to problems.
@@ -187,14 +235,58 @@ contains
 
    !> The cross-field checks of a read deck: input error listing every violated relation at
    !> once, each at its deck field with a caret (adore_deck_problems' form), headed
-   !> "<path>: <n> problem(s) in the deck's values".
+   !> "<path>: <n> problem(s) in the deck's values".  Warnings (implausible values) do not
+   !> make an error: check_warnings reports them.
    subroutine check_values(deck, error)
       type(deck_t), intent(in) :: deck
       type(error_type), allocatable, intent(out) :: error
       type(check_problem_t), allocatable :: problems(:)
+      character(len=:), allocatable :: msg, text
+      integer :: k, r, f, n
+
+      call deck_problems(deck, problems)
+      n = count(.not. problems%warning)
+      if (n == 0) return
+      msg = ""
+      do k = 1, size(problems)
+         if (problems(k)%warning) cycle
+         call deck_find_first(deck, trim(CHECK_FIELDS(problems(k)%field)), r, f)
+         call deck_field_problem(deck, deck%records(r)%rid, trim(CHECK_FIELDS(problems(k)%field)), &
+                                 problems(k)%message, text)
+         msg = msg//new_line("a")//text
+      end do
+      call input_error(error, deck%path//": "//itoa(n)//" problem(s) in the deck's values"//msg)
+   end subroutine check_values
+
+   !> The warnings of the cross-field checks (legal but implausible values) of a read deck,
+   !> one line each ("<path>:<line>:<col>  Rec <id>  field <name> = <value>: <message>",
+   !> without the source line), joined by "; "; empty when there is none.
+   subroutine check_warnings(deck, warnings)
+      type(deck_t), intent(in) :: deck
+      character(len=:), allocatable, intent(out) :: warnings
+      type(check_problem_t), allocatable :: problems(:)
+      character(len=:), allocatable :: text
+      integer :: k, r, f
+
+      warnings = ""
+      call deck_problems(deck, problems)
+      do k = 1, size(problems)
+         if (.not. problems(k)%warning) cycle
+         call deck_find_first(deck, trim(CHECK_FIELDS(problems(k)%field)), r, f)
+         call deck_field_problem(deck, deck%records(r)%rid, trim(CHECK_FIELDS(problems(k)%field)), &
+                                 problems(k)%message, text)
+         if (index(text, new_line("a")) > 0) text = text(1:index(text, new_line("a")) - 1)
+         if (len(warnings) > 0) warnings = warnings//"; "
+         warnings = warnings//text
+      end do
+   end subroutine check_warnings
+
+   !> The cross-field rules applied to the first field of each name of CHECK_FIELDS in deck.
+   subroutine deck_problems(deck, problems)
+      type(deck_t), intent(in) :: deck
+      type(check_problem_t), allocatable, intent(out) :: problems(:)
       real(wp) :: v(N_CHECK_FIELDS)
       logical :: have(N_CHECK_FIELDS)
-      character(len=:), allocatable :: msg, text
       integer :: k, r, f
 
       v = 0.0_wp
@@ -209,15 +301,6 @@ contains
          end associate
       end do
       call cross_field_checks(v, have, problems)
-      if (size(problems) == 0) return
-      msg = ""
-      do k = 1, size(problems)
-         call deck_find_first(deck, trim(CHECK_FIELDS(problems(k)%field)), r, f)
-         call deck_field_problem(deck, deck%records(r)%rid, trim(CHECK_FIELDS(problems(k)%field)), &
-                                 problems(k)%message, text)
-         msg = msg//new_line("a")//text
-      end do
-      call input_error(error, deck%path//": "//itoa(size(problems))//" problem(s) in the deck's values"//msg)
-   end subroutine check_values
+   end subroutine deck_problems
 
 end module adore_model_checks

@@ -93,6 +93,12 @@ contains
       end if
       if (allocated(error)) return
 
+      ! coolant and thermal times (Rec 2.4, 2.5)
+      call deck_collect_int(deck, "2.4", "coolant_type", b%coolant%coolant_type, error)
+      call deck_collect_real(deck, "2.5", "coolant_inlet_temperature", b%coolant%inlet_temperature, error)
+      call deck_collect_real(deck, "2.5", "coolant_flow_rate", b%coolant%flow_rate, error)
+      call deck_collect_real(deck, "2.5", "thermal_time_1", b%coolant%thermal_time(1), error)
+      call deck_collect_real(deck, "2.5", "thermal_time_2", b%coolant%thermal_time(2), error)
       ! operating conditions (Rec 2.7, 9.0, 9.1, 11)
       call deck_collect_real(deck, "9.0", "room_temperature", b%temperature(TEMP_ROOM), error)
       call deck_collect_real(deck, "2.7", "housing_temperature", b%temperature(TEMP_HOUSING), error)

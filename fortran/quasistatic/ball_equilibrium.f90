@@ -43,6 +43,10 @@ module adore_quasistatic_ball_equilibrium
    public :: solve_ball_equilibrium, race_residual, ball_residual, contact_stiffness
    public :: inner_groove_centre, mounted_axial_origin
 
+   !> Levenberg-Marquardt damping of a singular race Jacobian, relative to its largest
+   !> entry (the race stiffness; the Jacobian of the race residual is -stiffness).
+   real(wp), parameter :: LM_DAMPING = 1.0e-6_wp
+
    !> Bearing data needed by the quasi-static solution.
    type :: ball_qs_bearing_t
       integer :: n_balls = 0
@@ -345,6 +349,17 @@ contains
             jr = jac(idx(1:nfree), idx(1:nfree))
             rr = res(idx(1:nfree))
             call solve_dense(nfree, jr, -rr, st, ok)
+            if (.not. ok) then
+               ! No ball carries load in some direction (a light load inside the clearance):
+               ! the race is free there.  A Levenberg-Marquardt step (J + mu I, mu a small
+               ! fraction of the largest stiffness) moves it along the residual until balls
+               ! take the load; the step halving below keeps each move an improvement.
+               jr = jac(idx(1:nfree), idx(1:nfree))
+               do k = 1, nfree
+                  jr(k, k) = jr(k, k) - LM_DAMPING*max(maxval(abs(jr)), tiny(1.0_wp))
+               end do
+               call solve_dense(nfree, jr, -rr, st, ok)
+            end if
             if (.not. ok) then
                call engine_error(error, "ball equilibrium: the inner race Jacobian is singular "// &
                                  "(no ball carries load in some direction)")

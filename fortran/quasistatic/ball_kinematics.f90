@@ -196,7 +196,12 @@ contains
       do j = 1, 2
          if (.not. (q(j) > 0.0_wp .and. a(j) > 0.0_wp)) cycle
          if (present(ehd)) then
-            call ehd_contact_power(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, pj, error)
+            if (ehd%h(j) > 0.0_wp) then
+               call ehd_contact_power(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, pj, error)
+            else
+               ! a contact without an EHD film: the deck's traction curve (docs/tribology.md)
+               call contact_power(c(j), law, 1.0_wp, n_gauss, pj, error)
+            end if
          else
             call contact_power(c(j), law, 1.0_wp, n_gauss, pj, error)
          end if

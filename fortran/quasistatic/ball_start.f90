@@ -123,6 +123,15 @@ contains
       mtol = MECH_TOL
       if (present(centrifugal_tol)) mtol = centrifugal_tol
       allocate (speed(b%n_balls), new_speed(b%n_balls), start%kinematics(b%n_balls))
+      if (w_outer == 0.0_wp .and. w_inner == 0.0_wp) then
+         ! both races at rest: the static solution, balls at rest (no slip, no loss, no
+         ! centrifugal force); there are no speeds to search for
+         speed = 0.0_wp
+         start%kinematics = ball_kinematics_t(ok=.true.)
+         start%passes = 1
+         call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
+         return
+      end if
       ! first guess: the epicyclic speed of a ball at the pitch diameter and zero angles
       speed = 0.5_wp*(w_inner*(1.0_wp - b%d/b%dm) + w_outer*(1.0_wp + b%d/b%dm))
       if (present(guess)) then

@@ -24,7 +24,7 @@ module adore_start_ball_step0
                                                 ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
    use adore_forces_race_contact, only: PRINT_GAUSS, ehd_traction_model, wall_temperature, wall_rheology, &
-                                           lubricant_film, check_ehd_film, ehd_traction, ehd_flash, law_flash, &
+                                           lubricant_film, ehd_film_present, ehd_traction, ehd_flash, law_flash, &
                                            printed_slip
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start, is_loaded
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
@@ -139,7 +139,10 @@ contains
       call solve_ball_start(qb, ld, b%speed_outer, b%speed_inner, s%start_method, s%start, error, &
                             b%race_traction, centrifugal_tol=centrifugal_tol)
       if (allocated(error)) return
-      if (ehd_traction_model(b) .and. s%start_method == MIN_DISSIPATION) then
+      ! With both races at rest nothing entrains a film: the start with the deck's curve is
+      ! the static solution (no EHD iteration; its films would shrink towards 0 without end).
+      if (ehd_traction_model(b) .and. s%start_method == MIN_DISSIPATION .and. &
+          (b%speed_outer /= 0.0_wp .or. b%speed_inner /= 0.0_wp)) then
          call ehd_start(error)
          if (allocated(error)) return
       end if
@@ -216,6 +219,7 @@ contains
          real(wp) :: change
          integer :: iter
          logical, allocatable :: loaded(:)
+         real(wp), parameter :: FILM_FLOOR = 1.0e-9_wp    ! m
 
          call current_films(films, error)
          if (allocated(error)) return
@@ -228,8 +232,10 @@ contains
             if (allocated(error)) return
             ! only the loaded balls' films set speeds (unloaded ones follow the cage)
             loaded = is_loaded(s%start%equilibrium%q_i)
-            change = maxval(abs(next%h(1) - films%h(1))/max(next%h(1), tiny(1.0_wp)), mask=loaded)
-            change = max(change, maxval(abs(next%h(2) - films%h(2))/max(next%h(2), tiny(1.0_wp)), mask=loaded))
+            ! relative to the film, or to 1 nm where there is next to none (a shaft at rest:
+            ! no entraining speed, no film; 1 nm is far below any surface roughness)
+            change = maxval(abs(next%h(1) - films%h(1))/max(next%h(1), FILM_FLOOR), mask=loaded)
+            change = max(change, maxval(abs(next%h(2) - films%h(2))/max(next%h(2), FILM_FLOOR), mask=loaded))
             films = next
             if (change <= 1.0e-5_wp) return
          end do
@@ -258,9 +264,8 @@ contains
                call lubricant_film(b, b%temperature, t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
                                    h, phi, error)
                if (allocated(error)) return
-               call check_ehd_film(b, b%temperature, k, j, h, phi, error)
-               if (allocated(error)) return
-               films(k)%h(j) = h*phi
+               ! no film: 0, and the search takes the deck's curve for that contact
+               films(k)%h(j) = merge(h*phi, 0.0_wp, ehd_film_present(h, phi))
             end do
          end do
       end subroutine current_films
@@ -329,9 +334,7 @@ contains
                                       s%thermal_factor(j, k), error)
                   if (allocated(error)) return
                end if
-               if (ehd) then
-                  call check_ehd_film(b, b%temperature, k, j, s%film(j, k), s%thermal_factor(j, k), error)
-                  if (allocated(error)) return
+               if (ehd .and. ehd_film_present(s%film(j, k), s%thermal_factor(j, k))) then
                   h = s%film(j, k)*s%thermal_factor(j, k)
                   ! the print's losses and tractions by the reference quadrature
                   call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error, reference=.true.)

@@ -4,7 +4,7 @@ module adore_test_support
    implicit none
    private
 
-   public :: check, finish, get_decks_dir
+   public :: check, finish, get_decks_dir, near
 
    !> Failed checks of this test program so far.
    integer :: failures = 0
@@ -20,6 +20,13 @@ contains
          write (*, "(a)") "FAIL: "//what
       end if
    end subroutine check
+
+   !> Whether a and b agree within relative tolerance rtol (of the larger magnitude).
+   pure logical function near(a, b, rtol)
+      use adore_core_kinds, only: wp
+      real(wp), intent(in) :: a, b, rtol
+      near = abs(a - b) <= rtol*max(abs(a), abs(b), tiny(1.0_wp))
+   end function near
 
    !> Print the verdict of test program `suite`; exit status 1 when a check failed.
    subroutine finish(suite)

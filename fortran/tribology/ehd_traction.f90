@@ -24,7 +24,7 @@
 module adore_tribology_ehd_traction
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
-   use adore_core_error, only: error_type, input_error
+   use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
@@ -458,7 +458,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load > 0.0_wp &
                  .and. c%r_b > c%rho .and. abs(c%side) == 1 .and. b > 0.0_wp)) then
-         call input_error(error, "EHD traction: need 0 < a < rho < r_b, b > 0, load > 0, side = +-1")
+         call engine_error(error, "EHD traction: the contact is outside the model (need 0 < a < rho < r_b, "// &
+                           "b > 0, load > 0): a conformity, fit or speed beyond the Hertz contact")
          return
       end if
       if (.not. (h > 0.0_wp .and. rheo%eta_w > 0.0_wp .and. rheo%alpha >= 0.0_wp .and. rheo%beta >= 0.0_wp &

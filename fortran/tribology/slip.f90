@@ -19,7 +19,7 @@
 module adore_tribology_slip
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
-   use adore_core_error, only: error_type, input_error
+   use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_traction_law, only: traction_law_t, law_kappa
    use adore_contact_ball_race_kinematics, only: ball_race_contact_t, SIDE_OUTER, SIDE_INNER
@@ -250,14 +250,22 @@ contains
       n = nz*n_gauss
    end subroutine axis_nodes
 
-   !> Input error unless contact c and n_gauss suit contact_traction.
+   !> Engine error unless contact c lies inside the traction model (0 < a < rho < r_b: the
+   !> contact ellipse inside the groove, the groove wider than the ball); input error unless
+   !> n_gauss >= 1.
    subroutine check_law_contact(c, n_gauss, error)
       type(ball_race_contact_t), intent(in) :: c
       integer, intent(in) :: n_gauss
       type(error_type), allocatable, intent(out) :: error
+      character(len=600) :: buf
       if (.not. (c%rho > 0.0_wp .and. c%a > 0.0_wp .and. c%a < c%rho .and. c%load >= 0.0_wp &
                  .and. c%r_b > c%rho .and. abs(c%side) == 1)) then
-         call input_error(error, "contact traction: need 0 < a < rho < r_b, load >= 0, side = +-1")
+         write (buf, "(a,es10.3,a,es10.3,a,es10.3,a,es10.3,a)") "contact traction: the contact is outside the "// &
+            "model (need 0 < a < rho < r_b): semi-major axis a =", c%a, " m, contact surface radius about the "// &
+            "ball centre rho =", c%rho, " m, ball-centre radius r_b =", c%r_b, " m, load", c%load, &
+            " N; the contact ellipse is as large as the ball: a conformity this close (curvature factor near "// &
+            "0.5), an interference fit or a speed this large loads the contact beyond the Hertz model"
+         call engine_error(error, trim(buf))
          return
       end if
       if (n_gauss < 1) then

@@ -21,18 +21,20 @@ def cross_field_rules() -> tuple[str, ...]:
     return _names(2)
 
 
-def cross_field_problems(values: dict[str, object]) -> list[tuple[str, str]]:
+def cross_field_problems(values: dict[str, object]) -> list[tuple[str, str, bool]]:
     """The engine's cross-field checks (the ones ``adore`` applies before a run) on deck values.
 
     ``values`` maps each name of :func:`cross_field_fields` to its value in the deck (the first
     field of that name, schema SI units), None or absent when missing or unreadable.
-    Returns ``(field name, message)`` per violated relation, in rule order.
+    Returns ``(field name, message, warning)`` per violated relation, in rule order;
+    ``warning`` is True for a legal but implausible value (the run goes on), False for an
+    error (the run refuses the deck).
     """
     names = cross_field_fields()
     nums = [values.get(n) for n in names]
     have = [int(isinstance(v, (int, float)) and not isinstance(v, bool)) for v in nums]
     vals = [float(v) if h else 0.0 for v, h in zip(nums, have)]
-    n, fields, messages, status, message = _engine().adore_deck_cross_checks(vals, have, len(names) + 8)
+    n, fields, warning, messages, status, message = _engine().adore_deck_cross_checks(vals, have, len(names) + 8)
     check(int(status), message)
     texts = _text(messages).split("\n") if n else []
-    return [(names[fields[i] - 1], texts[i]) for i in range(int(n))]
+    return [(names[fields[i] - 1], texts[i], bool(warning[i])) for i in range(int(n))]

@@ -18,14 +18,14 @@ loads the compiled engine; validation calls the engine's cross-field checks
 
 from __future__ import annotations
 
-from .model import PROBLEM_KINDS, Deck, DeckError, FieldValue, Problem, Record
+from .model import PROBLEM_KINDS, Deck, DeckError, DeckFieldError, FieldValue, Problem, Record
 from .reader import check_deck, parse_text, read_deck
 from .schema import all_specs, record_spec
 from .writer import format_deck, write_deck
 
 __all__ = [
     "read_deck", "check_deck", "write_deck", "format_deck", "parse_text", "field_table",
-    "run_validate", "Deck", "Record", "FieldValue", "Problem", "DeckError", "PROBLEM_KINDS",
+    "run_validate", "Deck", "Record", "FieldValue", "Problem", "DeckError", "DeckFieldError", "PROBLEM_KINDS",
     "all_specs", "record_spec",
 ]
 

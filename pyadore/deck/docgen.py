@@ -150,8 +150,20 @@ def _validation() -> list[str]:
             "and `pyadore validate` calls the same checks through the extension "
             "(`pyadore._core.cross_field_problems`) and reports them, in the same lines, with the "
             "reading, range and record problems: validate accepts exactly the decks whose values the "
-            "engine accepts.  The last rule is a limit of this engine rather than an inconsistency "
-            "(a deck without any applied force, Rec 9.1.1).", "",
+            "engine accepts.  The rule on the applied force is a limit of this engine rather than an "
+            "inconsistency (a deck without any applied force, Rec 9.1.1).", "",
+            "The rules marked *warning* flag legal but implausible values: `pyadore validate` prints them "
+            "(`warning: file:line:col ...`) and exits 0, `adore` and `pyadore run` name them in the run's "
+            "note (`deck warnings: ...`) and run.  A legal deck whose operating point lies outside a "
+            "model (a Hertz contact as large as the ball; an EHD film that Gupta's thermal reduction takes "
+            "to zero) is not refused as input: the run ends with an engine error (exit 2) that names the "
+            "contact and its numbers.  `tests/test_validate_run_agree.py` holds both to one rule set on the "
+            "targeted decks of issue #28 and a fuzz corpus.", "",
+            "Fields are fixed columns of ASCII characters (ADORE reads bytes): a non-ASCII character "
+            "in a record without text fields (a full-width or Arabic-Indic digit, a no-break space) is "
+            "one `format` problem at its column, and that record's fields are left unread.  A message "
+            "lists at most 50 problems and counts the rest; a source line longer than 160 characters is "
+            "shown as a 160-character window around the caret.  Both readers apply these rules alike.", "",
             "The malformed decks in `tests/data/bad_decks/` and their expectations "
             "(`expected.json`: file -> record id, field, problem class, line) are shared by the "
             "Python reader's tests and the Fortran reader's.", ""]
@@ -181,9 +193,22 @@ def _unknowns() -> list[str]:
             "identifies them: " + ", ".join(names) + ".", ""]
 
 
+def _derived() -> list[str]:
+    from .derived import DERIVED_FIELDS
+
+    rows = [f"| `{d.name}` | {d.unit} | {d.meaning} | Rec {d.record} `{d.sets}` |" for d in DERIVED_FIELDS.values()]
+    return ["## Derived fields", "",
+            "Inputs that the deck stores as another field (`pyadore/deck/derived.py`). `Deck.set`, "
+            "`Deck.lookup`, `pyadore.run(..., overrides=)` and `pyadore sweep --vary` take them like a deck "
+            "field; the deck file holds the field they set.  `diametral_clearance`: "
+            "`cos alpha0 = 1 - P_d / (2 (f_o + f_i - 1) D)` (Harris & Kotzalas, *Essential Concepts of "
+            "Bearing Technology*, 5th ed., 2.3), alpha0 rounded to the digits its 11 columns hold.",
+            "", "| name | unit | meaning | sets |", "|---|---|---|---|", *rows, ""]
+
+
 def generate() -> str:
     """The full text of docs/deck-format.md."""
-    parts = [_INTRO, *_records(), *_validation(), *_provenance(), *_unknowns()]
+    parts = [_INTRO, *_records(), *_validation(), *_derived(), *_provenance(), *_unknowns()]
     return "\n".join(parts).rstrip() + "\n"
 
 

@@ -13,18 +13,43 @@ import json
 from pathlib import Path
 
 from .problems import PROBLEM_KINDS, DeckError, Problem
-from .schema import record_spec
+from .schema import all_specs, record_spec
 from .validate import validate_deck
 from .values import FieldValue, Record
 from .writer import write_deck
 
-__all__ = ["Problem", "FieldValue", "Record", "Deck", "DeckError", "PROBLEM_KINDS"]
+__all__ = ["Problem", "FieldValue", "Record", "Deck", "DeckError", "DeckFieldError", "PROBLEM_KINDS"]
+
+
+class DeckFieldError(DeckError, KeyError):
+    """A field name that names no field of the deck, or several (:meth:`Deck.locate`): a
+    :class:`DeckError` (so an AdoreInputError) and a KeyError."""
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else ""
+
+
+def _unknown_field(name: str, deck: "Deck") -> DeckFieldError:
+    """Why ``name`` names no field of ``deck``: the records of the schema that have it, or
+    the deck's field names closest to it."""
+    import difflib
+
+    known = [spec.rid for spec in all_specs() if any(f.name == name for f in spec.fields)]
+    if known:
+        recs = ", ".join(f"Rec {r}" for r in known)
+        return DeckFieldError(f"{name}: the field is in {recs}, which this deck ({deck.path}) does not have")
+    in_deck = sorted({n for rec in deck.records for n in rec.fields})
+    close = difflib.get_close_matches(name, in_deck, n=4, cutoff=0.6)
+    hint = f"; did you mean {', '.join(close)}?" if close else ""
+    return DeckFieldError(f"{name}: no deck field of that name{hint} (field names are those of "
+                          f"docs/deck-format.md, e.g. inner_race_speed, applied_force_z, inner_race_fit)")
 
 
 class Deck:
     """A parsed ADORE deck: ``records`` in deck order, ``path`` it came from.
 
-    Field access: ``deck.get("5A", "pitch_diameter")``; ``deck.set(...)`` changes a value
+    Field access: ``deck.get("5A", "pitch_diameter")`` or ``deck.lookup("pitch_diameter")``;
+    ``deck.set("inner_race_speed", 15000.0)`` (or with the record id first) changes a value
     (the record is then re-formatted by the writer instead of copied verbatim).
     """
 
@@ -45,22 +70,93 @@ class Deck:
             return default
         return rec.fields[name].value
 
-    def set(self, rid: str, name: str, value) -> None:
-        """Set field ``name`` of record ``rid`` (KeyError if absent).  The value must have the
-        field's kind (int for ``int`` fields, float for ``real``, str for ``text``)."""
-        rec = self.record(rid)
-        if rec is None or name not in rec.fields:
-            raise KeyError(f"Rec {rid} field {name}")
-        fv = rec.fields[name]
-        fv.value = value
-        fv.blank = False
+    def locate(self, name: str) -> tuple[list[Record], str]:
+        """The records holding the field ``name`` and the field's name: ``FIELD`` when one
+        record of the deck has a field of that name, ``REC/FIELD`` to choose among several
+        (``9.1.1/applied_force_x``; a record type such as ``7.2.n`` names every occurrence).
+        Raises :class:`DeckFieldError` (a KeyError) saying what is wrong: no such field (with
+        the closest names), a record the deck lacks, several records without ``REC/``."""
+        if "/" in name:
+            rid, field = (s.strip() for s in name.split("/", 1))
+            hits = [r for r in self.records if r.rid == rid or r.spec.rid == rid]
+            if not hits:
+                raise DeckFieldError(f"{name}: this deck ({self.path}) has no Rec {rid}")
+            held = [r for r in hits if field in r.fields]
+            if not held:
+                raise DeckFieldError(f"{name}: Rec {rid} has no field {field}; its fields are "
+                               f"{', '.join(hits[0].fields)}")
+            return held, field
+        field = name.strip()
+        hits = [r for r in self.records if field in r.fields]
+        if not hits:
+            raise _unknown_field(field, self)
+        if len(hits) > 1:
+            raise DeckFieldError(f"{name}: the field is in several records of this deck; name one as REC/FIELD: "
+                           + ", ".join(f"{r.rid}/{field}" for r in hits))
+        return hits, field
+
+    def set(self, *args) -> None:
+        """Set a field: ``deck.set("inner_race_speed", 15000.0)`` by field name as
+        :meth:`lookup` takes it (``REC/FIELD`` where several records have the field:
+        :meth:`locate`; a derived field such as ``diametral_clearance`` sets the field it
+        stands for, :mod:`pyadore.deck.derived`), or ``deck.set("9.1.1", "applied_force_x", 500.0)`` by record id and
+        field.  KeyError (:class:`DeckFieldError` for a field name) when the field is absent
+        (or the name ambiguous).  The value must
+        have the field's kind (int for ``int`` fields, a number for ``real``, str for
+        ``text``); an int given to a real field is stored as float."""
+        if len(args) == 3:
+            rid, name, value = args
+            rec = self.record(rid)
+            if rec is None or name not in rec.fields:
+                raise KeyError(f"Rec {rid} field {name}")
+            records = [rec]
+        elif len(args) == 2:
+            field, value = args
+            derived = self._derived(field)
+            if derived is not None:
+                derived.set(self, value)
+                return
+            records, name = self.locate(field)
+        else:
+            raise TypeError(f"Deck.set takes (field, value) or (record id, field, value), got {len(args)} "
+                            "arguments")
+        for rec in records:
+            fv = rec.fields[name]
+            if fv.spec.kind == "real" and isinstance(value, int) and not isinstance(value, bool):
+                value = float(value)
+            fv.value = value
+            fv.blank = False
 
     def lookup(self, name: str):
-        """Value of the first field called ``name`` anywhere in the deck (None if absent)."""
+        """Value of the first field called ``name`` anywhere in the deck (None if absent);
+        ``REC/FIELD`` names the record (:meth:`locate`); a derived field
+        (:mod:`pyadore.deck.derived`, e.g. ``diametral_clearance``) is computed."""
+        derived = self._derived(name)
+        if derived is not None:
+            try:
+                return derived.get(self)
+            except DeckError:
+                return None
+        if "/" in name:
+            try:
+                records, field = self.locate(name)
+            except DeckFieldError:
+                return None
+            return records[0].fields[field].value
         for rec in self.records:
             if name in rec.fields:
                 return rec.fields[name].value
         return None
+
+    def _derived(self, name: str):
+        """The derived field ``name`` (:data:`pyadore.deck.derived.DERIVED_FIELDS`) when the
+        deck has no field of that name, else None."""
+        from .derived import DERIVED_FIELDS
+
+        derived = DERIVED_FIELDS.get(str(name).strip())
+        if derived is None or any(derived.name in r.fields for r in self.records):
+            return None
+        return derived
 
     def values(self) -> dict[str, object]:
         """All field values by name (first occurrence wins), as the schema conditions see them."""

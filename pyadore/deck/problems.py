@@ -7,7 +7,15 @@ from dataclasses import dataclass
 
 from ..errors import AdoreInputError
 
-__all__ = ["Problem", "DeckError", "PROBLEM_KINDS"]
+__all__ = ["Problem", "DeckError", "PROBLEM_KINDS", "MAX_SHOWN_PROBLEMS", "SOURCE_WINDOW", "shown_source",
+           "format_problems"]
+
+#: At most this many problems are listed in one message; the rest are counted
+#: (fortran/deck/problems.f90 uses the same number).
+MAX_SHOWN_PROBLEMS = 50
+#: A source line longer than this many characters is shown as a window of this width
+#: around the caret, cut ends marked "..." (fortran/deck/problems.f90: the same rule).
+SOURCE_WINDOW = 160
 
 #: Problem classes (also used in tests/data/bad_decks/expected.json).
 PROBLEM_KINDS = (
@@ -24,6 +32,8 @@ PROBLEM_KINDS = (
     "surplus_record",  # a record where none is expected (duplicate, out of order, after the end)
     "unknown_record",  # a label naming no record of the schema
 )
+# A warning (pyadore.deck.validate.deck_warnings: a legal but implausible value, reported
+# while the run goes on) is a Problem of kind "warning", not a problem class of a bad deck.
 
 
 @dataclass
@@ -57,8 +67,8 @@ class Problem:
         head += f": {self.message}"
         if self.source_line is None:
             return head
-        caret = " " * max(self.col - 1, 0) + "^"
-        shown = self.source_line.replace("\t", " ")  # one column per character, so the caret lines up
+        shown, col = shown_source(self.source_line.replace("\t", " "), self.col)  # one column per character
+        caret = " " * max(col - 1, 0) + "^"
         return f"{head}\n    {shown}\n    {caret}"
 
     def to_dict(self) -> dict:
@@ -78,6 +88,30 @@ def _show(v: object) -> str:
     return str(v)
 
 
+def shown_source(line: str, col: int) -> tuple[str, int]:
+    """The part of a source ``line`` shown under a problem and the caret's column in it:
+    the whole line up to :data:`SOURCE_WINDOW` characters, else a window of that width
+    around column ``col`` (1-based, characters) with "..." marking each cut end."""
+    n = len(line)
+    if n <= SOURCE_WINDOW:
+        return line, col
+    start = max(0, col - 1 - SOURCE_WINDOW // 2)
+    end = min(n, start + SOURCE_WINDOW)
+    start = max(0, end - SOURCE_WINDOW)
+    head = "..." if start > 0 else ""
+    tail = "..." if end < n else ""
+    return head + line[start:end] + tail, col - start + len(head)
+
+
+def format_problems(problems: list[Problem]) -> list[str]:
+    """The formatted problems, at most :data:`MAX_SHOWN_PROBLEMS` of them, then one line
+    counting the rest."""
+    out = [p.format() for p in problems[:MAX_SHOWN_PROBLEMS]]
+    if len(problems) > MAX_SHOWN_PROBLEMS:
+        out.append(f"... and {len(problems) - MAX_SHOWN_PROBLEMS} more problem(s) not shown")
+    return out
+
+
 def _jsonable(v):
     return v if isinstance(v, (int, float, str, type(None))) else str(v)
 
@@ -93,4 +127,4 @@ class DeckError(AdoreInputError):
         base = super().__str__()
         if not self.problems:
             return base
-        return base + "\n" + "\n".join(p.format() for p in self.problems)
+        return base + "\n" + "\n".join(format_problems(self.problems))

@@ -168,6 +168,17 @@ class _Reader:
         if "\t" in line:
             self.problem(lineno, line.index("\t") + 1, exp.rid, None, None,
                          "tab character: expected blanks (fields are fixed columns)", "format")
+        # Numbers live in fixed ASCII columns (ADORE reads bytes): a non-ASCII character in a
+        # record without text fields is one problem, and its fields are left unread (their
+        # columns cannot be told apart); fortran/deck/parser.f90 applies the same rule.
+        foreign = None
+        if not any(fs.kind == "text" for fs in spec.fields):
+            foreign = next((i for i, ch in enumerate(line[offset:], offset) if ord(ch) > 127), None)
+        if foreign is not None:
+            ch = line[foreign]
+            self.problem(lineno, foreign + 1, exp.rid, None, None,
+                         f"non-ASCII character '{ch}' (U+{ord(ch):04X}): expected ASCII digits, signs, points, "
+                         "exponent letters and blanks (fields are fixed columns of ASCII characters)", "format")
         fields: dict[str, FieldValue] = {}
         local: dict[str, object] = {}
         pos = offset
@@ -177,6 +188,8 @@ class _Reader:
                 names = [(fs.name, fs)]
             else:
                 n = local.get(fs.count)
+                if foreign is not None:
+                    break
                 if not isinstance(n, int) or n < 0:
                     self.problem(lineno, pos + 1, exp.rid, fs.name, None,
                                  f"cannot read: its count {fs.count} is unreadable", "type")
@@ -184,6 +197,11 @@ class _Reader:
                 names = [(f"{fs.name}[{i}]", fs) for i in range(1, n + 1)]
             tokens, _ = cut_fields(line, pos, names)
             for (name, s), tok in zip(names, tokens):
+                if foreign is not None:
+                    fields[name] = FieldValue(name, s, None, False, lineno, tok.col, tok.text)
+                    local[name] = None
+                    pos += s.width
+                    continue
                 value, blank, err = parse_value(s, tok.text)
                 if err:
                     kind = "missing_value" if blank else "type"
@@ -194,7 +212,9 @@ class _Reader:
                 pos += s.width
         _, extra = cut_fields(line, pos, [])
         text_fields = [f for f in fields.values() if f.spec.kind == "text"]
-        if extra is not None and text_fields:
+        if foreign is not None:
+            pass
+        elif extra is not None and text_fields:
             tf = text_fields[-1]
             full = (tf.raw + line[pos:]).rstrip()
             self.problem(lineno, extra.col, exp.rid, tf.name, full.strip(),

@@ -77,8 +77,8 @@ RECORDS: tuple[RecordSpec, ...] = (
         F("n_steps", "int", "-", "number of time steps (echo NO OF STEPS; 'Last Step Number = 2500')",
           "", "echo", lo=0),
         F("rec1_flag_13", "int", "-", "unknown; 0 in both decks, not echoed", "", "unknown", default=0),
-        F("int_method", "int", "-", "integration method (echo INT METHOD; 5 in both decks)", "", "echo",
-          lo=0),
+        F("int_method", "int", "-", "integration method (echo INT METHOD; 5 in both decks): 5 = "
+          "Dormand-Prince 5(4), 3 = Bogacki-Shampine 3(2) (docs/dynamics.md)", "", "echo", choices=(3, 5)),
     ), section="4.4.5, 4.4.6; echo: SCALE FACTORS AND OUTPUT CONTROLS",
         notes="The last three fields stand apart from the first eleven in the text copy of both listings."),
     RecordSpec("2.1", "Step size information", (
@@ -86,7 +86,8 @@ RECORDS: tuple[RecordSpec, ...] = (
         _pos("step_min", "-", "minimum step size (echo MINIMUM)"),
         _pos("step_max", "-", "maximum step size (echo MAXIMUM)"),
         _real("rec2_1_value_4", "-", "unknown; 1.0E+03 in both decks, not echoed", evidence="unknown"),
-        _pos("error_limit", "-", "integration error limit (echo ERROR LIMIT)"),
+        F("error_limit", "real", "-", "integration error limit (echo ERROR LIMIT)", "", "echo", lo=0.0,
+          lo_open=True, hi=1.0, hi_open=True),
         F("constraining_load_fraction", "real", "-", "constraining load fraction of the quasi-static "
           "start (echo CONSTRAINING LOAD FRACTION)", "", "echo", default=0.0, lo=0.0, hi=1.0),
     ), section="echo: STEP SIZE INFO"),
@@ -129,8 +130,8 @@ RECORDS: tuple[RecordSpec, ...] = (
         F("bearing_type", "int", "-", "bearing type: 1 = ball, 2 = cylindrical roller (ADORE also "
           "defines 3-5, whose geometry records are not in this schema)", "kBrg", "A; echo",
           choices=(1, 2)),
-        F("n_rolling_elements", "int", "-", "number of rolling elements (echo NO OF BALLS / ROLLERS)",
-          "nRe", "echo", lo=1, hi=999),
+        F("n_rolling_elements", "int", "-", "number of rolling elements (echo NO OF BALLS / ROLLERS); at "
+          "least 3: fewer cannot hold the inner race radially in every direction", "nRe", "echo", lo=3, hi=999),
         *(F(f"material_flag_{part}", "int", "-", f"inferred: 1 = {part.replace('_', ' ')} material "
             f"given on Rec {rid}, 0 = default steel. Fields 4-9 of the roller line are 1 0 0 0 0 0 and "
             "only that deck has Rec 8.1 (ceramic rollers); six flags match the six echo columns",
@@ -214,8 +215,9 @@ RECORDS: tuple[RecordSpec, ...] = (
           "echo", lo=0.0),
         F("cage_inner_clearance", "real", "m", "inner diametral clearance (echo INNER CLS)", "cageCls(2)",
           "echo", lo=0.0),
-        F("pocket_clearance_1", "real", "m", "pocket clearance I (echo POC CLS I)", "bPocCls(1)", "echo",
-          lo=0.0),
+        F("pocket_clearance_1", "real", "m", "pocket clearance I (echo POC CLS I); > 0: an element without "
+          "clearance touches both pocket walls at the start (report 4.4.12)", "bPocCls(1)", "echo", lo=0.0,
+          lo_open=True),
         F("pocket_clearance_2", "real", "m", "pocket clearance II (echo POC CLS II)", "bPocCls(2)", "echo",
           default=0.0, lo=0.0),
         F("segment_cut_angle", "real", "deg", "angular cut of a segmented cage (echo SEG CUT)",
@@ -228,8 +230,9 @@ RECORDS: tuple[RecordSpec, ...] = (
         _pos("guide_land_width", "m", "guide land width (echo GUIDE LAND WIDTH)", "cageGsWidth"),
         _real("guide_land_position", "m", "axial position of the land (echo GUIDE LAND POSITION)",
               "cageGsPos", default=None),
-        F("guide_land_clearance", "real", "m", "guide land diametral clearance (echo GUIDE LAND CLS)",
-          "cageGsCls", "echo", lo=0.0),
+        F("guide_land_clearance", "real", "m", "guide land diametral clearance (echo GUIDE LAND CLS); > 0: "
+          "a cage without land clearance starts in contact with its land", "cageGsCls", "echo", lo=0.0,
+          lo_open=True),
     ), repeat="n_guide_lands", section="4.4.8; echo: GUIDE LAND"),
     _material("8.1", "rolling element", "material_flag_rolling_element"),
     _material("8.2", "outer race", "material_flag_outer_race"),

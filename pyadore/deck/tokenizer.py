@@ -25,10 +25,10 @@ __all__ = ["Token", "split_label", "cut_fields", "parse_value", "LABEL_PREFIX"]
 #: A labelled line starts with this text (case-insensitive) in column 1.
 LABEL_PREFIX = "rec "
 
-_INT_RE = re.compile(r"^[+-]?\d+$")
+_INT_RE = re.compile(r"^[+-]?[0-9]+$")
 # mantissa with a decimal point, optional exponent: E/D letter with optional sign, or a bare sign
-_REAL_RE = re.compile(r"^[+-]?(\d+\.\d*|\.\d+)(?:[EeDd][+-]?\d+|[+-]\d+)?$")
-_REAL_NO_POINT_RE = re.compile(r"^[+-]?\d+(?:[EeDd][+-]?\d+)?$")
+_REAL_RE = re.compile(r"^[+-]?([0-9]+\.[0-9]*|\.[0-9]+)(?:[EeDd][+-]?[0-9]+|[+-][0-9]+)?$")
+_REAL_NO_POINT_RE = re.compile(r"^[+-]?[0-9]+(?:[EeDd][+-]?[0-9]+)?$")
 
 
 @dataclass(frozen=True)

@@ -17,7 +17,7 @@ from .values import FieldValue, Record
 if TYPE_CHECKING:  # annotations only: model.py imports this module
     from .model import Deck
 
-__all__ = ["validate_deck"]
+__all__ = ["validate_deck", "deck_warnings"]
 
 
 def _problem(deck: Deck, rec: Record | None, fv: FieldValue | None, msg: str, kind: str) -> Problem:
@@ -62,15 +62,24 @@ def _num(deck: Deck, name: str):
     return None if fv is None else fv.value
 
 
-def _cross_fields(deck: Deck) -> list[Problem]:
+def _cross_fields(deck: Deck, warnings: bool = False) -> list[Problem]:
     """The engine's cross-field checks (fortran/model/checks.f90, the ones ``adore`` applies
-    before a run), each reported at its field of this deck."""
+    before a run), each reported at its field of this deck: the errors, or with
+    ``warnings`` the warnings (legal but implausible values, kind ``warning``)."""
     values = {name: _num(deck, name) for name in _core.cross_field_fields()}
     out = []
-    for name, message in _core.cross_field_problems(values):
+    for name, message, warning in _core.cross_field_problems(values):
+        if warning != warnings:
+            continue
         rec, fv = _find(deck, name)
-        out.append(_problem(deck, rec, fv, message, "cross_field"))
+        out.append(_problem(deck, rec, fv, message, "warning" if warning else "cross_field"))
     return out
+
+
+def deck_warnings(deck: Deck) -> list[Problem]:
+    """Legal but implausible values of ``deck`` (kind ``warning``): the engine's warning
+    rules (fortran/model/checks.f90), which ``adore`` reports in its run note and runs on."""
+    return _cross_fields(deck, warnings=True)
 
 
 def _structure(deck: Deck) -> list[Problem]:

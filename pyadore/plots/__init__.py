@@ -34,7 +34,8 @@ from .cage import cage_land_force, cage_orbit, cage_velocities, pocket_force
 from .history import history_from_print, time_history
 from .load import load_distribution
 from .performance import bulk_temperatures, power_loss, race_contacts, wear_rates
-from .sets import FIGURE_TYPES, SETS, FigureSet, FigureType, make_set, png_name, write_pdf, write_pngs
+from .sets import (FIGURE_TYPES, SETS, FigureSet, FigureType, figure_types, make_set, png_name, skipped_lines,
+                   write_image, write_pdf, write_pngs)
 from .sources import Source, load
 from .traction import traction_slip
 
@@ -61,6 +62,9 @@ __all__ = [
     "FigureType",
     "FigureSet",
     "make_set",
+    "figure_types",
+    "skipped_lines",
+    "write_image",
     "write_pdf",
     "write_pngs",
     "png_name",

@@ -123,14 +123,42 @@ def history_from_print(run) -> pd.DataFrame:
 
 def time_history(source) -> pd.DataFrame:
     """The time-history table of a :class:`~pyadore.plots.sources.Source`: the one it
-    carries, else the one built from its print's steps."""
+    carries, else the one built from its print's steps; only the rows in its time window
+    (``source.window``, s) when it has one."""
     if source.history is not None:
         frame = source.history
         if frame.index.name != "time_s":
             raise ValueError(f"{source.label}: a time-history DataFrame is indexed by time_s (s), "
                              f"got index {frame.index.name!r}")
+    else:
+        frame = history_from_print(source.run)
+    return in_window(frame, getattr(source, "window", None))
+
+
+def in_window(frame: pd.DataFrame, window) -> pd.DataFrame:
+    """The rows of ``frame`` (index time_s) with start <= time <= end (``window`` =
+    (start, end) in s, either None for open; None: every row)."""
+    if window is None:
         return frame
-    return history_from_print(source.run)
+    start, end = window
+    t = frame.index.to_numpy(float)
+    keep = np.ones(len(t), dtype=bool)
+    if start is not None:
+        keep &= t >= start - 1e-12
+    if end is not None:
+        keep &= t <= end + 1e-12
+    return frame[keep]
+
+
+def window_text(window) -> str:
+    """``the time window 10 ms to 62.5 ms`` for messages ("" without a window)."""
+    if window is None:
+        return ""
+    start, end = window
+    show = (lambda t: f"{t * 1e3:g} ms")
+    if start is not None and end is not None:
+        return f"the time window {show(start)} to {show(end)}"
+    return f"the time window from {show(start)}" if start is not None else f"the time window up to {show(end)}"
 
 
 def finite(history: pd.DataFrame, column: str) -> pd.Series:
@@ -150,6 +178,8 @@ def has_series(history: pd.DataFrame, column: str, points: int = 2) -> bool:
 def _steps_text(source, history: pd.DataFrame) -> str:
     if "step" in history.columns:
         steps = [int(s) for s in history["step"]]
+        if not steps:
+            return "no step"
         return ("only step " if len(steps) == 1 else "steps ") + ", ".join(map(str, steps))
     return f"{len(history)} instant(s)"
 
@@ -160,6 +190,10 @@ def require(source, history: pd.DataFrame, columns: list[str], figure: str, what
     present = [c for c in columns if has_series(history, c)]
     if present:
         return present
+    window = getattr(source, "window", None)
+    if window is not None:
+        raise MissingSeriesError(f"{figure}: {source.label} has {_steps_text(source, history)} in "
+                                 f"{window_text(window)}; the figure needs two or more")
     if history.index.nunique() < 2:
         raise MissingSeriesError(f"{figure}: {source.label} has {_steps_text(source, history)}; the time "
                                  f"history needs the time integration (two or more printed steps)")

@@ -66,21 +66,53 @@ class FigureSet:
     notes: list = field(default_factory=list)
 
 
+def figure_types(chosen) -> list[FigureType]:
+    """The figure types ``chosen`` names (numbers 1-10 or names such as ``power-loss``, as
+    ints or texts), in page order; AdoreInputError naming the types for an unknown one."""
+    picked = set()
+    for item in chosen:
+        if isinstance(item, FigureType):
+            picked.add(item.number)
+            continue
+        text = str(item).strip()
+        hit = next((t for t in FIGURE_TYPES if text in (str(t.number), f"{t.number:02d}", t.name)), None)
+        if hit is None:
+            names = ", ".join(f"{t.number} {t.name}" for t in FIGURE_TYPES)
+            raise AdoreInputError(f"unknown figure {text!r}; the figure types are {names}")
+        picked.add(hit.number)
+    return [t for t in FIGURE_TYPES if t.number in picked]
+
+
 def make_set(source, set_name: str = "report", *, compare=None, step: int | None = None, element: int = 1,
-             table=None, label: str | None = None, compare_label: str | None = None) -> FigureSet:
+             table=None, label: str | None = None, compare_label: str | None = None, figures=None,
+             window=None, ylim=None) -> FigureSet:
     """Make every figure of set ``set_name`` that the data of ``source`` (a print path,
     PrintRun or Result) supports; ``compare`` a second run overlaid on each; ``step`` the
     printed step of the load distribution; ``element`` the rolling element of types 5 and
-    9; ``table`` an ADRX7 table file for type 10.  Raises AdoreInputError for an unknown
-    set name or an unreadable print file."""
+    9; ``table`` an ADRX7 table file for type 10.  ``figures``: only these figure types
+    (numbers or names, :func:`figure_types`).  ``window``: (start, end) in s, the time
+    span of the time-history figures (types 2-9; either end None: open); their value axes
+    scale to the data in the window.  ``ylim``: (low, high) of the value axis of every
+    figure made (either None: automatic).  Raises AdoreInputError for an unknown set name
+    or figure type or an unreadable print file."""
     if set_name not in SETS:
         raise AdoreInputError(f"unknown figure set {set_name!r}; the sets are {', '.join(SETS)}")
+    if window is not None:
+        start, end = window
+        if start is not None and end is not None and not end > start:
+            raise AdoreInputError(f"time window: the end ({end:g} s) must come after the start ({start:g} s)")
     run = load(source, label)
     other = load(compare, compare_label) if compare is not None else None
+    for src in (run, other):
+        if src is not None:
+            src.window = window
     out = FigureSet()
     out.notes.extend(run.notes + (other.notes if other is not None else []))
     options = {1: {"step": step}, 5: {"element": element}, 9: {"element": element}, 10: {"table": table}}
-    for ftype in (t for t in FIGURE_TYPES if t.number in SETS[set_name]):
+    types = [t for t in FIGURE_TYPES if t.number in SETS[set_name]]
+    if figures is not None:
+        types = [t for t in figure_types(figures) if t in types]
+    for ftype in types:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", MissingSeriesWarning)
             try:
@@ -90,8 +122,34 @@ def make_set(source, set_name: str = "report", *, compare=None, step: int | None
                 continue
             finally:
                 out.notes.extend(str(w.message) for w in caught if issubclass(w.category, MissingSeriesWarning))
+        if ylim is not None:
+            for ax in fig.axes:
+                if ax.get_label() != "<colorbar>":
+                    ax.set_ylim(*ylim)
         out.figures.append((ftype, fig))
     return out
+
+
+def skipped_lines(skipped) -> list[str]:
+    """The reasons of ``skipped`` ([(FigureType, reason)], :attr:`FigureSet.skipped`) as
+    lines: figure types skipped for the same reason (a print of step 0 alone has no time
+    history for types 2-9) share one line, ``figure types 2-9 (power-loss, wear-rates,
+    ...): <reason>`` (the types by name)."""
+    groups: dict[str, list] = {}
+    for ftype, reason in skipped:
+        head, sep, rest = reason.partition("): ")
+        key = rest if sep and head.startswith("figure type") else reason
+        groups.setdefault(key, []).append((ftype, reason))
+    lines = []
+    for key, items in groups.items():
+        if len(items) == 1:
+            lines.append(items[0][1])
+            continue
+        numbers = [t.number for t, _r in items]
+        span = (f"{numbers[0]}-{numbers[-1]}" if numbers == list(range(numbers[0], numbers[-1] + 1))
+                else ", ".join(map(str, numbers)))
+        lines.append(f"figure types {span} ({', '.join(t.name for t, _r in items)}): {key}")
+    return lines
 
 
 def _file_mode(path: Path) -> int:
@@ -128,6 +186,20 @@ def write_pdf(figures, path) -> Path:
 def png_name(ftype: FigureType) -> str:
     """File name of a figure type's PNG: ``NN-name.png`` (type number, two digits)."""
     return f"{ftype.number:02d}-{ftype.name}.png"
+
+
+def write_image(figure, path) -> Path:
+    """Write one figure to ``path``, its type from the suffix (``.png``, ``.svg``, ``.pdf``,
+    ...), whole or not at all (a temporary name, then renamed)."""
+    path = Path(os.fspath(path))
+    tmp = path.with_name(f".{path.name}.part")
+    try:
+        figure.savefig(tmp, format=path.suffix.lstrip(".").lower(), dpi=style.PNG_DPI)
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return path
 
 
 def write_pngs(figures, directory) -> list[Path]:

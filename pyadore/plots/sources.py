@@ -42,6 +42,9 @@ class Source:
     #: the run-condition lines an engine print gives under ``TIME INTEGRATION:`` (what its
     #: time integration leaves out: "THERMAL MODEL OFF: ...", "CAGE CONTACTS OFF: ...").
     conditions: list = field(default_factory=list)
+    #: (start, end) in s: the time window of the time-history figures (None: the whole run;
+    #: either end None: open); set by :func:`pyadore.plots.make_set`'s ``window``
+    window: tuple | None = None
 
     def condition(self, prefix: str) -> str:
         """The run-condition line starting with ``prefix`` (e.g. ``"THERMAL MODEL OFF"``), or ""."""

@@ -10,24 +10,64 @@ from __future__ import annotations
 
 import math
 import os
+import re
 from pathlib import Path
 
-__all__ = ["plot_sweep", "sweep_plot_command", "RESULT_TITLES"]
+__all__ = ["plot_sweep", "sweep_plot_command", "RESULT_TITLES", "RESULTS", "si_scale", "field_title"]
 
-#: Axis titles of the summary's result columns (the report's words, SI units).
-RESULT_TITLES = {
-    "total_power_loss_W": "Total power loss (W)",
-    "basic_life_h": "Basic fatigue life (h)",
-    "modified_life_h": "Modified fatigue life (h)",
-    "max_contact_load_N": "Largest contact load (N)",
-    "max_contact_stress_Pa": "Largest contact stress (Pa)",
-    "cage_speed_ratio": "Cage speed ratio (-)",
-    "cage_bulk_temp_K": "Cage bulk temperature (K)",
-    "outer_race_bulk_temp_K": "Outer race bulk temperature (K)",
-    "inner_race_bulk_temp_K": "Inner race bulk temperature (K)",
-    "housing_bulk_temp_K": "Housing bulk temperature (K)",
-    "shaft_bulk_temp_K": "Shaft bulk temperature (K)",
+#: Titles and SI units of the summary's result columns (the report's words).
+RESULTS = {
+    "total_power_loss_W": ("Total power loss", "W"),
+    "basic_life_h": ("Basic fatigue life", "h"),
+    "modified_life_h": ("Modified fatigue life", "h"),
+    "max_contact_load_N": ("Largest contact load", "N"),
+    "max_contact_stress_Pa": ("Largest contact stress", "Pa"),
+    "cage_speed_ratio": ("Cage speed ratio", "-"),
+    "cage_bulk_temp_K": ("Cage bulk temperature", "K"),
+    "outer_race_bulk_temp_K": ("Outer race bulk temperature", "K"),
+    "inner_race_bulk_temp_K": ("Inner race bulk temperature", "K"),
+    "housing_bulk_temp_K": ("Housing bulk temperature", "K"),
+    "shaft_bulk_temp_K": ("Shaft bulk temperature", "K"),
 }
+
+#: Axis titles of the summary's result columns, ``Title (unit)``.
+RESULT_TITLES = {k: f"{title} ({unit})" for k, (title, unit) in RESULTS.items()}
+
+#: Units drawn with an SI prefix (kN, GPa, um) when their values are far from 1.
+PREFIXED_UNITS = ("m", "Pa", "N", "W", "N*m", "J", "s")
+_PREFIXES = {-9: "n", -6: "\u00b5", -3: "m", 0: "", 3: "k", 6: "M", 9: "G"}
+
+
+def si_scale(unit: str, values) -> tuple[float, str]:
+    """(divisor, unit) of an axis of ``values`` in ``unit``: an SI prefix (GPa, kN, um)
+    when ``unit`` takes one and the largest magnitude is below 0.1 or from 10 000 on; else
+    (1, unit).  Values are drawn divided by the divisor (never a 1e9 offset)."""
+    import numpy as np
+
+    vals = np.abs(np.asarray([v for v in values if isinstance(v, (int, float))], dtype=float))
+    vals = vals[np.isfinite(vals) & (vals > 0)]
+    if unit not in PREFIXED_UNITS or not len(vals):
+        return 1.0, unit
+    top = float(vals.max())
+    if 0.1 <= top < 1.0e4:
+        return 1.0, unit
+    exp = int(math.floor(math.log10(top) / 3.0) * 3)
+    exp = max(-9, min(9, exp))
+    return 10.0 ** exp, _PREFIXES[exp] + unit
+
+
+def field_title(name: str) -> str:
+    """The human name of deck field ``name`` (``FIELD`` or ``REC/FIELD``) from the record
+    table (docs/deck-format.md) without its remarks in brackets, e.g. ``Inner race speed``;
+    ``name`` itself when the
+    table has no meaning for it."""
+    spec = _spec(name)
+    text = getattr(spec, "meaning", "") or ""
+    text = re.sub(r"\s*\([^()]*\)", "", text).strip().rstrip(".;,")   # the table's remarks in brackets
+    text = re.split(r";", text)[0].strip()
+    if not text:
+        return name
+    return text[0].upper() + text[1:]
 
 
 def _load(summary_or_dir):
@@ -46,20 +86,31 @@ def _load(summary_or_dir):
     return read_summary(path), path.name
 
 
-def _unit(name: str) -> str:
+def _spec(name: str):
+    """The record table's spec of field ``name`` (``FIELD`` or ``REC/FIELD``: that record's
+    field first), or None."""
     from ..deck import all_specs
+    from ..deck.derived import DERIVED_FIELDS
+    from ..deck.spec import FieldSpec
 
-    field = name.split("/", 1)[-1]
-    for spec in all_specs():
-        for f in spec.fields:
-            if f.name == field:
-                return f.unit
-    return ""
+    rid, _sep, field = name.rpartition("/")
+    if field in DERIVED_FIELDS:
+        d = DERIVED_FIELDS[field]
+        return FieldSpec(d.name, d.kind, d.unit, d.meaning.split(" (")[0])
+    hits = [(spec.rid, f) for spec in all_specs() for f in spec.fields if f.name == field]
+    hits.sort(key=lambda h: h[0] != rid)
+    return hits[0][1] if hits else None
 
 
-def _label(name: str) -> str:
-    unit = _unit(name)
-    return f"{name} ({unit})" if unit and unit != "-" else name
+def _unit(name: str) -> str:
+    spec = _spec(name)
+    return spec.unit if spec is not None else ""
+
+
+def _label(name: str, unit: str | None = None) -> str:
+    unit = _unit(name) if unit is None else unit
+    title = field_title(name)
+    return f"{title} ({unit})" if unit and unit != "-" else title
 
 
 def _value_text(v) -> str:
@@ -119,16 +170,27 @@ def plot_sweep(summary_or_dir, x: str, y: str, by: str | None = None, where: dic
     else:
         fig = ax.figure
     groups = [(None, ok)] if by is None else list(ok.groupby(by, sort=True))
+    x_div, x_unit = si_scale(_unit(x), ok[x])
+    y_title, y_unit = RESULTS.get(y, (y, ""))
+    y_div, y_unit = si_scale(y_unit, ok[y])
+    if by is not None:
+        by_div, by_unit = si_scale(_unit(by), ok[by])
     for value, part in groups:
         part = part.sort_values(x)
-        label = None if by is None else f"{by} = {_value_text(value)} {_unit(by)}".rstrip()
-        ax.plot(part[x], part[y], marker="o", label=label)
-    ax.set_xlabel(_label(x))
-    ax.set_ylabel(RESULT_TITLES.get(y, y))
-    held = ", ".join(f"{k} = {v} {_unit(k)}".rstrip() for k, v in where.items())
-    ax.set_title(f"{RESULT_TITLES.get(y, y).split(' (')[0]} against {x}" + (f" ({held})" if held else ""))
+        label = None
+        if by is not None:
+            label = f"{field_title(by)} = {_value_text(value / by_div if by_div != 1 else value)} {by_unit}".rstrip()
+        ax.plot(part[x] / x_div, part[y] / y_div, marker="o", label=label)
+    ax.set_xlabel(_label(x, x_unit))
+    ax.set_ylabel(f"{y_title} ({y_unit})" if y_unit and y_unit != "-" else y_title)
+    held = ", ".join(f"{field_title(k)} = {v} {_unit(k)}".rstrip() for k, v in where.items())
+    ax.set_title(f"{y_title} against {field_title(x)[0].lower() + field_title(x)[1:]}"
+                 + (f"\n({held})" if held else ""), fontsize="medium")
     if log_y:
         ax.set_yscale("log")
+    else:
+        ax.ticklabel_format(axis="y", useOffset=False, style="plain")
+    ax.ticklabel_format(axis="x", useOffset=False, style="plain")
     ax.grid(True, which="both" if log_y else "major", alpha=0.3)
     if by is not None:
         ax.legend(title=None, fontsize="small")

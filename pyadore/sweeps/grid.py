@@ -5,7 +5,8 @@ one record of the deck has a field of that name, ``REC/FIELD`` otherwise (``8.2/
 ``7.2.n/guide_land_clearance`` sets the field in every occurrence of a repeated record).
 Values are in the deck's units (the schema's unit of the field: rpm for speeds, N for
 forces, m for lengths, K for temperatures).  Several varied fields make the full grid
-(first field slowest) or, with ``zip``, the cases pair the i-th values.
+(first field slowest) or, with ``zip``, the cases pair the i-th values.  A range
+``START:STOP:COUNT`` gives COUNT evenly spaced values, both ends included.
 
 Each case deck is the base deck with the varied fields changed, written by
 :func:`pyadore.deck.format_deck`: every record that did not change is copied verbatim.
@@ -13,11 +14,13 @@ Each case deck is the base deck with the varied fields changed, written by
 
 from __future__ import annotations
 
-import difflib
 import itertools
 from dataclasses import dataclass
 
-from ..deck import Deck, DeckError, FieldValue, all_specs, format_deck
+from ..deck import Deck, DeckError, FieldValue, format_deck
+from ..deck.derived import DERIVED_FIELDS
+from ..deck.model import DeckFieldError
+from ..deck.spec import FieldSpec
 from ..deck.writer import format_value
 from ..errors import AdoreInputError
 
@@ -48,48 +51,22 @@ class Case:
     params: dict
 
 
-def _schema_fields() -> dict[str, list[str]]:
-    names: dict[str, list[str]] = {}
-    for spec in all_specs():
-        for f in spec.fields:
-            names.setdefault(f.name, []).append(spec.rid)
-    return names
-
-
-def _unknown_field(name: str, deck: Deck) -> SweepError:
-    known = _schema_fields()
-    if name in known:
-        recs = ", ".join(f"Rec {r}" for r in known[name])
-        return SweepError(f"--vary {name}: the field is in {recs}, which this deck ({deck.path}) does not have")
-    in_deck = sorted({n for rec in deck.records for n in rec.fields})
-    close = difflib.get_close_matches(name, in_deck, n=4, cutoff=0.6)
-    hint = f"; did you mean {', '.join(close)}?" if close else ""
-    return SweepError(f"--vary {name}: no deck field of that name{hint} (field names are those of "
-                      f"docs/deck-format.md, e.g. inner_race_speed, applied_force_z, inner_race_fit)")
-
-
 def resolve_field(name: str, deck: Deck) -> tuple[tuple[str, ...], str, object]:
     """The records (concrete ids) and field that ``name`` (``FIELD`` or ``REC/FIELD``)
-    names in ``deck``, and the field's spec.  Raises :class:`SweepError` when the field is
-    unknown, absent from the deck, or in several records without ``REC/`` to choose."""
-    if "/" in name:
-        rid, field = (s.strip() for s in name.split("/", 1))
-        hits = [r for r in deck.records if (r.rid == rid or r.spec.rid == rid)]
-        if not hits:
-            raise SweepError(f"--vary {name}: this deck ({deck.path}) has no Rec {rid}")
-        hits = [r for r in hits if field in r.fields]
-        if not hits:
-            fields = ", ".join(deck.record(rid).fields) if deck.record(rid) else "(see docs/deck-format.md)"
-            raise SweepError(f"--vary {name}: Rec {rid} has no field {field}; its fields are {fields}")
-    else:
-        field = name.strip()
-        hits = [r for r in deck.records if field in r.fields]
-        if not hits:
-            raise _unknown_field(field, deck)
-        if len(hits) > 1:
-            choices = ", ".join(f"{r.rid}/{field}" for r in hits)
-            raise SweepError(f"--vary {name}: the field is in several records of this deck; name one as "
-                             f"REC/FIELD: {choices}")
+    names in ``deck`` (:meth:`pyadore.deck.Deck.locate`), and the field's spec.  Raises
+    :class:`SweepError` when the field is unknown, absent from the deck, or in several
+    records without ``REC/`` to choose."""
+    derived = deck._derived(name)
+    if derived is not None:  # e.g. diametral_clearance: sets the free contact angle
+        try:
+            derived.get(deck)
+        except DeckError as exc:
+            raise SweepError(f"--vary {exc}") from None
+        return (derived.record,), derived.name, FieldSpec(derived.name, derived.kind, derived.unit, derived.meaning)
+    try:
+        hits, field = deck.locate(name)
+    except DeckFieldError as exc:
+        raise SweepError(f"--vary {exc}") from None
     return tuple(r.rid for r in hits), field, hits[0].fields[field].spec
 
 
@@ -107,18 +84,50 @@ def _convert(name: str, spec, text: str):
                          f"{'an integer' if spec.kind == 'int' else 'a real'} in {spec.unit})") from None
 
 
+def _expand(name: str, spec, text: str) -> list:
+    """The values of one comma-separated item: a value, or ``START:STOP:COUNT``, COUNT
+    evenly spaced values from START to STOP, both included (``10000:25000:4`` gives
+    10000, 15000, 20000, 25000); an integer field's range must fall on integers."""
+    if ":" not in text:
+        return [_convert(name, spec, text)]
+    parts = text.split(":")
+    if len(parts) != 3 or spec.kind == "text":
+        raise SweepError(f"--vary {name}: {text.strip()!r}: a range is START:STOP:COUNT (e.g. 10000:25000:4, "
+                         "both ends included)" + (" of a numeric field" if spec.kind == "text" else ""))
+    try:
+        start, stop = (float(p.strip().replace("D", "E").replace("d", "e")) for p in parts[:2])
+        count = int(parts[2].strip())
+    except ValueError:
+        raise SweepError(f"--vary {name}: {text.strip()!r}: a range is START:STOP:COUNT with numbers START, "
+                         "STOP and an integer COUNT >= 2 (e.g. 10000:25000:4)") from None
+    if count < 2 or start == stop:
+        raise SweepError(f"--vary {name}: {text.strip()!r}: a range needs COUNT >= 2 and START != STOP "
+                         "(a single value is written as it is)")
+    values = [start + (stop - start) * k / (count - 1) for k in range(count)]
+    values[-1] = stop
+    if spec.kind == "int":
+        if any(abs(v - round(v)) > 1e-9 * max(1.0, abs(v)) for v in values):
+            raise SweepError(f"--vary {name}: {text.strip()!r}: the field is an integer and this range "
+                             f"gives {', '.join(f'{v:g}' for v in values)}")
+        return [int(round(v)) for v in values]
+    # a value a hair off a round number (0.1 steps) is written as the round number
+    return [float(f"{v:.12g}") for v in values]
+
+
 def parse_vary(spec_text: str, deck: Deck) -> Varied:
-    """``FIELD=V1,V2,...`` (values in the deck's units) resolved against ``deck``."""
+    """``FIELD=V1,V2,...`` (values in the deck's units) resolved against ``deck``; an
+    item may be a range ``START:STOP:COUNT`` (:func:`_expand`)."""
     if "=" not in spec_text:
-        raise SweepError(f"--vary {spec_text!r}: expected FIELD=V1,V2,... (e.g. inner_race_speed=10000,20000)")
+        raise SweepError(f"--vary {spec_text!r}: expected FIELD=V1,V2,... or FIELD=START:STOP:COUNT (e.g. "
+                         "inner_race_speed=10000,20000 or inner_race_speed=10000:25000:4)")
     name, _, rest = spec_text.partition("=")
     name = name.strip()
     texts = [v for v in rest.split(",")]
     if not name or not rest.strip() or any(not v.strip() for v in texts):
         raise SweepError(f"--vary {spec_text!r}: expected FIELD=V1,V2,... with no empty value")
     records, field, fspec = resolve_field(name, deck)
-    values = tuple(_convert(name, fspec, v) for v in texts)
-    for value in values:
+    values = tuple(v for text in texts for v in _expand(name, fspec, text))
+    for value in values if field not in DERIVED_FIELDS else ():  # a derived field is rounded to fit
         try:
             format_value(FieldValue(field, fspec, value))
         except DeckError as exc:
@@ -136,7 +145,8 @@ def make_cases(varied: list[Varied], zip_values: bool = False) -> list[Case]:
     names = [v.name for v in varied]
     if len(set(names)) != len(names):
         raise SweepError(f"a field is varied twice: {', '.join(names)}")
-    targets = [(r, v.field) for v in varied for r in v.records]
+    targets = [(r, DERIVED_FIELDS[v.field].sets if v.field in DERIVED_FIELDS else v.field)
+               for v in varied for r in v.records]
     if len(set(targets)) != len(targets):
         raise SweepError(f"two --vary name the same deck field: {', '.join(names)}")
     if zip_values:
@@ -162,6 +172,9 @@ def case_deck_text(base_text: str, base_path: str, varied: list[Varied], case: C
         raise DeckError(f"{base_path}: {len(problems)} problem(s) reading the deck", problems)
     for v in varied:
         value = case.params[v.name]
+        if v.field in DERIVED_FIELDS:
+            deck.set(v.field, value)
+            continue
         for rec in deck.records:
             if rec.rid in v.records and v.field in rec.fields:
                 fv = rec.fields[v.field]

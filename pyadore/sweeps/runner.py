@@ -16,7 +16,7 @@ import sys
 import time
 from pathlib import Path
 
-from ..deck import DeckError, check_deck, parse_text
+from ..deck import Deck, DeckError, check_deck, format_deck, parse_text
 from . import store
 from .execute import run_dask, run_local
 from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_vary
@@ -268,7 +268,8 @@ def _progress(total: int, enabled: bool | None):
 
 def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, workers: int | None = None,
           scheduler=None, progress: bool | None = None, **options):
-    """Run ``deck`` over the values of ``vary`` and return the summary as a pandas DataFrame.
+    """Run ``deck`` (a deck file or a :class:`pyadore.deck.Deck`) over the values of ``vary``
+    and return the summary as a pandas DataFrame.
 
     vary: ``{"inner_race_speed": [10000, 20000], "applied_force_z": [1000, 2000]}`` or a list of
     ``"FIELD=V1,V2,..."`` strings; field names as in docs/deck-format.md (``REC/FIELD`` where
@@ -286,17 +287,21 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
     Raises :class:`~pyadore.sweeps.SweepError` (an ``AdoreInputError``) when the sweep cannot
     start; a case that fails is a row with its status and message, never an exception.
     """
-    deck_path = Path(os.fspath(deck))
+    given = deck if isinstance(deck, Deck) else None
+    deck_path = Path(str(deck.path)) if given is not None else Path(os.fspath(deck))
     if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int) or steps < 0):
         raise SweepError(f"steps must be None or an integer >= 0, got {steps!r}")
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise SweepError(f"workers must be an integer >= 1, got {workers!r}")
-    if deck_path.exists() and not deck_path.is_file():  # a FIFO would wait for a writer for ever
+    if given is not None:  # a Deck: its text as the deck writer gives it (unchanged records verbatim)
+        base_text = format_deck(given)
+    elif deck_path.exists() and not deck_path.is_file():  # a FIFO would wait for a writer for ever
         raise SweepError(f"{deck_path}: the deck is not a regular file: give the deck file itself")
-    try:
-        base_text = deck_path.read_bytes().decode("utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SweepError(f"{deck_path}: cannot read the deck ({exc})") from None
+    else:
+        try:
+            base_text = deck_path.read_bytes().decode("utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise SweepError(f"{deck_path}: cannot read the deck ({exc})") from None
     base, problems = parse_text(base_text, str(deck_path))
     if problems:
         raise DeckError(f"{deck_path}: {len(problems)} problem(s) reading the deck", problems)

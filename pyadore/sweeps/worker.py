@@ -6,6 +6,8 @@ protocol channel, until stdin closes; when the channel is gone (its client was k
 ends quietly, without a BrokenPipeError traceback.  The channel is the original stdout; fd 1 is
 pointed at stderr so that nothing else (a stray print) can mix into it.  A fresh
 interpreter: nothing of the client's state (threads, its ``__main__``) is inherited.
+Before its first job it imports the engine and the print reader (:func:`warm`), and it
+serves every job of the sweep that comes to it: started once, it stays warm.
 """
 
 from __future__ import annotations
@@ -16,6 +18,18 @@ import signal
 import sys
 
 
+def warm() -> None:
+    """Import now what every case needs - the engine extension, numpy, pandas, the print
+    reader - so that the worker's first case costs what the others do: the worker boots
+    while the client prepares the cases, and stays warm for the whole sweep."""
+    from .. import _core
+    from ..api import run  # noqa: F401
+    from ..printout import read_print  # noqa: F401
+    from .results import key_results  # noqa: F401
+
+    _core.base._engine()
+
+
 def main() -> int:
     """Serve jobs until stdin closes; exit status 0."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the client ends its workers on Ctrl-C
@@ -24,6 +38,7 @@ def main() -> int:
     sys.stdout = sys.stderr
     from .execute import run_case
 
+    warm()
     for line in sys.stdin:
         if not line.strip():
             continue

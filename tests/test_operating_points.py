@@ -1,0 +1,109 @@
+"""The quasi-static start over the sound range of operating points (issue #28 item 1):
+a shaft at rest, light loads inside the clearance, the EHD model where it has no film.
+
+Independent truth: the inner race's force balance (the balls' forces carry the applied
+load), balls at rest for a shaft at rest (no slip, no loss, no centrifugal force), and the
+same contact loads at rest as the static Hertz solution of the same deck at a crawl speed.
+The full grid of the issue (every example ball deck x speed x load x fit, 300 steps) is in
+bench/operating_points.py.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pyadore
+from pyadore import _core
+from pyadore.deck import read_deck
+from pyadore.deck.validate import deck_warnings
+
+ROOT = Path(__file__).resolve().parents[1]
+BALL = ROOT / "decks" / "appendix_c_ball.inp"
+DEEP_GROOVE = ROOT / "decks" / "examples" / "deep_groove_radial.inp"
+
+
+def _variant(tmp_path: Path, base: Path, name: str, speed=None, load=None, fit=None) -> tuple[Path, np.ndarray]:
+    """The deck at base with the shaft speed (rpm), the applied force's magnitude (N, its
+    direction kept) and the inner race fit (m) replaced; returns (path, applied force)."""
+    deck = read_deck(base)
+    force = np.array([deck.lookup(f"applied_force_{c}") for c in "xyz"], dtype=float)
+    if speed is not None:
+        deck.set("9.1.2", "inner_race_speed", float(speed))
+    if load is not None:
+        force = np.array([float(f"{v:.4E}") for v in force / np.linalg.norm(force) * load])
+        for c, v in zip("xyz", force):
+            deck.set("9.1.1", f"applied_force_{c}", float(v))
+    if fit is not None:
+        deck.set("9.0", "inner_race_fit", float(fit))
+    path = tmp_path / f"{name}.inp"
+    deck.save(path)
+    return path, force
+
+
+@pytest.mark.parametrize("base", [BALL, DEEP_GROOVE], ids=["appendix_c", "deep_groove"])
+def test_shaft_at_rest_is_the_static_solution(tmp_path, base):
+    """0 rpm: the balls do not move, nothing slips, nothing is lost; the contact loads are
+    the static ones (a crawl at 1 rpm gives the same loads within 1e-4: centrifugal forces
+    and gyroscopic moments vanish with the speed squared)."""
+    rest, force = _variant(tmp_path, base, "rest", speed=0.0)
+    balls, summary = _core.ball_step0_from_deck(rest)
+    assert np.all(balls["orbital_speed"] == 0.0) and np.all(balls["spin_speed"] == 0.0)
+    loaded = balls["q_i"] > 0.0                      # unloaded contacts print no loss (NaN)
+    assert np.all(balls["loss_o"][loaded] == 0.0) and np.all(balls["loss_i"][loaded] == 0.0)
+    assert summary["power_loss"] == 0.0
+    assert np.max(balls["q_i"]) > 0.0
+    crawl, _ = _variant(tmp_path, base, "crawl", speed=1.0)
+    moving, _ = _core.ball_step0_from_deck(crawl)
+    scale = np.max(balls["q_i"])
+    assert np.max(np.abs(moving["q_i"] - balls["q_i"])) <= 1e-4 * scale
+    assert np.max(np.abs(moving["q_o"] - balls["q_o"])) <= 1e-4 * scale
+
+
+@pytest.mark.parametrize("speed", [0.0, 1000.0, 10000.0, 60000.0])
+def test_light_loads_inside_the_clearance_find_their_equilibrium(tmp_path, speed):
+    """1 N and 10 N radial on the deep-groove deck (radial clearance): few balls carry the
+    load and the race is free in other directions (its Jacobian singular there; it used to
+    stop the start).  The equilibrium found carries the applied load: the balls' force on
+    the inner race balances the applied force and the race's weight, the same weight at
+    both loads (gravity along z, the load along z)."""
+    weights = []
+    for load in (1.0, 10.0):
+        path, force = _variant(tmp_path, DEEP_GROOVE, f"light_{int(speed)}_{int(load)}", speed=speed, load=load)
+        balls, summary = _core.ball_step0_from_deck(path)
+        assert np.max(balls["q_i"]) > 0.0
+        race = np.array([summary["inner_force_x"], summary["inner_force_y"], summary["inner_force_z"]])
+        assert abs(race[0] + force[0]) <= 1e-9 * load and abs(race[1] + force[1]) <= 1e-9 * load
+        weights.append(race[2] + force[2])              # = the race's weight m g
+    assert weights[0] > 0.0
+    assert weights[0] == pytest.approx(weights[1], rel=1e-6)
+
+
+def test_no_ehd_film_takes_the_decks_curve(tmp_path):
+    """Appendix C at 60 000 rpm: Gupta's thermal reduction takes the outer films to 0 (a
+    traction model 3 contact with nothing to shear; the start used to stop).  Those contacts
+    take the deck's traction curve (Rec 10.1C; docs/tribology.md "No EHD film"), the others
+    keep the EHD traction, and the start converges."""
+    path, _ = _variant(tmp_path, BALL, "fast", speed=60000.0)
+    balls, summary = _core.ball_step0_from_deck(path)
+    no_film = balls["film_o"] * balls["thermal_factor_o"] == 0.0
+    assert no_film.any()                                      # the case the fallback is for
+    assert np.all(np.isfinite(balls["traction_o"])) and summary["power_loss"] > 0.0
+    assert np.all(balls["orbital_speed"] > 0.0)
+
+
+def test_cold_ball_warns_and_runs(tmp_path):
+    """A ball 320 K colder than its races (3.23 K): validate warns (implausible temperature)
+    and the run's note names the field; the oil is so viscous there that Gupta's factor is
+    0 at the outer contacts, which take the deck's curve."""
+    deck = read_deck(BALL)
+    deck.set("2.7", "rolling_element_temperature", 3.23)
+    path = tmp_path / "cold.inp"
+    deck.save(path)
+    warnings = deck_warnings(deck)
+    assert [w.field for w in warnings] == ["rolling_element_temperature"]
+    result = pyadore.run(path, steps=0, out=tmp_path / "cold.prt")
+    assert any("field rolling_element_temperature = 3.23: implausible temperature" in n for n in result.notes)
+    assert (tmp_path / "cold.prt").exists()
