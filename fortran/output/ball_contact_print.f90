@@ -15,7 +15,7 @@ module adore_output_ball_contact_print
    use adore_contact_ball_race, only: ball_race_pair_t, planar_contact
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_kinematics
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_race_pairs
-   use adore_forces_race_contact, only: ehd_traction_model, lubricant_film, check_ehd_film, printed_slip, &
+   use adore_forces_race_contact, only: ehd_traction_model, lubricant_film, ehd_film_present, printed_slip, &
                                         ehd_flash, law_flash
    implicit none
    private
@@ -55,7 +55,7 @@ contains
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: tk
       type(error_type), allocatable :: error
-      real(wp) :: nan, b_minor, p_h, h, phi
+      real(wp) :: nan, b_minor, p_h, h
       integer :: n, k, j, race
       logical :: ehd, with_flash
 
@@ -78,15 +78,17 @@ contains
                call contact_kinematics(cj, tk)
                h = 0.0_wp
                if (b%lubricant_code /= 0) then
-                  call lubricant_film(b, s%temperature, tk, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
-                  if (allocated(error)) cycle
-                  p%film(j, k) = h
-                  p%thermal_factor(j, k) = phi
-                  h = h*phi
+                  call lubricant_film(b, s%temperature, tk, cj%a/b_minor, cj%load, p_h, race, p%film(j, k), &
+                                      p%thermal_factor(j, k), error)
+                  if (allocated(error)) then
+                     p%film(j, k) = nan
+                     p%thermal_factor(j, k) = nan
+                     cycle
+                  end if
                end if
-               if (ehd) then
-                  call check_ehd_film(b, s%temperature, k, j, p%film(j, k), p%thermal_factor(j, k), error)
-                  if (allocated(error)) cycle
+               ! as step 0: the EHD flash with a film, the law's flash without one
+               if (ehd .and. ehd_film_present(p%film(j, k), p%thermal_factor(j, k))) then
+                  h = p%film(j, k)*p%thermal_factor(j, k)
                   if (with_flash) call ehd_flash(b, s%temperature, cj, b_minor, race, h, abs(tk%rolling_speed), &
                                                  p%temp_rise(j, k), error)
                else if (with_flash) then
