@@ -13,6 +13,7 @@ from .errors import AdoreEngineError, AdoreError, AdoreInputError
 
 if TYPE_CHECKING:
     import pandas as pd
+    import xarray as xr
 
 __all__ = ["Result", "run", "read_traction_table", "STEPS_FROM_DECK", "BALL_STARTS"]
 
@@ -40,6 +41,32 @@ class Result:
     #: the time history the run recorded (docs/plots.md: index ``time_s``, column ``step``,
     #: SI columns), the same as its plot-data file :attr:`history_path`; None without time steps
     time_history: "pd.DataFrame | None" = field(default=None, repr=False)
+    #: the run's full results (docs/results.md): every element's race contacts, speeds and
+    #: positions, the cage and the races at every recorded step, full precision, dimensions
+    #: ``time``, ``element``, ``race``; the same as its netCDF file :attr:`results_path`;
+    #: None without time steps (or for a bearing kind without element results)
+    dataset: "xr.Dataset | None" = field(default=None, repr=False)
+
+    @property
+    def results_path(self) -> Path | None:
+        """The netCDF file beside the print (``<print stem>.nc``); None without a dataset."""
+        if self.dataset is None:
+            return None
+        from .results import results_path
+
+        return results_path(self.print_path)
+
+    def mean(self, last_revolutions: float | None = None, t_start: float | None = None,
+             t_end: float | None = None) -> "xr.Dataset":
+        """Time-weighted averages of every :attr:`dataset` variable over the last
+        ``last_revolutions`` shaft revolutions, or over the window [t_start, t_end] (s; by
+        default the whole run): :func:`pyadore.results.time_mean`.  Raises AdoreInputError
+        for a run without a dataset or a window outside the run."""
+        if self.dataset is None:
+            raise AdoreInputError(f"{self.print_path}: the run has no dataset (no time steps) to average")
+        from .results import time_mean
+
+        return time_mean(self.dataset, last_revolutions=last_revolutions, t_start=t_start, t_end=t_end)
 
     @property
     def history_path(self) -> Path | None:
@@ -158,12 +185,41 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
             done = getattr(exc, "output", None)
             exc.print_path = out_path if out_path.exists() else None
             exc.time_history = _written_history(out_path, done)
+            exc.dataset = _written_dataset(deck, out_path, done)
             raise
         text = out_path.read_text(encoding="utf-8", errors="replace")
         history = _written_history(out_path, output)
+        dataset = _written_dataset(deck, out_path, output)
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
                   notes=[output.note] if output.note else [], steps_integrated=output.integrated,
-                  time_history=history)
+                  time_history=history, dataset=dataset)
+
+
+def run_title(deck_path: Path) -> str:
+    """The run identification of a deck (Rec 3.1's text), "" when it has none."""
+    import re
+
+    try:
+        text = deck_path.read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return ""
+    m = re.search(r"^Rec 3\.1[ \t]+(.*?)[ \t]*$", text, re.MULTILINE)
+    return m.group(1) if m else ""
+
+
+def _written_dataset(deck_path: Path, print_path: Path, output) -> "xr.Dataset | None":
+    """The dataset of the element file the engine wrote beside the print (when it wrote
+    one), written to its netCDF file (``run_complete`` 0 for a run that stopped early);
+    None otherwise."""
+    if output is None or output.history_rows <= 0:
+        return None
+    from .results import element_path, results_dataset, results_path, write_netcdf
+
+    if not element_path(print_path).is_file():
+        return None
+    ds = results_dataset(print_path, title=run_title(deck_path))
+    write_netcdf(ds, results_path(print_path))
+    return ds
 
 
 def _deck_file(deck, overrides, tmp: Path) -> tuple[Path, Path]:

@@ -133,6 +133,8 @@ def run(deck: Path, out: Path | None, steps: int | None, **options) -> None:
         click.echo(f"print file written: {result.print_path}")
         if result.history_path is not None:
             click.echo(f"plot-data file written: {result.history_path}")
+        if result.results_path is not None:
+            click.echo(f"results written: {result.results_path} (netCDF; docs/results.md)")
         for note in result.notes:
             click.echo(f"pyadore: note: {note}", err=True)
     except (SignalInterrupt, KeyboardInterrupt) as exc:  # outside the engine run (its own: AdoreInterrupted)

@@ -41,12 +41,14 @@ from ._signals import STOP_SIGNALS, SignalInterrupt, signal_label
 __all__ = ["RunProgress", "remove_run_outputs"]
 
 def _output_paths(print_path: Path) -> list[Path]:
-    """The files a run with print file ``print_path`` writes: the print, its plot-data file
-    and both being written (``.part``), as the engine names them."""
+    """The files a run with print file ``print_path`` writes: the print, its plot-data file,
+    element file and netCDF results file, and each being written (``.part``), as the
+    engine names them (adore_output_run_files)."""
+    from .results import element_path, results_path
     from .timehistory import history_path
 
-    hist = history_path(print_path)
-    return [print_path, print_path.with_name(print_path.name + ".part"), hist, hist.with_name(hist.name + ".part")]
+    files = [print_path, history_path(print_path), element_path(print_path), results_path(print_path)]
+    return [q for p in files for q in (p, p.with_name(p.name + ".part"))]
 
 
 def remove_run_outputs(print_path) -> None:

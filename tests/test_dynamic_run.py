@@ -279,7 +279,10 @@ def test_step_n_stays_near_step_0(runs):
     # every loaded contact has its loss and spin/roll; no made-up columns
     mot = sn.table("re_motion")
     assert np.all(np.isfinite(mot["contact_loss_outer_W"])) and np.all(mot["contact_loss_outer_W"] > 0)
-    assert np.all(np.isnan(sn.table("re_traction").to_numpy()))
+    # slip, traction coefficient, film and thermal factor computed (issue #29 item 3); drag,
+    # churning moment and net loss are not
+    trac = sn.table("re_traction").to_numpy()
+    assert np.all(np.isfinite(trac[:, :8])) and np.all(np.isnan(trac[:, 8:]))
     summary_0, summary_n = s0.table("summary").iloc[0], sn.table("summary").iloc[0]
     assert summary_n["power_loss_W"] == pytest.approx(summary_0["power_loss_W"], rel=0.10)
     assert summary_n["re_orbital_vel_ratio"] == pytest.approx(summary_0["re_orbital_vel_ratio"], rel=0.02)
@@ -558,7 +561,8 @@ def test_ctrl_c_stops_the_run_by_the_signal_with_an_incomplete_print(tmp_path, b
     assert ": interrupted; kept: the print file" in stderr
     assert out.read_text().splitlines()[-1].endswith(": interrupted ***")
     assert read_print(out).incomplete
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["c.hist.csv", "c.prt"]
+    kept = ["c.elements.bin", "c.hist.csv", "c.prt"] + (["c.nc"] if front_end == "pyadore" else [])
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(kept)
 
 
 def test_progress_bar_only_on_request_or_a_terminal(tmp_path, short_ball_deck, capsys):
@@ -647,8 +651,8 @@ def test_failed_integration_gives_exit_2_and_an_incomplete_print(tmp_path, ball_
     assert info.value.print_path == tmp_path / "py.prt"
     assert (tmp_path / "py.prt").read_bytes() == (tmp_path / "exe.prt").read_bytes()
     assert list(read_print(tmp_path / "py.prt").steps) == [0]
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["edited.inp", "exe.hist.csv", "exe.prt", "py.hist.csv",
-                                                          "py.prt"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["edited.inp", "exe.elements.bin", "exe.hist.csv", "exe.prt",
+                                                          "py.elements.bin", "py.hist.csv", "py.nc", "py.prt"]
     res = CliRunner().invoke(cli, ["diff", str(tmp_path / "py.prt"), str(tmp_path / "exe.prt")])
     assert res.exit_code == 1 and "INCOMPLETE RUN" in res.output
 

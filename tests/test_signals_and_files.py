@@ -29,6 +29,7 @@ from conftest import deck_with_steps
 from pyadore.cli import cli
 from pyadore.errors import AdoreEngineError, AdoreInputError, AdoreInterrupted
 from pyadore.printout import read_print
+from pyadore.results import element_path, results_path
 from pyadore.timehistory import history_path, read_history_csv
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -77,12 +78,20 @@ def _finish(proc: subprocess.Popen) -> tuple[int, str, str]:
 
 
 def _stale(out: Path) -> list[Path]:
-    """Older outputs at the print path ``out``: print, plot-data file and both .part files."""
-    hist = history_path(out)
-    paths = [out, hist, out.with_name(out.name + ".part"), hist.with_name(hist.name + ".part")]
+    """Older outputs at the print path ``out``: print, plot-data file, element file, netCDF
+    results file and their .part files."""
+    files = [out, history_path(out), element_path(out), results_path(out)]
+    paths = [q for p in files for q in (p, p.with_name(p.name + ".part"))]
     for p in paths:
         p.write_text(STALE)
     return paths
+
+
+def _kept(stem: str, front_end: str) -> list[str]:
+    """The files a ball run with time steps keeps at print path ``<stem>.prt``: the print,
+    plot-data and element files, and (pyadore) the netCDF results file."""
+    names = [f"{stem}.elements.bin", f"{stem}.hist.csv", f"{stem}.prt"]
+    return sorted(names + ([f"{stem}.nc"] if front_end == "pyadore" else []))
 
 
 def _outputs(folder: Path) -> list[str]:
@@ -153,7 +162,7 @@ def test_signal_in_the_time_steps_keeps_the_print_marked_incomplete(tmp_path, ad
     _no_traceback(stderr)
     assert f"stopped by {NAMES[sig]}: run incomplete after step " in stderr
     assert ": interrupted; kept: the print file" in stderr
-    assert _outputs(tmp_path) == ["c.hist.csv", "c.prt"]
+    assert _outputs(tmp_path) == _kept("c", front_end)
     run = read_print(out)
     last = run.step_numbers[-1]
     assert 2 <= last < 2000 and run.incomplete.startswith(f"RUN INCOMPLETE after step {last} (tau = ")
@@ -186,7 +195,7 @@ def test_signal_near_the_end_leaves_incomplete_or_complete_files_never_a_part(tm
     code, _stdout, stderr = _finish(proc)
     assert code == -signal.SIGINT, stderr
     _no_traceback(stderr)
-    assert _outputs(tmp_path) == ["e.hist.csv", "e.prt"]
+    assert _outputs(tmp_path) == _kept("e", front_end)
     run = read_print(out)
     frame, incomplete = read_history_csv(history_path(out))
     last = run.step_numbers[-1]
@@ -213,7 +222,7 @@ def test_pyadore_ctrl_c_at_any_moment_gives_no_traceback(tmp_path, delay):
     _no_traceback(stderr)
     assert "pyadore: stopped by SIGINT (Ctrl-C)" in stderr or "SIGINT (Ctrl-C) came after" in stderr, stderr
     names = _outputs(tmp_path)
-    assert names in ([], ["m.hist.csv", "m.prt"]), names
+    assert names in ([], _kept("m", "pyadore")), names
     if names:
         assert read_print(out).incomplete or "came after the last time step" in stderr
 
@@ -263,7 +272,7 @@ def test_library_signal_in_the_steps_keeps_an_incomplete_print(tmp_path):
     assert exc.status == 128 + signal.SIGTERM and exc.print_path == out
     assert list(exc.time_history["step"]) == list(range(6))
     assert read_print(out).incomplete.startswith("RUN INCOMPLETE after step 5 ")
-    assert _outputs(tmp_path) == ["b.hist.csv", "b.prt"]
+    assert _outputs(tmp_path) == _kept("b", "pyadore")
 
 
 def test_library_signal_at_the_last_step_keeps_the_complete_run(tmp_path):
@@ -273,7 +282,7 @@ def test_library_signal_at_the_last_step_keeps_the_complete_run(tmp_path):
     assert info.value.print_path == out
     run = read_print(out)
     assert not run.incomplete and run.termination and run.step_numbers[-1] == 6
-    assert _outputs(tmp_path) == ["c.hist.csv", "c.prt"]
+    assert _outputs(tmp_path) == _kept("c", "pyadore")
 
 
 def test_library_leaves_default_signals_alone():
@@ -321,7 +330,7 @@ def test_library_failed_and_refused_runs_leave_no_older_print(tmp_path):
                                              "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1))
     with pytest.raises(AdoreEngineError, match="integration stopped"):
         pyadore.run(deck, steps=5, out=out)
-    assert _outputs(tmp_path) == ["lib.hist.csv", "lib.prt"]
+    assert _outputs(tmp_path) == _kept("lib", "pyadore")
     assert STALE not in out.read_text() and read_print(out).incomplete
     assert read_history_csv(history_path(out))[1]
 

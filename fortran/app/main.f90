@@ -136,7 +136,7 @@ program adore
    use adore_driver_run, only: run_deck
    use adore_model_run_options, only: run_options_t, set_run_option, option_index, OPTION_TABLE, N_OPTIONS, &
                                       OPTION_FLAG, OPTION_FLAG_OFF, option_spec_t
-   use adore_output_run_history, only: history_file_name
+   use adore_output_run_history, only: history_file_name, element_file_name
    use adore_output_run_files, only: check_run_paths, clear_run_outputs
    use adore_app_progress, only: show_progress, install_signals, end_progress_line, signal_received, signal_name, &
                                  exit_by_signal, last_step, stop_asked
@@ -229,6 +229,8 @@ program adore
    write (output_unit, "(a)") "print file written: "//out_path
    call history_file_name(out_path, hist_path)
    if (integrated > 0) write (output_unit, "(a)") "plot-data file written: "//hist_path
+   call element_file_name(out_path, hist_path)
+   if (integrated > 0) write (output_unit, "(a)") "element file written: "//hist_path
    ! what the run does not do that a user may expect (pyadore's Result.notes say the same)
    if (allocated(note)) then
       if (len_trim(note) > 0) write (error_unit, "(a)") "adore: note: "//note

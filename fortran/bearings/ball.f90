@@ -27,7 +27,8 @@ module adore_bearings_ball
    use adore_bearings_system, only: bearing_system_t
    use adore_output_step_report, only: write_ball_step0
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
-   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history
+   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row
+   use adore_output_ball_contact_print, only: contact_print_t, ball_contact_print
    implicit none
    private
 
@@ -234,23 +235,30 @@ contains
       end associate
    end subroutine ball_write_step
 
-   !> The ball history (new_ball_history) with the options' element.
+   !> The ball history (new_ball_history) with the options' element and stride.
    subroutine ball_new_history(self, h, n_steps, error)
       class(ball_kind_t), intent(in) :: self
       type(run_history_t), intent(out) :: h
       integer, intent(in) :: n_steps
       type(error_type), allocatable, intent(out) :: error
-      call new_ball_history(h, self%bearing, n_steps, self%options%history_element, error)
+      call new_ball_history(h, self%bearing, n_steps, self%options%history_element, error, &
+                            self%options%history_stride)
    end subroutine ball_new_history
 
-   !> A history row at the last evaluated state.
+   !> A history row and its element row (ball_element_row, with the printed tribology of
+   !> the race contacts; the flash temperature rise at printed rows only, h%printed) at the
+   !> last evaluated state.
    subroutine ball_record_row(self, h, step, t, mean)
       class(ball_kind_t), intent(in) :: self
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
       real(wp), intent(in) :: t, mean(:)
+      type(contact_print_t) :: tribology
       call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, mean(AVG_BALL_WEAR:), &
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
+      call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
+                              flash=h%printed)
+      call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
    end subroutine ball_record_row
 
    !> The equations of motion in self%condition: the geometry mounted at its temperatures

@@ -26,7 +26,8 @@ module adore_driver_run
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo
    use adore_output_echo_fill, only: fill_echo
-   use adore_output_run_history, only: run_history_t, write_history_csv, history_file_name
+   use adore_output_run_history, only: run_history_t, write_history_csv, history_file_name, write_element_file, &
+                                       element_file_name
    use adore_quasistatic_ball_start, only: start_method_from_name, start_method_title, MIN_DISSIPATION
    use adore_dynamics_integrator, only: integrator_t
    use adore_bearings_system, only: bearing_system_t
@@ -69,7 +70,8 @@ contains
       type(run_history_t) :: hist
       type(error_type), allocatable :: run_error
       real(wp), allocatable :: y(:)
-      character(len=:), allocatable :: part_path, table_path, start_title, hist_path, incomplete, run_note, listing
+      character(len=:), allocatable :: part_path, table_path, start_title, hist_path, incomplete, run_note, listing, &
+                                       element_path
       character(len=:), allocatable :: deck_warnings
       character(len=256) :: iomsg
       real(wp) :: duration, t_end
@@ -193,12 +195,15 @@ contains
          call engine_error(error, trim(out_path)//": cannot close print file: "//trim(iomsg))
          return
       end if
-      ! the plot-data file first: a print is moved into place only with its history
+      ! the plot-data and element files first: a print is moved into place only with them
       call history_file_name(trim(out_path), hist_path)
+      call element_file_name(trim(out_path), element_path)
       if (n_dynamic > 0) then
          call write_history_csv(hist, hist_path, incomplete, error)
+         if (.not. allocated(error)) call write_element_file(hist, element_path, incomplete, error)
          if (allocated(error)) then
             call delete_file(part_path)
+            call delete_file(hist_path)
             return
          end if
       end if
@@ -206,10 +211,12 @@ contains
       if (.not. ok) then
          call delete_file(part_path)
          if (n_dynamic > 0) call delete_file(hist_path)
+         if (n_dynamic > 0) call delete_file(element_path)
          call engine_error(error, trim(out_path)//": cannot move the finished print file into place")
          return
       end if
       if (n_dynamic == 0) call delete_file(hist_path)    ! a stale file of an earlier run
+      if (n_dynamic == 0) call delete_file(element_path)
       if (present(note)) note = run_note
       if (present(history)) history = hist
       if (present(integrated)) then

@@ -102,7 +102,7 @@ contains
       call sys%averaged_values(values)
       call averages%start(values)
       call averages%mean(mean)
-      call record(0)
+      call record(0, .true.)
       i = 0
       do
          i = i + 1
@@ -150,7 +150,7 @@ contains
          print_now = last
          if (print_interval > 0) print_now = print_now .or. mod(i, print_interval) == 0
          if (print_now .or. history_due(history, i, n_report, print_now)) call averages%mean(mean)
-         if (history_due(history, i, n_report, print_now)) call record(i)
+         if (history_due(history, i, n_report, print_now)) call record(i, print_now)
          if (print_now) call print_step(i)
          if (present(progress)) then
             call progress(i, n_report, t, t*sys%time_scale, stop)
@@ -175,9 +175,12 @@ contains
          printed_last = i
       end subroutine print_step
 
-      !> A history row of step i at the system's last evaluated state.
-      subroutine record(i)
+      !> A history row of step i at the system's last evaluated state; printed: step i is
+      !> (or step 0, the print's own) a printed step (run_history_t%printed).
+      subroutine record(i, printed)
          integer, intent(in) :: i
+         logical, intent(in) :: printed
+         history%printed = printed
          call sys%record_row(history, i, t, mean)
       end subroutine record
 
@@ -203,7 +206,7 @@ contains
             if (ok) then
                call print_step(i_last)
                if (history%rows > 0) then
-                  if (nint(history%values(history%rows, 2)) /= i_last) call record(i_last)
+                  if (nint(history%values(history%rows, 2)) /= i_last) call record(i_last, .true.)
                end if
             end if
          end if

@@ -38,6 +38,10 @@ module adore_model_run_options
       integer :: substeps = 1
       !> rolling element of the time history's per-element columns
       integer :: history_element = 1
+      !> every history_stride-th time step is a row of the time history and of the element
+      !> record (printed steps and the last always are); 0: automatic (every step up to
+      !> adore_output_run_history's HISTORY_ROWS steps)
+      integer :: history_stride = 0
       !> traction-slip table file (ADRX7, report 4.4.9) replacing the deck's RE/race model;
       !> blank: the deck's model
       character(len=4096) :: traction_table = ""
@@ -85,6 +89,9 @@ module adore_model_run_options
                     "integrator steps in each printed time step (report 4.4.5)"), &
       option_spec_t("history_element", OPTION_INT, "1", 1, "", "N", "", &
                     "rolling element whose race contacts and pocket force the time history records"), &
+      option_spec_t("history_stride", OPTION_INT, "0", 0, "", "N", "", &
+                    "record every N-th time step in the time histories and the element results (printed "// &
+                    "and last steps always); 0: every step up to 10000 steps"), &
       option_spec_t("traction_table", OPTION_TEXT, "", 0, "", "FILE", "", &
                     "traction-slip table (slip m/s, coefficient per line; ADRX7) replacing the deck's "// &
                     "RE/race traction model"), &
@@ -204,6 +211,8 @@ contains
          opts%substeps = n
       case ("history_element")
          opts%history_element = n
+      case ("history_stride")
+         opts%history_stride = n
       case ("traction_table")
          if (len_trim(value) > len(opts%traction_table)) then
             call input_error(error, "run option traction_table: the file name is longer than "// &

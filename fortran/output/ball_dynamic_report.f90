@@ -24,10 +24,13 @@ module adore_output_ball_dynamic_report
    use adore_output_step_report, only: race_rows, speed_ratios
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_ball_life, only: ball_basic_life
+   use adore_life_lundberg_palmgren, only: bearing_life, life_hours
+   use adore_life_tallian, only: ball_race_modified_life
+   use adore_output_ball_contact_print, only: contact_print_t, ball_contact_print
    implicit none
    private
 
-   public :: write_ball_step, orbital_speed, dynamic_speed_ratios
+   public :: write_ball_step, orbital_speed, dynamic_speed_ratios, ball_axis_angles
 
 contains
 
@@ -70,15 +73,19 @@ contains
       real(wp) :: lives(size(azimuth), 2), n_race(2), hours(3), contact_q(2, size(azimuth)), contact_a(2, size(azimuth))
       integer, allocatable :: re_no(:), cage_code(:), cage_end(:)
       integer :: land_no(max(b%n_lands, 1)), land_code(max(b%n_lands, 1))
+      type(contact_print_t) :: tribology
+      type(life_params_t) :: lp
+      real(wp) :: m_race(2), psi
       integer :: n, k, j
 
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
       n = b%n_elements
       allocate (contact(n, 11), motion(n, 11), traction(n, 11), thermal(n, 11), re_cage(n, 8))
+      call ball_contact_print(b, g, s, loads, tribology)
       allocate (re_no(n), cage_code(n), cage_end(n))
       re_no = [(k, k=1, n)]
       motion = nan
-      traction = nan                 ! slip, traction coefficient, film, drag: not printed yet
+      traction = nan                 ! drag, churning moment, net loss: not computed
       thermal = nan
       contact(:, 1) = azimuth*deg
       motion(:, 11) = wear                                     ! time averages since the start
@@ -86,6 +93,7 @@ contains
          w_orb(k) = orbital_speed(s%elements(k))
          motion(k, 1) = w_orb(k)*rpm
          motion(k, 2:4) = ball_spin_angles(s%elements(k), w_orb(k))
+         motion(k, 5:6) = ball_axis_angles(s%elements(k))
          thermal(k, 10) = s%temperature(TEMP_ELEMENT)
          do j = 1, 2
             associate (c => loads%contacts(j, k))
@@ -99,6 +107,11 @@ contains
                motion(k, 6 + j) = loads%traction(j, k)%spin_roll
                motion(k, 8 + j) = loads%heat(j, k)
                thermal(k, 7 + j) = wall_temperature(s%temperature, merge(BODY_OUTER, BODY_INNER, j == 1))
+               traction(k, j) = tribology%slip(j, k)
+               traction(k, 2 + j) = tribology%coefficient(j, k)
+               traction(k, 4 + j) = tribology%film(j, k)
+               traction(k, 6 + j) = tribology%thermal_factor(j, k)
+               thermal(k, 5 + j) = tribology%temp_rise(j, k)
             end associate
          end do
       end do
@@ -142,13 +155,24 @@ contains
       acc(1, :) = [rates%cage%velocity, rates%cage%omega*rpm, s%temperature(TEMP_CAGE)]
       acc(2, :) = [rates%races(RACE_OUTER)%velocity, rates%races(RACE_OUTER)%omega*rpm, s%temperature(TEMP_OUTER)]
       acc(3, :) = [rates%races(RACE_INNER)%velocity, rates%races(RACE_INNER)%omega*rpm, s%temperature(TEMP_INNER)]
-      perf = nan                  ! modified life, churning, exit fluid: not computed
+      perf = nan                  ! churning, exit fluid: not computed
       ! basic life (eqs 73-74, 102) from the contact loads and orbital speeds of this instant
       contact_q = loads%contacts%load                     ! contiguous copies (no array temporaries)
       contact_a = abs(loads%contacts%alpha)
       call ball_basic_life(b, life_params_t(), contact_q(1, :), contact_a(1, :), contact_q(2, :), contact_a(2, :), &
                            w_orb, lives(:, 1), lives(:, 2), n_race(1), n_race(2), hours)
       perf(1) = hours(1)
+      ! the Tallian modified life (eqs 77-109) as step 0 computes it (adore_start_ball_step0):
+      ! film parameter = iso film x thermal reduction factor / composite roughness, mu_EHD =
+      ! the printed traction coefficient, 0 where a contact has none (unloaded)
+      call ball_race_modified_life(lp, lives(:, 1), n_race(1), contact_pressure(1), film_parameter(1), &
+                                   no_nan(tribology%coefficient(1, :)), g%mounting%outer_hoop_stress, .false., psi, &
+                                   m_race(1))
+      call ball_race_modified_life(lp, lives(:, 2), n_race(2), contact_pressure(2), film_parameter(2), &
+                                   no_nan(tribology%coefficient(2, :)), g%mounting%inner_hoop_stress, .true., psi, &
+                                   m_race(2))
+      perf(2) = life_hours(bearing_life(m_race(1), m_race(2), lp%weibull_e_point), &
+                           (b%speed_inner - b%speed_outer)*rpm)
       perf(3) = g%mounting%outer_fit
       perf(4) = g%mounting%inner_fit
       perf(5) = g%mounting%clearance
@@ -162,7 +186,50 @@ contains
       call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, ld, acc, perf, [step], summary)
+   contains
+
+      !> The largest Hertz pressure (Pa) of race j's contacts.
+      function contact_pressure(j) result(p_max)
+         integer, intent(in) :: j
+         real(wp) :: p_max(n)
+         p_max = loads%contacts(j, :)%ellipse%max_pressure
+      end function contact_pressure
+
+      !> Film parameter Lambda of race j's contacts (0 where the film is not computed).
+      function film_parameter(j) result(lam)
+         integer, intent(in) :: j
+         real(wp) :: lam(n)
+         lam = no_nan(tribology%film(j, :)*tribology%thermal_factor(j, :))/lp%sigma_rms
+      end function film_parameter
+
    end subroutine write_ball_step
+
+   !> The entries of v with NaN replaced by 0.
+   pure function no_nan(v) result(w)
+      real(wp), intent(in) :: v(:)
+      real(wp) :: w(size(v))
+      w = merge(v, 0.0_wp, v == v)
+   end function no_nan
+
+   !> Section 1's "RE Ang Position" of a ball: where its body x axis (along the bearing
+   !> axis at the start: the attitude starts at identity) points, in the frame (e_x, e_r,
+   !> e_t) of its azimuth: [theta (deg) = angle from e_x, phi (deg) = azimuth of its tilt
+   !> from e_r towards e_t in [0, 360); 0 0 at the start, as step 0 prints] (pyadore's
+   !> reading, docs/print-layout.md).
+   pure function ball_axis_angles(ball) result(a)
+      type(body_state_t), intent(in) :: ball
+      real(wp) :: a(2), r(3, 3), x(3), phi, e_r(3), e_t(3), xr, xt
+      r = quat_matrix(ball%attitude)
+      x = r(:, 1)
+      phi = body_azimuth(ball)
+      e_r = [0.0_wp, -sin(phi), cos(phi)]
+      e_t = [0.0_wp, -cos(phi), -sin(phi)]
+      xr = dot_product(x, e_r)
+      xt = dot_product(x, e_t)
+      a(1) = atan2(hypot(xr, xt), x(1))*rad_to_deg
+      a(2) = 0.0_wp
+      if (hypot(xr, xt) > 0.0_wp) a(2) = modulo(atan2(xt, xr), 2.0_wp*pi)*rad_to_deg
+   end function ball_axis_angles
 
    !> Section 2's cage contact tables at state s (loads of that state): per pocket Geo Int =
    !> the pocket gap (m, the step-0 definition), Contact Force = the metallic (Hertz) load

@@ -1,9 +1,10 @@
 !> The files of a run, checked and cleared before it starts (issue #28 item 4).
 !>
 !> A run reads its deck (and, as a run option, a traction-slip table) and writes its print
-!> file OUT and, with time steps, its plot-data file beside it (history_file_name), each
-!> first under its ".part" name.  check_run_paths refuses, before anything is read or
-!> written, the paths a run cannot use:
+!> file OUT and, with time steps, its plot-data file and element file beside it
+!> (history_file_name, element_file_name), each first under its ".part" name; pyadore
+!> writes the run's netCDF file (results_file_name) beside them after the run.
+!> check_run_paths refuses, before anything is read or written, the paths a run cannot use:
 !>
 !> * an input that exists but is not a regular file: a FIFO (the reader would wait for a
 !>   writer for ever), a directory, a device;
@@ -14,29 +15,30 @@
 !> * an output directory that does not exist or cannot be written.
 !>
 !> clear_run_outputs then removes what an earlier run left at the output path (print,
-!> plot-data file and their ".part" files), so that a run that is refused, fails or is
+!> plot-data file, element file, netCDF file and their ".part" files), so that a run that is refused, fails or is
 !> stopped never leaves an older print or plot-data file posing as its own.  The two
 !> front ends (app/main.f90, api/wrappers.f90) call both before run_deck.  No state.
 module adore_output_run_files
    use adore_core_error, only: error_type, input_error
    use adore_core_os, only: path_kind, canonical_path, writable_directory, delete_file, &
                             PATH_MISSING, PATH_REGULAR, PATH_DIRECTORY, PATH_FIFO, PATH_DEVICE, PATH_SOCKET
-   use adore_output_run_history, only: history_file_name
+   use adore_output_run_history, only: history_file_name, element_file_name, beside_file_name
    implicit none
    private
 
-   public :: check_run_paths, clear_run_outputs, run_output_path, N_RUN_OUTPUTS
+   public :: check_run_paths, clear_run_outputs, run_output_path, results_file_name, N_RUN_OUTPUTS
 
    !> Suffix of a file while it is written (renamed onto its name when complete).
    character(len=*), parameter :: PART = ".part"
-   !> The files a run writes (run_output_path): print, print being written, plot-data file,
-   !> plot-data file being written.
-   integer, parameter :: N_RUN_OUTPUTS = 4
+   !> The files a run writes (run_output_path): print, plot-data file, element file,
+   !> netCDF file, each followed by its name while being written.
+   integer, parameter :: N_RUN_OUTPUTS = 8
 
 contains
 
    !> File k (1..N_RUN_OUTPUTS) a run with print file out_path may write: the print, the
-   !> print being written, the plot-data file, the plot-data file being written; what names it.
+   !> plot-data file, the element file, the netCDF file (odd k), each being written (even
+   !> k); what names it.
    subroutine run_output_path(out_path, k, path, what)
       character(len=*), intent(in) :: out_path
       integer, intent(in) :: k
@@ -48,16 +50,30 @@ contains
       case (1, 2)
          path = trim(out_path)
          name = "print file"
-      case default
+      case (3, 4)
          call history_file_name(trim(out_path), path)
          name = "plot-data file"
+      case (5, 6)
+         call element_file_name(trim(out_path), path)
+         name = "element file"
+      case default
+         call results_file_name(trim(out_path), path)
+         name = "netCDF file"
       end select
-      if (k == 2 .or. k == 4) then
+      if (mod(k, 2) == 0) then
          path = path//PART
          name = trim(name)//" being written"
       end if
       if (present(what)) what = name
    end subroutine run_output_path
+
+   !> The netCDF file of the results of print file print_path (pyadore writes it, docs/results.md):
+   !> its name with the extension replaced by ".nc".
+   subroutine results_file_name(print_path, path)
+      character(len=*), intent(in) :: print_path
+      character(len=:), allocatable, intent(out) :: path
+      call beside_file_name(print_path, ".nc", path)
+   end subroutine results_file_name
 
    !> Input error when the run of deck_path into out_path (table_path: the traction-slip
    !> table, blank for none) cannot use its paths (see the module's list); the message names

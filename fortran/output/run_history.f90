@@ -12,6 +12,13 @@
 !> temperature at both races and its pocket force.  A quantity the engine does not compute
 !> (flash temperature rise, exit fluid temperature, cage wear) has no column.
 !>
+!> Beside it, at the same rows, the element record (issue #29 item 1): every ball's race
+!> contacts, speeds and positions, the cage and the races, written to the element file
+!> beside the print (element_file_name; docs/results.md), which pyadore turns into its
+!> xarray dataset and netCDF file.  Its columns are named `quantity_unit` for a body,
+!> `quantity_unit:k` for ball k and `quantity_unit:outer:k` / `quantity_unit:inner:k` for
+!> ball k's contact with a race (ELEMENT_NAMES, CONTACT_NAMES, BODY_NAMES).
+!>
 !> The record is a derived type owned by the caller (no module state); it is allocated once
 !> at the start of a run (new_ball_history), recording a row allocates nothing.
 module adore_output_run_history
@@ -22,14 +29,17 @@ module adore_output_run_history
    use adore_core_os, only: rename_file, delete_file
    use adore_model_bearing, only: bearing_t, BODY_OUTER, BODY_INNER, TEMP_ELEMENT, TEMP_CAGE, TEMP_OUTER, &
                                    TEMP_INNER, TEMP_HOUSING, TEMP_SHAFT
-   use adore_state_bearing_state, only: bearing_state_t
+   use adore_core_rotation, only: quat_matrix
+   use adore_state_bearing_state, only: bearing_state_t, RACE_OUTER, RACE_INNER
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, total_power_loss
    use adore_forces_race_contact, only: wall_temperature
+   use adore_output_ball_contact_print, only: contact_print_t
    implicit none
    private
 
    public :: run_history_t, history_shape, new_ball_history, history_due, record_ball_history, &
-             write_history_csv, history_file_name, history_columns_text
+             write_history_csv, history_file_name, history_columns_text, element_file_name, beside_file_name, &
+             write_element_file, ball_element_row
 
    !> Regular rows of a history at most (the stride grows beyond HISTORY_ROWS steps).
    integer, parameter, public :: HISTORY_ROWS = 10000
@@ -43,26 +53,56 @@ module adore_output_run_history
    !> races, pocket force.
    integer, parameter :: N_ELEMENT = 7
 
+   !> The element record's columns of each ball (`name:k`), of each of its race contacts
+   !> (`name:outer:k`, `name:inner:k`) and of the cage and races (`name`), SI units.
+   integer, parameter :: N_BALL = 9, N_CONTACT = 12, N_BODY = 16
+   character(len=*), parameter :: RACE_NAMES(2) = ["outer", "inner"]
+   character(len=32), parameter :: ELEMENT_NAMES(N_BALL) = [character(len=32) :: &
+      "orbital_position_rad", "orbital_speed_rad_s", "axial_position_m", "radial_position_m", &
+      "angular_velocity_x_rad_s", "angular_velocity_y_rad_s", "angular_velocity_z_rad_s", &
+      "spin_amplitude_rad_s", "pocket_force_N"]
+   character(len=32), parameter :: CONTACT_NAMES(N_CONTACT) = [character(len=32) :: &
+      "contact_load_N", "contact_angle_rad", "max_pressure_Pa", "semi_major_m", "semi_minor_m", &
+      "slip_velocity_m_s", "traction_coefficient", "spin_roll", "power_loss_W", "film_thickness_m", &
+      "thermal_reduction_factor", "temperature_rise_K"]
+   character(len=40), parameter :: BODY_NAMES(N_BODY) = [character(len=40) :: &
+      "cage_x_m", "cage_y_m", "cage_z_m", "cage_velocity_x_m_s", "cage_velocity_y_m_s", "cage_velocity_z_m_s", &
+      "cage_angular_velocity_x_rad_s", "cage_angular_velocity_y_rad_s", "cage_angular_velocity_z_rad_s", &
+      "cage_whirl_speed_rad_s", "inner_race_x_m", "inner_race_y_m", "inner_race_z_m", &
+      "inner_race_angular_velocity_x_rad_s", "outer_race_angular_velocity_x_rad_s", "total_power_loss_W"]
+
    !> The recorded time history of one run.
    type :: run_history_t
       integer :: element = 1                 !< rolling element of the per-element columns
       integer :: stride = 1                  !< every stride-th step is a row (and printed ones, the last)
       integer :: rows = 0                    !< rows recorded so far
       integer :: n_lands = 0                 !< guide lands (one force column each)
+      !> the row being recorded is a printed step (the time loop sets it before each row):
+      !> the element record's costly columns are computed only there (ball_element_row)
+      logical :: printed = .false.
       character(len=HISTORY_NAME_LEN), allocatable :: names(:)   !< column names (docs/plots.md)
       real(wp), allocatable :: values(:, :)  !< (row capacity, column): rows 1..rows are recorded
+      !> the element record at the same rows (empty for a kind without one): column names
+      !> (module header) and values (row capacity, column)
+      character(len=HISTORY_NAME_LEN), allocatable :: element_names(:)
+      real(wp), allocatable :: elements(:, :)
    end type run_history_t
 
 contains
 
    !> Row capacity, number of columns and stride of the history of a run of n_steps time steps
    !> printed every print_interval steps (Rec 1 data_control_2; 0: the last only) of a
-   !> bearing with n_lands guide lands.
-   pure subroutine history_shape(n_steps, print_interval, n_lands, rows, cols, stride)
+   !> bearing with n_lands guide lands; `requested` > 0 (run option history_stride) sets the
+   !> stride, 0 or absent: the automatic one.
+   pure subroutine history_shape(n_steps, print_interval, n_lands, rows, cols, stride, requested)
       integer, intent(in) :: n_steps, print_interval, n_lands
       integer, intent(out) :: rows, cols, stride
+      integer, intent(in), optional :: requested
       integer :: printed
       stride = max(1, (n_steps + HISTORY_ROWS - 1)/HISTORY_ROWS)
+      if (present(requested)) then
+         if (requested > 0) stride = requested
+      end if
       printed = 0
       if (print_interval > 0) printed = n_steps/print_interval
       rows = 2 + n_steps/stride + printed
@@ -70,13 +110,15 @@ contains
    end subroutine history_shape
 
    !> The empty history of a run of ball bearing b over n_steps steps, with the per-element
-   !> columns of rolling element `element` (1..n_elements; input error otherwise).
-   subroutine new_ball_history(h, b, n_steps, element, error)
+   !> columns of rolling element `element` (1..n_elements; input error otherwise) and the
+   !> element record of every ball; stride > 0: every stride-th step is a row (history_shape).
+   subroutine new_ball_history(h, b, n_steps, element, error, stride)
       type(run_history_t), intent(out) :: h
       type(bearing_t), intent(in) :: b
       integer, intent(in) :: n_steps, element
       type(error_type), allocatable, intent(out) :: error
-      integer :: rows, cols, k
+      integer, intent(in), optional :: stride
+      integer :: rows, cols, k, j, i, c
       character(len=:), allocatable :: e
 
       if (element < 1 .or. element > b%n_elements) then
@@ -84,7 +126,7 @@ contains
                           itoa(b%n_elements))
          return
       end if
-      call history_shape(n_steps, b%controls%print_interval, b%n_lands, rows, cols, h%stride)
+      call history_shape(n_steps, b%controls%print_interval, b%n_lands, rows, cols, h%stride, stride)
       h%element = element
       h%n_lands = b%n_lands
       allocate (h%names(cols), h%values(rows, cols))
@@ -103,7 +145,102 @@ contains
                                            "re"//e//"_contact_loss_outer_W", "re"//e//"_contact_loss_inner_W", &
                                            "re"//e//"_contact_temp_outer_K", "re"//e//"_contact_temp_inner_K", &
                                            "pocket"//e//"_force_N"]
+      allocate (h%element_names(N_BODY + b%n_elements*(N_BALL + 2*N_CONTACT)), &
+                h%elements(rows, N_BODY + b%n_elements*(N_BALL + 2*N_CONTACT)))
+      h%element_names(:N_BODY) = BODY_NAMES
+      c = N_BODY
+      do k = 1, b%n_elements
+         e = itoa(k)
+         do i = 1, N_BALL
+            h%element_names(c + i) = trim(ELEMENT_NAMES(i))//":"//e
+         end do
+         c = c + N_BALL
+         do j = 1, 2
+            do i = 1, N_CONTACT
+               h%element_names(c + i) = trim(CONTACT_NAMES(i))//":"//trim(RACE_NAMES(j))//":"//e
+            end do
+            c = c + N_CONTACT
+         end do
+      end do
    end subroutine new_ball_history
+
+   !> Record the element row of the row just recorded (record_ball_history) of a ball
+   !> bearing at state s, with the force assembly's loads there, each ball's orbital
+   !> position azimuth(k) unwrapped since the start (rad) and the printed tribology p of
+   !> its race contacts (adore_output_ball_contact_print).  Values as the print shows them,
+   !> in SI units and at full precision: contact angle |alpha| (rad), Hertz load, pressure
+   !> and semi-axes as computed (0 where unloaded), the tribology NaN where unloaded (and
+   !> the flash temperature rise NaN but at printed rows, h%printed: it is the costly one);
+   !> positions and velocities inertial (m, m/s, rad/s; ball angular velocity in body =
+   !> inertial components at the start's attitude: body frame rotated to inertial); spin
+   !> amplitude = |omega - omega_orbit e_x| (rad/s); cage whirl speed (r x v)_x / r**2.
+   !> Nothing happens for a history without an element record.
+   subroutine ball_element_row(h, s, loads, azimuth, p)
+      type(run_history_t), intent(inout) :: h
+      type(bearing_state_t), intent(in) :: s
+      type(ball_bearing_loads_t), intent(in) :: loads
+      real(wp), intent(in) :: azimuth(:)
+      type(contact_print_t), intent(in) :: p
+      real(wp) :: w(3), r2, w_orb, nan
+      integer :: row, k, j, c
+
+      if (.not. allocated(h%elements)) return
+      if (size(h%elements, 2) == 0) return
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      row = h%rows
+      associate (v => h%elements)
+         associate (cg => s%cage, ir => s%races(RACE_INNER), orr => s%races(RACE_OUTER))
+            v(row, 1:3) = cg%position
+            v(row, 4:6) = cg%velocity
+            v(row, 7:9) = matmul(quat_matrix(cg%attitude), cg%omega)
+            v(row, 10) = orbit_speed(cg%position, cg%velocity)
+            v(row, 11:13) = ir%position
+            v(row, 14) = ir%omega(1)
+            v(row, 15) = orr%omega(1)
+         end associate
+         v(row, 16) = total_power_loss(loads)
+         c = N_BODY
+         do k = 1, size(azimuth)
+            associate (ball => s%elements(k))
+               w = matmul(quat_matrix(ball%attitude), ball%omega)
+               r2 = ball%position(2)**2 + ball%position(3)**2
+               w_orb = orbit_speed(ball%position, ball%velocity)
+               v(row, c + 1) = azimuth(k)
+               v(row, c + 2) = w_orb
+               v(row, c + 3) = ball%position(1)
+               v(row, c + 4) = sqrt(r2)
+               v(row, c + 5:c + 7) = w
+               v(row, c + 8) = norm2(w - [w_orb, 0.0_wp, 0.0_wp])
+               v(row, c + 9) = 0.0_wp
+               if (allocated(loads%pockets)) v(row, c + 9) = norm2(loads%pockets(k)%force_ball)
+            end associate
+            c = c + N_BALL
+            do j = 1, 2
+               associate (ct => loads%contacts(j, k))
+                  v(row, c + 1:c + 5) = [ct%load, abs(ct%alpha), ct%ellipse%max_pressure, ct%ellipse%semi_major, &
+                                         ct%ellipse%semi_minor]
+                  v(row, c + 6:c + 12) = nan
+                  if (ct%load > 0.0_wp) then
+                     v(row, c + 6:c + 12) = [p%slip(j, k), p%coefficient(j, k), loads%traction(j, k)%spin_roll, &
+                                             loads%heat(j, k), p%film(j, k), p%thermal_factor(j, k), &
+                                             p%temp_rise(j, k)]
+                  end if
+               end associate
+               c = c + N_CONTACT
+            end do
+         end do
+      end associate
+   end subroutine ball_element_row
+
+   !> Orbital angular velocity (rad/s) about the bearing axis of a point at position x with
+   !> velocity u: (r x u)_x / r**2 with r = (0, x_y, x_z); 0 on the axis.
+   pure real(wp) function orbit_speed(x, u)
+      real(wp), intent(in) :: x(3), u(3)
+      real(wp) :: r2
+      r2 = x(2)**2 + x(3)**2
+      orbit_speed = 0.0_wp
+      if (r2 > 0.0_wp) orbit_speed = (x(2)*u(3) - x(3)*u(2))/r2
+   end function orbit_speed
 
    !> Whether step `step` of n_steps is a row: every stride-th step, a printed step, the last.
    pure logical function history_due(h, step, n_steps, printed)
@@ -179,6 +316,11 @@ contains
       allocate (values(max(2*size(h%values, 1), 16), size(h%values, 2)))
       values(1:h%rows, :) = h%values(1:h%rows, :)
       call move_alloc(values, h%values)
+      if (allocated(h%elements)) then
+         allocate (values(size(h%values, 1), size(h%elements, 2)))
+         values(1:h%rows, :) = h%elements(1:h%rows, :)
+         call move_alloc(values, h%elements)
+      end if
    end subroutine grow_history
 
    !> The plot-data file of print file print_path: its name with the extension (after the
@@ -186,14 +328,22 @@ contains
    subroutine history_file_name(print_path, path)
       character(len=*), intent(in) :: print_path
       character(len=:), allocatable, intent(out) :: path
+      call beside_file_name(print_path, ".hist.csv", path)
+   end subroutine history_file_name
+
+   !> The file of print file print_path with the extension (after the last dot of the file
+   !> name; none: at its end) replaced by `suffix` (".hist.csv", ".elements.bin", ".nc").
+   subroutine beside_file_name(print_path, suffix, path)
+      character(len=*), intent(in) :: print_path, suffix
+      character(len=:), allocatable, intent(out) :: path
       integer :: dot
       dot = index(print_path, ".", back=.true.)
       if (dot > index(print_path, "/", back=.true.) + 1) then
-         path = print_path(:dot - 1)//".hist.csv"
+         path = print_path(:dot - 1)//suffix
       else
-         path = trim(print_path)//".hist.csv"
+         path = trim(print_path)//suffix
       end if
-   end subroutine history_file_name
+   end subroutine beside_file_name
 
    !> The column names joined by commas (the plot-data file's header line).
    subroutine history_columns_text(h, text)
@@ -206,6 +356,14 @@ contains
       end do
    end subroutine history_columns_text
 
+   !> The element file of print file print_path (docs/results.md): its name with the
+   !> extension replaced by ".elements.bin".
+   subroutine element_file_name(print_path, path)
+      character(len=*), intent(in) :: print_path
+      character(len=:), allocatable, intent(out) :: path
+      call beside_file_name(print_path, ".elements.bin", path)
+   end subroutine element_file_name
+
    !> Write the plot-data file `path` (docs/plots.md): the header line of column names, then
    !> one line per recorded row, the step as an integer and every other value with 17
    !> significant digits (ES24.16E3: the file gives back the recorded doubles exactly; NaN
@@ -216,32 +374,106 @@ contains
       type(run_history_t), intent(in) :: h
       character(len=*), intent(in) :: path, incomplete
       type(error_type), allocatable, intent(out) :: error
+      call write_table(h%names, h%values, h%rows, path, "plot-data file", incomplete, error)
+   end subroutine write_history_csv
+
+   !> Write the element file `path` (docs/results.md) of history h, under path.part renamed
+   !> onto path when complete: three text lines - "ADORE ELEMENT RECORD 1 <rows> <columns>
+   !> <LE|BE>" (format version, byte order of the values), the column names joined by
+   !> commas (time_s, step, then the element record's), "COMPLETE" or "RUN
+   !> INCOMPLETE<incomplete>" for a run that stopped early - each ended by a line feed, then
+   !> rows x columns IEEE doubles, row after row: every recorded value exactly (a text
+   !> table of them would cost more than the run's time steps to format).  Nothing is
+   !> written for a history without an element record.
+   subroutine write_element_file(h, path, incomplete, error)
+      use, intrinsic :: iso_fortran_env, only: int8, int32
+      type(run_history_t), intent(in) :: h
+      character(len=*), intent(in) :: path, incomplete
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: lf = achar(10)
       character(len=:), allocatable :: header
-      character(len=32) :: cell
       character(len=256) :: iomsg
       integer :: unit, stat, i, k, bad
+      logical :: ok
+
+      if (.not. allocated(h%elements)) return
+      if (size(h%elements, 2) == 0) return
+      header = "ADORE ELEMENT RECORD 1 "//itoa(h%rows)//" "//itoa(size(h%elements, 2) + 2)//" "// &
+               merge("LE", "BE", transfer(1_int32, 1_int8) == 1_int8)//lf//trim(h%names(C_TIME))//","// &
+               trim(h%names(C_STEP))
+      do k = 1, size(h%element_names)
+         header = header//","//trim(h%element_names(k))
+      end do
+      if (len_trim(incomplete) > 0) then
+         header = header//lf//"RUN INCOMPLETE"//trim(incomplete)//lf
+      else
+         header = header//lf//"COMPLETE"//lf
+      end if
+      open (newunit=unit, file=path//".part", status="replace", action="write", access="stream", &
+            form="unformatted", iostat=stat, iomsg=iomsg)
+      if (stat /= 0) then
+         call input_error(error, path//": cannot write the element file: "//trim(iomsg))
+         return
+      end if
+      write (unit, iostat=stat) header
+      bad = stat
+      do i = 1, h%rows
+         write (unit, iostat=stat) h%values(i, C_TIME), h%values(i, C_STEP), h%elements(i, :)
+         if (stat /= 0) bad = stat
+      end do
+      close (unit, iostat=stat, iomsg=iomsg)
+      if (stat /= 0 .or. bad /= 0) then
+         if (stat == 0) iomsg = "write error"
+         call delete_file(path//".part")
+         call engine_error(error, path//": cannot write the element file: "//trim(iomsg))
+         return
+      end if
+      call rename_file(path//".part", path, ok)
+      if (.not. ok) then
+         call delete_file(path//".part")
+         call engine_error(error, path//": cannot move the finished element file into place")
+      end if
+   end subroutine write_element_file
+
+   !> Write the table of column names `names` (time and step among them, columns C_TIME and
+   !> C_STEP) to `path` under path.part (write_history_csv).
+   subroutine write_table(names, values, rows, path, what, incomplete, error)
+      character(len=*), intent(in) :: names(:)
+      real(wp), intent(in) :: values(:, :)
+      integer, intent(in) :: rows
+      character(len=*), intent(in) :: path, what, incomplete
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: header, line
+      character(len=24) :: cell
+      character(len=256) :: iomsg
+      integer :: unit, stat, i, k, bad, pos
       logical :: ok
 
       open (newunit=unit, file=path//".part", status="replace", action="write", form="formatted", &
             iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
-         call input_error(error, path//": cannot write the plot-data file: "//trim(iomsg))
+         call input_error(error, path//": cannot write the "//what//": "//trim(iomsg))
          return
       end if
-      call history_columns_text(h, header)
+      header = trim(names(1))
+      do k = 2, size(names)
+         header = header//","//trim(names(k))
+      end do
       write (unit, "(a)", iostat=stat) header
       bad = stat
-      do i = 1, h%rows
-         do k = 1, size(h%names)
+      ! one line of at most 25 characters a value, filled in place and written at once
+      allocate (character(len=25*size(values, 2)) :: line)
+      do i = 1, rows
+         pos = 0
+         do k = 1, size(values, 2)
             if (k == C_STEP) then
-               write (cell, "(i0)") nint(h%values(i, k))
+               write (cell, "(i0)") nint(values(i, k))
             else
-               write (cell, "(es24.16e3)") h%values(i, k)
+               write (cell, "(es24.16e3)") values(i, k)
             end if
-            if (k > 1) write (unit, "(a)", advance="no", iostat=stat) ","
-            write (unit, "(a)", advance="no", iostat=stat) trim(adjustl(cell))
+            call put(cell)
          end do
-         write (unit, "(a)", iostat=stat) ""
+         write (unit, "(a)", iostat=stat) line(:pos - 1)
          if (stat /= 0) bad = stat
       end do
       if (len_trim(incomplete) > 0) write (unit, "(a)", iostat=stat) "# RUN INCOMPLETE"//trim(incomplete)
@@ -250,14 +482,27 @@ contains
       if (stat /= 0 .or. bad /= 0) then
          if (stat == 0) iomsg = "write error"
          call delete_file(path//".part")
-         call engine_error(error, path//": cannot write the plot-data file: "//trim(iomsg))
+         call engine_error(error, path//": cannot write the "//what//": "//trim(iomsg))
          return
       end if
       call rename_file(path//".part", path, ok)
       if (.not. ok) then
          call delete_file(path//".part")
-         call engine_error(error, path//": cannot move the finished plot-data file into place")
+         call engine_error(error, path//": cannot move the finished "//what//" into place")
       end if
-   end subroutine write_history_csv
+
+   contains
+
+      !> Append the value text c (blanks removed) and a comma to the line.
+      subroutine put(c)
+         character(len=*), intent(in) :: c
+         integer :: a, n
+         a = verify(c, " ")
+         n = len_trim(c) - a + 1
+         line(pos + 1:pos + n + 1) = c(a:a + n - 1)//","
+         pos = pos + n + 1
+      end subroutine put
+
+   end subroutine write_table
 
 end module adore_output_run_history

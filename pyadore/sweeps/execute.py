@@ -26,7 +26,11 @@ __all__ = ["run_case", "run_local", "run_dask"]
 
 def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | None = None) -> dict:
     """Run one case deck (text) and return ``{case, status, error, notes, duration_s,
-    print_text, results, worker, tmp_deck, tmp_print, incomplete_text, incomplete_history}``.
+    print_text, history_text, results_nc, results, worker, tmp_deck, tmp_print,
+    incomplete_text, incomplete_history}``: ``history_text`` the plot-data file of a run with
+    time steps, ``results_nc`` its netCDF results file (base64; docs/results.md), ``results``
+    the key results of the last printed step and the time averages over the last shaft
+    revolution (:func:`pyadore.sweeps.results.mean_results`).
     ``status`` is ``ok``, ``input-error`` (the engine refused the deck), ``engine-failure``
     or ``error`` (anything else, e.g. a print file that does not read).  A failed run that
     kept its print and plot-data file (a time integration that stopped early) returns their
@@ -38,13 +42,14 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
 
     start = time.perf_counter()
     out = {"case": case_id, "status": "ok", "error": "", "notes": [], "print_text": None, "results": {},
+           "history_text": None, "results_nc": None,
            "worker": f"{socket.gethostname()}:{os.getpid()}", "tmp_deck": "", "tmp_print": "",
            "incomplete_text": None, "incomplete_history": None}
     try:
         from ..api import run
         from ..errors import AdoreEngineError, AdoreInputError
         from ..printout import PrintFormatError, read_print
-        from .results import key_results
+        from .results import key_results, mean_results
 
         with tempfile.TemporaryDirectory(prefix="pyadore-case-") as tmp:
             deck = Path(tmp) / "deck.inp"
@@ -57,7 +62,14 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                 result = run(deck, steps=steps, out=prt, progress=False, **(options or {}))
                 out["notes"] = list(result.notes)
                 out["results"] = key_results(read_print(prt))
+                out["results"].update(mean_results(result.dataset))
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
+                if result.history_path is not None:
+                    out["history_text"] = result.history_path.read_text(encoding="utf-8", errors="replace")
+                if result.results_path is not None:
+                    import base64
+
+                    out["results_nc"] = base64.b64encode(result.results_path.read_bytes()).decode("ascii")
             except PrintFormatError as exc:  # the engine's own print does not read: not the deck's fault
                 out.update(status="error", error=f"the case's print file does not read: {exc}", results={},
                            print_text=None)
@@ -81,6 +93,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
 
 def _died(case_id: str, why: str) -> dict:
     return {"case": case_id, "status": "error", "error": why, "notes": [], "print_text": None, "results": {},
+            "history_text": None, "results_nc": None,
             "worker": "", "tmp_deck": "", "tmp_print": "", "incomplete_text": None, "incomplete_history": None,
             "duration_s": float("nan")}
 

@@ -180,4 +180,23 @@ def case_deck_text(base_text: str, base_path: str, varied: list[Varied], case: C
                 fv = rec.fields[v.field]
                 fv.value = value
                 fv.blank = False
+    for rec in deck.records:  # the case's print is titled with its parameters (Rec 3.1)
+        if rec.rid == "3.1" and "run_id" in rec.fields:
+            rec.fields["run_id"].value = case_title(case)
+            rec.fields["run_id"].blank = False
     return format_deck(deck)
+
+
+def case_title(case: Case) -> str:
+    """The run identification of a case deck (Rec 3.1, at most 36 characters): its varied
+    parameters ``name=value`` (the value as short as it reads back exactly), cut to 36
+    characters after the case id when longer."""
+    def short(value) -> str:
+        if isinstance(value, float) and float(f"{value:g}") == value:
+            return f"{value:g}"
+        return str(value)
+
+    text = " ".join(f"{name}={short(value)}" for name, value in case.params.items())
+    if len(text) > 36:
+        text = (case.case_id.replace("case_", "#") + " " + text)[:36]
+    return text

@@ -11,6 +11,15 @@ Columns (SI, the unit in the name; lives in hours as the print gives them):
   ``housing_bulk_temp_K``, ``shaft_bulk_temp_K``: bulk temperatures (section 3 and 4).
   Until the thermal model runs they are the initial temperatures of the deck (Rec 2.7).
 
+Beside these last-step values, the time averages of a run with time steps over its last
+``revolutions`` shaft revolutions (:func:`mean_results`, from the run's dataset,
+docs/results.md): ``mean_total_power_loss_W``, ``mean_max_contact_load_N`` (the largest
+time-averaged race contact load), ``mean_cage_speed_ratio`` (the cage's mean angular
+velocity about its axis over the shaft speed, both relative to the outer race) and
+``mean_revolutions`` (the window's length; NaN without time steps or when the run covers fewer
+revolutions than asked: the step count of a sweep gives a fixed time, not a fixed number of
+revolutions, so compare cases by their averages over the same number of revolutions).
+
 A value the engine does not compute (printed ``NaN``) is NaN here.
 """
 
@@ -18,14 +27,18 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["RESULT_COLUMNS", "key_results"]
+__all__ = ["RESULT_COLUMNS", "MEAN_COLUMNS", "key_results", "mean_results"]
 
 #: The result columns of a sweep summary, in order.
 RESULT_COLUMNS = (
     "total_power_loss_W", "basic_life_h", "modified_life_h", "max_contact_load_N", "max_contact_stress_Pa",
     "cage_speed_ratio", "cage_bulk_temp_K", "outer_race_bulk_temp_K", "inner_race_bulk_temp_K",
     "housing_bulk_temp_K", "shaft_bulk_temp_K",
+    "mean_total_power_loss_W", "mean_max_contact_load_N", "mean_cage_speed_ratio", "mean_revolutions",
 )
+
+#: The time-averaged columns (mean_results), part of RESULT_COLUMNS.
+MEAN_COLUMNS = ("mean_total_power_loss_W", "mean_max_contact_load_N", "mean_cage_speed_ratio", "mean_revolutions")
 
 
 def _cell(step, table: str, row, column: str) -> float:
@@ -64,4 +77,28 @@ def key_results(print_run) -> dict:
         "shaft_bulk_temp_K": _cell(step, perf, "bearing", "shft_bulk_temp_K"),
     }
     out["result_step"] = number
+    return out
+
+
+def mean_results(dataset, revolutions: float = 1.0) -> dict:
+    """The :data:`MEAN_COLUMNS` of a run's dataset (:attr:`pyadore.Result.dataset`):
+    time-weighted averages over its last ``revolutions`` shaft revolutions
+    (:func:`pyadore.results.time_mean`); NaN for a run without a dataset or one shorter
+    than that."""
+    out = {c: math.nan for c in MEAN_COLUMNS}
+    if dataset is None:
+        return out
+    from ..errors import AdoreInputError
+    from ..results import time_mean
+
+    try:
+        m = time_mean(dataset, last_revolutions=revolutions)
+    except AdoreInputError:
+        return out
+    out["mean_total_power_loss_W"] = float(m["total_power_loss_W"])
+    out["mean_max_contact_load_N"] = float(m["contact_load_N"].max())
+    shaft = float(m["inner_race_angular_velocity_x_rad_s"] - m["outer_race_angular_velocity_x_rad_s"])
+    cage = float(m["cage_angular_velocity_x_rad_s"] - m["outer_race_angular_velocity_x_rad_s"])
+    out["mean_cage_speed_ratio"] = cage / shaft if shaft != 0.0 else math.nan
+    out["mean_revolutions"] = float(m.attrs["revolutions"])
     return out

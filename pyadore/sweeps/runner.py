@@ -155,16 +155,28 @@ class _Sweep:
 
     def record(self, case: Case, status: str, error: str = "", duration=None, notes=(), worker: str = "",
                results=None, print_text: str | None = None, incomplete_text: str | None = None,
-               incomplete_history: str | None = None) -> None:
-        """Write a finished case: its print (when ok; an incomplete print of a failed case
-        as incomplete.prt), then result.json; its event and the manifest follow
+               incomplete_history: str | None = None, history_text: str | None = None,
+               results_nc: str | None = None) -> None:
+        """Write a finished case: its time histories and netCDF results (when ok and the run
+        has time steps), its print (when ok; an incomplete print of a failed case as
+        incomplete.prt), then result.json; its event and the manifest follow
         (MANIFEST_INTERVAL)."""
+        import base64
+
         cdir = self.case_dir(case.case_id)
         prt = cdir / store.CASE_PRINT
+        kept = {store.CASE_HISTORY: history_text if status == "ok" else None,
+                store.CASE_RESULTS: base64.b64decode(results_nc) if status == "ok" and results_nc else None}
+        if prt.exists():
+            prt.unlink()  # no print from an earlier run may pose as this case's result
+        for name, content in kept.items():
+            path = cdir / name
+            if content is not None:
+                store.write_atomic(path, content)
+            elif path.exists():
+                path.unlink()  # of an earlier run of this case
         if status == "ok":
             store.write_atomic(prt, print_text)
-        elif prt.exists():
-            prt.unlink()  # no print from an earlier run may pose as this case's result
         for name, text in ((store.CASE_INCOMPLETE, incomplete_text), (store.CASE_INCOMPLETE_HISTORY,
                                                                       incomplete_history)):
             path = cdir / name
@@ -326,7 +338,8 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
             error = error.replace(res["tmp_deck"], str(cdir / store.CASE_DECK))
         run.record(case, res["status"], error=error, duration=res["duration_s"], notes=res["notes"],
                    worker=res["worker"], results=res["results"], print_text=res["print_text"],
-                   incomplete_text=incomplete, incomplete_history=history)
+                   incomplete_text=incomplete, incomplete_history=history, history_text=res.get("history_text"),
+                   results_nc=res.get("results_nc"))
         if bar is not None:
             bar.update(1)
 

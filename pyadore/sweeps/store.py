@@ -8,6 +8,9 @@ Layout of ``DIR``::
     events.log            one line per finished case (appended; a rerun adds lines)
     cases/<case>/deck.inp the case deck (base deck with the varied fields changed)
     cases/<case>/case.prt the case's print file, present only when the run finished
+    cases/<case>/case.hist.csv, case.nc
+                          its time histories and full results (docs/results.md) when the run
+                          has time steps, written before the print
     cases/<case>/result.json  status, message and key results; a case counts as done only
                           when this says ``ok`` and its print file is present
     cases/<case>/incomplete.prt, incomplete.hist.csv
@@ -25,8 +28,8 @@ import os
 import tempfile
 from pathlib import Path
 
-__all__ = ["SWEEP_FILE", "MANIFEST", "SUMMARY", "EVENTS", "CASES", "CASE_DECK", "CASE_PRINT", "CASE_RESULT",
-           "CASE_INCOMPLETE", "CASE_INCOMPLETE_HISTORY", "write_atomic", "read_json", "remove_stale_temporaries",
+__all__ = ["SWEEP_FILE", "MANIFEST", "SUMMARY", "EVENTS", "CASES", "CASE_DECK", "CASE_PRINT", "CASE_HISTORY",
+           "CASE_RESULTS", "CASE_RESULT", "CASE_INCOMPLETE", "CASE_INCOMPLETE_HISTORY", "write_atomic", "read_json", "remove_stale_temporaries",
            "append_event"]
 
 SWEEP_FILE = "sweep.json"
@@ -36,6 +39,8 @@ EVENTS = "events.log"
 CASES = "cases"
 CASE_DECK = "deck.inp"
 CASE_PRINT = "case.prt"
+CASE_HISTORY = "case.hist.csv"
+CASE_RESULTS = "case.nc"
 CASE_RESULT = "result.json"
 CASE_INCOMPLETE = "incomplete.prt"
 CASE_INCOMPLETE_HISTORY = "incomplete.hist.csv"
@@ -52,12 +57,14 @@ def _umask() -> int:
 _MODE = 0o666 & ~_umask()
 
 
-def write_atomic(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` so that ``path`` is either the old file or the whole new one."""
+def write_atomic(path: Path, text: str | bytes) -> None:
+    """Write ``text`` (or bytes) to ``path`` so that ``path`` is either the old file or the
+    whole new one."""
     path = Path(path)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}{_TMP_TAG}", dir=path.parent)
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+        binary = isinstance(text, bytes)
+        with os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""})) as fh:
             fh.write(text)
             fh.flush()
             os.fsync(fh.fileno())
