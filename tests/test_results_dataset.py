@@ -210,7 +210,7 @@ def test_failed_run_dataset_is_marked_incomplete(tmp_path, ball_deck):
 
 
 def test_sweep_time_averages_case_files_and_title(tmp_path, ball_deck):
-    """A sweep of two speeds for 150 steps (about 1.2 and 0.3 shaft revolutions): each case
+    """A sweep of two speeds for 3.6 ms (1.2 and 0.3 shaft revolutions): each case
     keeps its print titled with its parameters, its time histories and netCDF results; the
     summary has the averages over the last revolution beside the last-step values (NaN for
     the case that covers less than one revolution)."""
@@ -218,8 +218,8 @@ def test_sweep_time_averages_case_files_and_title(tmp_path, ball_deck):
 
     from pyadore.results import read_results, time_mean
 
-    frame = pyadore.sweep(ball_deck, {"inner_race_speed": [20000, 5000]}, tmp_path / "sw", steps=150, workers=1,
-                          progress=False)
+    frame = pyadore.sweep(ball_deck, {"inner_race_speed": [20000, 5000]}, tmp_path / "sw", duration=0.0036,
+                          workers=1, progress=False)
     assert list(frame["status"]) == ["ok", "ok"]
     fast, slow = frame.iloc[0], frame.iloc[1]
     case = tmp_path / "sw" / "cases" / fast["case"]
@@ -227,7 +227,7 @@ def test_sweep_time_averages_case_files_and_title(tmp_path, ball_deck):
     assert "  Ball Bearing Test Case" not in text and "inner_race_speed=20000" in text
     ds = read_results(case / "case.nc")
     assert ds.attrs["title"] == "inner_race_speed=20000" and ds.sizes["element"] == 18
-    assert pd.read_csv(case / "case.hist.csv")["step"].iloc[-1] == 150
+    assert pd.read_csv(case / "case.hist.csv")["time_s"].iloc[-1] == pytest.approx(0.0036, rel=1e-12)
     m = time_mean(ds, last_revolutions=1)
     assert fast["mean_total_power_loss_W"] == pytest.approx(float(m["total_power_loss_W"]), rel=1e-12)
     assert fast["mean_revolutions"] == pytest.approx(1.0)
