@@ -16,7 +16,7 @@ module adore_forces_race_contact
    use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
-                                   THERMAL_LOADING_SCALE
+                                   THERMAL_LOADING_SCALE, viscosity_in_range
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_strip_traction, &
                                            ehd_contact_traction_fast
    use adore_tribology_ehd_flash, only: ehd_temperature_rise
@@ -92,10 +92,19 @@ contains
       real(wp), intent(out) :: h, phi
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: e_prime, t_in, eta, u
+      character(len=400) :: buf
+      integer :: stat
 
       e_prime = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
                         (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
       t_in = wall_temperature(temperature, race)
+      if (.not. viscosity_in_range(b%lubricant, t_in)) then
+         write (buf, "(3a,es10.3,a)", iostat=stat) "lubricant ", trim(b%lubricant%name), " at ", t_in, &
+            " K (the mean of the rolling element's and the race's bulk temperatures, Rec 2.7): outside its "// &
+            "viscosity fit exp(B (1/T - 1/T_ref)), which means nothing this near 0 K"
+         call engine_error(error, trim(buf))
+         return
+      end if
       eta = dynamic_viscosity(b%lubricant, t_in, 0.0_wp)
       u = abs(t%rolling_speed)
       if (u == 0.0_wp) then

@@ -95,7 +95,8 @@ contains
                   call law_flash(b, cj, b_minor, p_h, race, abs(tk%rolling_speed), p%temp_rise(j, k), error)
                end if
                if (allocated(error)) p%temp_rise(j, k) = nan
-               call printed_slip(b, s%temperature, cj, b_minor, race, h, ehd, p%slip(j, k), p%coefficient(j, k))
+               ! the printed node of the traction used: model 3's with a film, else the curve's
+               call printed_slip(b, s%temperature, cj, b_minor, race, h, h > 0.0_wp, p%slip(j, k), p%coefficient(j, k))
             end associate
          end do
       end do

@@ -345,7 +345,9 @@ contains
                end if
                if (allocated(error)) return
                s%contact_temp(j, k) = wall_temperature(b%temperature, race)
-               call printed_slip(b, b%temperature, c(j), b_minor(j), race, h, ehd, s%slip(j, k), s%trac_coeff(j, k))
+               ! the printed node of the traction used: model 3's with a film, else the curve's
+               call printed_slip(b, b%temperature, c(j), b_minor(j), race, h, h > 0.0_wp, s%slip(j, k), &
+                                 s%trac_coeff(j, k))
                s%spin_roll(j, k) = t%spin_roll
                s%loss(j, k) = t%power
                s%sliding(j, k) = t%sliding

@@ -52,7 +52,13 @@ module adore_tribology_film
    public :: lubricant_t, LUBRICANT_MIL_L_7808
    public :: central_film_thickness, thermal_loading, thermal_reduction_factor
    public :: lubricant_from_code, kinematic_viscosity, dynamic_viscosity
-   public :: temperature_viscosity_coefficient, traction_viscosity
+   public :: temperature_viscosity_coefficient, traction_viscosity, viscosity_in_range
+
+   !> The largest exponent of the viscosity fit exp(alpha p + B (1/T - 1/T_ref)) (e**230 ~
+   !> 1e100 times the reference viscosity): far beyond it (an oil near 0 K) the fit has no
+   !> meaning; dynamic_viscosity clamps the exponent there so that no arithmetic overflows,
+   !> and viscosity_in_range tells the callers that must refuse such a state.
+   real(wp), parameter, public :: VISCOSITY_EXPONENT_MAX = 230.0_wp
 
    !> Lubricant code of MIL-L-7808 in this library (Rec 10.0 field 2; the Appendix C ball
    !> deck carries 1 and its echo prints "LUBRICANT: MIL-L-7808").
@@ -151,8 +157,18 @@ contains
       type(lubricant_t), intent(in) :: lub
       real(wp), intent(in) :: t, p
       real(wp) :: eta
-      eta = lub%eta_ref*exp(lub%alpha*p + lub%b_temp*(1.0_wp/t - 1.0_wp/lub%t_ref))
+      eta = lub%eta_ref*exp(min(lub%alpha*p + lub%b_temp*(1.0_wp/t - 1.0_wp/lub%t_ref), VISCOSITY_EXPONENT_MAX))
    end function dynamic_viscosity
+
+   !> True when the viscosity fit of lub is inside its meaningful range at temperature t
+   !> (K) and pressure 0 (the exponent below VISCOSITY_EXPONENT_MAX; t > 0).
+   elemental logical function viscosity_in_range(lub, t)
+      type(lubricant_t), intent(in) :: lub
+      real(wp), intent(in) :: t
+      viscosity_in_range = t > 0.0_wp
+      if (viscosity_in_range) &
+         viscosity_in_range = lub%b_temp*(1.0_wp/t - 1.0_wp/lub%t_ref) < VISCOSITY_EXPONENT_MAX
+   end function viscosity_in_range
 
    !> Traction viscosity (Pa s) of the EHD traction model at temperature t (K), pressure 0:
    !> eta_t,ref exp(-beta_t (t - t_ref)).
