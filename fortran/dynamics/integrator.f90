@@ -578,10 +578,8 @@ contains
                do j = 1, i - 1
                   if (ros%a(i, j) /= 0.0_wp) ys = ys + ros%a(i, j)*u(:, j)
                end do
-               call deriv%eval(t + ros%c(i)*h, ys, k(:, 2), flag)
-               self%stats%derivative_calls = self%stats%derivative_calls + 1
-               if (flag /= DERIV_OK) return
-               if (.not. (all(ieee_is_finite(k(:, 2))) .and. all(ieee_is_finite(ys)))) return
+               call eval_stage(self, deriv, t + ros%c(i)*h, ys, k(:, 2), flag, ok)
+               if (.not. ok) return
                u(:, i) = hg*k(:, 2)
                do j = 1, i - 1
                   if (ros%cc(i, j) /= 0.0_wp) u(:, i) = u(:, i) + (ros%gamma*ros%cc(i, j))*u(:, j)
@@ -639,10 +637,8 @@ contains
                jz(:, i) = 0.0_wp
             end if
             ys = y + z
-            call deriv%eval(t + ark%c(i)*h, ys, k(:, i), flag)
-            self%stats%derivative_calls = self%stats%derivative_calls + 1
-            if (flag /= DERIV_OK) return
-            if (.not. (all(ieee_is_finite(k(:, i))) .and. all(ieee_is_finite(ys)))) return
+            call eval_stage(self, deriv, t + ark%c(i)*h, ys, k(:, i), flag, ok)
+            if (.not. ok) return
          end do
          self%y_new = y
          self%y_err = 0.0_wp
@@ -673,6 +669,22 @@ contains
       if (flag /= DERIV_OK) return
       if (.not. all(ieee_is_finite(self%k(:, self%last)))) err = ieee_value(err, ieee_positive_inf)
    end subroutine end_of_attempt
+
+   !> One stage of a linearly implicit attempt: f(t, ys) into f_out, counted in the run's
+   !> statistics; ok when the derivative accepts the state and ys and f_out are finite.
+   subroutine eval_stage(self, deriv, t, ys, f_out, flag, ok)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: ys(:)
+      real(wp), intent(out) :: f_out(:)
+      integer, intent(out) :: flag
+      logical, intent(out) :: ok
+      call deriv%eval(t, ys, f_out, flag)
+      self%stats%derivative_calls = self%stats%derivative_calls + 1
+      ok = flag == DERIV_OK
+      if (ok) ok = all(ieee_is_finite(f_out)) .and. all(ieee_is_finite(ys))
+   end subroutine eval_stage
 
    !> The error test's norm of y_err (Rec 2.1 ERROR LIMIT; 1 = at the limit) for a step from y to y_new.
    real(wp) function weighted_error(self, y) result(err)
