@@ -371,7 +371,8 @@ contains
          end if
          if (flag == DERIV_REJECT_STEP) then
             self%stats%rejected_flag = self%stats%rejected_flag + 1
-            why = "the derivative refused the step (abnormal contact, report 4.4.12)"
+            why = "the derivative refused the step (report 4.4.12)"
+            if (allocated(deriv%failure_reason)) why = why//": "//deriv%failure_reason
             fac = flag_cut
          else if (.not. ieee_is_finite(err)) then
             self%stats%rejected_nonfinite = self%stats%rejected_nonfinite + 1
@@ -400,7 +401,7 @@ contains
          end if
          if (h <= h_min) then
             call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min)", &
-                            t, h, ": "//why, deriv=deriv)
+                            t, h, ": "//why)
             return
          end if
          h = max(fac*h, h_min)
