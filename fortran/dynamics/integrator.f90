@@ -485,8 +485,8 @@ contains
       if (flag == DERIV_FAIL) then
          call stop_error(self, error, "the derivative failed", t, self%h_next, deriv=deriv)
       else if (flag == DERIV_REJECT_STEP) then
-         call stop_error(self, error, "the derivative flags the state at the start of a step (abnormal "// &
-                         "contact, report 4.4.12), which no smaller step can avoid", t, self%h_next, deriv=deriv)
+         call stop_error(self, error, "the derivative flags the state at the start of a step (report "// &
+                         "4.4.12), which no smaller step can avoid", t, self%h_next, deriv=deriv)
       else if (.not. all(ieee_is_finite(self%k(:, 1)))) then
          msg = " (non-finite derivatives: "
          call put_bad(msg, self%k(:, 1))
