@@ -14,27 +14,19 @@ contains
    !> m unknowns starting at first(:), whose rates depend on their own block and the unknowns
    !> outside the blocks only; columns cols(:) (1..m) of each block are differenced (one
    !> derivative call per column for all blocks).  Ignored by the explicit methods.
-   module subroutine set_jacobian_blocks(self, first, m, cols, error)
-      class(integrator_t), intent(inout) :: self
-      integer, intent(in) :: first(:), m, cols(:)
-      type(error_type), allocatable, intent(out) :: error
+   module procedure set_jacobian_blocks
       logical :: ok
       if (.not. (self%rosenbrock .or. self%imex)) return
       call self%jac%setup(self%n, first, m, cols, ok)
       if (.not. ok) call engine_error(error, "integrator: Jacobian blocks outside the state, overlapping, or "// &
                                       "columns outside the block (m = "//itoa(m)//")")
       self%jac_age = -1
-   end subroutine set_jacobian_blocks
+   end procedure set_jacobian_blocks
 
    !> The block Jacobian at (t, y), k(:, 1) = f(t, y): forward differences, column c of every
    !> block perturbed at once by sqrt(eps) max(|y_i|, scale_i).  A column whose perturbed
    !> evaluation is refused or not finite is left zero (any W keeps a W-method's order).
-   module subroutine block_jacobian(self, deriv, t, y, error)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
-      type(error_type), allocatable, intent(out) :: error
+   module procedure block_jacobian
       real(wp) :: d(size(self%jac%first))
       integer :: c, b, i, i0, m, flag
 
@@ -66,20 +58,13 @@ contains
       self%jac%hg = -1.0_wp
       self%jac_age = 0
       self%stats%jacobians = self%stats%jacobians + 1
-   end subroutine block_jacobian
+   end procedure block_jacobian
 
    !> One Rosenbrock-W attempt of size h from (t, y), k(:, 1) = f(t, y) given (HNW II, IV.7
    !> eq 7.25 with the block Jacobian): stages u, y_new, the weighted error err (infinite when
    !> not finite or W is singular); when the step will be accepted (err <= 1 or accept), f at
    !> (t + h, y_new) into k(:, last), the first stage of the next step; flag from the derivative.
-   module subroutine attempt_rosenbrock(self, deriv, t, y, h, flag, err, accept)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t, h
-      real(wp), intent(in) :: y(:)
-      integer, intent(out) :: flag
-      real(wp), intent(out) :: err
-      logical, intent(in) :: accept
+   module procedure attempt_rosenbrock
       real(wp) :: hg
       integer :: i, j
       logical :: ok
@@ -117,7 +102,7 @@ contains
          end do
       end associate
       call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
-   end subroutine attempt_rosenbrock
+   end procedure attempt_rosenbrock
 
    !> One attempt of the additive (IMEX) method of size h from (t, y), k(:, 1) = f(t, y) given:
    !> f split as J y + (f - J y) with J the block Jacobian (taken implicitly, the rest
@@ -126,14 +111,7 @@ contains
    !> (both tables' rows sum to c_i, the implicit one's with gamma), F_j = f(t + c_j h, y + z_j),
    !> y_new = y + h sum b_j F_j, error h sum e_j F_j; when the step will be accepted (err <= 1
    !> or accept) f at (t + h, y_new) into k(:, last).
-   module subroutine attempt_imex(self, deriv, t, y, h, flag, err, accept)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t, h
-      real(wp), intent(in) :: y(:)
-      integer, intent(out) :: flag
-      real(wp), intent(out) :: err
-      logical, intent(in) :: accept
+   module procedure attempt_imex
       integer :: i, j
       logical :: ok, implicit
 
@@ -170,7 +148,7 @@ contains
          end do
       end associate
       call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
-   end subroutine attempt_imex
+   end procedure attempt_imex
 
    !> The end of a linearly implicit attempt (y_new and y_err set): the weighted error err
    !> (infinite when y_new is not finite) and, when the step will be accepted (err <= 1 or
