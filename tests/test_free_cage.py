@@ -125,3 +125,20 @@ def test_plot_sweep_map_marks_stable_and_erratic_cases(tmp_path):
     with pytest.raises(SweepError, match="a map needs two varied parameters"):
         plot_sweep(frame, x="10.5.1B/re_cage_coeff_a", y="whirl_speed_ratio", map=True,
                    where={"inner_race_speed": 10000.0})
+
+
+def test_free_cage_figures_draw_its_whirl(tmp_path, short_ball_deck):
+    """Figures 6 and 8 (cage velocities, whirl orbit) of a free-cage run draw the run's own
+    mass-centre history, without the centred cage's note."""
+    from pyadore import plots
+
+    res = pyadore.run(short_ball_deck, out=tmp_path / "free.prt", cage="free")
+    h = res.time_history
+    for fig in (plots.cage_velocities(res), plots.cage_orbit(res)):
+        note = " ".join(t.get_text() for a in fig.get_axes() for t in a.texts)
+        assert "centred" not in note
+    orbit = plots.cage_orbit(res).get_axes()[0]
+    path = next(line for line in orbit.get_lines() if line.get_label().startswith("mass"))
+    np.testing.assert_allclose(path.get_xdata(), h["cage_y_m"].to_numpy() * 1e3, rtol=1e-12)
+    np.testing.assert_allclose(path.get_ydata(), h["cage_z_m"].to_numpy() * 1e3, rtol=1e-12)
+    assert np.hypot(path.get_xdata(), path.get_ydata()).min() > 0.1   # mm: the cage whirls off the axis
