@@ -483,10 +483,12 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
 @click.option("--where", "where", multiple=True, metavar="FIELD=VALUE",
               help="hold another varied parameter at one value (repeat as needed)")
 @click.option("--log-y", is_flag=True, help="logarithmic result axis (e.g. for lives)")
+@click.option("--map", "as_map", is_flag=True,
+              help="a map over --x and --by coloured by --y, stable/erratic cage whirl marked (cage stability map)")
 @click.option("-o", "--out", type=click.Path(dir_okay=False, path_type=Path),
-              help="image file to write [default: DIR/<y>_vs_<x>[_by_<by>].png]")
+              help="image file to write [default: DIR/<y>_vs_<x>[_by_<by>][_map].png]")
 def plot_sweep(sweep_dir: Path, x: str, y: str, by: str | None, where: tuple[str, ...], log_y: bool,
-               out: Path | None) -> None:
+               as_map: bool, out: Path | None) -> None:
     """Draw a result of the sweep in DIR against a varied parameter, one line per value of --by."""
     from .plots.sweep import sweep_plot_command
 
@@ -498,7 +500,7 @@ def plot_sweep(sweep_dir: Path, x: str, y: str, by: str | None, where: tuple[str
             sys.exit(1)
         held[name.strip()] = value.strip()
     try:
-        path = sweep_plot_command(sweep_dir, x=x, y=y, by=by, where=held, out=out, log_y=log_y)
+        path = sweep_plot_command(sweep_dir, x=x, y=y, by=by, where=held, out=out, log_y=log_y, map=as_map)
     except AdoreError as exc:
         _fail(exc)
     except OSError as exc:

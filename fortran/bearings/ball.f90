@@ -13,7 +13,7 @@ module adore_bearings_ball
    use adore_core_error, only: error_type, engine_error
    use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
-   use adore_model_condition, only: condition_of, default_constraints
+   use adore_model_condition, only: condition_of, default_constraints, deck_constraints, dof_constraints_t
    use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures
@@ -120,6 +120,18 @@ contains
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       integer :: method
+      logical :: cage_free
+      type(dof_constraints_t) :: deck_dof
+      select case (self%options%cage)
+      case ("free")
+         cage_free = .true.
+      case ("deck")   ! Rec 3.3 (report 4.4.6): all zero constrains nothing
+         call deck_constraints(self%bearing%dof_flags, deck_dof, error)
+         if (allocated(error)) return
+         cage_free = all(deck_dof%cage%translation)
+      case default
+         cage_free = .false.
+      end select
       select case (self%options%integrator)
       case ("ark4")
          method = INT_METHOD_ARK436
@@ -134,7 +146,7 @@ contains
       end select
       call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &
-                               int_method=method)
+                               int_method=method, cage_free=cage_free)
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
       ! the run's degrees of freedom are the condition's from now on (report 4.4.6)
@@ -162,6 +174,8 @@ contains
          if (.not. s%cage) text = text//"  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"//lf
          if (s%cage .and. s%cage_spin_only) text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT "// &
             "ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
+         if (s%cage .and. .not. s%cage_spin_only) text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM "// &
+            "INTEGRATED (REPORT 4.4.6)"//lf
          if (s%cage .and. .not. s%land_film) text = text//"  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT "// &
             "ONLY (docs/dynamics.md, Cage dynamics)"//lf
          if (s%gyro_restraint) text = text//"  BALL GYROSCOPIC MOMENTS CARRIED BY THE RACES WITHOUT SLIP "// &
@@ -188,6 +202,8 @@ contains
          if (.not. s%cage) text = text//"; cage contacts off (no pocket or guide-land forces)"
          if (s%cage .and. s%cage_spin_only) text = text//"; cage centred, turning about its axis only "// &
                                                    "(translation and tilt constrained, report 4.4.6)"
+         if (s%cage .and. .not. s%cage_spin_only) text = text//"; cage free in all six degrees of freedom "// &
+                                                   "(report 4.4.6)"
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"

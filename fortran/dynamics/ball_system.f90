@@ -259,7 +259,8 @@ contains
    !> accepted when the error test still fails there, as ADORE's Appendix C statistics
    !> show: docs/dynamics.md), the packed initial state y at tau = 0.  traction: race
    !> traction on (default); two_d: the two-dimensional race traction (default .true.).
-   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d, orbit_frame, int_method)
+   subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d, orbit_frame, int_method, &
+                                  cage_free)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_start_t), intent(in) :: start
@@ -274,6 +275,9 @@ contains
       !> the integration method (adore_dynamics_integrator's INT_METHOD_*) instead of the
       !> deck's (ball_int_method of Rec 1 int_method)
       integer, intent(in), optional :: int_method
+      !> the cage free in all six DOFs with its guide lands' film (report 4.4.6; run option
+      !> cage=free): cage_spin_only = .false., land_film = .true.; absent or .false.: the defaults
+      logical, intent(in), optional :: cage_free
       real(wp) :: scales(3), l, tt
       integer :: k
       type(bearing_state_t) :: st
@@ -286,6 +290,12 @@ contains
       sys = new_ball_system(b, g, tt, traction)
       if (present(two_d)) sys%traction_2d = two_d
       if (present(orbit_frame)) sys%orbit_frame = orbit_frame
+      if (present(cage_free)) then
+         if (cage_free) then
+            sys%cage_spin_only = .false.
+            sys%land_film = .true.
+         end if
+      end if
       allocate (y(state_size(b%n_elements)))
       st = initial_ball_state(b, g, start, cage)
       if (sys%cage_spin_only) then

@@ -126,6 +126,10 @@ module adore_model_bearing
       !> for a model not read from a deck).  Coefficients B, C, D of those records (0 in both
       !> decks) are not used.
       real(wp) :: cage_friction(2) = 0.05_wp
+      !> Rec 3.3's eleven flags as the deck gives them.  Their positions are not identified
+      !> (docs/dynamics.md, "The cage's degrees of freedom"); the run option cage=deck reads
+      !> them through adore_model_condition's deck_constraints (all zero: nothing constrained).
+      integer :: dof_flags(11) = 0
       ! operating conditions, Rec 2.7, 9.0, 9.1.x, 11
       !> initial temperatures (K), indexed by TEMP_ROOM ... TEMP_INNER: room, housing, shaft,
       !> element, cage, outer race, inner race

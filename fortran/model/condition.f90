@@ -6,12 +6,13 @@
 !> thermal model and any periodic update change it through that one call.
 module adore_model_condition
    use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
    use adore_model_bearing, only: bearing_t
    implicit none
    private
 
    public :: operating_condition_t, condition_of, same_condition
-   public :: body_dof_t, dof_constraints_t, default_constraints
+   public :: body_dof_t, dof_constraints_t, default_constraints, deck_constraints
 
    !> Which degrees of freedom of a body move under its loads (.true.: free): translation
    !> along x, y, z and angular acceleration about the body's x, y, z axes.  A constrained
@@ -75,5 +76,29 @@ contains
       type(dof_constraints_t) :: c
       if (cage_spin_only) c%cage = body_dof_t([.false., .false., .false.], [.true., .false., .false.])
    end function default_constraints
+
+   !> The constraints the deck asks for (report 4.4.6; run option cage=deck): Rec 3.3's flags
+   !> (bearing_t%dof_flags) all zero constrain nothing - the cage free in all six DOFs, the
+   !> races as default_constraints.  Which position constrains which DOF is not identified
+   !> (docs/dynamics.md, "The cage's degrees of freedom": the ball deck's Rec 3.3 line is lost
+   !> in the report, the roller deck's 1 1 1 1 0 0 0 0 0 0 1 does not match its echo), so a
+   !> nonzero flag is an input error naming the record instead of a guess.
+   subroutine deck_constraints(flags, c, error)
+      integer, intent(in) :: flags(:)
+      type(dof_constraints_t), intent(out) :: c
+      type(error_type), allocatable, intent(out) :: error
+      character(len=8) :: num
+      integer :: k
+      c = default_constraints(.false.)
+      do k = 1, size(flags)
+         if (flags(k) /= 0) then
+            write (num, "(i0)") k
+            call input_error(error, "run option cage=deck: Rec 3.3 field "//trim(num)//" is nonzero; the "// &
+                             "positions of the DOF constraint flags (report 4.4.6) are not identified "// &
+                             "(docs/dynamics.md): choose cage=centred or cage=free")
+            return
+         end if
+      end do
+   end subroutine deck_constraints
 
 end module adore_model_condition

@@ -53,6 +53,10 @@ contains
       call deck_collect_real(deck, "2.1", "error_limit", b%controls%error_limit, error, if_present=.true.)
       call deck_collect_int(deck, "3.2", "bearing_type", b%bearing_type, error)
       call deck_collect_int(deck, "3.2", "n_rolling_elements", b%n_elements, error)
+      do j = 1, size(b%dof_flags)
+         write (digits, "(i0)") j
+         call deck_collect_int(deck, "3.3", "rec3_3_flag_"//trim(digits), b%dof_flags(j), error)
+      end do
       call deck_collect_real(deck, "4", "shaft_outer_diameter", b%shaft_od, error)
       call deck_collect_real(deck, "4", "bearing_outer_diameter", b%bearing_od, error)
       call deck_collect_real(deck, "4", "shaft_inner_diameter", b%shaft_id, error)

@@ -65,6 +65,11 @@ module adore_model_run_options
       real(wp) :: duration = 0.0_wp
       !> the same in shaft (inner race) revolutions; 0: none
       real(wp) :: revolutions = 0.0_wp
+      !> the cage's degrees of freedom (report 4.4.6; docs/dynamics.md, "The cage's degrees of
+      !> freedom"): "centred" (translation and tilt constrained, turning about its axis),
+      !> "free" (all six integrated, the guide lands' film on) or "deck" (the deck's own
+      !> constraints: Rec 3.3 all zero constrains nothing, a free cage)
+      character(len=16) :: cage = "centred"
    end type run_options_t
 
    !> One row of the option table.
@@ -79,7 +84,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 12
+   integer, parameter :: N_OPTIONS = 13
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -116,7 +121,10 @@ module adore_model_run_options
                     "radial, azimuth) or inertial cartesian"), &
       option_spec_t("integrator", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,ark4,ros34pw2,dp5,bs3", &
                     "integration method: the deck's INT METHOD (5: ark4 for balls), IMEX ARK4(3)6L[2]SA, "// &
-                    "Rosenbrock-W ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)") &
+                    "Rosenbrock-W ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)"), &
+      option_spec_t("cage", OPTION_CHOICE, "centred", 0, "", "NAME", "centred,free,deck", &
+                    "cage degrees of freedom (report 4.4.6): centred (translation and tilt constrained), "// &
+                    "free (all six, land films on) or as the deck's Rec 3.3 says (ball decks)") &
       ]
 
 contains
@@ -236,6 +244,9 @@ contains
       case ("integrator")
          opts%integrator = "deck"
          if (len_trim(value) > 0) opts%integrator = trim(adjustl(value))
+      case ("cage")
+         opts%cage = "centred"
+         if (len_trim(value) > 0) opts%cage = trim(adjustl(value))
       end select
    end subroutine set_run_option
 

@@ -42,6 +42,7 @@ program test_cage_contacts
    call test_land_energy_gradient()
    call test_action_reaction()
    call test_pushed_back_and_abnormal()
+   call test_pocket_against_hertz()
    call test_short_bearing_closed_form()
 
    call appendix_c_race_control("cage contacts", b, g, s0)
@@ -241,6 +242,73 @@ contains
          end do
       end do
    end subroutine test_action_reaction
+
+   !> A dry, frictionless ball pushed delta into its pocket wall: the metallic load equals
+   !> Hertz's for a sphere of diameter D in a concave cylinder of diameter D + c (curvatures
+   !> 2/D, 2/D; 0, -2/(D + c): Harris & Kotzalas ch. 6), computed here independently of
+   !> adore_contact_hertz: the complete elliptic integrals by the trapezoidal rule (even and
+   !> periodic integrand: exponential convergence), the ellipticity by bisection of
+   !> F(rho) = ((k**2 + 1) E - 2 K)/((k**2 - 1) E), then
+   !> Q = (2 sum rho/(3 C)) (2 delta/(delta* sum rho))**1.5, C = sum (1 - nu**2)/E.
+   subroutine test_pocket_against_hertz()
+      type(cage_pocket_pair_t) :: p
+      type(body_state_t) :: ball, cage
+      type(cage_pocket_geometry_t) :: c
+      real(wp), parameter :: d = 0.012_wp, cl = 5.0e-4_wp
+      real(wp) :: srho, frho, lo, hi, kap, ek, kk, dstar, comp, q, delta, worst
+      real(wp), parameter :: deltas(3) = [1.0e-6_wp, 6.0e-6_wp, 2.0e-5_wp]
+      integer :: i, it
+      p = test_pocket(0.0_wp, 0.0_wp)
+      srho = 4.0_wp/d - 2.0_wp/(d + cl)
+      frho = (2.0_wp/(d + cl))/srho
+      lo = 1.0_wp + 1.0e-9_wp
+      hi = 100.0_wp
+      do it = 1, 200
+         kap = 0.5_wp*(lo + hi)
+         call elliptic_trapezoid(1.0_wp - 1.0_wp/kap**2, kk, ek)
+         if (((kap**2 + 1.0_wp)*ek - 2.0_wp*kk)/((kap**2 - 1.0_wp)*ek) < frho) then
+            lo = kap
+         else
+            hi = kap
+         end if
+      end do
+      call elliptic_trapezoid(1.0_wp - 1.0_wp/kap**2, kk, ek)
+      dstar = (2.0_wp*kk/pi)*(pi/(2.0_wp*kap**2*ek))**(1.0_wp/3.0_wp)
+      comp = (1.0_wp - 0.3_wp**2)/2.0e11_wp + (1.0_wp - 0.34_wp**2)/1.1e11_wp
+      worst = 0.0_wp
+      do i = 1, 3
+         delta = deltas(i)
+         call pocket_state([0.0_wp, 2.5e-4_wp + delta, 0.0_wp], ball, cage)
+         ball%velocity = cage%velocity + cross(cage%omega, ball%position - cage%position)
+         call cage_pocket_contact(p, 0.7_wp, ball, cage, c)
+         q = (2.0_wp*srho/(3.0_wp*comp))*(2.0_wp*delta/(dstar*srho))**1.5_wp
+         worst = max(worst, abs(c%metallic_load - q)/q)
+         if (i == 2) write (*, "(a,f8.4,a,es12.5,a,es12.5,a)") "pocket vs Hertz: kappa ", kap, ", delta 6 um: Q ", &
+            c%metallic_load, " N, Hertz ", q, " N"
+      end do
+      write (*, "(a,es9.2)") "pocket vs Hertz: worst relative deviation at delta = 1, 6, 20 um: ", worst
+      call check(worst <= 1.0e-9_wp, "pocket: metallic load = Hertz's sphere in a concave cylinder")
+   end subroutine test_pocket_against_hertz
+
+   !> Complete elliptic integrals K(m), E(m) by the trapezoidal rule on [0, pi/2].
+   subroutine elliptic_trapezoid(m, kk, ek)
+      real(wp), intent(in) :: m
+      real(wp), intent(out) :: kk, ek
+      integer, parameter :: n = 4000
+      real(wp) :: th, wgt, s
+      integer :: j
+      kk = 0.0_wp
+      ek = 0.0_wp
+      do j = 0, n
+         th = 0.5_wp*pi*real(j, wp)/real(n, wp)
+         wgt = merge(0.5_wp, 1.0_wp, j == 0 .or. j == n)
+         s = 1.0_wp - m*sin(th)**2
+         kk = kk + wgt/sqrt(s)
+         ek = ek + wgt*sqrt(s)
+      end do
+      kk = kk*0.5_wp*pi/real(n, wp)
+      ek = ek*0.5_wp*pi/real(n, wp)
+   end subroutine elliptic_trapezoid
 
    !> A ball pushed into its pocket wall is pushed back (lubricated, with friction); deep
    !> interference is abnormal, shallow is not.

@@ -117,6 +117,7 @@ program test_cage_whirl
 
    call test_static_capacity()
    call test_whirl_power()
+   call test_held_whirl_film_force()
    call test_report_whirl_needs_a_centripetal_force()
    call test_static_equilibrium_is_stable()
    call test_half_frequency_whirl()
@@ -172,6 +173,44 @@ contains
       lin = -3.0_wp*p(2)
       call check(abs(p(4) - lin) <= 1.0e-12_wp*abs(lin), "whirl: film force linear in wbar - psidot")
    end subroutine test_whirl_power
+
+   !> A cage held on a circular whirl of eccentricity ratio eps at whirl speed psidot about
+   !> the race reproduces the short bearing's closed form (Hamrock 1991; Childs 1993 ch. 3:
+   !> in the frame turning with the whirl the film sees the surface speeds w - psidot, so
+   !> Ocvirk's static forces hold with w replaced by 2 (wbar - psidot)): per land the radial
+   !> force (towards the race centre) eta w R L**3 eps**2/(c**2 (1 - eps**2)**2) and the
+   !> tangential force pi eta w R L**3 eps/(4 c**2 (1 - eps**2)**1.5), along the whirl below
+   !> wbar and against it above; at eps = 0.2, 0.5, 0.8 and psidot/wbar = 0, 0.5, 1.5.
+   subroutine test_held_whirl_film_force()
+      real(wp) :: eps(3), ratio(3), y(4), f(3), fr, ft, w, worst
+      integer :: i, j, k
+      eps = [0.2_wp, 0.5_wp, 0.8_wp]
+      ratio = [0.0_wp, 0.5_wp, 1.5_wp]
+      worst = 0.0_wp
+      do i = 1, 3
+         do j = 1, 3
+            ! cage at -r e_z about the race, moving along +e_y: whirl about +x at psidot
+            y = [0.0_wp, -eps(i)*c, ratio(j)*wbar*eps(i)*c, 0.0_wp]
+            f = land_force_on_cage(cage, y)
+            w = 2.0_wp*(wbar - ratio(j)*wbar)
+            fr = 0.0_wp
+            ft = 0.0_wp
+            do k = 1, size(cage%lands)
+               associate (p => cage%lands(k))
+                  fr = fr + p%viscosity*abs(w)*p%radius*p%width**3*eps(i)**2/(p%clearance**2*(1.0_wp - eps(i)**2)**2)
+                  ft = ft + sign(1.0_wp, w)*pi*p%viscosity*abs(w)*p%radius*p%width**3*eps(i) &
+                       /(4.0_wp*p%clearance**2*(1.0_wp - eps(i)**2)**1.5_wp)
+               end associate
+            end do
+            ! radial: towards the race centre (+e_z); tangential: along the whirl (+e_y)
+            worst = max(worst, abs(f(3) - fr)/hypot(fr, ft), abs(f(2) - ft)/hypot(fr, ft), abs(f(1))/hypot(fr, ft))
+            if (i == 2 .and. j == 2) write (*, "(a,2f10.4,a,2f10.4,a)") "held whirl eps 0.5, psidot = wbar/2: "// &
+               "film (radial, tangential) ", f(3), f(2), " N; closed form ", fr, ft, " N"
+         end do
+      end do
+      write (*, "(a,es9.2)") "held whirl: worst deviation from the closed form over 9 states (of |F|): ", worst
+      call check(worst <= 1.0e-10_wp, "held whirl: the land films' force equals the whirling short bearing's closed form")
+   end subroutine test_held_whirl_film_force
 
    !> The report's start whirl (4.4.4; cage_step0: the Rec 9.5.1 centre, whirl velocity =
    !> angular velocity) as a circular orbit about the guiding race, without pocket contact:

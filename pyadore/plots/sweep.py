@@ -28,6 +28,17 @@ RESULTS = {
     "inner_race_bulk_temp_K": ("Inner race bulk temperature", "K"),
     "housing_bulk_temp_K": ("Housing bulk temperature", "K"),
     "shaft_bulk_temp_K": ("Shaft bulk temperature", "K"),
+    "mean_total_power_loss_W": ("Mean total power loss", "W"),
+    "mean_max_contact_load_N": ("Largest mean contact load", "N"),
+    "mean_cage_speed_ratio": ("Mean cage speed ratio", "-"),
+    "mean_revolutions": ("Averaging window", "rev"),
+    "mean_whirl_radius_m": ("Mean cage whirl radius", "m"),
+    "whirl_speed_ratio": ("Cage whirl / cage speed", "-"),
+    "whirl_speed_cv": ("Cage whirl speed std / mean", "-"),
+    "radial_velocity_ratio": ("Cage radial velocity rms / whirl velocity", "-"),
+    "max_whirl_radius_ratio": ("Largest whirl radius / land clearance", "-"),
+    "land_contact_fraction": ("Guide-land near-contact time fraction", "-"),
+    "cage_stability": ("Cage whirl stable (1) or erratic (0)", "-"),
 }
 
 #: Axis titles of the summary's result columns, ``Title (unit)``.
@@ -118,8 +129,13 @@ def _value_text(v) -> str:
 
 
 def plot_sweep(summary_or_dir, x: str, y: str, by: str | None = None, where: dict | None = None, ax=None,
-               log_y: bool = False):
+               log_y: bool = False, map: bool = False):
     """Draw result ``y`` against varied parameter ``x``, one line per value of ``by``.
+
+    map: a map over ``x`` (horizontal) and ``by`` (vertical) instead: each case a marker
+    coloured by ``y`` and labelled with its value; with the summary's ``cage_stability``
+    column a filled circle marks a stable cage whirl, a cross an erratic one (issue #25's
+    cage stability map, e.g. ``x="10.5.1B/re_cage_coeff_a"``, ``by="inner_race_speed"``).
 
     summary_or_dir: a sweep folder, its ``summary.csv`` or the DataFrame of
     :func:`pyadore.sweep`.  where: ``{parameter: value}`` holding every other varied
@@ -169,6 +185,10 @@ def plot_sweep(summary_or_dir, x: str, y: str, by: str | None = None, where: dic
         ax = fig.add_subplot()
     else:
         fig = ax.figure
+    if map:
+        if by is None:
+            raise SweepError("a map needs two varied parameters: x and by")
+        return _draw_map(fig, ax, ok, x, y, by, name)
     groups = [(None, ok)] if by is None else list(ok.groupby(by, sort=True))
     x_div, x_unit = si_scale(_unit(x), ok[x])
     y_title, y_unit = RESULTS.get(y, (y, ""))
@@ -199,6 +219,42 @@ def plot_sweep(summary_or_dir, x: str, y: str, by: str | None = None, where: dic
     return fig
 
 
+def _draw_map(fig, ax, ok, x: str, y: str, by: str, name: str):
+    """The map of plot_sweep(map=True): cases at (x, by), coloured by y."""
+    import numpy as np
+
+    x_div, x_unit = si_scale(_unit(x), ok[x])
+    by_div, by_unit = si_scale(_unit(by), ok[by])
+    y_title, y_unit = RESULTS.get(y, (y, ""))
+    y_div, y_unit = si_scale(y_unit, ok[y])
+    xs, bys = ok[x].to_numpy(float) / x_div, ok[by].to_numpy(float) / by_div
+    vals = ok[y].to_numpy(float) / y_div
+    finite = np.isfinite(vals)
+    lo, hi = (float(np.nanmin(vals)), float(np.nanmax(vals))) if finite.any() else (0.0, 1.0)
+    stable = ok["cage_stability"].to_numpy(float) if "cage_stability" in ok.columns else np.full(len(ok), np.nan)
+    kinds = ((stable == 1.0, "o", "stable whirl"), (stable == 0.0, "X", "erratic whirl"),
+             (~np.isin(stable, (0.0, 1.0)), "s", "no whirl measure"))
+    sc = None
+    for mask, marker, label in kinds:
+        if mask.any():
+            sc = ax.scatter(xs[mask], bys[mask], c=vals[mask], cmap="viridis", vmin=lo, vmax=hi, s=260,
+                            marker=marker, edgecolors="k", label=label)
+    for xv, bv, v in zip(xs, bys, vals):
+        ax.annotate(f"{v:.3g}", (xv, bv), textcoords="offset points", xytext=(0, 12), ha="center", fontsize="x-small")
+    if sc is not None:
+        fig.colorbar(sc, ax=ax, label=f"{y_title} ({y_unit})" if y_unit and y_unit != "-" else y_title)
+    ax.set_xlabel(_label(x, x_unit))
+    ax.set_ylabel(_label(by, by_unit))
+    ax.set_title(f"{y_title} over {field_title(x)[0].lower() + field_title(x)[1:]} and "
+                 f"{field_title(by)[0].lower() + field_title(by)[1:]}", fontsize="medium")
+    ax.margins(0.15)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize="small", loc="best")
+    if len(fig.axes) <= 2:
+        fig.suptitle(f"sweep {name}", fontsize="small", x=0.01, ha="left")
+    return fig
+
+
 def _is_close(a: float, b) -> bool:
     try:
         return math.isclose(float(a), float(b), rel_tol=1e-9, abs_tol=0.0)
@@ -207,7 +263,7 @@ def _is_close(a: float, b) -> bool:
 
 
 def sweep_plot_command(out_dir, x: str, y: str, by: str | None = None, where: dict | None = None, out=None,
-                       log_y: bool = False):
+                       log_y: bool = False, map: bool = False):
     """``pyadore plot-sweep DIR``: draw result ``y`` of the sweep in ``out_dir`` against the
     varied parameter ``x``, one line per value of ``by`` (the others held by ``where``);
     save it to ``out`` [default: ``DIR/<y>_vs_<x>[_by_<by>].png``] and return the path."""
@@ -220,9 +276,9 @@ def sweep_plot_command(out_dir, x: str, y: str, by: str | None = None, where: di
         suffix = Path(out).suffix.lower().lstrip(".")
         if suffix not in kinds:
             raise SweepError(f"{out}: unknown image type {suffix!r}; use one of " + ", ".join(sorted(kinds)))
-    fig = plot_sweep(out_dir, x=x, y=y, by=by, where=where, log_y=log_y)
+    fig = plot_sweep(out_dir, x=x, y=y, by=by, where=where, log_y=log_y, map=map)
     if out is None:
-        stem = f"{y}_vs_{x}" + (f"_by_{by}" if by else "")
+        stem = f"{y}_vs_{x}" + (f"_by_{by}" if by else "") + ("_map" if map else "")
         out = Path(out_dir) / (stem.replace("/", "_") + ".png")  # a REC/FIELD name in a file name
     out = Path(out)
     fig.savefig(out, dpi=120)

@@ -24,6 +24,18 @@ from typing import Callable, Iterable
 __all__ = ["run_case", "run_local", "run_dask"]
 
 
+def _guide(deck_text: str) -> str:
+    """The race guiding the cage of a case deck: "outer" for Rec 7.0's first guide type 1,
+    else "inner" (type 2, and decks without guide lands)."""
+    from ..deck import parse_text
+
+    try:
+        deck, _problems = parse_text(deck_text, "case")
+        return "outer" if deck.get("7.0", "guide_type[1]") == 1 else "inner"
+    except Exception:  # an unreadable deck fails in the run itself, with its own message
+        return "inner"
+
+
 def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | None = None) -> dict:
     """Run one case deck (text) and return ``{case, status, error, notes, duration_s,
     print_text, history_text, results_nc, results, worker, tmp_deck, tmp_print,
@@ -62,7 +74,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                 result = run(deck, steps=steps, out=prt, progress=False, **(options or {}))
                 out["notes"] = list(result.notes)
                 out["results"] = key_results(read_print(prt))
-                out["results"].update(mean_results(result.dataset))
+                out["results"].update(mean_results(result.dataset, guide=_guide(deck_text)))
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
                 if result.history_path is not None:
                     out["history_text"] = result.history_path.read_text(encoding="utf-8", errors="replace")

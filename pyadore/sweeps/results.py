@@ -20,12 +20,20 @@ velocity about its axis over the shaft speed, both relative to the outer race) a
 revolutions than asked: the step count of a sweep gives a fixed time, not a fixed number of
 revolutions, so compare cases by their averages over the same number of revolutions).
 
+The cage's whirl-stability measures over the second half of the run
+(:func:`pyadore.cage_stability.cage_stability`, issue #25): ``mean_whirl_radius_m``,
+``whirl_speed_ratio``, ``whirl_speed_cv``, ``radial_velocity_ratio``,
+``max_whirl_radius_ratio``, ``land_contact_fraction`` and ``cage_stability`` (1 stable,
+0 erratic, NaN for a cage held centred).
+
 A value the engine does not compute (printed ``NaN``) is NaN here.
 """
 
 from __future__ import annotations
 
 import math
+
+from ..cage_stability import STABILITY_COLUMNS, cage_stability
 
 __all__ = ["RESULT_COLUMNS", "MEAN_COLUMNS", "key_results", "mean_results"]
 
@@ -35,10 +43,11 @@ RESULT_COLUMNS = (
     "cage_speed_ratio", "cage_bulk_temp_K", "outer_race_bulk_temp_K", "inner_race_bulk_temp_K",
     "housing_bulk_temp_K", "shaft_bulk_temp_K",
     "mean_total_power_loss_W", "mean_max_contact_load_N", "mean_cage_speed_ratio", "mean_revolutions",
-)
+) + STABILITY_COLUMNS
 
 #: The time-averaged columns (mean_results), part of RESULT_COLUMNS.
-MEAN_COLUMNS = ("mean_total_power_loss_W", "mean_max_contact_load_N", "mean_cage_speed_ratio", "mean_revolutions")
+MEAN_COLUMNS = ("mean_total_power_loss_W", "mean_max_contact_load_N", "mean_cage_speed_ratio",
+                "mean_revolutions") + STABILITY_COLUMNS
 
 
 def _cell(step, table: str, row, column: str) -> float:
@@ -80,14 +89,17 @@ def key_results(print_run) -> dict:
     return out
 
 
-def mean_results(dataset, revolutions: float = 1.0) -> dict:
+def mean_results(dataset, revolutions: float = 1.0, guide: str = "inner") -> dict:
     """The :data:`MEAN_COLUMNS` of a run's dataset (:attr:`pyadore.Result.dataset`):
+    the cage's stability measures over the second half of the run (cage_stability, about
+    the ``guide`` race: "inner" or "outer", Rec 7.0's first guide type) and
     time-weighted averages over its last ``revolutions`` shaft revolutions
     (:func:`pyadore.results.time_mean`); NaN for a run without a dataset or one shorter
     than that."""
     out = {c: math.nan for c in MEAN_COLUMNS}
     if dataset is None:
         return out
+    out.update(cage_stability(dataset, guide=guide))
     from ..errors import AdoreInputError
     from ..results import time_mean
 
