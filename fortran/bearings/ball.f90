@@ -13,15 +13,20 @@ module adore_bearings_ball
    use adore_core_error, only: error_type, engine_error
    use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
-   use adore_model_condition, only: condition_of, default_constraints
+   use adore_model_condition, only: operating_condition_t, condition_of, default_constraints
    use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
-   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures
+   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
+   use adore_thermal_distortion, only: distorted_bearing
+   use adore_thermal_network, only: thermal_heat_t
+   use adore_core_linalg, only: solve_dense
+   use adore_bearings_ball_thermal, only: ball_thermal_t, new_ball_thermal, thermal_mode_of, ball_heat_rates, &
+                                          ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF, THERMAL_GEOMETRY
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
-   use adore_dynamics_integrator, only: integrator_t, INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, &
+   use adore_dynamics_integrator, only: integrator_t, DERIV_OK, INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, &
                                         INT_METHOD_ARK436
    use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics, ball_int_method
    use adore_bearings_system, only: bearing_system_t
@@ -46,6 +51,11 @@ module adore_bearings_ball
       real(wp), allocatable :: last(:)      !< each ball's orbital position at the last step (rad)
       real(wp) :: axial_origin = 0.0_wp     !< the print's axial origin of the balls (m)
       real(wp) :: clearance = 0.0_wp        !< guide land diametral clearance (m; NaN: no land)
+      type(ball_thermal_t) :: thermal       !< the thermal model (adore_bearings_ball_thermal)
+      !> worst relative equilibrium residual of the inner race after a load-holding solve
+      !> (|net force| / |applied load|), and the solves done
+      real(wp) :: hold_residual = 0.0_wp
+      integer :: hold_solves = 0
    contains
       procedure :: eval => ball_eval
       procedure :: solve_start => ball_solve_start
@@ -61,6 +71,7 @@ module adore_bearings_ball
       procedure :: new_history => ball_new_history
       procedure :: record_row => ball_record_row
       procedure :: mount => ball_mount
+      procedure :: on_event => ball_on_event
    end type ball_kind_t
 
 contains
@@ -146,6 +157,15 @@ contains
          self%last = e%azimuth
       end associate
       self%clearance = guide_clearance(self%bearing, self%step0%geometry, self%eom%state%temperature)
+      ! the thermal model (docs/thermal.md, "The wiring"): an event at the end of every
+      ! averaging interval
+      call thermal_mode_of(self%options%thermal, self%bearing, method, error)
+      if (allocated(error)) return
+      self%thermal = new_ball_thermal(self%bearing, method)
+      if (method /= THERMAL_OFF) then
+         self%event_start = self%thermal%interval
+         self%event_period = self%thermal%interval
+      end if
    end subroutine ball_start_dynamics
 
    !> The print listing's lines on the physics of the time integration.
@@ -157,7 +177,8 @@ contains
       character(len=16) :: num
       text = ""
       if (n_steps < 1) return
-      text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf
+      call thermal_text(self, .true., text)
+      text = text//lf
       associate (s => self%eom)
          if (.not. s%cage) text = text//"  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"//lf
          if (s%cage .and. s%cage_spin_only) text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT "// &
@@ -184,7 +205,7 @@ contains
       text = ""
       if (n_steps < 1) return
       associate (s => self%eom)
-         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
+         call thermal_text(self, .false., text)
          if (.not. s%cage) text = text//"; cage contacts off (no pocket or guide-land forces)"
          if (s%cage .and. s%cage_spin_only) text = text//"; cage centred, turning about its axis only "// &
                                                    "(translation and tilt constrained, report 4.4.6)"
@@ -193,6 +214,40 @@ contains
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
       end associate
    end subroutine ball_run_note
+
+   !> The thermal model of the run in one line: the print's (upper case) or the note's.
+   subroutine thermal_text(self, upper, text)
+      class(ball_kind_t), intent(in) :: self
+      logical, intent(in) :: upper
+      character(len=:), allocatable, intent(out) :: text
+      character(len=12) :: dt, t0
+      if (self%thermal%mode == THERMAL_OFF) then
+         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
+      else
+         write (dt, "(es10.3)") self%thermal%interval
+         write (t0, "(es10.3)") self%thermal%geometry_start
+         text = "thermal model on: heat averaged over "//trim(adjustl(dt))//" s, temperatures updated (Rec 2.5)"
+         if (self%thermal%mode == THERMAL_GEOMETRY) then
+            text = text//", geometry updated from "//trim(adjustl(t0))//" s with the applied load held"
+         else
+            text = text//", geometry held"
+         end if
+      end if
+      if (upper) then
+         text = "  "//upper_case(text)
+      end if
+   end subroutine thermal_text
+
+   !> text in upper case (ASCII letters).
+   pure function upper_case(text) result(u)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: u
+      integer :: i
+      u = text
+      do i = 1, len(u)
+         if (u(i:i) >= "a" .and. u(i:i) <= "z") u(i:i) = achar(iachar(u(i:i)) - 32)
+      end do
+   end function upper_case
 
    integer function ball_n_values(self)
       class(ball_kind_t), intent(in) :: self
@@ -210,7 +265,13 @@ contains
    !> less than half a revolution).
    subroutine ball_accepted(self)
       class(ball_kind_t), intent(inout) :: self
+      type(thermal_heat_t) :: heat
       integer :: k
+      ! the thermal model's heat of this accepted state (its time: the state's, s)
+      if (self%thermal%mode /= THERMAL_OFF) then
+         call ball_heat_rates(self%thermal, self%bearing, self%eom%state, self%eom%loads, heat)
+         call ball_thermal_accumulate(self%thermal, self%eom%state%time, heat)
+      end if
       do k = 1, self%bearing%n_elements
          associate (phi => body_azimuth(self%eom%state%elements(k)))
             self%azimuth(k) = self%azimuth(k) + (modulo(phi - self%last(k) + pi, 2.0_wp*pi) - pi)
@@ -224,14 +285,24 @@ contains
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: t, mean(:)
-      real(wp) :: time
+      real(wp) :: time, header(4)
       time = t*self%time_scale
-      associate (b => self%bearing)
-         call write_ball_step(unit, step, [t, time, b%speed_outer*time/(2.0_wp*pi), &
-                                           b%speed_inner*time/(2.0_wp*pi)], &
-                              b, self%eom%geometry, self%eom%state, self%eom%rates, self%eom%loads, self%azimuth, &
-                              self%axial_origin, mean(AVG_BALL_WEAR:), mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), &
-                              mean(AVG_POWER:AVG_RATIOS + 2))
+      associate (b => self%bearing, th => self%thermal)
+         header = [t, time, b%speed_outer*time/(2.0_wp*pi), b%speed_inner*time/(2.0_wp*pi)]
+         if (th%mode == THERMAL_OFF) then
+            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
+                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2))
+         else if (.not. th%have_field) then      ! before the first update: no field yet
+            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
+                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2), th%fluid)
+         else
+            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
+                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2), th%fluid, &
+                                 th%field)
+         end if
       end associate
    end subroutine ball_write_step
 
@@ -274,7 +345,14 @@ contains
          return
       end if
       associate (c => self%condition)
-         self%eom%geometry = mount_geometry(self%bearing, c%temperature)
+         ! the geometry at its own temperatures (ADRC2: the fits changed by the differential
+         ! expansion, then mounted with the free growth; docs/thermal.md)
+         if (all(c%geometry_temperature == self%bearing%temperature)) then
+            self%eom%geometry = mount_geometry(self%bearing, c%geometry_temperature)
+         else
+            self%eom%geometry = mount_geometry(distorted_bearing(self%bearing, c%geometry_temperature), &
+                                               c%geometry_temperature)
+         end if
          self%eom%bearing%force = c%force
          self%eom%bearing%moment = c%moment
          self%eom%constraints = c%constraints
@@ -282,6 +360,114 @@ contains
          self%clearance = guide_clearance(self%bearing, self%eom%geometry, c%temperature)
       end associate
    end subroutine ball_mount
+
+   !> The thermal update at the end of an averaging interval (time s, state y at tau =
+   !> time / T; report 2.10 steps 2-12): the network solved with the heat averaged over the
+   !> interval, the bulk temperatures set; in THERMAL_GEOMETRY mode from the geometry start
+   !> time on, the geometry mounted at them and the inner race moved so that its contacts
+   !> carry the applied load (hold_applied_load).  Nothing without a thermal model.
+   subroutine ball_on_event(self, time, it, y, error)
+      class(ball_kind_t), intent(inout) :: self
+      real(wp), intent(in) :: time
+      type(integrator_t), intent(inout) :: it
+      real(wp), intent(inout) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(operating_condition_t) :: c
+      logical :: geometry
+      if (self%thermal%mode == THERMAL_OFF) return
+      call ball_thermal_update(self%thermal, self%bearing, self%eom%state, error)
+      if (allocated(error)) return
+      c = self%condition
+      c%temperature = self%thermal%field%temperature
+      ! the start time with a relative allowance for the event times' round-off
+      geometry = self%thermal%mode == THERMAL_GEOMETRY .and. &
+                 time >= self%thermal%geometry_start*(1.0_wp - 1.0e-9_wp)
+      if (geometry) c%geometry_temperature = self%thermal%field%temperature
+      call self%set_condition(c, it, y, error)
+      if (allocated(error)) return
+      if (geometry) then
+         self%thermal%geometry_updates = self%thermal%geometry_updates + 1
+         call hold_applied_load(self, time/self%time_scale, y, error)
+         if (allocated(error)) return
+         call it%restart(it%h_next)
+      end if
+   end subroutine ball_on_event
+
+   !> The load-holding constraint of a geometry update (report 2.10 step 11, 5.3 "an
+   !> equilibrium constraint is applied to move the races and maintain the thrust and radial
+   !> loads", 5.5 "a quasi-static constraint"): the inner race's free translations in y (state
+   !> at tau = t) moved, the balls and every velocity held, until the net force on the race
+   !> (its contacts and the applied load) is below 1e-6 of the applied load - Newton with a
+   !> forward-difference Jacobian (step 1e-9 m); a race clear of every ball (no stiffness)
+   !> steps 1 um along the net force, no step longer than 2 um.  The outer race is fixed in
+   !> the housing.
+   !> self%hold_residual: the worst final |net force| / |applied load|.  Engine error when an
+   !> evaluation fails or the iteration does not converge in 60 steps.
+   subroutine hold_applied_load(self, t, y, error)
+      class(ball_kind_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(inout) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: h = 1.0e-9_wp, STEP_CLEAR = 1.0e-6_wp
+      real(wp) :: dydt(size(y)), f(3), f1(3), jac(3, 3), dx(3), scale, y0
+      logical :: free(3), ok
+      integer :: i0, iter, j, m, idx(3), flag
+      i0 = BODY_SIZE*(self%bearing%n_elements + 2)          ! the inner race's block
+      free = self%condition%constraints%inner%translation
+      m = count(free)
+      if (m == 0) return
+      idx(1:m) = pack([1, 2, 3], free)
+      scale = max(norm2(self%condition%force), tiny(1.0_wp))
+      do iter = 1, 60
+         call net_force(f)
+         if (allocated(error)) return
+         if (norm2(f(idx(1:m))) <= 1.0e-6_wp*scale) exit
+         if (iter == 60) then
+            call engine_error(error, "load-holding constraint: no equilibrium of the inner race after 60 Newton "// &
+                              "steps (net force "//show(norm2(f))//" N)")
+            return
+         end if
+         do j = 1, m
+            y0 = y(i0 + idx(j))
+            y(i0 + idx(j)) = y0 + h
+            call net_force(f1)
+            y(i0 + idx(j)) = y0
+            if (allocated(error)) return
+            jac(1:m, j) = (f1(idx(1:m)) - f(idx(1:m)))/h
+         end do
+         call solve_dense(m, jac(1:m, 1:m), -f(idx(1:m)), dx(1:m), ok)
+         ! no contact stiffness (the race clear of every ball): a 1 um step along the net
+         ! force (then the applied load) until the contacts carry again
+         if (.not. ok) dx(1:m) = STEP_CLEAR*f(idx(1:m))/norm2(f(idx(1:m)))
+         ! Newton steps of at most 2 um (a barely touching Hertz contact is nearly without
+         ! stiffness: an unlimited step would overshoot)
+         if (norm2(dx(1:m)) > 2.0_wp*STEP_CLEAR) dx(1:m) = 2.0_wp*STEP_CLEAR*dx(1:m)/norm2(dx(1:m))
+         y(i0 + idx(1:m)) = y(i0 + idx(1:m)) + dx(1:m)
+      end do
+      self%hold_solves = self%hold_solves + 1
+      self%hold_residual = max(self%hold_residual, norm2(f(idx(1:m)))/scale)
+   contains
+
+      !> The net force (N) on the inner race at (t, y): its mass times its acceleration.
+      subroutine net_force(force)
+         real(wp), intent(out) :: force(3)
+         call self%eom%eval(t, y, dydt, flag)
+         if (flag /= DERIV_OK) then
+            call engine_error(error, "load-holding constraint: the equations of motion failed: "// &
+                              self%eom%failure_reason)
+            force = 0.0_wp
+            return
+         end if
+         force = self%bearing%mass(BODY_INNER)*self%eom%rates%races(RACE_INNER)%velocity
+      end subroutine net_force
+
+      function show(x) result(text)
+         real(wp), intent(in) :: x
+         character(len=16) :: text
+         write (text, "(es10.3)") x
+      end function show
+
+   end subroutine hold_applied_load
 
    !> The quantities the print shows as time averages, at one state s of ball bearing b
    !> with the force assembly's loads there, into v (size AVG_BALL_WEAR - 1 + n): the total

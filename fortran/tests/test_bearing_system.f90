@@ -169,6 +169,7 @@ program test_bearing_system
    use adore_model_run_options, only: run_options_t, set_run_option, run_options_from_text
    use adore_model_condition, only: operating_condition_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_thermal_distortion, only: distorted_bearing
    use adore_state_bearing_state, only: bearing_state_t, unpack_state, RACE_INNER
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
    use adore_bearings_system, only: bearing_system_t
@@ -349,13 +350,14 @@ contains
       ! the change: the outer race 30 K warmer
       c = sys%condition
       c%temperature(TEMP_OUTER) = c%temperature(TEMP_OUTER) + 30.0_wp
+      c%geometry_temperature = c%temperature          ! the geometry follows (ADRC2)
       h = it%h_next
       call sys%set_condition(c, it, y, error)
       call check(.not. allocated(error), "ball: condition changed")
       call check(.not. it%fsal_valid, "ball: the integrator's cached stage dropped")
       select type (sys)
       type is (ball_kind_t)
-         g = mount_geometry(b, c%temperature)
+         g = mount_geometry(distorted_bearing(b, c%temperature), c%temperature)
          call check(all(sys%eom%geometry%groove_centre == g%groove_centre) .and. &
                     sys%eom%geometry%element_diameter == g%element_diameter, &
                     "ball: the equations of motion use the geometry mounted at the new temperatures")
