@@ -55,6 +55,8 @@ module adore_bearings_ball
       !> worst relative equilibrium residual of the inner race after a load-holding solve
       !> (|net force| / |applied load|), and the solves done
       real(wp) :: hold_residual = 0.0_wp
+      !> the largest |net force| / |applied load| a geometry update left before the solve
+      real(wp) :: hold_initial = 0.0_wp
       integer :: hold_solves = 0
    contains
       procedure :: eval => ball_eval
@@ -375,7 +377,7 @@ contains
       type(operating_condition_t) :: c
       logical :: geometry
       if (self%thermal%mode == THERMAL_OFF) return
-      call ball_thermal_update(self%thermal, self%bearing, self%eom%state, error)
+      call ball_thermal_update(self%thermal, self%bearing, self%eom%state, time, error)
       if (allocated(error)) return
       c = self%condition
       c%temperature = self%thermal%field%temperature
@@ -421,6 +423,7 @@ contains
       do iter = 1, 60
          call net_force(f)
          if (allocated(error)) return
+         if (iter == 1) self%hold_initial = max(self%hold_initial, norm2(f(idx(1:m)))/scale)
          if (norm2(f(idx(1:m))) <= 1.0e-6_wp*scale) exit
          if (iter == 60) then
             call engine_error(error, "load-holding constraint: no equilibrium of the inner race after 60 Newton "// &

@@ -54,6 +54,7 @@ module adore_bearings_ball_thermal
       !> each ball's drag, churning moment and loss at the last accepted state
       type(element_fluid_loss_t), allocatable :: fluid(:)
       integer :: updates = 0                 !< fields solved
+      real(wp), allocatable :: update_times(:)   !< the time of each update (s)
       integer :: geometry_updates = 0        !< geometry re-mounted
       !> worst relative heat balance |generated - (coolant + reference + bore)| / generated
       real(wp) :: balance = 0.0_wp
@@ -100,7 +101,7 @@ contains
       th%options = default_thermal_options(b)
       th%integral = new_thermal_heat(b%n_elements)
       th%last = new_thermal_heat(b%n_elements)
-      allocate (th%fluid(b%n_elements))
+      allocate (th%fluid(b%n_elements), th%update_times(0))
    end function new_ball_thermal
 
    !> The heat rates (W) of ball bearing b at state s with the force assembly's loads
@@ -169,11 +170,13 @@ contains
    !> The end of an interval (report 2.10 steps 2-9): the heat averaged over it, the
    !> network solved for it (eq 18's velocity of ball k = its spin surface speed
    !> |omega| D / 2 at state s, docs/thermal.md), the heat balance checked (th%balance, the
-   !> worst so far), the integral restarted.  Engine error for an empty interval.
-   subroutine ball_thermal_update(th, b, s, error)
+   !> worst so far), the integral restarted; time (s) recorded in th%update_times.  Engine
+   !> error for an empty interval.
+   subroutine ball_thermal_update(th, b, s, time, error)
       type(ball_thermal_t), intent(inout) :: th
       type(bearing_t), intent(in) :: b
       type(bearing_state_t), intent(in) :: s
+      real(wp), intent(in) :: time
       type(error_type), allocatable, intent(out) :: error
       type(thermal_heat_t) :: mean
       real(wp) :: leaving
@@ -194,6 +197,7 @@ contains
       if (allocated(error)) return
       th%have_field = .true.
       th%updates = th%updates + 1
+      th%update_times = [th%update_times, time]
       leaving = th%field%q_coolant + th%field%q_reference + th%field%q_bore
       th%balance = max(th%balance, abs(th%field%q_generated - leaving)/max(abs(th%field%q_generated), tiny(1.0_wp)))
       th%integral = new_thermal_heat(b%n_elements)
