@@ -32,7 +32,8 @@ module adore_bearings_ball
    use adore_bearings_system, only: bearing_system_t
    use adore_output_step_report, only: write_ball_step0
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
-   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row
+   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row, &
+                                       add_history_column, set_history_value
    use adore_output_ball_contact_print, only: contact_print_t, ball_contact_print
    implicit none
    private
@@ -308,7 +309,8 @@ contains
       end associate
    end subroutine ball_write_step
 
-   !> The ball history (new_ball_history) with the options' element and stride.
+   !> The ball history (new_ball_history) with the options' element and stride; with the
+   !> thermal model on, a column exit_fluid_temp_K.
    subroutine ball_new_history(self, h, n_steps, error)
       class(ball_kind_t), intent(in) :: self
       type(run_history_t), intent(out) :: h
@@ -316,22 +318,39 @@ contains
       type(error_type), allocatable, intent(out) :: error
       call new_ball_history(h, self%bearing, n_steps, self%options%history_element, error, &
                             self%options%history_stride)
+      if (allocated(error)) return
+      if (self%thermal%mode /= THERMAL_OFF) call add_history_column(h, "exit_fluid_temp_K")
    end subroutine ball_new_history
 
    !> A history row and its element row (ball_element_row, with the printed tribology of
    !> the race contacts; the flash temperature rise at printed rows only, h%printed) at the
-   !> last evaluated state.
+   !> last evaluated state; with the thermal model on, its exit fluid temperature and the
+   !> history element's contact temperatures from the last field.
    subroutine ball_record_row(self, h, step, t, mean)
       class(ball_kind_t), intent(in) :: self
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
       real(wp), intent(in) :: t, mean(:)
       type(contact_print_t) :: tribology
+      character(len=:), allocatable :: e
       call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, mean(AVG_BALL_WEAR:), &
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
                               flash=h%printed)
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
+      ! the thermal model's exit fluid temperature and the history element's contact
+      ! temperatures (the network's contact nodes; NaN / the bulk ones before the first field)
+      if (self%thermal%mode /= THERMAL_OFF) then
+         call set_history_value(h, "exit_fluid_temp_K", ieee_value(1.0_wp, ieee_quiet_nan))
+         if (self%thermal%have_field) then
+            e = itoa(h%element)
+            associate (f => self%thermal%field)
+               call set_history_value(h, "exit_fluid_temp_K", f%exit_temperature)
+               call set_history_value(h, "re"//e//"_contact_temp_outer_K", f%contact_outer(h%element))
+               call set_history_value(h, "re"//e//"_contact_temp_inner_K", f%contact_inner(h%element))
+            end associate
+         end if
+      end if
    end subroutine ball_record_row
 
    !> The equations of motion in self%condition: the geometry mounted at its temperatures

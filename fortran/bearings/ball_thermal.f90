@@ -62,9 +62,10 @@ module adore_bearings_ball_thermal
 
 contains
 
-   !> The mode of run option `option` ("deck", "off", "temperatures", "geometry") for
-   !> bearing b: "deck" is THERMAL_GEOMETRY when Rec 2.5 field 4 (the averaging interval)
-   !> is positive (both appendices echo VARY GEOMETRY WITH TEMPERATURE: Yes), otherwise off.
+   !> The mode of run option `option` ("off" or blank, "deck", "temperatures", "geometry")
+   !> for bearing b: "deck" is THERMAL_GEOMETRY when Rec 2.5 field 4 (the averaging
+   !> interval) is positive (both appendices echo VARY GEOMETRY WITH TEMPERATURE: Yes),
+   !> otherwise off.
    !> Input error for a thermal mode without an averaging interval.
    subroutine thermal_mode_of(option, b, mode, error)
       character(len=*), intent(in) :: option
@@ -72,15 +73,15 @@ contains
       integer, intent(out) :: mode
       type(error_type), allocatable, intent(out) :: error
       select case (trim(option))
-      case ("off")
-         mode = THERMAL_OFF
       case ("temperatures")
          mode = THERMAL_TEMPERATURES
       case ("geometry")
          mode = THERMAL_GEOMETRY
-      case default
+      case ("deck")
          mode = THERMAL_OFF
          if (b%coolant%thermal_time(1) > 0.0_wp) mode = THERMAL_GEOMETRY
+      case default
+         mode = THERMAL_OFF
       end select
       if (mode /= THERMAL_OFF .and. .not. (b%coolant%thermal_time(1) > 0.0_wp)) then
          call input_error(error, "thermal model '"//trim(option)//"': Rec 2.5 field 4 (the heat averaging "// &

@@ -65,11 +65,13 @@ module adore_model_run_options
       real(wp) :: duration = 0.0_wp
       !> the same in shaft (inner race) revolutions; 0: none
       real(wp) :: revolutions = 0.0_wp
-      !> the thermal model (docs/thermal.md, "The wiring"): "deck" (on, geometry updated, when
-      !> Rec 2.5 field 4, the heat averaging interval, is positive), "off" (bulk temperatures
-      !> fixed at Rec 2.7's), "temperatures" (updated, geometry held: report 5.3's first set)
-      !> or "geometry" (temperatures and geometry updated: its second set)
-      character(len=16) :: thermal = "deck"
+      !> the thermal model (docs/thermal.md, "The wiring"): "off" (the default: bulk
+      !> temperatures fixed at Rec 2.7's; with the boundaries the report states, the model
+      !> moves Appendix C's final step further from the report, docs/thermal.md), "deck" (on,
+      !> geometry updated, when Rec 2.5 field 4, the heat averaging interval, is positive),
+      !> "temperatures" (updated, geometry held: report 5.3's first set) or "geometry"
+      !> (temperatures and geometry updated: its second set)
+      character(len=16) :: thermal = "off"
    end type run_options_t
 
    !> One row of the option table.
@@ -122,9 +124,9 @@ module adore_model_run_options
       option_spec_t("integrator", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,ark4,ros34pw2,dp5,bs3", &
                     "integration method: the deck's INT METHOD (5: ros34pw2 for balls), the Rosenbrock-W "// &
                     "ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)"), &
-      option_spec_t("thermal", OPTION_CHOICE, "deck", 0, "", "MODE", "deck,off,temperatures,geometry", &
-                    "thermal model: the deck's (on with the geometry updated when Rec 2.5 gives an averaging "// &
-                    "interval), off, temperatures only, or temperatures and geometry") &
+      option_spec_t("thermal", OPTION_CHOICE, "off", 0, "", "MODE", "off,deck,temperatures,geometry", &
+                    "thermal model (report 2.10, 5.3): off, the deck's (on with the geometry updated when Rec 2.5 "// &
+                    "gives an averaging interval), temperatures only, or temperatures and geometry") &
       ]
 
 contains
@@ -245,7 +247,7 @@ contains
          opts%integrator = "deck"
          if (len_trim(value) > 0) opts%integrator = trim(adjustl(value))
       case ("thermal")
-         opts%thermal = "deck"
+         opts%thermal = "off"
          if (len_trim(value) > 0) opts%thermal = trim(adjustl(value))
       end select
    end subroutine set_run_option

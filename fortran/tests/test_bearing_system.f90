@@ -461,6 +461,8 @@ contains
       call check(b%coolant%thermal_time(1) == 3.0e-3_wp .and. b%coolant%thermal_time(2) == 3.0e-2_wp, &
                  "thermal: Rec 2.5's times read")
       opts%duration = 3.35e-2_wp
+      call set_run_option(opts, "thermal", "deck", error)
+      call check(.not. allocated(error), "thermal: run option thermal=deck")
       call new_bearing_system(b, opts, sys, error)
       call sys%solve_start(error)
       call sys%start_dynamics(it, y, error)
