@@ -418,69 +418,95 @@ contains
    !> equilibrium constraint is applied to move the races and maintain the thrust and radial
    !> loads", 5.5 "a quasi-static constraint"): the inner race's free translations in y (state
    !> at tau = t) moved, the balls and every velocity held, until the net force on the race
-   !> (its contacts and the applied load) is below 1e-6 of the applied load - Newton with a
-   !> forward-difference Jacobian (step 1e-9 m); a race clear of every ball (no stiffness)
-   !> steps 1 um along the net force, no step longer than 2 um.  The outer race is fixed in
-   !> the housing.
-   !> self%hold_residual: the worst final |net force| / |applied load|.  Engine error when an
-   !> evaluation fails or the iteration does not converge in 60 steps.
+   !> (its contacts and the applied load) is below 1e-6 of the applied load.  Newton with a
+   !> forward-difference Jacobian (step 1e-9 m) and step halving until the net force
+   !> decreases (a barely touching Hertz contact is nearly without stiffness: a full step
+   !> would overshoot; a state outside the contact models counts as no decrease); a race
+   !> clear of every ball (no stiffness) moves along the net force - then the applied load -
+   !> by 1 um, doubled at each such step.  The outer race is fixed in the housing.
+   !> self%hold_residual: the worst final |net force| / |applied load|.  Engine error when the
+   !> evaluation at the start fails or the iteration does not converge in 100 steps.
    subroutine hold_applied_load(self, t, y, error)
       class(ball_kind_t), intent(inout) :: self
       real(wp), intent(in) :: t
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      real(wp), parameter :: h = 1.0e-9_wp, STEP_CLEAR = 1.0e-6_wp
-      real(wp) :: dydt(size(y)), f(3), f1(3), jac(3, 3), dx(3), scale, y0
-      logical :: free(3), ok
-      integer :: i0, iter, j, m, idx(3), flag
+      real(wp), parameter :: h = 1.0e-9_wp
+      real(wp) :: dydt(size(y)), f(3), f1(3), jac(3, 3), dx(3), scale, y0, clear, lambda, x0(3)
+      logical :: free(3), ok, stiff
+      integer :: i0, iter, j, m, idx(3), k
       i0 = BODY_SIZE*(self%bearing%n_elements + 2)          ! the inner race's block
       free = self%condition%constraints%inner%translation
       m = count(free)
       if (m == 0) return
       idx(1:m) = pack([1, 2, 3], free)
       scale = max(norm2(self%condition%force), tiny(1.0_wp))
-      do iter = 1, 60
-         call net_force(f)
-         if (allocated(error)) return
-         if (iter == 1) self%hold_initial = max(self%hold_initial, norm2(f(idx(1:m)))/scale)
+      clear = 1.0e-6_wp
+      call net_force(f, ok)
+      if (.not. ok) then
+         call engine_error(error, "load-holding constraint: the equations of motion failed: "// &
+                           self%eom%failure_reason)
+         return
+      end if
+      self%hold_initial = max(self%hold_initial, norm2(f(idx(1:m)))/scale)
+      do iter = 1, 100
          if (norm2(f(idx(1:m))) <= 1.0e-6_wp*scale) exit
-         if (iter == 60) then
-            call engine_error(error, "load-holding constraint: no equilibrium of the inner race after 60 Newton "// &
+         if (iter == 100) then
+            call engine_error(error, "load-holding constraint: no equilibrium of the inner race after 100 Newton "// &
                               "steps (net force "//show(norm2(f))//" N)")
             return
          end if
+         stiff = .true.
          do j = 1, m
             y0 = y(i0 + idx(j))
             y(i0 + idx(j)) = y0 + h
-            call net_force(f1)
+            call net_force(f1, ok)
             y(i0 + idx(j)) = y0
-            if (allocated(error)) return
-            jac(1:m, j) = (f1(idx(1:m)) - f(idx(1:m)))/h
+            stiff = stiff .and. ok
+            if (ok) jac(1:m, j) = (f1(idx(1:m)) - f(idx(1:m)))/h
          end do
-         call solve_dense(m, jac(1:m, 1:m), -f(idx(1:m)), dx(1:m), ok)
-         ! no contact stiffness (the race clear of every ball): a 1 um step along the net
-         ! force (then the applied load) until the contacts carry again
-         if (.not. ok) dx(1:m) = STEP_CLEAR*f(idx(1:m))/norm2(f(idx(1:m)))
-         ! Newton steps of at most 2 um (a barely touching Hertz contact is nearly without
-         ! stiffness: an unlimited step would overshoot)
-         if (norm2(dx(1:m)) > 2.0_wp*STEP_CLEAR) dx(1:m) = 2.0_wp*STEP_CLEAR*dx(1:m)/norm2(dx(1:m))
-         y(i0 + idx(1:m)) = y(i0 + idx(1:m)) + dx(1:m)
+         if (stiff) call solve_dense(m, jac(1:m, 1:m), -f(idx(1:m)), dx(1:m), stiff)
+         x0(1:m) = y(i0 + idx(1:m))
+         if (.not. stiff) then          ! clear of every ball: along the net force
+            y(i0 + idx(1:m)) = x0(1:m) + clear*f(idx(1:m))/norm2(f(idx(1:m)))
+            clear = 2.0_wp*clear
+            call net_force(f1, ok)
+            if (ok) f = f1
+            if (.not. ok) y(i0 + idx(1:m)) = x0(1:m)
+            cycle
+         end if
+         clear = 1.0e-6_wp
+         lambda = 1.0_wp
+         do k = 1, 40                   ! halve the step until the net force decreases
+            y(i0 + idx(1:m)) = x0(1:m) + lambda*dx(1:m)
+            call net_force(f1, ok)
+            if (ok) then
+               if (norm2(f1(idx(1:m))) < norm2(f(idx(1:m)))) exit
+            end if
+            lambda = 0.5_wp*lambda
+         end do
+         if (.not. ok) then
+            y(i0 + idx(1:m)) = x0(1:m)
+            call engine_error(error, "load-holding constraint: no state of the inner race along the Newton step "// &
+                              "is within the contact models (net force "//show(norm2(f))//" N)")
+            return
+         end if
+         f = f1
       end do
       self%hold_solves = self%hold_solves + 1
       self%hold_residual = max(self%hold_residual, norm2(f(idx(1:m)))/scale)
    contains
 
-      !> The net force (N) on the inner race at (t, y): its mass times its acceleration.
-      subroutine net_force(force)
+      !> The net force (N) on the inner race at (t, y): its mass times its acceleration;
+      !> ok false when the equations of motion fail there.
+      subroutine net_force(force, ok)
          real(wp), intent(out) :: force(3)
+         logical, intent(out) :: ok
+         integer :: flag
          call self%eom%eval(t, y, dydt, flag)
-         if (flag /= DERIV_OK) then
-            call engine_error(error, "load-holding constraint: the equations of motion failed: "// &
-                              self%eom%failure_reason)
-            force = 0.0_wp
-            return
-         end if
-         force = self%bearing%mass(BODY_INNER)*self%eom%rates%races(RACE_INNER)%velocity
+         ok = flag == DERIV_OK
+         force = 0.0_wp
+         if (ok) force = self%bearing%mass(BODY_INNER)*self%eom%rates%races(RACE_INNER)%velocity
       end subroutine net_force
 
       function show(x) result(text)
