@@ -11,7 +11,7 @@ module adore_bearings_ball
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error
-   use adore_core_strings, only: itoa
+   use adore_core_strings, only: itoa, upper
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints
    use adore_model_run_options, only: STEPS_FROM_DECK
@@ -218,10 +218,11 @@ contains
       end associate
    end subroutine ball_run_note
 
-   !> The thermal model of the run in one line: the print's (upper case) or the note's.
-   subroutine thermal_text(self, upper, text)
+   !> The thermal model of the run in one line: the print listing's (listing: indented,
+   !> upper case) or the run note's.
+   subroutine thermal_text(self, listing, text)
       class(ball_kind_t), intent(in) :: self
-      logical, intent(in) :: upper
+      logical, intent(in) :: listing
       character(len=:), allocatable, intent(out) :: text
       character(len=12) :: dt, t0
       if (self%thermal%mode == THERMAL_OFF) then
@@ -236,21 +237,10 @@ contains
             text = text//", geometry held"
          end if
       end if
-      if (upper) then
-         text = "  "//upper_case(text)
+      if (listing) then
+         text = "  "//upper(text)
       end if
    end subroutine thermal_text
-
-   !> text in upper case (ASCII letters).
-   pure function upper_case(text) result(u)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: u
-      integer :: i
-      u = text
-      do i = 1, len(u)
-         if (u(i:i) >= "a" .and. u(i:i) <= "z") u(i:i) = achar(iachar(u(i:i)) - 32)
-      end do
-   end function upper_case
 
    integer function ball_n_values(self)
       class(ball_kind_t), intent(in) :: self
