@@ -164,14 +164,14 @@ program test_bearing_system
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_test_support, only: check, finish, get_decks_dir
-   use adore_model_bearing, only: bearing_t, TEMP_OUTER
+   use adore_model_bearing, only: bearing_t, TEMP_OUTER, BODY_INNER
    use adore_model_from_deck, only: read_bearing
    use adore_model_run_options, only: run_options_t, set_run_option, run_options_from_text
    use adore_model_condition, only: operating_condition_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_thermal_distortion, only: distorted_bearing
    use adore_state_bearing_state, only: bearing_state_t, unpack_state, RACE_INNER
-   use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
+   use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, DERIV_OK
    use adore_bearings_system, only: bearing_system_t
    use adore_bearings_select, only: new_bearing_system
    use adore_bearings_ball, only: ball_kind_t
@@ -441,7 +441,9 @@ contains
    !> temperatures of the condition and of the state are the last field's; the geometry
    !> updated at 30 and 33 ms only, mounted at those temperatures with the ADRC2 fits; the
    !> geometry change disturbs the inner race's equilibrium (net force > 1 % of the applied
-   !> load before the constraint) and the constraint leaves at most 1e-6 of it.
+   !> load before the constraint) and the constraint leaves at most 1e-6 of it; one more
+   !> update at the end, then the equations of motion evaluated from outside: the inner race's
+   !> net force (mass x acceleration) at most 1e-6 of the applied load.
    subroutine test_ball_thermal_run()
       class(bearing_system_t), allocatable :: sys
       type(integrator_t) :: it
@@ -453,7 +455,9 @@ contains
       type(bearing_state_t) :: s
       real(wp), allocatable :: y(:)
       character(len=:), allocatable :: decks, incomplete
-      integer :: unit, k
+      real(wp) :: net(3)
+      real(wp), allocatable :: dydt(:)
+      integer :: unit, k, flag
 
       call get_decks_dir(decks)
       call read_bearing(decks//"/appendix_c_ball.inp", b, error)
@@ -469,6 +473,7 @@ contains
       call check(.not. allocated(error), "thermal: start")
       if (allocated(error)) return
       call sys%new_history(h, 100, error)
+      allocate (dydt(size(y)))
       open (newunit=unit, status="scratch", action="readwrite")
       call run_time_loop(unit, sys, it, y, 100, h, incomplete, error, t_end=opts%duration/sys%time_scale)
       close (unit)
@@ -501,6 +506,16 @@ contains
             call check(sys%hold_residual <= 1.0e-6_wp, "thermal: after the constraint the contacts carry the "// &
                        "applied load (residual <= 1e-6)")
          end associate
+         ! one more update at the run's end (its heat since 33 ms), checked from outside: the
+         ! equations of motion at the state it leaves give the inner race no net force
+         call sys%on_event(opts%duration, it, y, error)
+         call check(.not. allocated(error), "thermal: an update at the end of the run")
+         call check(sys%thermal%updates == 12 .and. sys%hold_solves == 3, "thermal: the update re-mounted and held")
+         call sys%eval(opts%duration/sys%time_scale, y, dydt, flag)
+         call check(flag == DERIV_OK, "thermal: the state after the update evaluates")
+         net = b%mass(BODY_INNER)*sys%eom%rates%races(RACE_INNER)%velocity
+         call check(norm2(net) <= 1.0e-6_wp*norm2(b%force), "thermal: the inner race in equilibrium with the "// &
+                    "applied load after the geometry update (eval, residual <= 1e-6)")
       end select
    end subroutine test_ball_thermal_run
 
