@@ -110,8 +110,9 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
 
     steps: ``None`` runs as many time steps as the deck asks for (Rec 1; Appendix C: 2500),
     ``0`` only the quasi-static start, ``n`` integrates ``n`` time steps after step 0.
-    Time steps are integrated for ball decks (thermal model off: the bulk temperatures stay
-    at the initial ones; ``notes`` says what the run leaves out); a roller deck's print
+    Time steps are integrated for ball decks (thermal model off by default: the bulk
+    temperatures stay at the initial ones; ``thermal="deck"`` runs the deck's thermal model,
+    docs/thermal.md; ``notes`` says what the run leaves out); a roller deck's print
     ends after step 0 (``notes`` says so).  A run with time steps also writes its plot-data
     file beside the print (:attr:`Result.history_path`) and returns the same table as
     :attr:`Result.time_history`.

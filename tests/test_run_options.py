@@ -52,3 +52,21 @@ def test_the_engine_checks_ranges_and_names_every_bad_option(tmp_path, ball_deck
     assert "substeps (--substeps): 0 is below its minimum 1" in message
     assert "run option 'colour': unknown" in message and "run option 'steps': expected name=value" in message
     assert not list(tmp_path.iterdir())
+
+
+def test_no_option_help_is_cut_by_the_table_field():
+    """The option table's help field is a fixed-length character (option_spec_t%help): a longer
+    help text would be cut silently in `adore --help` and in the click options (it was twice,
+    mid-word).  Every help text in the table's source fits the declared length."""
+    import re
+    from pathlib import Path
+
+    src = (Path(__file__).resolve().parents[1] / "fortran" / "model" / "run_options.f90").read_text()
+    width = int(re.search(r"character\(len=(\d+)\)\s*::\s*help\b", src).group(1))
+    table = src[src.index("OPTION_TABLE(N_OPTIONS)"):src.index("contains")]
+    rows = re.split(r"option_spec_t\(", table)[1:]
+    assert len(rows) == len(run_options())
+    for row in rows:
+        strings = re.findall(r'"((?:[^"]|"")*)"', row)
+        help_text = "".join(strings[5:])          # name, default, units, metavar, choices, then the help
+        assert 0 < len(help_text) <= width, (strings[0], len(help_text), width)

@@ -11,23 +11,30 @@ module adore_bearings_ball
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error
-   use adore_core_strings, only: itoa
+   use adore_core_strings, only: itoa, upper
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
-   use adore_model_condition, only: condition_of, default_constraints, deck_constraints, dof_constraints_t
+   use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, deck_constraints, &
+                                    dof_constraints_t
    use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
-   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures
+   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
+   use adore_thermal_distortion, only: distorted_bearing
+   use adore_thermal_network, only: thermal_heat_t
+   use adore_core_linalg, only: solve_dense
+   use adore_bearings_ball_thermal, only: ball_thermal_t, new_ball_thermal, thermal_mode_of, ball_heat_rates, &
+                                          ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF, THERMAL_GEOMETRY
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
-   use adore_dynamics_integrator, only: integrator_t, INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, &
+   use adore_dynamics_integrator, only: integrator_t, DERIV_OK, INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, &
                                         INT_METHOD_ARK436
    use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics, ball_int_method
    use adore_bearings_system, only: bearing_system_t
    use adore_output_step_report, only: write_ball_step0
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
-   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row
+   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row, &
+                                       add_history_column, set_history_value
    use adore_output_ball_contact_print, only: contact_print_t, ball_contact_print
    implicit none
    private
@@ -46,6 +53,13 @@ module adore_bearings_ball
       real(wp), allocatable :: last(:)      !< each ball's orbital position at the last step (rad)
       real(wp) :: axial_origin = 0.0_wp     !< the print's axial origin of the balls (m)
       real(wp) :: clearance = 0.0_wp        !< guide land diametral clearance (m; NaN: no land)
+      type(ball_thermal_t) :: thermal       !< the thermal model (adore_bearings_ball_thermal)
+      !> worst relative equilibrium residual of the inner race after a load-holding solve
+      !> (|net force| / |applied load|), and the solves done
+      real(wp) :: hold_residual = 0.0_wp
+      !> the largest |net force| / |applied load| a geometry update left before the solve
+      real(wp) :: hold_initial = 0.0_wp
+      integer :: hold_solves = 0
    contains
       procedure :: eval => ball_eval
       procedure :: solve_start => ball_solve_start
@@ -61,6 +75,7 @@ module adore_bearings_ball
       procedure :: new_history => ball_new_history
       procedure :: record_row => ball_record_row
       procedure :: mount => ball_mount
+      procedure :: on_event => ball_on_event
    end type ball_kind_t
 
 contains
@@ -158,6 +173,15 @@ contains
          self%last = e%azimuth
       end associate
       self%clearance = guide_clearance(self%bearing, self%step0%geometry, self%eom%state%temperature)
+      ! the thermal model (docs/thermal.md, "The wiring"): an event at the end of every
+      ! averaging interval
+      call thermal_mode_of(self%options%thermal, self%bearing, method, error)
+      if (allocated(error)) return
+      self%thermal = new_ball_thermal(self%bearing, method)
+      if (method /= THERMAL_OFF) then
+         self%event_start = self%thermal%interval
+         self%event_period = self%thermal%interval
+      end if
    end subroutine ball_start_dynamics
 
    !> The print listing's lines on the physics of the time integration.
@@ -169,7 +193,8 @@ contains
       character(len=16) :: num
       text = ""
       if (n_steps < 1) return
-      text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf
+      call thermal_text(self, .true., text)
+      text = text//lf
       associate (s => self%eom)
          if (.not. s%cage) text = text//"  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"//lf
          if (s%cage .and. s%cage_spin_only) text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT "// &
@@ -198,7 +223,7 @@ contains
       text = ""
       if (n_steps < 1) return
       associate (s => self%eom)
-         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
+         call thermal_text(self, .false., text)
          if (.not. s%cage) text = text//"; cage contacts off (no pocket or guide-land forces)"
          if (s%cage .and. s%cage_spin_only) text = text//"; cage centred, turning about its axis only "// &
                                                    "(translation and tilt constrained, report 4.4.6)"
@@ -209,6 +234,30 @@ contains
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
       end associate
    end subroutine ball_run_note
+
+   !> The thermal model of the run in one line: the print listing's (listing: indented,
+   !> upper case) or the run note's.
+   subroutine thermal_text(self, listing, text)
+      class(ball_kind_t), intent(in) :: self
+      logical, intent(in) :: listing
+      character(len=:), allocatable, intent(out) :: text
+      character(len=12) :: dt, t0
+      if (self%thermal%mode == THERMAL_OFF) then
+         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
+      else
+         write (dt, "(es10.3)") self%thermal%interval
+         write (t0, "(es10.3)") self%thermal%geometry_start
+         text = "thermal model on: heat averaged over "//trim(adjustl(dt))//" s, temperatures updated (Rec 2.5)"
+         if (self%thermal%mode == THERMAL_GEOMETRY) then
+            text = text//", geometry updated from "//trim(adjustl(t0))//" s with the applied load held"
+         else
+            text = text//", geometry held"
+         end if
+      end if
+      if (listing) then
+         text = "  "//upper(text)
+      end if
+   end subroutine thermal_text
 
    integer function ball_n_values(self)
       class(ball_kind_t), intent(in) :: self
@@ -226,7 +275,13 @@ contains
    !> less than half a revolution).
    subroutine ball_accepted(self)
       class(ball_kind_t), intent(inout) :: self
+      type(thermal_heat_t) :: heat
       integer :: k
+      ! the thermal model's heat of this accepted state (its time: the state's, s)
+      if (self%thermal%mode /= THERMAL_OFF) then
+         call ball_heat_rates(self%thermal, self%bearing, self%eom%state, self%eom%loads, heat)
+         call ball_thermal_accumulate(self%thermal, self%eom%state%time, heat)
+      end if
       do k = 1, self%bearing%n_elements
          associate (phi => body_azimuth(self%eom%state%elements(k)))
             self%azimuth(k) = self%azimuth(k) + (modulo(phi - self%last(k) + pi, 2.0_wp*pi) - pi)
@@ -240,18 +295,29 @@ contains
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: t, mean(:)
-      real(wp) :: time
+      real(wp) :: time, header(4)
       time = t*self%time_scale
-      associate (b => self%bearing)
-         call write_ball_step(unit, step, [t, time, b%speed_outer*time/(2.0_wp*pi), &
-                                           b%speed_inner*time/(2.0_wp*pi)], &
-                              b, self%eom%geometry, self%eom%state, self%eom%rates, self%eom%loads, self%azimuth, &
-                              self%axial_origin, mean(AVG_BALL_WEAR:), mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), &
-                              mean(AVG_POWER:AVG_RATIOS + 2))
+      associate (b => self%bearing, th => self%thermal)
+         header = [t, time, b%speed_outer*time/(2.0_wp*pi), b%speed_inner*time/(2.0_wp*pi)]
+         if (th%mode == THERMAL_OFF) then
+            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
+                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2))
+         else if (.not. th%have_field) then      ! before the first update: no field yet
+            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
+                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2), th%fluid)
+         else
+            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
+                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2), th%fluid, &
+                                 th%field)
+         end if
       end associate
    end subroutine ball_write_step
 
-   !> The ball history (new_ball_history) with the options' element and stride.
+   !> The ball history (new_ball_history) with the options' element and stride; with the
+   !> thermal model on, a column exit_fluid_temp_K.
    subroutine ball_new_history(self, h, n_steps, error)
       class(ball_kind_t), intent(in) :: self
       type(run_history_t), intent(out) :: h
@@ -259,22 +325,39 @@ contains
       type(error_type), allocatable, intent(out) :: error
       call new_ball_history(h, self%bearing, n_steps, self%options%history_element, error, &
                             self%options%history_stride)
+      if (allocated(error)) return
+      if (self%thermal%mode /= THERMAL_OFF) call add_history_column(h, "exit_fluid_temp_K")
    end subroutine ball_new_history
 
    !> A history row and its element row (ball_element_row, with the printed tribology of
    !> the race contacts; the flash temperature rise at printed rows only, h%printed) at the
-   !> last evaluated state.
+   !> last evaluated state; with the thermal model on, its exit fluid temperature and the
+   !> history element's contact temperatures from the last field.
    subroutine ball_record_row(self, h, step, t, mean)
       class(ball_kind_t), intent(in) :: self
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
       real(wp), intent(in) :: t, mean(:)
       type(contact_print_t) :: tribology
+      character(len=:), allocatable :: e
       call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, mean(AVG_BALL_WEAR:), &
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
                               flash=h%printed)
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
+      ! the thermal model's exit fluid temperature and the history element's contact
+      ! temperatures (the network's contact nodes; NaN / the bulk ones before the first field)
+      if (self%thermal%mode /= THERMAL_OFF) then
+         call set_history_value(h, "exit_fluid_temp_K", ieee_value(1.0_wp, ieee_quiet_nan))
+         if (self%thermal%have_field) then
+            e = itoa(h%element)
+            associate (f => self%thermal%field)
+               call set_history_value(h, "exit_fluid_temp_K", f%exit_temperature)
+               call set_history_value(h, "re"//e//"_contact_temp_outer_K", f%contact_outer(h%element))
+               call set_history_value(h, "re"//e//"_contact_temp_inner_K", f%contact_inner(h%element))
+            end associate
+         end if
+      end if
    end subroutine ball_record_row
 
    !> The equations of motion in self%condition: the geometry mounted at its temperatures
@@ -290,7 +373,14 @@ contains
          return
       end if
       associate (c => self%condition)
-         self%eom%geometry = mount_geometry(self%bearing, c%temperature)
+         ! the geometry at its own temperatures (ADRC2: the fits changed by the differential
+         ! expansion, then mounted with the free growth; docs/thermal.md)
+         if (all(c%geometry_temperature == self%bearing%temperature)) then
+            self%eom%geometry = mount_geometry(self%bearing, c%geometry_temperature)
+         else
+            self%eom%geometry = mount_geometry(distorted_bearing(self%bearing, c%geometry_temperature), &
+                                               c%geometry_temperature)
+         end if
          self%eom%bearing%force = c%force
          self%eom%bearing%moment = c%moment
          self%eom%constraints = c%constraints
@@ -298,6 +388,141 @@ contains
          self%clearance = guide_clearance(self%bearing, self%eom%geometry, c%temperature)
       end associate
    end subroutine ball_mount
+
+   !> The thermal update at the end of an averaging interval (time s, state y at tau =
+   !> time / T; report 2.10 steps 2-12): the network solved with the heat averaged over the
+   !> interval, the bulk temperatures set; in THERMAL_GEOMETRY mode from the geometry start
+   !> time on, the geometry mounted at them and the inner race moved so that its contacts
+   !> carry the applied load (hold_applied_load).  Nothing without a thermal model.
+   subroutine ball_on_event(self, time, it, y, error)
+      class(ball_kind_t), intent(inout) :: self
+      real(wp), intent(in) :: time
+      type(integrator_t), intent(inout) :: it
+      real(wp), intent(inout) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(operating_condition_t) :: c
+      logical :: geometry
+      if (self%thermal%mode == THERMAL_OFF) return
+      call ball_thermal_update(self%thermal, self%bearing, self%eom%state, time, error)
+      if (allocated(error)) return
+      c = self%condition
+      c%temperature = self%thermal%field%temperature
+      ! the start time with a relative allowance for the event times' round-off
+      geometry = self%thermal%mode == THERMAL_GEOMETRY .and. &
+                 time >= self%thermal%geometry_start*(1.0_wp - 1.0e-9_wp)
+      if (geometry) c%geometry_temperature = self%thermal%field%temperature
+      call self%set_condition(c, it, y, error)
+      if (allocated(error)) return
+      if (geometry) then
+         self%thermal%geometry_updates = self%thermal%geometry_updates + 1
+         call hold_applied_load(self, time/self%time_scale, y, error)
+         if (allocated(error)) return
+         call it%restart(it%h_next)
+      end if
+   end subroutine ball_on_event
+
+   !> The load-holding constraint of a geometry update (report 2.10 step 11, 5.3 "an
+   !> equilibrium constraint is applied to move the races and maintain the thrust and radial
+   !> loads", 5.5 "a quasi-static constraint"): the inner race's free translations in y (state
+   !> at tau = t) moved, the balls and every velocity held, until the net force on the race
+   !> (its contacts and the applied load) is below 1e-6 of the applied load.  Newton with a
+   !> forward-difference Jacobian (step 1e-9 m) and step halving until the net force
+   !> decreases (a barely touching Hertz contact is nearly without stiffness: a full step
+   !> would overshoot; a state outside the contact models counts as no decrease); a race
+   !> clear of every ball (no stiffness) moves along the net force - then the applied load -
+   !> by 1 um, doubled at each such step.  The outer race is fixed in the housing.
+   !> self%hold_residual: the worst final |net force| / |applied load|.  Engine error when the
+   !> evaluation at the start fails or the iteration does not converge in 100 steps.
+   subroutine hold_applied_load(self, t, y, error)
+      class(ball_kind_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(inout) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: h = 1.0e-9_wp
+      real(wp) :: dydt(size(y)), f(3), f1(3), jac(3, 3), dx(3), scale, y0, clear, lambda, x0(3)
+      logical :: free(3), ok, stiff
+      integer :: i0, iter, j, m, idx(3), k
+      i0 = BODY_SIZE*(self%bearing%n_elements + 2)          ! the inner race's block
+      free = self%condition%constraints%inner%translation
+      m = count(free)
+      if (m == 0) return
+      idx(1:m) = pack([1, 2, 3], free)
+      scale = max(norm2(self%condition%force), tiny(1.0_wp))
+      clear = 1.0e-6_wp
+      call net_force(f, ok)
+      if (.not. ok) then
+         call engine_error(error, "load-holding constraint: the equations of motion failed: "// &
+                           self%eom%failure_reason)
+         return
+      end if
+      self%hold_initial = max(self%hold_initial, norm2(f(idx(1:m)))/scale)
+      do iter = 1, 100
+         if (norm2(f(idx(1:m))) <= 1.0e-6_wp*scale) exit
+         if (iter == 100) then
+            call engine_error(error, "load-holding constraint: no equilibrium of the inner race after 100 Newton "// &
+                              "steps (net force "//show(norm2(f))//" N)")
+            return
+         end if
+         stiff = .true.
+         do j = 1, m
+            y0 = y(i0 + idx(j))
+            y(i0 + idx(j)) = y0 + h
+            call net_force(f1, ok)
+            y(i0 + idx(j)) = y0
+            stiff = stiff .and. ok
+            if (ok) jac(1:m, j) = (f1(idx(1:m)) - f(idx(1:m)))/h
+         end do
+         if (stiff) call solve_dense(m, jac(1:m, 1:m), -f(idx(1:m)), dx(1:m), stiff)
+         x0(1:m) = y(i0 + idx(1:m))
+         if (.not. stiff) then          ! clear of every ball: along the net force
+            y(i0 + idx(1:m)) = x0(1:m) + clear*f(idx(1:m))/norm2(f(idx(1:m)))
+            clear = 2.0_wp*clear
+            call net_force(f1, ok)
+            if (ok) f = f1
+            if (.not. ok) y(i0 + idx(1:m)) = x0(1:m)
+            cycle
+         end if
+         clear = 1.0e-6_wp
+         lambda = 1.0_wp
+         do k = 1, 40                   ! halve the step until the net force decreases
+            y(i0 + idx(1:m)) = x0(1:m) + lambda*dx(1:m)
+            call net_force(f1, ok)
+            if (ok) then
+               if (norm2(f1(idx(1:m))) < norm2(f(idx(1:m)))) exit
+            end if
+            lambda = 0.5_wp*lambda
+         end do
+         if (.not. ok) then
+            y(i0 + idx(1:m)) = x0(1:m)
+            call engine_error(error, "load-holding constraint: no state of the inner race along the Newton step "// &
+                              "is within the contact models (net force "//show(norm2(f))//" N)")
+            return
+         end if
+         f = f1
+      end do
+      self%hold_solves = self%hold_solves + 1
+      self%hold_residual = max(self%hold_residual, norm2(f(idx(1:m)))/scale)
+   contains
+
+      !> The net force (N) on the inner race at (t, y): its mass times its acceleration;
+      !> ok false when the equations of motion fail there.
+      subroutine net_force(force, ok)
+         real(wp), intent(out) :: force(3)
+         logical, intent(out) :: ok
+         integer :: flag
+         call self%eom%eval(t, y, dydt, flag)
+         ok = flag == DERIV_OK
+         force = 0.0_wp
+         if (ok) force = self%bearing%mass(BODY_INNER)*self%eom%rates%races(RACE_INNER)%velocity
+      end subroutine net_force
+
+      function show(x) result(text)
+         real(wp), intent(in) :: x
+         character(len=16) :: text
+         write (text, "(es10.3)") x
+      end function show
+
+   end subroutine hold_applied_load
 
    !> The quantities the print shows as time averages, at one state s of ball bearing b
    !> with the force assembly's loads there, into v (size AVG_BALL_WEAR - 1 + n): the total

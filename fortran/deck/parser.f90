@@ -25,7 +25,7 @@ module adore_deck_parser
                                 FLD_REQUIRED, FLD_DEFAULT_INT, FLD_DEFAULT_REAL, FLD_COUNT
    use adore_deck_tokenizer, only: split_label, cut_field, parse_int_field, parse_real_field, &
                                    is_blank, strip, lstrip_count, itoa
-   use adore_core_strings, only: rstrip, quoted, first_non_ascii, utf8_code_point
+   use adore_core_strings, only: rstrip, quoted, first_non_ascii, utf8_code_point, upper
    use adore_deck_deck_type, only: deck_t, deck_record_t, deck_field_t, deck_find_first
    use adore_deck_problems, only: problem_list_t, add_problem, problems_error
    use adore_deck_ranges, only: check_ranges
@@ -607,16 +607,5 @@ contains
          end if
       end do
    end function all_blank
-
-   !> Upper-case ASCII copy of `s`.
-   pure function upper(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: t
-      integer :: i
-      t = s
-      do i = 1, len(s)
-         if (s(i:i) >= "a" .and. s(i:i) <= "z") t(i:i) = achar(iachar(s(i:i)) - 32)
-      end do
-   end function upper
 
 end module adore_deck_parser

@@ -37,6 +37,10 @@ module adore_model_condition
    !> the inner race (N, N m; inertial components).
    type :: operating_condition_t
       real(wp) :: temperature(7) = 293.0_wp
+      !> the bulk temperatures the geometry is mounted at (K; ADRC2 distortion from the
+      !> deck's initial temperatures): equal to `temperature` when the geometry follows the
+      !> temperatures, the initial ones while it is held (thermal model, docs/thermal.md)
+      real(wp) :: geometry_temperature(7) = 293.0_wp
       real(wp) :: force(3) = 0.0_wp
       real(wp) :: moment(3) = 0.0_wp
       type(dof_constraints_t) :: constraints
@@ -49,6 +53,7 @@ contains
       type(bearing_t), intent(in) :: b
       type(operating_condition_t) :: c
       c%temperature = b%temperature
+      c%geometry_temperature = b%temperature
       c%force = b%force
       c%moment = b%moment
    end function condition_of
@@ -57,7 +62,8 @@ contains
    !> condition changes nothing, not even the integrator's step).
    pure logical function same_condition(a, b)
       type(operating_condition_t), intent(in) :: a, b
-      same_condition = all(a%temperature == b%temperature) .and. all(a%force == b%force) .and. &
+      same_condition = all(a%temperature == b%temperature) .and. &
+                       all(a%geometry_temperature == b%geometry_temperature) .and. all(a%force == b%force) .and. &
                        all(a%moment == b%moment) .and. same_dof(a%constraints%cage, b%constraints%cage) .and. &
                        same_dof(a%constraints%outer, b%constraints%outer) .and. &
                        same_dof(a%constraints%inner, b%constraints%inner)

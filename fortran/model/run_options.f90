@@ -70,6 +70,13 @@ module adore_model_run_options
       !> "free" (all six integrated, the guide lands' film on) or "deck" (the deck's own
       !> constraints: Rec 3.3 all zero constrains nothing, a free cage)
       character(len=16) :: cage = "centred"
+      !> the thermal model (docs/thermal.md, "The wiring"): "off" (the default: bulk
+      !> temperatures fixed at Rec 2.7's; with the boundaries the report states, the model
+      !> moves Appendix C's final step further from the report, docs/thermal.md), "deck" (on,
+      !> geometry updated, when Rec 2.5 field 4, the heat averaging interval, is positive),
+      !> "temperatures" (updated, geometry held: report 5.3's first set) or "geometry"
+      !> (temperatures and geometry updated: its second set)
+      character(len=16) :: thermal = "off"
    end type run_options_t
 
    !> One row of the option table.
@@ -84,7 +91,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 13
+   integer, parameter :: N_OPTIONS = 14
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -124,7 +131,10 @@ module adore_model_run_options
                     "Rosenbrock-W ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)"), &
       option_spec_t("cage", OPTION_CHOICE, "centred", 0, "", "NAME", "centred,free,deck", &
                     "cage degrees of freedom (report 4.4.6): centred (translation and tilt constrained), "// &
-                    "free (all six, land films on) or as the deck's Rec 3.3 says (ball decks)") &
+                    "free (all six, land films on) or as the deck's Rec 3.3 says (ball decks)"), &
+      option_spec_t("thermal", OPTION_CHOICE, "off", 0, "", "MODE", "off,deck,temperatures,geometry", &
+                    "thermal model (report 2.10, 5.3): off, the deck's (geometry updated when Rec 2.5 gives an "// &
+                    "averaging interval), temperatures only, or temperatures and geometry") &
       ]
 
 contains
@@ -247,6 +257,9 @@ contains
       case ("cage")
          opts%cage = "centred"
          if (len_trim(value) > 0) opts%cage = trim(adjustl(value))
+      case ("thermal")
+         opts%thermal = "off"
+         if (len_trim(value) > 0) opts%thermal = trim(adjustl(value))
       end select
    end subroutine set_run_option
 

@@ -27,6 +27,8 @@ module adore_output_ball_dynamic_report
    use adore_life_lundberg_palmgren, only: bearing_life, life_hours
    use adore_life_tallian, only: ball_race_modified_life
    use adore_output_ball_contact_print, only: contact_print_t, ball_contact_print
+   use adore_thermal_network, only: thermal_field_t
+   use adore_thermal_drag, only: element_fluid_loss_t
    implicit none
    private
 
@@ -55,8 +57,13 @@ contains
    !> wear(n) of each ball and race_wear(2) of the outer and inner race (m**3/s), and section
    !> 4's summary_avg = [power loss (W), RE orbital velocity, cage omega and cage whirl
    !> ratios (dynamic_speed_ratios)].
+   !> With the thermal model on (docs/thermal.md, "The wiring"): fluid(n), each ball's drag,
+   !> churning moment and loss (section 1's Drag, Chrn Mom, Net Loss; added to the total
+   !> power loss, their share of it the Churning Loss Fraction), and field, the last solved
+   !> temperature field (each ball's contact node, bulk temperature and HTC, the exit fluid,
+   !> housing and shaft temperatures).
    subroutine write_ball_step(unit, step, header, b, g, s, rates, loads, azimuth, axial_origin, wear, race_wear, &
-                              summary_avg)
+                              summary_avg, fluid, field)
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
@@ -65,6 +72,8 @@ contains
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(in) :: azimuth(:), axial_origin
       real(wp), intent(in) :: wear(:), race_wear(2), summary_avg(4)
+      type(element_fluid_loss_t), intent(in), optional :: fluid(:)
+      type(thermal_field_t), intent(in), optional :: field
 
       real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
@@ -179,6 +188,23 @@ contains
       perf(6) = total_power_loss(loads)              ! race contacts and cage contacts
       perf(9:11) = s%temperature(TEMP_HOUSING)
       perf(12:14) = s%temperature(TEMP_SHAFT)
+      if (present(fluid)) then                        ! the thermal model's drag and churning
+         traction(:, 9) = fluid%drag
+         traction(:, 10) = fluid%moment
+         traction(:, 11) = fluid%loss
+         perf(6) = perf(6) + sum(fluid%loss)
+         perf(7) = 0.0_wp
+         if (perf(6) > 0.0_wp) perf(7) = sum(fluid%loss)/perf(6)
+      end if
+      if (present(field)) then                        ! the thermal model's last field
+         thermal(:, 8) = field%contact_outer
+         thermal(:, 9) = field%contact_inner
+         thermal(:, 10) = field%element_bulk
+         thermal(:, 11) = field%htc
+         perf(8) = field%exit_temperature
+         perf(9:11) = field%housing
+         perf(12:14) = field%shaft
+      end if
 
       summary = nan                                  ! fatigue life, cage wear, RE excursion
       summary(1, 1:3) = header(2:4)

@@ -39,7 +39,7 @@ module adore_output_run_history
 
    public :: run_history_t, history_shape, new_ball_history, history_due, record_ball_history, &
              write_history_csv, history_file_name, history_columns_text, element_file_name, beside_file_name, &
-             write_element_file, ball_element_row
+             write_element_file, ball_element_row, add_history_column, set_history_value
 
    !> Regular rows of a history at most (the stride grows beyond HISTORY_ROWS steps).
    integer, parameter, public :: HISTORY_ROWS = 10000
@@ -308,6 +308,32 @@ contains
          if (allocated(loads%pockets)) v(row, c + 7) = norm2(loads%pockets(k)%force_ball)
       end associate
    end subroutine record_ball_history
+
+   !> Append column `name` (NaN in every row so far) to history h: a quantity of the bearing
+   !> kind's own (the thermal model's exit fluid temperature); the kind sets it in every
+   !> row it records (set_history_value).
+   subroutine add_history_column(h, name)
+      type(run_history_t), intent(inout) :: h
+      character(len=*), intent(in) :: name
+      real(wp), allocatable :: values(:, :)
+      allocate (values(size(h%values, 1), size(h%values, 2) + 1))
+      values(:, :size(h%values, 2)) = h%values
+      values(:, size(values, 2)) = ieee_value(1.0_wp, ieee_quiet_nan)
+      call move_alloc(values, h%values)
+      h%names = [h%names, [character(len=HISTORY_NAME_LEN) :: name]]
+   end subroutine add_history_column
+
+   !> Set column `name` of the last recorded row of h to value (nothing when h has no such
+   !> column or no row).
+   subroutine set_history_value(h, name, value)
+      type(run_history_t), intent(inout) :: h
+      character(len=*), intent(in) :: name
+      real(wp), intent(in) :: value
+      integer :: c
+      if (h%rows < 1) return
+      c = findloc(h%names, name, 1)
+      if (c > 0) h%values(h%rows, c) = value
+   end subroutine set_history_value
 
    !> Double the row capacity of h, keeping its rows.
    subroutine grow_history(h)

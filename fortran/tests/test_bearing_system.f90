@@ -164,16 +164,18 @@ program test_bearing_system
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_test_support, only: check, finish, get_decks_dir
-   use adore_model_bearing, only: bearing_t, TEMP_OUTER
+   use adore_model_bearing, only: bearing_t, TEMP_OUTER, BODY_INNER
    use adore_model_from_deck, only: read_bearing
    use adore_model_run_options, only: run_options_t, set_run_option, run_options_from_text
    use adore_model_condition, only: operating_condition_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_thermal_distortion, only: distorted_bearing
    use adore_state_bearing_state, only: bearing_state_t, unpack_state, RACE_INNER
-   use adore_dynamics_integrator, only: integrator_t, integrator_settings_t
+   use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, DERIV_OK
    use adore_bearings_system, only: bearing_system_t
    use adore_bearings_select, only: new_bearing_system
    use adore_bearings_ball, only: ball_kind_t
+   use adore_bearings_ball_thermal, only: THERMAL_GEOMETRY
    use adore_output_run_history, only: run_history_t
    use adore_driver_time_loop, only: run_time_loop
    use adore_test_toy_kind, only: toy_kind_t
@@ -183,6 +185,7 @@ program test_bearing_system
    call test_toy_events_and_condition_change()
    call test_run_options_text()
    call test_ball_condition_change()
+   call test_ball_thermal_run()
    call finish("bearing system")
 
 contains
@@ -349,13 +352,14 @@ contains
       ! the change: the outer race 30 K warmer
       c = sys%condition
       c%temperature(TEMP_OUTER) = c%temperature(TEMP_OUTER) + 30.0_wp
+      c%geometry_temperature = c%temperature          ! the geometry follows (ADRC2)
       h = it%h_next
       call sys%set_condition(c, it, y, error)
       call check(.not. allocated(error), "ball: condition changed")
       call check(.not. it%fsal_valid, "ball: the integrator's cached stage dropped")
       select type (sys)
       type is (ball_kind_t)
-         g = mount_geometry(b, c%temperature)
+         g = mount_geometry(distorted_bearing(b, c%temperature), c%temperature)
          call check(all(sys%eom%geometry%groove_centre == g%groove_centre) .and. &
                     sys%eom%geometry%element_diameter == g%element_diameter, &
                     "ball: the equations of motion use the geometry mounted at the new temperatures")
@@ -429,5 +433,91 @@ contains
       call check(all(y == y_fresh) .and. t == t_fresh, &
                  "ball: the step after the "//what//" change equals a brand-new integrator's bit for bit")
    end subroutine compare_with_a_new_integrator
+
+   !> Appendix C with its own thermal model (Rec 2.5: heat averaged every 3 ms, geometry
+   !> updated from 30 ms) through run_time_loop to 33.5 ms: eleven updates at 3, 6, ... 33 ms
+   !> (the deck's times, to 1e-12 relative); at every update the heat generated leaves
+   !> through the coolant, the reference and the bore within 1e-6 (relative); the bulk
+   !> temperatures of the condition and of the state are the last field's; the geometry
+   !> updated at 30 and 33 ms only, mounted at those temperatures with the ADRC2 fits; the
+   !> geometry change disturbs the inner race's equilibrium (net force > 1 % of the applied
+   !> load before the constraint) and the constraint leaves at most 1e-6 of it; one more
+   !> update at the end, then the equations of motion evaluated from outside: the inner race's
+   !> net force (mass x acceleration) at most 1e-6 of the applied load.
+   subroutine test_ball_thermal_run()
+      class(bearing_system_t), allocatable :: sys
+      type(integrator_t) :: it
+      type(run_options_t) :: opts
+      type(bearing_t) :: b
+      type(run_history_t) :: h
+      type(error_type), allocatable :: error
+      type(mounted_geometry_t) :: g
+      type(bearing_state_t) :: s
+      real(wp), allocatable :: y(:)
+      character(len=:), allocatable :: decks, incomplete
+      real(wp) :: net(3)
+      real(wp), allocatable :: dydt(:)
+      integer :: unit, k, flag
+
+      call get_decks_dir(decks)
+      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      if (allocated(error)) return
+      call check(b%coolant%thermal_time(1) == 3.0e-3_wp .and. b%coolant%thermal_time(2) == 3.0e-2_wp, &
+                 "thermal: Rec 2.5's times read")
+      opts%duration = 3.35e-2_wp
+      call set_run_option(opts, "thermal", "deck", error)
+      call check(.not. allocated(error), "thermal: run option thermal=deck")
+      call new_bearing_system(b, opts, sys, error)
+      call sys%solve_start(error)
+      call sys%start_dynamics(it, y, error)
+      call check(.not. allocated(error), "thermal: start")
+      if (allocated(error)) return
+      call sys%new_history(h, 100, error)
+      allocate (dydt(size(y)))
+      open (newunit=unit, status="scratch", action="readwrite")
+      call run_time_loop(unit, sys, it, y, 100, h, incomplete, error, t_end=opts%duration/sys%time_scale)
+      close (unit)
+      call check(.not. allocated(error), "thermal: the run to 33.5 ms completes")
+      select type (sys)
+      type is (ball_kind_t)
+         associate (th => sys%thermal)
+            call check(th%mode == THERMAL_GEOMETRY, "thermal: the deck's mode is temperatures and geometry")
+            call check(th%updates == 11, "thermal: eleven updates by 33.5 ms")
+            do k = 1, min(th%updates, 11)
+               call check(abs(th%update_times(k) - 3.0e-3_wp*k) <= 1.0e-12_wp*3.0e-3_wp*k, &
+                          "thermal: update at the deck's time")
+            end do
+            call check(th%balance <= 1.0e-6_wp, "thermal: heat generated = heat leaving at every update")
+            call check(th%field%q_generated > 100.0_wp, "thermal: the bearing generates heat")
+            call check(all(sys%condition%temperature == th%field%temperature), &
+                       "thermal: the condition's temperatures are the last field's")
+            s = sys%eom%state
+            call unpack_state(y, 0.0_wp, s, sys%eom%orbit_frame)
+            call check(all(s%temperature == th%field%temperature), "thermal: the state's temperatures too")
+            call check(th%geometry_updates == 2, "thermal: geometry updated at 30 and 33 ms only")
+            call check(all(sys%condition%geometry_temperature == th%field%temperature), &
+                       "thermal: the geometry at the last field's temperatures")
+            g = mount_geometry(distorted_bearing(b, th%field%temperature), th%field%temperature)
+            call check(sys%eom%geometry%mounting%clearance == g%mounting%clearance .and. &
+                       sys%eom%geometry%mounting%outer_fit == g%mounting%outer_fit, &
+                       "thermal: the equations of motion use the distorted geometry (ADRC2)")
+            call check(sys%hold_solves == 2, "thermal: the load-holding constraint at each geometry update")
+            call check(sys%hold_initial > 1.0e-2_wp, "thermal: a geometry update disturbs the inner race")
+            call check(sys%hold_residual <= 1.0e-6_wp, "thermal: after the constraint the contacts carry the "// &
+                       "applied load (residual <= 1e-6)")
+         end associate
+         ! one more update at the run's end (its heat since 33 ms), checked from outside: the
+         ! equations of motion at the state it leaves give the inner race no net force
+         call sys%on_event(opts%duration, it, y, error)
+         call check(.not. allocated(error), "thermal: an update at the end of the run")
+         call check(sys%thermal%updates == 12 .and. sys%hold_solves == 3, "thermal: the update re-mounted and held")
+         call sys%eval(opts%duration/sys%time_scale, y, dydt, flag)
+         call check(flag == DERIV_OK, "thermal: the state after the update evaluates")
+         net = b%mass(BODY_INNER)*sys%eom%rates%races(RACE_INNER)%velocity
+         call check(norm2(net) <= 1.0e-6_wp*norm2(b%force), "thermal: the inner race in equilibrium with the "// &
+                    "applied load after the geometry update (eval, residual <= 1e-6)")
+      end select
+   end subroutine test_ball_thermal_run
+
 
 end program test_bearing_system
