@@ -181,8 +181,9 @@ contains
             thermal(k, 9) = s%contact_temp(2, k)
          end do
          motion(:, 1) = e%orbital_speed*rpm
-         motion(:, 2) = abs(s%spin_speed)*rpm
-         motion(:, 3) = merge(180.0_wp, 0.0_wp, s%spin_speed < 0.0_wp)   ! spin axis along -x or +x
+         ! each roller's spin (relative to its orbit frame): spin axis along -x or +x
+         motion(:, 2) = abs(s%roller_spin)*rpm
+         motion(:, 3) = merge(180.0_wp, 0.0_wp, s%roller_spin < 0.0_wp)
          motion(:, 4) = 0.0_wp                        ! no skew at the start
          motion(:, 5:6) = 0.0_wp                      ! angular positions at time 0
          motion(:, 7:8) = 0.0_wp                      ! cylindrical contact: no spin
