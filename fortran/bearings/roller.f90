@@ -131,9 +131,8 @@ contains
    end function roller_dynamic_steps
 
    !> The dynamics from the step-0 start: each roller at its equilibrium radius, tilt and
-   !> orbital speed, spinning in pure rolling on the outer race's kinematic radius (d_m + D)/2
-   !> (with the epicyclic orbital speed of step 0 the land then rolls on both races without
-   !> slip: adore_forces_roller_bearing), the inner race at its equilibrium, the cage at its step-0
+   !> orbital speed, its land spinning in pure rolling on the outer race (outer race control,
+   !> as step 0; adore_forces_roller_bearing's slip), the inner race at its equilibrium, the cage at its step-0
    !> angle and speed; the pockets centred on the rollers at the start.  The cage's degrees
    !> of freedom are the condition's (a free roller cage is an input error: not modelled).
    subroutine roller_start_dynamics(self, it, y, error)
@@ -154,7 +153,7 @@ contains
       associate (s => self%step0, e => self%step0%equilibrium)
          call start_roller_dynamics(self%bearing, mount_geometry(self%bearing, self%bearing%temperature, 2), &
                                     s%model, e%azimuth, e%r, e%tilt, e%orbital_speed, &
-                                    (self%bearing%speed_outer - e%orbital_speed)*(self%bearing%dm + self%bearing%d)/ &
+                                    (self%bearing%speed_outer - e%orbital_speed)*(2.0_wp*e%r + self%bearing%d)/ &
                                     self%bearing%d, e%u, &
                                     s%cage%state%angle(1), s%cage%state%angular_speed, self%eom, it, y, error, &
                                     int_method=method)

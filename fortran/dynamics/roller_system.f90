@@ -227,7 +227,6 @@ contains
       associate (md => sys%model)
          md%qs = qs
          md%law = b%race_traction
-         md%r_kin = 0.5_wp*[b%dm + b%d, b%dm - b%d]
          md%damping = 2.5e-6_wp
          if (present(damping)) md%damping = damping
          md%speed = [b%speed_outer, b%speed_inner]

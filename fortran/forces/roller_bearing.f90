@@ -18,10 +18,11 @@
 !> k2 hdot1) (N m) from the slice stiffness integrals (as the ball's contact damping,
 !> docs/dynamics.md); the damped load is kept >= 0.
 !> Slip (report eqs 2-3 on each slice, two components): along e_t the rolling slip of
-!> adore_tribology_roller_traction's line_slip with the kinematic raceway radii (d_m +- D)/2
-!> (the step-0 convention: the land rolls without slip on both races at the epicyclic
-!> orbital speed and outer-race-control spin) minus zetadot x and the race's tangential
-!> velocity; along e_x the skewed roller's surface speed +-zeta W rho, the tilt rate's
+!> adore_tribology_roller_traction's line_slip with each race's contact point at the roller's
+!> surface point, radius r + rho(x) (outer) or r - rho(x) (inner), i.e. the difference of the
+!> two surfaces' velocities (so that the traction's power balances: the dissipation eq 4
+!> equals the work taken from the races minus the roller's kinetic energy gain, tested),
+!> minus zetadot x and the race's tangential velocity; along e_x the skewed roller's surface speed +-zeta W rho, the tilt rate's
 !> -+gammadot rho and the roller's axial velocity relative to the race.  Traction on the race
 !> t = kappa(|u|) q u/|u| (the run's law); on the roller -t.  Power eq 4 per slice.
 !> Moments on the roller about its centre of a slice force f = -t w (on the roller) at
@@ -54,7 +55,6 @@ module adore_forces_roller_bearing
    type :: roller_force_model_t
       type(roller_qs_bearing_t) :: qs            !< slice contact model of step 0
       type(traction_law_t) :: law                !< the run's traction law
-      real(wp) :: r_kin(2) = 0.0_wp              !< kinematic raceway radii (d_m + D)/2, (d_m - D)/2 (m)
       real(wp) :: damping = 0.0_wp               !< beta (s) of the normal damping
       real(wp) :: speed(2) = 0.0_wp              !< outer, inner race speed (rad/s)
       real(wp) :: misalignment(2) = 0.0_wp       !< inner race theta_2, theta_3 (rad)
@@ -122,7 +122,7 @@ contains
       type(roller_loads_t), intent(out) :: ld
       type(roller_qs_bearing_t) :: qs
       real(wp) :: e_r(3), e_t(3), e_x(3), u_r, ur_dot, t_r, v_t, hdot(2, 2), f_t, f_x, rho, s, kap, umag
-      real(wp) :: pos(3), f(3)
+      real(wp) :: f(3)
       type(roller_spin_t) :: k
       integer :: j, i, n
 
@@ -164,10 +164,12 @@ contains
             k%d = m%qs%d
             k%spin = p%spin
             k%race_speed = [m%speed(1) - p%phidot, m%speed(2) - p%phidot]
+            ! the land's pure rolling on the race point at radius r +- D/2 (line_slip adds the
+            ! profile drop to both surfaces)
             if (j == 1) then
-               k%rolling_spin = k%race_speed(1)*m%r_kin(1)/(0.5_wp*m%qs%d)
+               k%rolling_spin = k%race_speed(1)*(p%r + 0.5_wp*m%qs%d)/(0.5_wp*m%qs%d)
             else
-               k%rolling_spin = -k%race_speed(2)*m%r_kin(2)/(0.5_wp*m%qs%d)
+               k%rolling_spin = -k%race_speed(2)*(p%r - 0.5_wp*m%qs%d)/(0.5_wp*m%qs%d)
             end if
             do i = 1, n
                if (.not. (c%q(i) > 0.0_wp)) cycle
@@ -191,18 +193,18 @@ contains
                ld%moment(1) = ld%moment(1) + s*rho*f_t
                ld%moment(2) = ld%moment(2) - c%x(i)*f_t
                ld%moment(3) = ld%moment(3) - s*rho*f_x
+               ! the race's torque about the axis: its point at radius r + s rho
+               ld%race_torque(j) = ld%race_torque(j) - (p%r + s*rho)*f_t
             end do
          end associate
       end do
-      ! reactions on the races (inertial); torque about the axis from the orbit direction
+      ! reactions on the races (inertial)
       do j = 1, 2
          s = merge(1.0_wp, -1.0_wp, j == 1)
          f = s*ld%load(j)*e_r
          if (allocated(ld%c(j)%weight)) f = f + sum(ld%c(j)%weight*ld%traction(:, 1, j))*e_t + &
                                             sum(ld%c(j)%weight*ld%traction(:, 2, j))*e_x
          ld%race_force(:, j) = f
-         pos = (p%r + s*0.5_wp*m%qs%d)*e_r
-         ld%race_torque(j) = dot_product(cross(pos, f), e_x)
       end do
       ! gravity
       ld%force = ld%force + m%mass*[m%gravity(1), dot_product(m%gravity, e_r), dot_product(m%gravity, e_t)]

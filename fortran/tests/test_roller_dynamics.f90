@@ -35,6 +35,7 @@ program test_roller_dynamics
 
    call test_tilted_race_moments()
    call test_gyroscopic_moment()
+   call test_power_balance()
    call test_radial_load_stays_untilted()
    call test_averaged_loads_match_quasistatic()
 
@@ -60,7 +61,7 @@ contains
    !> A race tilted by 2e-4 rad about y: roller 1 (azimuth 0, loaded) has slice loads growing
    !> along its axis; the skew moment on it equals the hand sum of the slice tractions' lever
    !> arms, sum w x t_t (t_t = kappa(|u|) q u_t/|u|, the slip by hand from the kinematic
-   !> radii), and the tilt moment the difference of the slice load moments M_i - M_o.
+   !> surface points), and the tilt moment the difference of the slice load moments M_i - M_o.
    !> Without the race tilt (and skew) the skew moment vanishes.
    subroutine test_tilted_race_moments()
       type(roller_system_t) :: sys
@@ -91,9 +92,9 @@ contains
             if (q <= 0.0_wp) cycle
             rho = 0.5_wp*b%d - profile_drop(s0%model%profile, ld%c(j)%x(i))
             if (j == 1) then
-               u = p%spin*rho - w_o*(0.5_wp*(b%dm + b%d) - profile_drop(s0%model%profile, ld%c(j)%x(i)))
+               u = p%spin*rho - w_o*(p%r + rho)
             else
-               u = -p%spin*rho - w_i*(0.5_wp*(b%dm - b%d) + profile_drop(s0%model%profile, ld%c(j)%x(i)))
+               u = -p%spin*rho - w_i*(p%r - rho)
             end if
             kap = law_kappa(b%race_traction, abs(u))
             hand_skew = hand_skew + ld%c(j)%weight(i)*ld%c(j)%x(i)*kap*q*sign(1.0_wp, u)
@@ -123,7 +124,7 @@ contains
       gam = 1.0e-4_wp
       k = 5                         ! an unloaded roller: lift it off both races
       associate (v => y(ROLLER_SIZE*(k - 1) + 1:ROLLER_SIZE*k))
-         v(2) = v(2) - 2.0e-5_wp
+         v(2) = v(2) - 5.0e-6_wp    ! 2.4 um off the outer race, 2.9 um off the inner
          v(R_TILT) = gam
          v(10) = -v(6)*gam          ! steady tilt in the orbit frame
          phidot = v(6)
@@ -138,6 +139,42 @@ contains
       call check(abs(dydt(ROLLER_SIZE*(k - 1) + 9)/sys%time_scale - expected) <= 1.0e-12_wp*abs(expected), &
                  "gyroscopic moment of the tilted orbiting roller (I_a W - I_t phidot) phidot gamma")
    end subroutine test_gyroscopic_moment
+
+   !> Energy: at the start (no roller or race translation, aligned, no pockets, gravity or
+   !> damping) the traction's dissipation (eq 4 by slices) equals the power the races' torques
+   !> take from their drives minus the rate of the rollers' kinetic energy, computed from the
+   !> equations of motion's rates: sum Omega_j T_j + sum dKE/dt + losses = 0.
+   subroutine test_power_balance()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), dydt(:)
+      real(wp) :: ke_rate, race_power, loss, v(ROLLER_SIZE), d(ROLLER_SIZE)
+      integer :: flag, k
+
+      call start(sys, it, y, .false.)
+      allocate (dydt(size(y)))
+      sys%model%gravity = 0.0_wp
+      sys%model%damping = 0.0_wp
+      y(R_TILT:ROLLER_SIZE*sys%n:ROLLER_SIZE) = 0.0_wp
+      y(10:ROLLER_SIZE*sys%n:ROLLER_SIZE) = 0.0_wp
+      call sys%eval(0.0_wp, y, dydt, flag)
+      dydt = dydt/sys%time_scale
+      ke_rate = 0.0_wp
+      race_power = 0.0_wp
+      loss = 0.0_wp
+      do k = 1, sys%n
+         v = y(ROLLER_SIZE*(k - 1) + 1:ROLLER_SIZE*k)
+         d = dydt(ROLLER_SIZE*(k - 1) + 1:ROLLER_SIZE*k)
+         ke_rate = ke_rate + sys%model%mass*(v(5)*d(5) + v(4)*d(4) + v(2)*v(6)*(v(5)*v(6) + v(2)*d(6))) + &
+                   sys%inertia(1)*v(11)*d(11) + sys%inertia(2)*(v(9)*d(9) + v(10)*d(10))
+         race_power = race_power + sum([b%speed_outer, b%speed_inner]*sys%loads(k)%race_torque)
+         loss = loss + sum(sys%loads(k)%power)
+      end do
+      print "(a,3es13.5,a)", "  power: races ", race_power, ke_rate, loss, " W (race drives, roller KE rate, loss)"
+      call check(loss > 0.1_wp, "the start dissipates")
+      call check(abs(race_power + ke_rate + loss) <= 1.0e-9_wp*(abs(race_power) + abs(ke_rate) + loss), &
+                 "power balance: race work = roller kinetic energy rate + slice dissipation")
+   end subroutine test_power_balance
 
    !> Pure radial load, aligned races: integrated over a quarter revolution of the cage the
    !> rollers stay untilted and unskewed (to round-off), and the axial momentum stays zero.
