@@ -21,10 +21,9 @@ module adore_bearings_ball
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
-   use adore_dynamics_integrator, only: integrator_t, INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, &
-                                        INT_METHOD_ARK436
+   use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics, ball_int_method
-   use adore_bearings_system, only: bearing_system_t
+   use adore_bearings_system, only: bearing_system_t, run_int_method
    use adore_output_step_report, only: write_ball_step0
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
    use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row
@@ -120,18 +119,7 @@ contains
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       integer :: method
-      select case (self%options%integrator)
-      case ("ark4")
-         method = INT_METHOD_ARK436
-      case ("ros34pw2")
-         method = INT_METHOD_ROS34PW2
-      case ("dp5")
-         method = INT_METHOD_DP54
-      case ("bs3")
-         method = INT_METHOD_BS32
-      case default    ! the deck's INT METHOD (ball_int_method)
-         method = ball_int_method(self%bearing%controls%int_method)
-      end select
+      method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &
                                int_method=method)

@@ -11,11 +11,10 @@ module adore_bearings_roller
    use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mount_geometry
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
-   use adore_dynamics_integrator, only: integrator_t, INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, &
-                                        INT_METHOD_ARK436
+   use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, ROLLER_SIZE, R_PHI, R_PHIDOT, &
                                            CAGE_OFFSET
-   use adore_bearings_system, only: bearing_system_t
+   use adore_bearings_system, only: bearing_system_t, run_int_method
    use adore_output_step_report, only: write_roller_step0
    use adore_output_run_history, only: run_history_t
    use adore_output_roller_dynamic_report, only: roller_step_view, new_roller_history, record_roller_history, &
@@ -141,15 +140,7 @@ contains
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       integer :: method
-      method = INT_METHOD_DP54
-      select case (self%options%integrator)
-      case ("ark4")
-         method = INT_METHOD_ARK436
-      case ("ros34pw2")
-         method = INT_METHOD_ROS34PW2
-      case ("bs3")
-         method = INT_METHOD_BS32
-      end select
+      method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       associate (s => self%step0, e => self%step0%equilibrium)
          call start_roller_dynamics(self%bearing, mount_geometry(self%bearing, self%bearing%temperature, 2), &
                                     s%model, e%azimuth, e%r, e%tilt, e%orbital_speed, &

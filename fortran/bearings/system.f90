@@ -24,12 +24,14 @@ module adore_bearings_system
    use adore_model_bearing, only: bearing_t
    use adore_model_condition, only: operating_condition_t, same_condition
    use adore_model_run_options, only: run_options_t
-   use adore_dynamics_integrator, only: derivative_t, integrator_t, DERIV_FAIL
+   use adore_dynamics_integrator, only: derivative_t, integrator_t, DERIV_FAIL, INT_METHOD_BS32, INT_METHOD_DP54, &
+                                        INT_METHOD_ROS34PW2, INT_METHOD_ARK436
+   use adore_dynamics_ball_system, only: ball_int_method
    use adore_output_run_history, only: run_history_t
    implicit none
    private
 
-   public :: bearing_system_t
+   public :: bearing_system_t, run_int_method
 
    !> What a kind without a time integration says when one is asked of it.
    character(len=*), parameter :: NO_DYNAMICS = "this bearing kind has no time integration yet"
@@ -95,6 +97,26 @@ module adore_bearings_system
    end interface
 
 contains
+
+   !> The integration method (adore_dynamics_integrator's INT_METHOD_*) of the run option
+   !> `integrator` (ark4, ros34pw2, dp5, bs3; anything else: the deck's Rec 1 INT METHOD
+   !> deck_code as ball_int_method reads it, 5 = ARK4(3)6L IMEX), for every kind.
+   pure integer function run_int_method(option, deck_code) result(method)
+      character(len=*), intent(in) :: option
+      integer, intent(in) :: deck_code
+      select case (option)
+      case ("ark4")
+         method = INT_METHOD_ARK436
+      case ("ros34pw2")
+         method = INT_METHOD_ROS34PW2
+      case ("dp5")
+         method = INT_METHOD_DP54
+      case ("bs3")
+         method = INT_METHOD_BS32
+      case default
+         method = ball_int_method(deck_code)
+      end select
+   end function run_int_method
 
    !> Change the operating condition to c during a run at packed state y: the system is
    !> mounted anew (mount) and the integrator it restarted with its next step size kept, so

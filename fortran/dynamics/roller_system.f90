@@ -42,7 +42,8 @@ module adore_dynamics_roller_system
    use adore_forces_roller_bearing, only: roller_force_model_t, roller_pose_t, race_pose_t, roller_loads_t, &
                                           roller_loads
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
-                                        INT_METHOD_DP54
+                                        INT_METHOD_ARK436
+   use adore_dynamics_ball_system, only: ball_int_method
    implicit none
    private
 
@@ -191,8 +192,12 @@ contains
    !> start: azimuth, radius, tilt, orbital speed and spin (relative to the orbit frame) of
    !> each roller, inner race y, z (u), the cage's angle (rad) and speed (rad/s); the pockets
    !> centred on the rollers' start azimuths at cage angle 0.  The integrator has the deck's
-   !> Rec 2.1 steps and error limit (tau), Dormand-Prince 5(4) (int_method: another
-   !> adore_dynamics_integrator method) and the packed state y at tau = 0.
+   !> Rec 2.1 steps and error limit (tau), the deck's Rec 1 INT METHOD as ball_int_method reads
+   !> it (5: the IMEX ARK4(3)6L with each roller's block of the Jacobian implicit; int_method:
+   !> another adore_dynamics_integrator method) and the packed state y at tau = 0.  An
+   !> explicit method is not advised: the loaded rollers' spin is stiff (traction time
+   !> constant ~0.6 us, 0.009 tau) and Dormand-Prince 5(4) at the deck's error limit holds it
+   !> off its traction balance (docs/dynamics.md, Roller dynamics).
    subroutine start_roller_dynamics(b, g, qs, azimuth, r, tilt, orbital_speed, spin, u, cage_angle, cage_speed, &
                                     sys, it, y, error, int_method, damping)
       type(bearing_t), intent(in) :: b
@@ -257,13 +262,23 @@ contains
       y(ROLLER_SIZE*n + CAGE_OFFSET + 1:ROLLER_SIZE*n + CAGE_OFFSET + 2) = [cage_angle, cage_speed]
       y(ROLLER_SIZE*n + RACE_OFFSET + 2:ROLLER_SIZE*n + RACE_OFFSET + 3) = u
       associate (c => b%controls)
-         settings = integrator_settings_t(int_method=INT_METHOD_DP54, h_initial=c%step_initial, h_min=c%step_min, &
+         settings = integrator_settings_t(int_method=ball_int_method(c%int_method), h_initial=c%step_initial, h_min=c%step_min, &
                                           h_max=c%step_max, error_limit=c%error_limit, rel_weight=0.0_wp, &
                                           accept_at_h_min=.true.)
       end associate
       if (present(int_method)) settings%int_method = int_method
+      if (settings%int_method == INT_METHOD_ARK436) then
+         ! as the ball's IMEX tuning (adore_dynamics_ball_system): a new block Jacobian every 20
+         ! steps, safety 0.8
+         settings%jacobian_every = 20
+         settings%safety = 0.8_wp
+      end if
       call it%init(size(y), settings, error, scale=roller_error_scale(n, scales(1), scales(3), 0.5_wp*b%dm, &
                                                                        0.5_wp*b%roller%roller_length))
+      if (allocated(error)) return
+      ! each roller's block of the Jacobian (the linearly implicit methods only): a roller
+      ! touches the races and the cage, never another roller
+      call it%set_jacobian_blocks([(ROLLER_SIZE*(k - 1) + 1, k=1, n)], ROLLER_SIZE, [(k, k=1, ROLLER_SIZE)], error)
    end subroutine start_roller_dynamics
 
 end module adore_dynamics_roller_system

@@ -24,7 +24,7 @@ module adore_output_roller_dynamic_report
 
    public :: roller_step_view, new_roller_history, record_roller_history, roller_total_power
 
-   integer, parameter :: N_COLUMNS = 12
+   integer, parameter :: N_COLUMNS = 15
 
 contains
 
@@ -129,7 +129,8 @@ contains
 
    !> The empty history of a roller run of n_steps steps (stride > 0: every stride-th step a
    !> row, history_shape): time, step, total power loss, roller `element`'s race loads,
-   !> losses, orbital speed and pocket force, the cage speed, the inner race's y, z.
+   !> losses, orbital speed and pocket force, the cage speed, the inner race's y, z, and the
+   !> total loss split into race contacts, pockets and guide lands.
    subroutine new_roller_history(h, b, n_steps, element, error, stride)
       type(run_history_t), intent(out) :: h
       type(bearing_t), intent(in) :: b
@@ -151,7 +152,7 @@ contains
                  "re"//e//"_contact_load_outer_N", "re"//e//"_contact_load_inner_N", &
                  "re"//e//"_contact_loss_outer_W", "re"//e//"_contact_loss_inner_W", &
                  "re"//e//"_orbital_speed_rad_s", "pocket"//e//"_force_N", "cage_angular_velocity_x_rad_s", &
-                 "inner_race_y_m", "inner_race_z_m"]
+                 "inner_race_y_m", "inner_race_z_m", "race_contact_loss_W", "pocket_loss_W", "land_loss_W"]
    end subroutine new_roller_history
 
    !> Record step `step` at time `time` (s): the last evaluation of sys at state y.
@@ -162,7 +163,8 @@ contains
       type(roller_system_t), intent(in) :: sys
       real(wp), intent(in) :: y(:)
       real(wp), allocatable :: values(:, :)
-      integer :: r0
+      real(wp) :: race_loss
+      integer :: r0, k
       if (h%rows >= size(h%values, 1)) then
          allocate (values(max(2*size(h%values, 1), 16), size(h%values, 2)))
          values(1:h%rows, :) = h%values(1:h%rows, :)
@@ -170,10 +172,15 @@ contains
       end if
       h%rows = h%rows + 1
       r0 = ROLLER_SIZE*sys%n + RACE_OFFSET
+      race_loss = 0.0_wp
+      do k = 1, sys%n
+         race_loss = race_loss + sum(sys%loads(k)%power)
+      end do
       associate (ld => sys%loads(h%element))
          h%values(h%rows, :) = [time, real(step, wp), roller_total_power(sys), ld%load, ld%power, &
                                 y(ROLLER_SIZE*(h%element - 1) + 6), sum(ld%pocket_load), &
-                                y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 2), y(r0 + 2), y(r0 + 3)]
+                                y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 2), y(r0 + 2), y(r0 + 3), race_loss, &
+                                sum([(sys%loads(k)%pocket_power, k=1, sys%n)]), sys%land_power]
       end associate
    end subroutine record_roller_history
 
