@@ -7,7 +7,8 @@ module adore_bearings_roller
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
-   use adore_model_condition, only: condition_of, default_constraints
+   use adore_model_bearing, only: bearing_t
+   use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, body_dof_t
    use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mount_geometry
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
@@ -153,10 +154,24 @@ contains
          self%last = e%azimuth
       end associate
       self%time_scale = self%eom%time_scale
-      self%condition%constraints = default_constraints(.true.)
+      self%condition%constraints = roller_constraints(self%bearing)
       self%eom%constraints = self%condition%constraints
       self%y = y
    end subroutine roller_start_dynamics
+
+   !> The run's degrees of freedom until Rec 3.3's flags are read (issue #25): the cage turning
+   !> about its axis only; the rollers free, except for report 4.4.6's own example - "a
+   !> perfectly aligned cylindrical roller bearing with purely radial load": no axial force,
+   !> no moment, no flange (Rec 5B has none) - whose rollers' axial motion, tilt and skew are
+   !> constrained (Appendix D is that case).  Free, a flangeless roller's skew grows from
+   !> round-off (docs/dynamics.md, Roller dynamics).
+   pure function roller_constraints(b) result(c)
+      type(bearing_t), intent(in) :: b
+      type(dof_constraints_t) :: c
+      c = default_constraints(.true.)
+      if (b%force(1) == 0.0_wp .and. all(b%moment == 0.0_wp)) &
+         c%elements = body_dof_t([.false., .true., .true.], [.true., .false., .false.])
+   end function roller_constraints
 
    integer function roller_n_values(self)
       class(roller_kind_t), intent(in) :: self

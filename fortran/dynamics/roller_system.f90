@@ -20,6 +20,9 @@
 !> A roller orbiting with a steady tilt gamma thus needs M_t = (I_a W_abs - I_t phidot)
 !> phidot gamma: the gyroscopic moment of the tilted spinning roller.  The spin relative to
 !> the orbit frame (the slip's W) is W_abs - phidot.
+!> The rollers' degrees of freedom are the condition's (dof_constraints_t%elements, report
+!> 4.4.6): a constrained axial translation keeps x and xdot, a constrained rotation about
+!> e_t keeps the tilt (and omega_t), about e_r the skew (and omega_r).
 !> Cage: turning about its axis only (report 4.4.6: translation and tilt constrained, the
 !> operating condition's cage_spin_only constraints; a free roller cage is not modelled):
 !> I_c thetaddot = pocket torques + guide-land viscous torque (adore_contact_cage_land at
@@ -125,6 +128,11 @@ contains
       do k = 1, self%n
          i0 = ROLLER_SIZE*(k - 1)
          p = roller_pose(y, k)
+         ! constrained roller degrees of freedom (report 4.4.6): axial position, tilt and skew
+         ! held with their rates
+         if (.not. self%constraints%elements%translation(1)) p%xdot = 0.0_wp
+         if (.not. self%constraints%elements%rotation(3)) p%tiltdot = 0.0_wp
+         if (.not. self%constraints%elements%rotation(2)) p%skewdot = 0.0_wp
          a%pocket_azimuth = self%pocket_azimuth(k) + y(c0 + 1)
          call roller_loads(self%model, p, a, self%loads(k))
          associate (f => self%loads(k)%force, mo => self%loads(k)%moment, d => dydt(i0 + 1:i0 + ROLLER_SIZE))
@@ -140,6 +148,9 @@ contains
             d(R_WT) = (mo(3) + h*y(i0 + R_WR))/it
             d(R_WR) = (mo(2) - h*y(i0 + R_WT))/it
             d(R_SPIN) = mo(1)/ia
+            if (.not. self%constraints%elements%translation(1)) d(R_X:R_XDOT:R_XDOT - R_X) = 0.0_wp
+            if (.not. self%constraints%elements%rotation(3)) d([R_TILT, R_WT]) = 0.0_wp
+            if (.not. self%constraints%elements%rotation(2)) d([R_SKEW, R_WR]) = 0.0_wp
          end associate
          race_force = race_force + self%loads(k)%race_force(:, 2)
          cage_torque = cage_torque + self%loads(k)%cage_torque
