@@ -117,8 +117,8 @@ def test_inner_contact_loads_within_5_percent_in_the_load_zone(report_time_run):
 
 
 @pytest.mark.xfail(strict=True, reason="known deviation: golden roller 6 sits at 77.2 deg, the edge of the load "
-                   "zone, with 77.8 N; the run's roller is at 77.0 deg with 83.8 N (+7.7 %); the 0.2 deg accounts "
-                   "for about 1.5 N (docs/dynamics.md, Roller dynamics)")
+                   "zone, with 77.8 N; the run's roller is at 77.0 deg, 0.2 deg nearer the zone's centre, with 83.8 N "
+                   "(+7.7 %) (docs/dynamics.md, Roller dynamics)")
 def test_inner_contact_load_at_the_load_zone_edge_within_5_percent(report_time_run):
     errors = _errors(report_time_run, "re_contact", "contact_load_inner_N")
     assert abs(errors[EDGE_ROLLER]) < 0.05
