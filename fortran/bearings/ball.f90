@@ -14,7 +14,6 @@ module adore_bearings_ball
    use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_model_condition, only: condition_of, default_constraints
-   use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
@@ -23,7 +22,7 @@ module adore_bearings_ball
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics, ball_int_method
-   use adore_bearings_system, only: bearing_system_t, run_int_method
+   use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps
    use adore_output_step_report, only: write_ball_step0
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
    use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row
@@ -104,11 +103,7 @@ contains
    !> The options' steps: Rec 1 n_steps for STEPS_FROM_DECK.
    integer function ball_dynamic_steps(self) result(n)
       class(ball_kind_t), intent(in) :: self
-      if (self%options%steps == STEPS_FROM_DECK) then
-         n = max(self%bearing%controls%n_steps, 0)
-      else
-         n = max(self%options%steps, 0)
-      end if
+      n = asked_steps(self%bearing, self%options)
    end function ball_dynamic_steps
 
    !> The dynamics from the step-0 start (start_ball_dynamics) at the initial temperatures, in

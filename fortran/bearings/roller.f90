@@ -9,13 +9,12 @@ module adore_bearings_roller
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t
    use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, body_dof_t
-   use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mount_geometry
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, ROLLER_SIZE, R_PHI, R_PHIDOT, &
                                            CAGE_OFFSET
-   use adore_bearings_system, only: bearing_system_t, run_int_method
+   use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps
    use adore_output_step_report, only: write_roller_step0
    use adore_output_run_history, only: run_history_t
    use adore_output_roller_dynamic_report, only: roller_step_view, new_roller_history, record_roller_history, &
@@ -123,11 +122,7 @@ contains
    !> The options' steps: Rec 1 n_steps for STEPS_FROM_DECK.
    integer function roller_dynamic_steps(self) result(n)
       class(roller_kind_t), intent(in) :: self
-      if (self%options%steps == STEPS_FROM_DECK) then
-         n = max(self%bearing%controls%n_steps, 0)
-      else
-         n = max(self%options%steps, 0)
-      end if
+      n = asked_steps(self%bearing, self%options)
    end function roller_dynamic_steps
 
    !> The dynamics from the step-0 start: each roller at its equilibrium radius, tilt and

@@ -23,7 +23,7 @@ module adore_bearings_system
    use adore_deck_tokenizer, only: show_real
    use adore_model_bearing, only: bearing_t
    use adore_model_condition, only: operating_condition_t, same_condition
-   use adore_model_run_options, only: run_options_t
+   use adore_model_run_options, only: run_options_t, STEPS_FROM_DECK
    use adore_dynamics_integrator, only: derivative_t, integrator_t, DERIV_FAIL, INT_METHOD_BS32, INT_METHOD_DP54, &
                                         INT_METHOD_ROS34PW2, INT_METHOD_ARK436
    use adore_dynamics_ball_system, only: ball_int_method
@@ -31,7 +31,7 @@ module adore_bearings_system
    implicit none
    private
 
-   public :: bearing_system_t, run_int_method
+   public :: bearing_system_t, run_int_method, asked_steps
 
    !> What a kind without a time integration says when one is asked of it.
    character(len=*), parameter :: NO_DYNAMICS = "this bearing kind has no time integration yet"
@@ -117,6 +117,19 @@ contains
          method = ball_int_method(deck_code)
       end select
    end function run_int_method
+
+   !> The time steps a run of bearing b asks for under options o: Rec 1 n_steps for
+   !> STEPS_FROM_DECK, else the option's (never below 0).  What a kind with a time
+   !> integration returns as its dynamic_steps.
+   pure integer function asked_steps(b, o) result(n)
+      type(bearing_t), intent(in) :: b
+      type(run_options_t), intent(in) :: o
+      if (o%steps == STEPS_FROM_DECK) then
+         n = max(b%controls%n_steps, 0)
+      else
+         n = max(o%steps, 0)
+      end if
+   end function asked_steps
 
    !> Change the operating condition to c during a run at packed state y: the system is
    !> mounted anew (mount) and the integrator it restarted with its next step size kept, so

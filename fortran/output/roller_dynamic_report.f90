@@ -6,19 +6,18 @@
 !> No module state.
 module adore_output_roller_dynamic_report
    use adore_core_kinds, only: wp
-   use adore_core_error, only: error_type, input_error
+   use adore_core_error, only: error_type
    use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_tribology_traction_law, only: law_kappa
-   use adore_tribology_wear, only: archard_wear_rate
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_bearing_lp_life
    use adore_forces_race_contact, only: line_flash
    use adore_tribology_roller_traction, only: line_traction_t
    use adore_forces_roller_bearing, only: roller_loads_t
    use adore_dynamics_roller_system, only: roller_system_t, roller_pose, ROLLER_SIZE, RACE_OFFSET, CAGE_OFFSET
-   use adore_start_roller_step0, only: roller_step0_t
-   use adore_output_run_history, only: run_history_t, history_shape
+   use adore_start_roller_step0, only: roller_step0_t, roller_wear
+   use adore_output_run_history, only: run_history_t, history_shape, check_history_element
    implicit none
    private
 
@@ -83,12 +82,7 @@ contains
       s%spin_speed = sum(s%roller_spin)/n
       s%contact_power = sum(s%tr_o%power) + sum(s%tr_i%power)
       s%power_loss = roller_total_power(sys)
-      s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
-                                 s%tr_o%sliding + s%tr_i%sliding)
-      s%race_wear(1) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
-                                         sum(s%tr_o%sliding))
-      s%race_wear(2) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
-                                         sum(s%tr_i%sliding))
+      call roller_wear(b, s)
       s%race_loads = 0.0_wp
       do k = 1, n
          s%race_loads(1:3, 1) = s%race_loads(1:3, 1) + sys%loads(k)%race_force(:, 1)
@@ -139,11 +133,8 @@ contains
       integer, intent(in), optional :: stride
       integer :: rows, cols
       character(len=:), allocatable :: e
-      if (element < 1 .or. element > b%n_elements) then
-         call input_error(error, "time history element "//itoa(element)//": the bearing has rolling elements 1 to "// &
-                          itoa(b%n_elements))
-         return
-      end if
+      call check_history_element(b, element, error)
+      if (allocated(error)) return
       call history_shape(n_steps, b%controls%print_interval, 0, rows, cols, h%stride, stride)
       h%element = element
       e = itoa(element)
