@@ -22,7 +22,7 @@ module adore_bearings_ball
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics, ball_int_method
-   use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps
+   use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
    use adore_output_step_report, only: write_ball_step0
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
    use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row
@@ -71,11 +71,7 @@ contains
       real(wp), intent(out) :: dydt(:)
       integer, intent(out) :: flag
       call self%eom%eval(t, y, dydt, flag)
-      if (allocated(self%eom%failure_reason)) then
-         self%failure_reason = self%eom%failure_reason
-      else if (allocated(self%failure_reason)) then
-         deallocate (self%failure_reason)
-      end if
+      call adopt_failure(self, self%eom)
    end subroutine ball_eval
 
    !> Step 0: mounting, equilibrium, ball speeds (the options' start hypothesis, report

@@ -14,7 +14,7 @@ module adore_bearings_roller
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, ROLLER_SIZE, R_PHI, R_PHIDOT, &
                                            CAGE_OFFSET
-   use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps
+   use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
    use adore_output_step_report, only: write_roller_step0
    use adore_output_run_history, only: run_history_t
    use adore_output_roller_dynamic_report, only: roller_step_view, new_roller_history, record_roller_history, &
@@ -111,11 +111,7 @@ contains
       real(wp), intent(out) :: dydt(:)
       integer, intent(out) :: flag
       call self%eom%eval(t, y, dydt, flag)
-      if (allocated(self%eom%failure_reason)) then
-         self%failure_reason = self%eom%failure_reason
-      else if (allocated(self%failure_reason)) then
-         deallocate (self%failure_reason)
-      end if
+      call adopt_failure(self, self%eom)
       self%y = y
    end subroutine roller_eval
 

@@ -31,7 +31,7 @@ module adore_bearings_system
    implicit none
    private
 
-   public :: bearing_system_t, run_int_method, asked_steps
+   public :: bearing_system_t, run_int_method, asked_steps, adopt_failure
 
    !> What a kind without a time integration says when one is asked of it.
    character(len=*), parameter :: NO_DYNAMICS = "this bearing kind has no time integration yet"
@@ -130,6 +130,18 @@ contains
          n = max(o%steps, 0)
       end if
    end function asked_steps
+
+   !> The reason of the last failed evaluation of a kind's equations of motion eom as the
+   !> kind's own (none when eom's last evaluation succeeded).
+   subroutine adopt_failure(self, eom)
+      class(bearing_system_t), intent(inout) :: self
+      class(derivative_t), intent(in) :: eom
+      if (allocated(eom%failure_reason)) then
+         self%failure_reason = eom%failure_reason
+      else if (allocated(self%failure_reason)) then
+         deallocate (self%failure_reason)
+      end if
+   end subroutine adopt_failure
 
    !> Change the operating condition to c during a run at packed state y: the system is
    !> mounted anew (mount) and the integrator it restarted with its next step size kept, so
