@@ -678,12 +678,18 @@ def test_basic_life_of_a_dynamic_step_follows_its_printed_loads(runs):
 
 @pytest.mark.parametrize("name", ["deep_groove_radial", "deep_groove_axial", "deep_groove_combined_no_clearance",
                                   "deep_groove_combined_clearance", "deep_groove_light_high_speed",
-                                  "angular_contact_thrust"])
+                                  "angular_contact_thrust"] + [
+                                  f"iso16281_ex{k}" for k in ("1_radial", "2_axial", "3_radial_clearance",
+                                                              "4_axial_clearance", "5_combined", "6_moment",
+                                                              "7_combined_moment")])
 def test_example_ball_decks_run_their_time_steps(tmp_path, name):
     """Every ball deck of decks/examples integrates its own step count to Normal
     termination (docs/examples.md), the lightly loaded 30 000 rpm bearing included (its
     first step used to drive a ball 0.8 mm into the inner race; a stage outside the contact
-    models' range is now retried with a smaller step, report 4.4.12)."""
+    models' range is now retried with a smaller step, report 4.4.12), and the moment-loaded
+    ISO example 6 (0.01 N with 1 N m: its steps used to be sized by the 0.01 N load scale,
+    far longer than its contacts' vibration; the tilting moment now counts in the load scale,
+    docs/operating-points.md)."""
     deck = Path(__file__).resolve().parents[1] / "decks" / "examples" / f"{name}.inp"
     res = pyadore.run(deck, out=tmp_path / f"{name}.prt", progress=False)
     run = read_print(res.print_path)

@@ -150,7 +150,10 @@ contains
       dydt = self%time_scale*dydt
       flag = DERIV_OK
       ! an abnormal cage contact (report 4.4.12): the integrator retries with a smaller step
-      if (self%loads%abnormal) flag = DERIV_REJECT_STEP
+      if (self%loads%abnormal) then
+         flag = DERIV_REJECT_STEP
+         self%failure_reason = "an abnormal cage contact (an interference beyond the physical limit)"
+      end if
       if (.not. all(ieee_is_finite(dydt))) then
          call engine_error(self%failure, "equations of motion: non-finite rates of "// &
                            trim(body_name(size(self%state%elements), findloc(ieee_is_finite(dydt), .false., 1)))// &
@@ -276,7 +279,7 @@ contains
       type(bearing_state_t) :: st
       type(integrator_settings_t) :: settings
 
-      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error)
+      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error, b%moment, 0.5_wp*b%dm)
       if (allocated(error)) return
       l = scales(1)
       tt = scales(3)

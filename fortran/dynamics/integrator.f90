@@ -1,10 +1,13 @@
-!> The error-controlled explicit integrator of the equations of motion (issue #20, item 3).
+!> The error-controlled integrator of the equations of motion (issue #20 item 3, issue #30 item 2).
 !>
 !> Design (ddeabm style): `integrator_t` owns its settings, its workspace (stage vectors
 !> allocated once by init for n unknowns) and its statistics; the right-hand side is an
 !> argument, an extension of the abstract type `derivative_t` whose deferred `eval` gives
 !> dy/dt.  The model data travel inside the caller's extension, so there is no module state
 !> and two integrations never share anything.
+!>
+!> The linearly implicit attempts live in the submodule adore_dynamics_integrator_implicit
+!> (integrator_implicit.f90).
 !>
 !> Methods (Rec 1 field int_method, echo INT METHOD; see docs/dynamics.md for what is known
 !> and what is assumed): 5 = Dormand-Prince 5(4), 3 = Bogacki-Shampine 3(2), both explicit,
@@ -138,7 +141,50 @@ module adore_dynamics_integrator
       procedure :: advance
       procedure :: restart
       procedure :: set_jacobian_blocks
+      !> private bindings: the submodule reaches them through the type (gfortran 12 does not
+      !> export a private module procedure to a submodule's object file)
+      procedure, private :: weighted_error
+      procedure, private :: stop_error
    end type integrator_t
+
+   !> The linearly implicit methods (Rosenbrock-W and IMEX) and their block Jacobian:
+   !> submodule adore_dynamics_integrator_implicit (fortran/dynamics/integrator_implicit.f90).
+   interface
+      !> Jacobian blocks of the linearly implicit methods (nb blocks of m unknowns at first(:), columns cols(:)).
+      module subroutine set_jacobian_blocks(self, first, m, cols, error)
+         class(integrator_t), intent(inout) :: self
+         integer, intent(in) :: first(:), m, cols(:)
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine set_jacobian_blocks
+      !> The block Jacobian at (t, y) by forward differences (k(:, 1) = f(t, y) given).
+      module subroutine block_jacobian(self, deriv, t, y, error)
+         class(integrator_t), intent(inout) :: self
+         class(derivative_t), intent(inout) :: deriv
+         real(wp), intent(in) :: t
+         real(wp), intent(in) :: y(:)
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine block_jacobian
+      !> One Rosenbrock-W attempt of size h from (t, y) (HNW II, IV.7 eq 7.25).
+      module subroutine attempt_rosenbrock(self, deriv, t, y, h, flag, err, accept)
+         class(integrator_t), intent(inout) :: self
+         class(derivative_t), intent(inout) :: deriv
+         real(wp), intent(in) :: t, h
+         real(wp), intent(in) :: y(:)
+         integer, intent(out) :: flag
+         real(wp), intent(out) :: err
+         logical, intent(in) :: accept
+      end subroutine attempt_rosenbrock
+      !> One additive (IMEX) Runge-Kutta attempt of size h from (t, y) (Kennedy & Carpenter 2003).
+      module subroutine attempt_imex(self, deriv, t, y, h, flag, err, accept)
+         class(integrator_t), intent(inout) :: self
+         class(derivative_t), intent(inout) :: deriv
+         real(wp), intent(in) :: t, h
+         real(wp), intent(in) :: y(:)
+         integer, intent(out) :: flag
+         real(wp), intent(out) :: err
+         logical, intent(in) :: accept
+      end subroutine attempt_imex
+   end interface
 
 contains
 
@@ -325,7 +371,8 @@ contains
          end if
          if (flag == DERIV_REJECT_STEP) then
             self%stats%rejected_flag = self%stats%rejected_flag + 1
-            why = "the derivative refused the step (abnormal contact, report 4.4.12)"
+            why = "the derivative refused the step (report 4.4.12)"
+            if (allocated(deriv%failure_reason)) why = why//": "//deriv%failure_reason
             fac = flag_cut
          else if (.not. ieee_is_finite(err)) then
             self%stats%rejected_nonfinite = self%stats%rejected_nonfinite + 1
@@ -354,7 +401,7 @@ contains
          end if
          if (h <= h_min) then
             call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min)", &
-                            t, h, ": "//why, deriv=deriv)
+                            t, h, ": "//why)
             return
          end if
          h = max(fac*h, h_min)
@@ -487,204 +534,6 @@ contains
       end associate
       err = weighted_error(self, y)
    end subroutine attempt
-
-   !> Rosenbrock-W: the system's Jacobian blocks (adore_dynamics_block_jacobian): nb blocks of
-   !> m unknowns starting at first(:), whose rates depend on their own block and the unknowns
-   !> outside the blocks only; columns cols(:) (1..m) of each block are differenced (one
-   !> derivative call per column for all blocks).  Ignored by the explicit methods.
-   subroutine set_jacobian_blocks(self, first, m, cols, error)
-      class(integrator_t), intent(inout) :: self
-      integer, intent(in) :: first(:), m, cols(:)
-      type(error_type), allocatable, intent(out) :: error
-      logical :: ok
-      if (.not. (self%rosenbrock .or. self%imex)) return
-      call self%jac%setup(self%n, first, m, cols, ok)
-      if (.not. ok) call engine_error(error, "integrator: Jacobian blocks outside the state, overlapping, or "// &
-                                      "columns outside the block (m = "//itoa(m)//")")
-      self%jac_age = -1
-   end subroutine set_jacobian_blocks
-
-   !> The block Jacobian at (t, y), k(:, 1) = f(t, y): forward differences, column c of every
-   !> block perturbed at once by sqrt(eps) max(|y_i|, scale_i).  A column whose perturbed
-   !> evaluation is refused or not finite is left zero (any W keeps a W-method's order).
-   subroutine block_jacobian(self, deriv, t, y, error)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
-      type(error_type), allocatable, intent(out) :: error
-      real(wp) :: d(size(self%jac%first))
-      integer :: c, b, i, i0, m, flag
-
-      m = self%jac%m
-      do c = 1, size(self%jac%cols)
-         self%y_stage = y
-         do b = 1, size(self%jac%first)
-            i = self%jac%first(b) + self%jac%cols(c) - 1
-            d(b) = sqrt(epsilon(1.0_wp))*max(abs(y(i)), self%scale(i))
-            self%y_stage(i) = y(i) + d(b)
-            d(b) = self%y_stage(i) - y(i)
-         end do
-         call deriv%eval(t, self%y_stage, self%k(:, 2), flag)
-         self%stats%derivative_calls = self%stats%derivative_calls + 1
-         self%stats%jacobian_calls = self%stats%jacobian_calls + 1
-         if (flag == DERIV_FAIL) then
-            call stop_error(self, error, "the derivative failed (Jacobian)", t, self%h_next, deriv=deriv)
-            return
-         end if
-         do b = 1, size(self%jac%first)
-            i0 = self%jac%first(b) - 1
-            if (flag == DERIV_OK .and. all(ieee_is_finite(self%k(i0 + 1:i0 + m, 2)))) then
-               self%jac%j(:, self%jac%cols(c), b) = (self%k(i0 + 1:i0 + m, 2) - self%k(i0 + 1:i0 + m, 1))/d(b)
-            else
-               self%jac%j(:, self%jac%cols(c), b) = 0.0_wp
-            end if
-         end do
-      end do
-      self%jac%hg = -1.0_wp
-      self%jac_age = 0
-      self%stats%jacobians = self%stats%jacobians + 1
-   end subroutine block_jacobian
-
-   !> One Rosenbrock-W attempt of size h from (t, y), k(:, 1) = f(t, y) given (HNW II, IV.7
-   !> eq 7.25 with the block Jacobian): stages u, y_new, the weighted error err (infinite when
-   !> not finite or W is singular); when the step will be accepted (err <= 1 or accept), f at
-   !> (t + h, y_new) into k(:, last), the first stage of the next step; flag from the derivative.
-   subroutine attempt_rosenbrock(self, deriv, t, y, h, flag, err, accept)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t, h
-      real(wp), intent(in) :: y(:)
-      integer, intent(out) :: flag
-      real(wp), intent(out) :: err
-      logical, intent(in) :: accept
-      real(wp) :: hg
-      integer :: i, j
-      logical :: ok
-
-      err = ieee_value(err, ieee_positive_inf)
-      flag = DERIV_OK
-      associate (ros => self%ros, k => self%k, u => self%u, ys => self%y_stage)
-         hg = h*ros%gamma
-         if (self%jac%active() .and. self%jac%hg /= hg) then
-            call self%jac%factor(hg, ok)
-            if (.not. ok) return
-         end if
-         do i = 1, ros%stages
-            if (i == 1) then
-               u(:, 1) = hg*k(:, 1)
-            else
-               ys = y
-               do j = 1, i - 1
-                  if (ros%a(i, j) /= 0.0_wp) ys = ys + ros%a(i, j)*u(:, j)
-               end do
-               call eval_stage(self, deriv, t + ros%c(i)*h, ys, k(:, 2), flag, ok)
-               if (.not. ok) return
-               u(:, i) = hg*k(:, 2)
-               do j = 1, i - 1
-                  if (ros%cc(i, j) /= 0.0_wp) u(:, i) = u(:, i) + (ros%gamma*ros%cc(i, j))*u(:, j)
-               end do
-            end if
-            if (self%jac%active()) call self%jac%solve(u(:, i))
-         end do
-         self%y_new = y
-         self%y_err = 0.0_wp
-         do i = 1, ros%stages
-            self%y_new = self%y_new + ros%m(i)*u(:, i)
-            self%y_err = self%y_err + ros%e(i)*u(:, i)
-         end do
-      end associate
-      call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
-   end subroutine attempt_rosenbrock
-
-   !> One attempt of the additive (IMEX) method of size h from (t, y), k(:, 1) = f(t, y) given:
-   !> f split as J y + (f - J y) with J the block Jacobian (taken implicitly, the rest
-   !> explicitly; Kennedy & Carpenter 2003).  Written for the increments z_i = Y_i - y:
-   !>     (I - h gamma J) z_i = h sum_j<i ae_ij F_j + h sum_j<i (ai_ij - ae_ij) J z_j,
-   !> (both tables' rows sum to c_i, the implicit one's with gamma), F_j = f(t + c_j h, y + z_j),
-   !> y_new = y + h sum b_j F_j, error h sum e_j F_j; when the step will be accepted (err <= 1
-   !> or accept) f at (t + h, y_new) into k(:, last).
-   subroutine attempt_imex(self, deriv, t, y, h, flag, err, accept)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t, h
-      real(wp), intent(in) :: y(:)
-      integer, intent(out) :: flag
-      real(wp), intent(out) :: err
-      logical, intent(in) :: accept
-      integer :: i, j
-      logical :: ok, implicit
-
-      err = ieee_value(err, ieee_positive_inf)
-      flag = DERIV_OK
-      implicit = self%jac%active()
-      associate (ark => self%ark, k => self%k, jz => self%u, z => self%y_err, ys => self%y_stage)
-         if (implicit .and. self%jac%hg /= h*ark%gamma) then
-            call self%jac%factor(h*ark%gamma, ok)
-            if (.not. ok) return
-         end if
-         jz(:, 1) = 0.0_wp
-         do i = 2, ark%stages
-            z = 0.0_wp
-            do j = 1, i - 1
-               if (ark%ae(i, j) /= 0.0_wp) z = z + (h*ark%ae(i, j))*k(:, j)
-               if (implicit .and. j > 1) z = z + (h*(ark%ai(i, j) - ark%ae(i, j)))*jz(:, j)
-            end do
-            if (implicit) then
-               call self%jac%solve(z)
-               call self%jac%multiply(z, jz(:, i))
-            else
-               jz(:, i) = 0.0_wp
-            end if
-            ys = y + z
-            call eval_stage(self, deriv, t + ark%c(i)*h, ys, k(:, i), flag, ok)
-            if (.not. ok) return
-         end do
-         self%y_new = y
-         self%y_err = 0.0_wp
-         do j = 1, ark%stages
-            if (ark%b(j) /= 0.0_wp) self%y_new = self%y_new + (h*ark%b(j))*k(:, j)
-            if (ark%e(j) /= 0.0_wp) self%y_err = self%y_err + (h*ark%e(j))*k(:, j)
-         end do
-      end associate
-      call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
-   end subroutine attempt_imex
-
-   !> The end of a linearly implicit attempt (y_new and y_err set): the weighted error err
-   !> (infinite when y_new is not finite) and, when the step will be accepted (err <= 1 or
-   !> accept), f at (t + h, y_new) into k(:, last), the first stage of the next step.
-   subroutine end_of_attempt(self, deriv, t, y, h, flag, err, accept)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t, h
-      real(wp), intent(in) :: y(:)
-      integer, intent(inout) :: flag
-      real(wp), intent(inout) :: err
-      logical, intent(in) :: accept
-      if (.not. all(ieee_is_finite(self%y_new))) return
-      err = weighted_error(self, y)
-      if (.not. (err <= 1.0_wp .or. accept) .or. .not. ieee_is_finite(err)) return
-      call deriv%eval(t + h, self%y_new, self%k(:, self%last), flag)
-      self%stats%derivative_calls = self%stats%derivative_calls + 1
-      if (flag /= DERIV_OK) return
-      if (.not. all(ieee_is_finite(self%k(:, self%last)))) err = ieee_value(err, ieee_positive_inf)
-   end subroutine end_of_attempt
-
-   !> One stage of a linearly implicit attempt: f(t, ys) into f_out, counted in the run's
-   !> statistics; ok when the derivative accepts the state and ys and f_out are finite.
-   subroutine eval_stage(self, deriv, t, ys, f_out, flag, ok)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t
-      real(wp), intent(in) :: ys(:)
-      real(wp), intent(out) :: f_out(:)
-      integer, intent(out) :: flag
-      logical, intent(out) :: ok
-      call deriv%eval(t, ys, f_out, flag)
-      self%stats%derivative_calls = self%stats%derivative_calls + 1
-      ok = flag == DERIV_OK
-      if (ok) ok = all(ieee_is_finite(f_out)) .and. all(ieee_is_finite(ys))
-   end subroutine eval_stage
 
    !> The error test's norm of y_err (Rec 2.1 ERROR LIMIT; 1 = at the limit) for a step from y to y_new.
    real(wp) function weighted_error(self, y) result(err)

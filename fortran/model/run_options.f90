@@ -115,8 +115,8 @@ module adore_model_run_options
                     "coordinates of the balls in the integrated state: orbit-following (report eq 54: axial, "// &
                     "radial, azimuth) or inertial cartesian"), &
       option_spec_t("integrator", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,ark4,ros34pw2,dp5,bs3", &
-                    "integration method: the deck's INT METHOD (5: ros34pw2 for balls), the Rosenbrock-W "// &
-                    "ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)") &
+                    "integration method: the deck's INT METHOD (5: ark4 for balls), IMEX ARK4(3)6L[2]SA, "// &
+                    "Rosenbrock-W ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)") &
       ]
 
 contains

@@ -7,6 +7,10 @@
 !>               max(|Fx|, sqrt(Fy**2 + Fz**2))  (axial vs radial resultant) and equally
 !>               with max(|Fx|, |Fy|, |Fz|); the decks (4500/0/2000 N and 0/0/1000 N)
 !>               cannot tell the two apart, nor say what ADORE does at zero load.
+!>               pyadore's extension (docs/operating-points.md, "Load scale of a moment
+!>               load"): a tilting moment M (about y, z) counts as the ball load M / (dm / 2)
+!>               it puts on the pitch circle, so a moment-loaded bearing gets the time scale
+!>               of its contact loads; neither appendix deck has a moment, their scales stay.
 module adore_model_scales
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
@@ -27,12 +31,17 @@ contains
 
    !> Load scale (N) from the applied load vector [Fx (axial), Fy, Fz]:
    !> max(|Fx|, sqrt(Fy**2 + Fz**2)).  Choice between this and the largest component
-   !> is not proven by the report (see module header).
-   pure function load_scale(load) result(f)
+   !> is not proven by the report (see module header).  With the applied moment
+   !> [Mx, My, Mz] (N m) and the pitch radius arm (m): also sqrt(My**2 + Mz**2) / arm.
+   pure function load_scale(load, moment, arm) result(f)
       real(wp), intent(in) :: load(3)
+      real(wp), intent(in), optional :: moment(3), arm
       real(wp) :: f
 
       f = max(abs(load(1)), hypot(load(2), load(3)))
+      if (present(moment) .and. present(arm)) then
+         if (arm > 0.0_wp) f = max(f, hypot(moment(2), moment(3))/arm)
+      end if
    end function load_scale
 
    !> Time scale (s): sqrt(m L / F), m rolling-element mass (kg), L (m), F (N).
@@ -44,12 +53,14 @@ contains
    end function time_scale
 
    !> scales = [L (m), F (N), T (s)] from rolling-element diameter (m), mass (kg) and the
-   !> applied load vector (N).  Input error for a non-positive diameter or mass, or a
+   !> applied load vector (N) (and, when given, the applied moment (N m) with the pitch
+   !> radius arm (m): load_scale).  Input error for a non-positive diameter or mass, or a
    !> zero applied load (the scale is then undefined here: ADORE's rule is not known).
-   subroutine scale_factors(d_re, mass_re, load, scales, error)
+   subroutine scale_factors(d_re, mass_re, load, scales, error, moment, arm)
       real(wp), intent(in) :: d_re, mass_re, load(3)
       real(wp), intent(out) :: scales(3)
       type(error_type), allocatable, intent(out) :: error
+      real(wp), intent(in), optional :: moment(3), arm
 
       scales = 0.0_wp
       if (.not. (d_re > 0.0_wp .and. mass_re > 0.0_wp)) then
@@ -57,7 +68,7 @@ contains
          return
       end if
       scales(1) = length_scale(d_re)
-      scales(2) = load_scale(load)
+      scales(2) = load_scale(load, moment, arm)
       if (.not. (scales(2) > 0.0_wp)) then
          call input_error(error, "scale factors: the applied load is zero, the load scale is undefined")
          return

@@ -190,7 +190,7 @@ contains
       call deck_collect_real(deck, "9.5.1", "cage_epicyclic_ratio", e%epicyclic_ratio, error, if_present=.true.)
 
       ! scale factors and output controls
-      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error)
+      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error, b%moment, 0.5_wp*b%dm)
       if (allocated(error)) return
       e%scale_length = scales(1)
       e%scale_load = scales(2)

@@ -206,6 +206,7 @@ contains
       integer, intent(out) :: flag
       dydt = -y
       flag = DERIV_OK
+      if (allocated(self%failure_reason)) deallocate (self%failure_reason)   ! the last eval's only
       select case (self%mode)
       case (1)
          if (y(1) < self%y_bad) dydt = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -215,7 +216,10 @@ contains
             self%failure_reason = "contact model out of range"
          end if
       case (3)
-         if (t > self%t_bad) flag = DERIV_REJECT_STEP
+         if (t > self%t_bad) then
+            flag = DERIV_REJECT_STEP
+            self%failure_reason = "abnormal pocket contact"
+         end if
       case (4)
          dydt = ieee_value(1.0_wp, ieee_quiet_nan)
       end select
@@ -831,6 +835,8 @@ contains
          write (*, "(a)") "refused error: "//error%message
          call check(has(error%message, "4.4.12") .and. has(error%message, "below the minimum"), &
                     "always refused: message names 4.4.12 and the minimum step")
+         call check(has(error%message, ": abnormal pocket contact"), &
+                    "always refused: message carries the derivative's reason for the refusal")
       end if
       call check(t <= 0.5_wp, "always refused: stopped at the last good time")
 

@@ -133,6 +133,13 @@ contains
       call check(close(s(3)**2*s(2), 0.5_wp*s(1), 1.0e-14_wp), "T^2 F = m L")
       call scale_factors(0.02_wp, 0.5_wp, [0.0_wp, 0.0_wp, 0.0_wp], s, error)
       call check(allocated(error), "zero load rejected")
+      ! a tilting moment counts as the ball load M / arm on the pitch circle; a torque about
+      ! the axis (Mx) loads no contact and does not count
+      call scale_factors(0.02_wp, 0.5_wp, [0.01_wp, 0.0_wp, 0.0_wp], s, error, [7.0_wp, 3.0_wp, 4.0_wp], 0.025_wp)
+      call check(.not. allocated(error), "moment scales accepted")
+      call check(close(s(2), 5.0_wp/0.025_wp, 1.0e-15_wp), "load scale = |(My, Mz)| / arm")
+      call scale_factors(0.02_wp, 0.5_wp, [300.0_wp, 0.0_wp, 0.0_wp], s, error, [0.0_wp, 3.0_wp, 4.0_wp], 0.025_wp)
+      call check(close(s(2), 300.0_wp, 1.0e-15_wp), "a larger force keeps the load scale")
    end subroutine test_scales
 
 end program test_model

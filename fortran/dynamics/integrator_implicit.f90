@@ -1,0 +1,211 @@
+!> The linearly implicit methods of the integrator (issue #30 item 2): the Rosenbrock-W
+!> ROS34PW2 and the additive (IMEX) ARK4(3)6L[2]SA attempts, which take the system's stiff
+!> per-element blocks implicitly through the block Jacobian (adore_dynamics_block_jacobian,
+!> forward differences, one derivative call per column for all blocks).  A submodule of
+!> adore_dynamics_integrator: it works on integrator_t's workspace and statistics; the
+!> explicit pairs, the step control and the statistics stay in the parent
+!> (docs/dynamics.md, "The stiff-aware method").
+submodule(adore_dynamics_integrator) adore_dynamics_integrator_implicit
+   implicit none
+
+contains
+
+   !> Rosenbrock-W: the system's Jacobian blocks (adore_dynamics_block_jacobian): nb blocks of
+   !> m unknowns starting at first(:), whose rates depend on their own block and the unknowns
+   !> outside the blocks only; columns cols(:) (1..m) of each block are differenced (one
+   !> derivative call per column for all blocks).  Ignored by the explicit methods.
+   module subroutine set_jacobian_blocks(self, first, m, cols, error)
+      class(integrator_t), intent(inout) :: self
+      integer, intent(in) :: first(:), m, cols(:)
+      type(error_type), allocatable, intent(out) :: error
+      logical :: ok
+      if (.not. (self%rosenbrock .or. self%imex)) return
+      call self%jac%setup(self%n, first, m, cols, ok)
+      if (.not. ok) call engine_error(error, "integrator: Jacobian blocks outside the state, overlapping, or "// &
+                                      "columns outside the block (m = "//itoa(m)//")")
+      self%jac_age = -1
+   end subroutine set_jacobian_blocks
+
+   !> The block Jacobian at (t, y), k(:, 1) = f(t, y): forward differences, column c of every
+   !> block perturbed at once by sqrt(eps) max(|y_i|, scale_i).  A column whose perturbed
+   !> evaluation is refused or not finite is left zero (any W keeps a W-method's order).
+   module subroutine block_jacobian(self, deriv, t, y, error)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: d(size(self%jac%first))
+      integer :: c, b, i, i0, m, flag
+
+      m = self%jac%m
+      do c = 1, size(self%jac%cols)
+         self%y_stage = y
+         do b = 1, size(self%jac%first)
+            i = self%jac%first(b) + self%jac%cols(c) - 1
+            d(b) = sqrt(epsilon(1.0_wp))*max(abs(y(i)), self%scale(i))
+            self%y_stage(i) = y(i) + d(b)
+            d(b) = self%y_stage(i) - y(i)
+         end do
+         call deriv%eval(t, self%y_stage, self%k(:, 2), flag)
+         self%stats%derivative_calls = self%stats%derivative_calls + 1
+         self%stats%jacobian_calls = self%stats%jacobian_calls + 1
+         if (flag == DERIV_FAIL) then
+            call self%stop_error(error, "the derivative failed (Jacobian)", t, self%h_next, deriv=deriv)
+            return
+         end if
+         do b = 1, size(self%jac%first)
+            i0 = self%jac%first(b) - 1
+            if (flag == DERIV_OK .and. all(ieee_is_finite(self%k(i0 + 1:i0 + m, 2)))) then
+               self%jac%j(:, self%jac%cols(c), b) = (self%k(i0 + 1:i0 + m, 2) - self%k(i0 + 1:i0 + m, 1))/d(b)
+            else
+               self%jac%j(:, self%jac%cols(c), b) = 0.0_wp
+            end if
+         end do
+      end do
+      self%jac%hg = -1.0_wp
+      self%jac_age = 0
+      self%stats%jacobians = self%stats%jacobians + 1
+   end subroutine block_jacobian
+
+   !> One Rosenbrock-W attempt of size h from (t, y), k(:, 1) = f(t, y) given (HNW II, IV.7
+   !> eq 7.25 with the block Jacobian): stages u, y_new, the weighted error err (infinite when
+   !> not finite or W is singular); when the step will be accepted (err <= 1 or accept), f at
+   !> (t + h, y_new) into k(:, last), the first stage of the next step; flag from the derivative.
+   module subroutine attempt_rosenbrock(self, deriv, t, y, h, flag, err, accept)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t, h
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: flag
+      real(wp), intent(out) :: err
+      logical, intent(in) :: accept
+      real(wp) :: hg
+      integer :: i, j
+      logical :: ok
+
+      err = ieee_value(err, ieee_positive_inf)
+      flag = DERIV_OK
+      associate (ros => self%ros, k => self%k, u => self%u, ys => self%y_stage)
+         hg = h*ros%gamma
+         if (self%jac%active() .and. self%jac%hg /= hg) then
+            call self%jac%factor(hg, ok)
+            if (.not. ok) return
+         end if
+         do i = 1, ros%stages
+            if (i == 1) then
+               u(:, 1) = hg*k(:, 1)
+            else
+               ys = y
+               do j = 1, i - 1
+                  if (ros%a(i, j) /= 0.0_wp) ys = ys + ros%a(i, j)*u(:, j)
+               end do
+               call eval_stage(self, deriv, t + ros%c(i)*h, ys, k(:, 2), flag, ok)
+               if (.not. ok) return
+               u(:, i) = hg*k(:, 2)
+               do j = 1, i - 1
+                  if (ros%cc(i, j) /= 0.0_wp) u(:, i) = u(:, i) + (ros%gamma*ros%cc(i, j))*u(:, j)
+               end do
+            end if
+            if (self%jac%active()) call self%jac%solve(u(:, i))
+         end do
+         self%y_new = y
+         self%y_err = 0.0_wp
+         do i = 1, ros%stages
+            self%y_new = self%y_new + ros%m(i)*u(:, i)
+            self%y_err = self%y_err + ros%e(i)*u(:, i)
+         end do
+      end associate
+      call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
+   end subroutine attempt_rosenbrock
+
+   !> One attempt of the additive (IMEX) method of size h from (t, y), k(:, 1) = f(t, y) given:
+   !> f split as J y + (f - J y) with J the block Jacobian (taken implicitly, the rest
+   !> explicitly; Kennedy & Carpenter 2003).  Written for the increments z_i = Y_i - y:
+   !>     (I - h gamma J) z_i = h sum_j<i ae_ij F_j + h sum_j<i (ai_ij - ae_ij) J z_j,
+   !> (both tables' rows sum to c_i, the implicit one's with gamma), F_j = f(t + c_j h, y + z_j),
+   !> y_new = y + h sum b_j F_j, error h sum e_j F_j; when the step will be accepted (err <= 1
+   !> or accept) f at (t + h, y_new) into k(:, last).
+   module subroutine attempt_imex(self, deriv, t, y, h, flag, err, accept)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t, h
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: flag
+      real(wp), intent(out) :: err
+      logical, intent(in) :: accept
+      integer :: i, j
+      logical :: ok, implicit
+
+      err = ieee_value(err, ieee_positive_inf)
+      flag = DERIV_OK
+      implicit = self%jac%active()
+      associate (ark => self%ark, k => self%k, jz => self%u, z => self%y_err, ys => self%y_stage)
+         if (implicit .and. self%jac%hg /= h*ark%gamma) then
+            call self%jac%factor(h*ark%gamma, ok)
+            if (.not. ok) return
+         end if
+         jz(:, 1) = 0.0_wp
+         do i = 2, ark%stages
+            z = 0.0_wp
+            do j = 1, i - 1
+               if (ark%ae(i, j) /= 0.0_wp) z = z + (h*ark%ae(i, j))*k(:, j)
+               if (implicit .and. j > 1) z = z + (h*(ark%ai(i, j) - ark%ae(i, j)))*jz(:, j)
+            end do
+            if (implicit) then
+               call self%jac%solve(z)
+               call self%jac%multiply(z, jz(:, i))
+            else
+               jz(:, i) = 0.0_wp
+            end if
+            ys = y + z
+            call eval_stage(self, deriv, t + ark%c(i)*h, ys, k(:, i), flag, ok)
+            if (.not. ok) return
+         end do
+         self%y_new = y
+         self%y_err = 0.0_wp
+         do j = 1, ark%stages
+            if (ark%b(j) /= 0.0_wp) self%y_new = self%y_new + (h*ark%b(j))*k(:, j)
+            if (ark%e(j) /= 0.0_wp) self%y_err = self%y_err + (h*ark%e(j))*k(:, j)
+         end do
+      end associate
+      call end_of_attempt(self, deriv, t, y, h, flag, err, accept)
+   end subroutine attempt_imex
+
+   !> The end of a linearly implicit attempt (y_new and y_err set): the weighted error err
+   !> (infinite when y_new is not finite) and, when the step will be accepted (err <= 1 or
+   !> accept), f at (t + h, y_new) into k(:, last), the first stage of the next step.
+   subroutine end_of_attempt(self, deriv, t, y, h, flag, err, accept)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t, h
+      real(wp), intent(in) :: y(:)
+      integer, intent(inout) :: flag
+      real(wp), intent(inout) :: err
+      logical, intent(in) :: accept
+      if (.not. all(ieee_is_finite(self%y_new))) return
+      err = self%weighted_error(y)
+      if (.not. (err <= 1.0_wp .or. accept) .or. .not. ieee_is_finite(err)) return
+      call deriv%eval(t + h, self%y_new, self%k(:, self%last), flag)
+      self%stats%derivative_calls = self%stats%derivative_calls + 1
+      if (flag /= DERIV_OK) return
+      if (.not. all(ieee_is_finite(self%k(:, self%last)))) err = ieee_value(err, ieee_positive_inf)
+   end subroutine end_of_attempt
+
+   !> One stage of a linearly implicit attempt: f(t, ys) into f_out, counted in the run's
+   !> statistics; ok when the derivative accepts the state and ys and f_out are finite.
+   subroutine eval_stage(self, deriv, t, ys, f_out, flag, ok)
+      class(integrator_t), intent(inout) :: self
+      class(derivative_t), intent(inout) :: deriv
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: ys(:)
+      real(wp), intent(out) :: f_out(:)
+      integer, intent(out) :: flag
+      logical, intent(out) :: ok
+      call deriv%eval(t, ys, f_out, flag)
+      self%stats%derivative_calls = self%stats%derivative_calls + 1
+      ok = flag == DERIV_OK
+      if (ok) ok = all(ieee_is_finite(f_out)) .and. all(ieee_is_finite(ys))
+   end subroutine eval_stage
+
+end submodule adore_dynamics_integrator_implicit
