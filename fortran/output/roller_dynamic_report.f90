@@ -89,8 +89,12 @@ contains
          s%race_loads(1:3, 2) = s%race_loads(1:3, 2) + sys%loads(k)%race_force(:, 2)
          s%race_loads(4, :) = s%race_loads(4, :) + sys%loads(k)%race_torque
       end do
+      ! the cage centred on the axis (its constraint): no whirl, no mass-centre offset
       s%cage%state%angular_speed = y(ROLLER_SIZE*n + CAGE_OFFSET + 2)
-      s%cage%state%whirl_speed = s%cage%state%angular_speed   ! centred cage: no whirl (printed ratio)
+      s%cage%state%whirl_speed = 0.0_wp
+      s%cage%state%centre(2:3) = 0.0_wp
+      s%cage%state%orbital_angle = 0.0_wp
+      s%cage%state%velocity = 0.0_wp
       call roller_bearing_lp_life(lp, s%equilibrium%c_o, s%equilibrium%c_i, s%equilibrium%orbital_speed, &
                                   b%speed_outer, b%speed_inner, b%d, b%dm, s%life)
       s%basic_life_hours = s%life%bearing_hours

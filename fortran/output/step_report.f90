@@ -219,8 +219,8 @@ contains
          ! race weights out, so the external loads balance the internal ones
          loads(2, :) = s%race_loads(:, 1)
          loads(3, :) = s%race_loads(:, 2)
-         loads(4, :) = -s%race_loads(:, 1)
-         loads(5, :) = -s%race_loads(:, 2)
+         loads(4, :) = 0.0_wp - s%race_loads(:, 1)    ! (0 - x: no -0 printed)
+         loads(5, :) = 0.0_wp - s%race_loads(:, 2)
       end associate
       cage_el = [(1 + (k - 1)/2, k=1, 2*n)]
       cage_end = [(1 + mod(k - 1, 2), k=1, 2*n)]
