@@ -21,6 +21,8 @@ VPATH_ENV := PATH="$(CURDIR)/$(VENV)/bin:$$PATH"
 ENGINE_TESTS += test_run_loop
 # the thermal model's physics modules (issue #27)
 ENGINE_TESTS += test_thermal
+# the roller bearing's dynamics (issue #26)
+ENGINE_TESTS += test_roller_dynamics
 
 .PHONY: help setup gfortran run test bench debug clean distclean exe
 

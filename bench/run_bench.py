@@ -20,7 +20,10 @@ time and of the least CPU time); and once, the run to the report's simulated tim
 (`--duration REPORT_DURATION`, issue #30) with its steps, calls and final tau.  Issue #20's budget: at most 10 s for
 the full run (goal 2 s).  The command's start-up (`startup`, issue #29): `pyadore run DECK --steps 0` in a fresh
 interpreter against `adore DECK --steps 0`, budget STARTUP_BUDGET over the engine, and the heavy modules
-(HEAVY_MODULES) the command imported (none expected).  Results are printed, and written to bench/results/latest.json.
+(HEAVY_MODULES) the command imported (none expected).  The roller dynamics (`roller`, issue #26): the full
+Appendix D run (the deck's 4000 steps; budget ROLLER_BUDGET s wall, goal 1 s) standalone and f2py, as the ball
+dynamics' rows, and once the run to the report's simulated time (`--duration ROLLER_REPORT_DURATION`, the report's
+tau 76.18).  Results are printed, and written to bench/results/latest.json.
 """
 
 from __future__ import annotations
@@ -45,6 +48,9 @@ REPEAT = 5
 DYNAMIC_STEPS = 2500        # Appendix C's last step
 REPORT_DURATION = 0.08612   # s: the simulated time of the report's Appendix C step 2500 (tau 353.4)
 DYNAMIC_REPEAT = 3
+ROLLER_STEPS = 4000             # Appendix D's last step
+ROLLER_REPORT_DURATION = 5.453e-3   # s: the report's Appendix D step 4000 (tau 76.18)
+ROLLER_BUDGET = 5.0             # s wall for the full Appendix D run (issue #26; goal 1 s)
 
 
 def _time(fn, repeat=REPEAT):
@@ -98,6 +104,47 @@ def _cpu_time():
     return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
 
 
+def _run_row(deck, case, fn, out, repeat):
+    """One dynamic-run row: best and median wall time, least CPU time, calls, final tau."""
+    cpu = []
+
+    def timed():
+        start = _cpu_time()
+        fn()
+        cpu.append(_cpu_time() - start)
+
+    best, median = _time(timed, repeat=repeat)
+    text = out.read_text()
+    calls = int(re.search(r"Total Derivative Calls\s*=\s*(\d+)", text).group(1))
+    tau = float(re.search(r"Final Time\s*=\s*(\S+)", text).group(1))
+    steps = int(re.search(r"Last Step Number\s*=\s*(\d+)", text).group(1))
+    return {"deck": deck.name, "case": case.format(steps=steps), "best_s": best, "median_s": median,
+            "cpu_s": min(cpu), "derivative_calls": calls, "final_tau": tau, "us_per_call": best / calls * 1e6,
+            "cpu_us_per_call": min(cpu) / calls * 1e6}
+
+
+def _roller_rows(exe):
+    """The full Appendix D dynamic run (module docstring), standalone and f2py, and the run to
+    the report's simulated time."""
+    deck = DECKS[1]
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "roller.prt"
+        rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, executable",
+                             lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(ROLLER_STEPS)],
+                                                    check=True, capture_output=True), out, DYNAMIC_REPEAT))
+        rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, f2py",
+                             lambda: pyadore.run(deck, steps=ROLLER_STEPS, out=out, progress=False), out,
+                             DYNAMIC_REPEAT))
+        rows.append(_run_row(deck, f"--duration {ROLLER_REPORT_DURATION} (the report's time), {{steps}} steps, "
+                             "executable", lambda: subprocess.run([exe, str(deck), str(out), "--duration",
+                                                                   str(ROLLER_REPORT_DURATION)],
+                                                                  check=True, capture_output=True), out, 1))
+    for row in rows[:2]:
+        row["within_budget"] = row["best_s"] <= ROLLER_BUDGET
+    return rows
+
+
 def _dynamic_rows(exe):
     """The full Appendix C dynamic run (module docstring): one row per traction and path."""
     deck = DECKS[0]
@@ -111,32 +158,11 @@ def _dynamic_rows(exe):
                 ("executable", lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(DYNAMIC_STEPS)] + flag,
                                                       check=True, capture_output=True)),
             ]:
-                cpu = []
-
-                def timed():
-                    start = _cpu_time()
-                    fn()
-                    cpu.append(_cpu_time() - start)
-
-                best, median = _time(timed, repeat=DYNAMIC_REPEAT)
-                text = out.read_text()
-                calls = int(re.search(r"Total Derivative Calls\s*=\s*(\d+)", text).group(1))
-                tau = float(re.search(r"Final Time\s*=\s*(\S+)", text).group(1))
-                rows.append({"deck": deck.name, "case": f"{DYNAMIC_STEPS} steps, {traction}, {label}", "best_s": best,
-                             "median_s": median, "cpu_s": min(cpu), "derivative_calls": calls, "final_tau": tau,
-                             "us_per_call": best / calls * 1e6, "cpu_us_per_call": min(cpu) / calls * 1e6})
+                rows.append(_run_row(deck, f"{DYNAMIC_STEPS} steps, {traction}, {label}", fn, out, DYNAMIC_REPEAT))
         # the report's simulated time (Appendix C step 2500: 8.612E-02 s; issue #30), once
-        start_cpu = _cpu_time()
-        start = time.perf_counter()
-        subprocess.run([exe, str(deck), str(out), "--duration", str(REPORT_DURATION)], check=True, capture_output=True)
-        wall, cpu = time.perf_counter() - start, _cpu_time() - start_cpu
-        text = out.read_text()
-        calls = int(re.search(r"Total Derivative Calls\s*=\s*(\d+)", text).group(1))
-        tau = float(re.search(r"Final Time\s*=\s*(\S+)", text).group(1))
-        steps = int(re.search(r"Last Step Number\s*=\s*(\d+)", text).group(1))
-        rows.append({"deck": deck.name, "case": f"--duration {REPORT_DURATION} (the report's time), {steps} steps, "
-                     "executable", "best_s": wall, "median_s": wall, "cpu_s": cpu, "derivative_calls": calls,
-                     "final_tau": tau, "us_per_call": wall / calls * 1e6, "cpu_us_per_call": cpu / calls * 1e6})
+        rows.append(_run_row(deck, f"--duration {REPORT_DURATION} (the report's time), {{steps}} steps, executable",
+                             lambda: subprocess.run([exe, str(deck), str(out), "--duration", str(REPORT_DURATION)],
+                                                    check=True, capture_output=True), out, 1))
     return rows
 
 
@@ -173,9 +199,10 @@ def _startup_rows(exe):
 
 
 def main() -> int:
-    """`run_bench.py [runs] [startup] [sweep] [dynamics]`: the runs of the appendix decks, the
-    command's start-up, the sweep bench and/or the full dynamic run of Appendix C [default: all]."""
-    names = sys.argv[1:] or ["runs", "startup", "sweep", "dynamics"]
+    """`run_bench.py [runs] [startup] [sweep] [dynamics] [roller]`: the runs of the appendix decks, the
+    command's start-up, the sweep bench, the full dynamic run of Appendix C and/or of Appendix D
+    [default: all]."""
+    names = sys.argv[1:] or ["runs", "startup", "sweep", "dynamics", "roller"]
     exe = os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore"))
     rows = []
     decks = DECKS if "runs" in names else []
@@ -203,6 +230,8 @@ def main() -> int:
         rows += bench_sweep()
     if "dynamics" in names:
         rows += _dynamic_rows(exe)
+    if "roller" in names:
+        rows += _roller_rows(exe)
     print(f"{'deck':28s} {'case':30s} {'best (s)':>10s} {'median (s)':>11s}")
     for row in rows:
         if "us_per_call" in row:

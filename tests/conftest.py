@@ -58,10 +58,10 @@ def run_exe(adore_exe):
 
 
 def deck_with_steps(text: str, n_steps: int, print_interval: int) -> str:
-    """Appendix C's deck text with Rec 1 n_steps (2500) and data_control_2 (the print
-    interval, 500) replaced: the fields keep their I6 columns."""
+    """An appendix deck's text (Appendix C: 2500 steps, D: 4000) with Rec 1 n_steps and
+    data_control_2 (the print interval, 500) replaced: the fields keep their I6 columns."""
     line1 = text.splitlines(keepends=True)[0]
-    assert line1.startswith("Rec 1") and line1[48:54] == "   500" and line1[78:84] == "  2500", line1
+    assert line1.startswith("Rec 1") and line1[48:54] == "   500" and line1[78:84] in ("  2500", "  4000"), line1
     new = line1[:48] + f"{print_interval:6d}" + line1[54:78] + f"{n_steps:6d}" + line1[84:]
     return new + text[len(line1):]
 
@@ -77,6 +77,16 @@ def short_ball_deck(tmp_path_factory) -> Path:
     second, for the tests that need a complete time integration but not 2500 steps."""
     path = tmp_path_factory.mktemp("short_deck") / "appendix_c_short.inp"
     path.write_text(deck_with_steps((ROOT / "decks" / "appendix_c_ball.inp").read_text(), SHORT_STEPS,
+                                    SHORT_INTERVAL))
+    return path
+
+
+@pytest.fixture(scope="session")
+def short_roller_deck(tmp_path_factory) -> Path:
+    """Appendix D with its own step count cut to SHORT_STEPS (printed every SHORT_INTERVAL):
+    the roller bearing's time integration in a fraction of a second."""
+    path = tmp_path_factory.mktemp("short_roller_deck") / "appendix_d_short.inp"
+    path.write_text(deck_with_steps((ROOT / "decks" / "appendix_d_roller.inp").read_text(), SHORT_STEPS,
                                     SHORT_INTERVAL))
     return path
 

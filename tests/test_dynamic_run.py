@@ -303,18 +303,18 @@ def test_print_interval_of_rec_1(tmp_path, ball_deck):
     assert run.termination["last_step_number"] == 25
 
 
-def test_roller_deck_ends_after_step_0_with_a_note(tmp_path, roller_deck, adore_exe):
-    """Appendix D asks for 4000 steps; roller dynamics is a later issue: its print is the
-    step-0 print, and every front end says so."""
-    res = pyadore.run(roller_deck, out=tmp_path / "r.prt")
+def test_roller_deck_integrates_with_a_note(tmp_path, roller_deck, adore_exe):
+    """Appendix D integrates (issue #26; its physics: tests/test_roller_dynamics.py): the
+    asked steps, the roller run's note in every front end, its time history; a step-0 run
+    has nothing to say."""
     five = pyadore.run(roller_deck, steps=5, out=tmp_path / "r5.prt")
     zero = pyadore.run(roller_deck, steps=0, out=tmp_path / "r0.prt")
-    assert res.print_path.read_bytes() == zero.print_path.read_bytes() == five.print_path.read_bytes()
-    for r in (res, five):
-        assert r.notes and "roller bearings is not implemented" in r.notes[0] and r.time_history is None
-    assert zero.notes == []
-    proc = _exe(adore_exe, roller_deck, tmp_path / "rexe.prt")
-    assert proc.returncode == 0 and "roller bearings is not implemented" in proc.stderr
+    assert five.steps_integrated == 5 and "Normal termination: Last Step Number =       5" in five.text
+    assert five.notes and "cage centred" in five.notes[0]
+    assert len(five.time_history) == 6 and "total_power_loss_W" in five.time_history
+    assert zero.notes == [] and zero.steps_integrated == 0
+    proc = _exe(adore_exe, roller_deck, tmp_path / "rexe.prt", "--steps", "5")
+    assert proc.returncode == 0 and "rectangular pockets as flat walls" in proc.stderr
 
 
 # --- time averages (item 5) -------------------------------------------------------------------

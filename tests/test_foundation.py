@@ -66,10 +66,10 @@ def test_two_runs_in_one_process_are_identical(tmp_path, short_ball_deck):
     assert first.steps_integrated == 60
 
 
-def test_runs_in_threads_are_identical(tmp_path, short_ball_deck, roller_deck):
+def test_runs_in_threads_are_identical(tmp_path, short_ball_deck, short_roller_deck):
     """Runs in threads other than the main one go through the engine without a progress
     callback, releasing the GIL: they run at once."""
-    decks = [short_ball_deck, roller_deck] * 3
+    decks = [short_ball_deck, short_roller_deck] * 3
     with ThreadPoolExecutor(max_workers=4) as pool:
         results = list(pool.map(lambda ij: pyadore.run(ij[1], out=tmp_path / f"t{ij[0]}.prt"),
                                 enumerate(decks)))
@@ -159,18 +159,18 @@ def test_cli_rejects_negative_steps(tmp_path, ball_deck):
     assert "Traceback" not in result.output
 
 
-def test_run_says_what_it_leaves_out(tmp_path, short_ball_deck, roller_deck, run_exe):
-    """A run with time steps says that the thermal model is off; a roller deck's steps are
-    not integrated and it says so (Python notes, executable on stderr); a step-0 run has
-    nothing to say."""
+def test_run_says_what_it_leaves_out(tmp_path, short_ball_deck, short_roller_deck, run_exe):
+    """A run with time steps says that the thermal model is off, and a roller run what its
+    cage and pockets are (Python notes, executable on stderr); a step-0 run has nothing to
+    say."""
     ball = pyadore.run(short_ball_deck, out=tmp_path / "ball.prt")
     assert ball.notes and ball.notes[0].startswith("thermal model off")
-    roller = pyadore.run(roller_deck, out=tmp_path / "roller.prt")
-    assert roller.notes and "ends after step 0" in roller.notes[0]
+    roller = pyadore.run(short_roller_deck, out=tmp_path / "roller.prt")
+    assert roller.notes and roller.notes[0].startswith("thermal model off") and "cage centred" in roller.notes[0]
     assert pyadore.run(short_ball_deck, steps=0, out=tmp_path / "s0.prt").notes == []
     proc = run_exe(short_ball_deck, tmp_path / "exe.prt")
     assert proc.returncode == 0 and "adore: note: thermal model off" in proc.stderr
-    proc = run_exe(roller_deck, tmp_path / "rexe.prt")
-    assert proc.returncode == 0 and "ends after step 0" in proc.stderr
+    proc = run_exe(short_roller_deck, tmp_path / "rexe.prt")
+    assert proc.returncode == 0 and "rectangular pockets as flat walls" in proc.stderr
     proc = run_exe(short_ball_deck, tmp_path / "exe0.prt", "--steps", "0")
     assert proc.returncode == 0 and proc.stderr == ""

@@ -422,12 +422,15 @@ def test_cli_plot_golden_with_compare_as_pngs(ball_print, tmp_path):
     assert marker.get_linestyle() == "None" and marker.get_marker() == "s"
 
 
-def test_cli_plot_runs_a_deck(roller_deck, tmp_path):
+def test_cli_plot_runs_a_deck(short_roller_deck, tmp_path):
+    """A roller deck (Appendix D cut to 60 steps) is run and plotted: its time figures too
+    (issue #26: figure types 1, 2, 5, 9, 10; no cage whirl orbit of the centred cage)."""
     out = tmp_path / "roller.pdf"
-    res = CliRunner().invoke(cli, ["plot", str(roller_deck), "-o", str(out)])
+    res = CliRunner().invoke(cli, ["plot", str(short_roller_deck), "-o", str(out)])
     assert res.exit_code == 0, res.output
     assert "running it as a deck" in res.stderr
-    assert pdf_pages(out) == 2
+    assert "figure types 1, 2, 5, 9, 10" in res.output
+    assert pdf_pages(out) == 5
 
 
 def test_cli_plot_nothing_to_plot_exits_1(tmp_path):

@@ -49,9 +49,10 @@ def test_the_end_is_one_choice(tmp_path, ball_deck, roller_deck):
     with pytest.raises(pyadore.AdoreInputError, match="duration must be a finite number"):
         pyadore.run(ball_deck, out=tmp_path / "c.prt", duration=float("nan"))
     assert not list(tmp_path.iterdir())
-    # a roller deck has no time integration yet: its print ends after step 0 and says so
-    res = pyadore.run(roller_deck, out=tmp_path / "r.prt", duration=1e-3, progress=False)
-    assert res.steps_integrated == 0 and "not implemented yet" in res.notes[0]
+    # a roller deck integrates to the simulated time too (issue #26)
+    res = pyadore.run(roller_deck, out=tmp_path / "r.prt", duration=2e-4, progress=False)
+    # 2e-4 s / T (the engine's 7.15827e-5 s: its crowned roller mass, tests/test_run_golden.py)
+    assert res.steps_integrated > 0 and "Final Time = 2.7940E+00" in res.text
 
 
 def test_command_lines_take_them(tmp_path, ball_deck, run_exe):

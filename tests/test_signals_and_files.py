@@ -466,7 +466,8 @@ def test_failed_sweep_case_keeps_the_print_its_message_names(tmp_path):
 
 @pytest.fixture(scope="module")
 def roller_print(tmp_path_factory) -> Path:
-    return pyadore.run(ROLLER, out=tmp_path_factory.mktemp("roller") / "r.prt").print_path
+    """Appendix D's step-0 print (a print without time steps)."""
+    return pyadore.run(ROLLER, steps=0, out=tmp_path_factory.mktemp("roller") / "r.prt").print_path
 
 
 def test_diff_refuses_prints_of_different_bearing_types(roller_print):

@@ -15,7 +15,6 @@ module adore_bearings_ball
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, deck_constraints, &
                                     dof_constraints_t
-   use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
    use adore_thermal_distortion, only: distorted_bearing
@@ -27,10 +26,9 @@ module adore_bearings_ball
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
-   use adore_dynamics_integrator, only: integrator_t, DERIV_OK, INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, &
-                                        INT_METHOD_ARK436
-   use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics, ball_int_method
-   use adore_bearings_system, only: bearing_system_t
+   use adore_dynamics_integrator, only: integrator_t, DERIV_OK
+   use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics
+   use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
    use adore_output_step_report, only: write_ball_step0
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
    use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row, &
@@ -88,11 +86,7 @@ contains
       real(wp), intent(out) :: dydt(:)
       integer, intent(out) :: flag
       call self%eom%eval(t, y, dydt, flag)
-      if (allocated(self%eom%failure_reason)) then
-         self%failure_reason = self%eom%failure_reason
-      else if (allocated(self%failure_reason)) then
-         deallocate (self%failure_reason)
-      end if
+      call adopt_failure(self, self%eom)
    end subroutine ball_eval
 
    !> Step 0: mounting, equilibrium, ball speeds (the options' start hypothesis, report
@@ -120,11 +114,7 @@ contains
    !> The options' steps: Rec 1 n_steps for STEPS_FROM_DECK.
    integer function ball_dynamic_steps(self) result(n)
       class(ball_kind_t), intent(in) :: self
-      if (self%options%steps == STEPS_FROM_DECK) then
-         n = max(self%bearing%controls%n_steps, 0)
-      else
-         n = max(self%options%steps, 0)
-      end if
+      n = asked_steps(self%bearing, self%options)
    end function ball_dynamic_steps
 
    !> The dynamics from the step-0 start (start_ball_dynamics) at the initial temperatures, in
@@ -147,18 +137,7 @@ contains
       case default
          cage_free = .false.
       end select
-      select case (self%options%integrator)
-      case ("ark4")
-         method = INT_METHOD_ARK436
-      case ("ros34pw2")
-         method = INT_METHOD_ROS34PW2
-      case ("dp5")
-         method = INT_METHOD_DP54
-      case ("bs3")
-         method = INT_METHOD_BS32
-      case default    ! the deck's INT METHOD (ball_int_method)
-         method = ball_int_method(self%bearing%controls%int_method)
-      end select
+      method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &
                                int_method=method, cage_free=cage_free)

@@ -1,32 +1,55 @@
 !> The cylindrical roller bearing as a bearing kind (adore_bearings_system): its quasi-static
-!> start and step-0 print.  Its time integration is issue #26 [Roller dynamics]: until it
-!> lands the kind keeps the base type's "no time integration" (dynamic_steps 0), the print
-!> ends after step 0 and the run note says so.  No module state.
+!> start and step-0 print, its equations of motion (adore_dynamics_roller_system on the loads
+!> of adore_forces_roller_bearing, issue #26), its printed steps (the step-0 layout filled from
+!> the dynamic state, adore_output_roller_dynamic_report) and its time history.  No module
+!> state.
 module adore_bearings_roller
    use adore_core_kinds, only: wp
-   use adore_core_error, only: error_type, input_error
-   use adore_model_condition, only: condition_of
-   use adore_model_run_options, only: STEPS_FROM_DECK
+   use adore_core_constants, only: pi
+   use adore_core_error, only: error_type, input_error, engine_error
+   use adore_model_bearing, only: bearing_t
+   use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, body_dof_t
+   use adore_geometry_mounted, only: mount_geometry
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
-   use adore_bearings_system, only: bearing_system_t
+   use adore_dynamics_integrator, only: integrator_t
+   use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, ROLLER_SIZE, R_PHI, R_PHIDOT, &
+                                           CAGE_OFFSET
+   use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
    use adore_output_step_report, only: write_roller_step0
+   use adore_output_run_history, only: run_history_t
+   use adore_output_roller_dynamic_report, only: roller_step_view, new_roller_history, record_roller_history, &
+                                                 roller_total_power
    implicit none
    private
 
    public :: roller_kind_t
 
-   !> What a roller run says when time steps are asked for.
-   character(len=*), parameter :: NO_DYNAMICS = "time integration of roller bearings is not implemented yet "// &
-                                                "([Roller dynamics]); the print file ends after step 0 (the "// &
-                                                "quasi-static start)"
+   !> Positions in the averaged values: total power loss (W), mean roller orbital speed and
+   !> cage speed (rad/s).
+   integer, parameter, public :: RAVG_POWER = 1, RAVG_ORBIT = 2, RAVG_CAGE = 3
 
-   !> A cylindrical roller bearing run (step 0).
+   !> A cylindrical roller bearing run.
    type, extends(bearing_system_t) :: roller_kind_t
       type(roller_step0_t) :: step0         !< the quasi-static start
+      type(roller_system_t) :: eom          !< the equations of motion
+      real(wp), allocatable :: y(:)         !< the state of the last accepted step
+      real(wp), allocatable :: azimuth(:)   !< each roller's orbital position, unwrapped (rad)
+      real(wp), allocatable :: last(:)      !< at the last step (rad)
    contains
+      procedure :: eval => roller_eval
       procedure :: solve_start => roller_solve_start
       procedure :: write_start => roller_write_start
       procedure :: run_note => roller_run_note
+      procedure :: dynamic_steps => roller_dynamic_steps
+      procedure :: start_dynamics => roller_start_dynamics
+      procedure :: listing_lines => roller_listing_lines
+      procedure :: n_values => roller_n_values
+      procedure :: averaged_values => roller_values
+      procedure :: accepted => roller_accepted
+      procedure :: write_step => roller_write_step
+      procedure :: new_history => roller_new_history
+      procedure :: record_row => roller_record_row
+      procedure :: mount => roller_mount
    end type roller_kind_t
 
 contains
@@ -55,15 +78,177 @@ contains
       call write_roller_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], self%bearing, self%step0)
    end subroutine roller_write_start
 
-   !> The note when the options or the deck ask for time steps.
+   !> What the time integration leaves out or assumes (blank without time steps).
    subroutine roller_run_note(self, n_steps, text)
       class(roller_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
       character(len=:), allocatable, intent(out) :: text
       text = ""
-      if (n_steps > 0) return
-      if (self%options%steps > 0 .or. (self%options%steps == STEPS_FROM_DECK .and. self%bearing%controls%n_steps > 0)) &
-         text = NO_DYNAMICS
+      if (n_steps < 1) return
+      text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage centred, turning "// &
+             "about its axis only (translation and tilt constrained, report 4.4.6); rectangular pockets as flat "// &
+             "walls (kPocType 0 not identified); no flanges"
    end subroutine roller_run_note
+
+   !> The print listing's lines on the physics of the time integration.
+   subroutine roller_listing_lines(self, n_steps, text)
+      class(roller_kind_t), intent(in) :: self
+      integer, intent(in) :: n_steps
+      character(len=:), allocatable, intent(out) :: text
+      character(len=*), parameter :: lf = new_line("a")
+      text = ""
+      if (n_steps < 1) return
+      text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf// &
+             "  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf// &
+             "  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/dynamics.md, Roller dynamics)"//lf
+   end subroutine roller_listing_lines
+
+   !> dy/dtau of the equations of motion (adore_dynamics_roller_system).
+   subroutine roller_eval(self, t, y, dydt, flag)
+      class(roller_kind_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      call self%eom%eval(t, y, dydt, flag)
+      call adopt_failure(self, self%eom)
+      self%y = y
+   end subroutine roller_eval
+
+   !> The options' steps: Rec 1 n_steps for STEPS_FROM_DECK.
+   integer function roller_dynamic_steps(self) result(n)
+      class(roller_kind_t), intent(in) :: self
+      n = asked_steps(self%bearing, self%options)
+   end function roller_dynamic_steps
+
+   !> The dynamics from the step-0 start: each roller at its equilibrium radius, tilt and
+   !> orbital speed, its land spinning in pure rolling on the outer race (outer race control,
+   !> as step 0; adore_forces_roller_bearing's slip), the inner race at its equilibrium, the cage at its step-0
+   !> angle and speed; the pockets centred on the rollers at the start.  The cage's degrees
+   !> of freedom are the condition's (a free roller cage is an input error: not modelled).
+   subroutine roller_start_dynamics(self, it, y, error)
+      class(roller_kind_t), intent(inout) :: self
+      type(integrator_t), intent(out) :: it
+      real(wp), allocatable, intent(out) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: method
+      method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
+      associate (s => self%step0, e => self%step0%equilibrium)
+         call start_roller_dynamics(self%bearing, mount_geometry(self%bearing, self%bearing%temperature, 2), &
+                                    s%model, e%azimuth, e%r, e%tilt, e%orbital_speed, &
+                                    (self%bearing%speed_outer - e%orbital_speed)*(2.0_wp*e%r + self%bearing%d)/ &
+                                    self%bearing%d, e%u, &
+                                    s%cage%state%angle(1), s%cage%state%angular_speed, self%eom, it, y, error, &
+                                    int_method=method)
+         if (allocated(error)) return
+         self%azimuth = e%azimuth
+         self%last = e%azimuth
+      end associate
+      self%time_scale = self%eom%time_scale
+      self%condition%constraints = roller_constraints(self%bearing)
+      self%eom%constraints = self%condition%constraints
+      self%y = y
+   end subroutine roller_start_dynamics
+
+   !> The run's degrees of freedom until Rec 3.3's flags are read (issue #25): the cage turning
+   !> about its axis only; the rollers free, except for report 4.4.6's own example - "a
+   !> perfectly aligned cylindrical roller bearing with purely radial load": no axial force,
+   !> no moment, no flange (Rec 5B has none) - whose rollers' axial motion, tilt and skew are
+   !> constrained (Appendix D is that case).  Free, a flangeless roller's skew grows from
+   !> round-off (docs/dynamics.md, Roller dynamics).
+   pure function roller_constraints(b) result(c)
+      type(bearing_t), intent(in) :: b
+      type(dof_constraints_t) :: c
+      c = default_constraints(.true.)
+      if (b%force(1) == 0.0_wp .and. all(b%moment == 0.0_wp)) &
+         c%elements = body_dof_t([.false., .true., .true.], [.true., .false., .false.])
+   end function roller_constraints
+
+   integer function roller_n_values(self)
+      class(roller_kind_t), intent(in) :: self
+      roller_n_values = RAVG_CAGE
+      if (self%eom%n < 0) roller_n_values = 0
+   end function roller_n_values
+
+   !> Total power loss, mean orbital speed and cage speed at the last evaluated state.
+   subroutine roller_values(self, v)
+      class(roller_kind_t), intent(in) :: self
+      real(wp), intent(out) :: v(:)
+      integer :: n
+      n = self%eom%n
+      v(RAVG_POWER) = roller_total_power(self%eom)
+      v(RAVG_ORBIT) = sum(self%y(R_PHIDOT:ROLLER_SIZE*n:ROLLER_SIZE))/n
+      v(RAVG_CAGE) = self%y(ROLLER_SIZE*n + CAGE_OFFSET + 2)
+   end subroutine roller_values
+
+   !> Each roller's orbital position unwrapped (the state carries it unwrapped already).
+   subroutine roller_accepted(self)
+      class(roller_kind_t), intent(inout) :: self
+      integer :: n
+      n = self%eom%n
+      self%azimuth = self%y(R_PHI:ROLLER_SIZE*n:ROLLER_SIZE)
+      self%last = self%azimuth
+   end subroutine roller_accepted
+
+   !> A printed time step: the step-0 layout at the last evaluated state.
+   subroutine roller_write_step(self, unit, step, t, mean)
+      class(roller_kind_t), intent(in) :: self
+      integer, intent(in) :: unit, step
+      real(wp), intent(in) :: t, mean(:)
+      type(roller_step0_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: time
+      time = t*self%time_scale
+      call roller_step_view(self%bearing, self%eom, self%y, self%azimuth, self%step0, s, error)
+      ! a flash-temperature error leaves those columns at their step-0 values; the rest prints
+      if (allocated(error)) deallocate (error)
+      if (size(mean) < RAVG_CAGE) return
+      associate (b => self%bearing)
+         call write_roller_step0(unit, step, [t, time, b%speed_outer*time/(2.0_wp*pi), &
+                                              b%speed_inner*time/(2.0_wp*pi)], b, s)
+      end associate
+   end subroutine roller_write_step
+
+   subroutine roller_new_history(self, h, n_steps, error)
+      class(roller_kind_t), intent(in) :: self
+      type(run_history_t), intent(out) :: h
+      integer, intent(in) :: n_steps
+      type(error_type), allocatable, intent(out) :: error
+      call new_roller_history(h, self%bearing, n_steps, self%options%history_element, error, &
+                              self%options%history_stride)
+   end subroutine roller_new_history
+
+   subroutine roller_record_row(self, h, step, t, mean)
+      class(roller_kind_t), intent(in) :: self
+      type(run_history_t), intent(inout) :: h
+      integer, intent(in) :: step
+      real(wp), intent(in) :: t, mean(:)
+      call record_roller_history(h, step, t*self%time_scale, self%eom, self%y)
+      if (size(mean) < 0) return
+   end subroutine roller_record_row
+
+   !> The condition's load on the inner race and its degrees of freedom (the geometry stays
+   !> the step-0 mounting: the thermal re-mounting of a roller run is not done; an input error
+   !> when the condition's temperatures differ from the initial ones or the cage is freed).
+   subroutine roller_mount(self, y, error)
+      class(roller_kind_t), intent(inout) :: self
+      real(wp), intent(inout) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      associate (c => self%condition)
+         if (any(c%temperature /= self%bearing%temperature)) then
+            call input_error(error, "roller bearing: a change of the bulk temperatures during the run is not "// &
+                             "modelled (thermal re-mounting of roller bearings)")
+            return
+         end if
+         if (any(c%constraints%cage%translation) .or. any(c%constraints%cage%rotation(2:3))) then
+            call input_error(error, "roller bearing: only the cage turning about its axis is modelled (a free "// &
+                             "roller cage is not)")
+            return
+         end if
+         self%eom%force = c%force
+         self%eom%constraints = c%constraints
+      end associate
+      if (size(y) < 0) call engine_error(error, "roller bearing: empty state")
+   end subroutine roller_mount
 
 end module adore_bearings_roller

@@ -23,13 +23,15 @@ module adore_bearings_system
    use adore_deck_tokenizer, only: show_real
    use adore_model_bearing, only: bearing_t
    use adore_model_condition, only: operating_condition_t, same_condition
-   use adore_model_run_options, only: run_options_t
-   use adore_dynamics_integrator, only: derivative_t, integrator_t, DERIV_FAIL
+   use adore_model_run_options, only: run_options_t, STEPS_FROM_DECK
+   use adore_dynamics_integrator, only: derivative_t, integrator_t, DERIV_FAIL, INT_METHOD_BS32, INT_METHOD_DP54, &
+                                        INT_METHOD_ROS34PW2, INT_METHOD_ARK436
+   use adore_dynamics_ball_system, only: ball_int_method
    use adore_output_run_history, only: run_history_t
    implicit none
    private
 
-   public :: bearing_system_t
+   public :: bearing_system_t, run_int_method, asked_steps, adopt_failure
 
    !> What a kind without a time integration says when one is asked of it.
    character(len=*), parameter :: NO_DYNAMICS = "this bearing kind has no time integration yet"
@@ -95,6 +97,51 @@ module adore_bearings_system
    end interface
 
 contains
+
+   !> The integration method (adore_dynamics_integrator's INT_METHOD_*) of the run option
+   !> `integrator` (ark4, ros34pw2, dp5, bs3; anything else: the deck's Rec 1 INT METHOD
+   !> deck_code as ball_int_method reads it, 5 = ARK4(3)6L IMEX), for every kind.
+   pure integer function run_int_method(option, deck_code) result(method)
+      character(len=*), intent(in) :: option
+      integer, intent(in) :: deck_code
+      select case (option)
+      case ("ark4")
+         method = INT_METHOD_ARK436
+      case ("ros34pw2")
+         method = INT_METHOD_ROS34PW2
+      case ("dp5")
+         method = INT_METHOD_DP54
+      case ("bs3")
+         method = INT_METHOD_BS32
+      case default
+         method = ball_int_method(deck_code)
+      end select
+   end function run_int_method
+
+   !> The time steps a run of bearing b asks for under options o: Rec 1 n_steps for
+   !> STEPS_FROM_DECK, else the option's (never below 0).  What a kind with a time
+   !> integration returns as its dynamic_steps.
+   pure integer function asked_steps(b, o) result(n)
+      type(bearing_t), intent(in) :: b
+      type(run_options_t), intent(in) :: o
+      if (o%steps == STEPS_FROM_DECK) then
+         n = max(b%controls%n_steps, 0)
+      else
+         n = max(o%steps, 0)
+      end if
+   end function asked_steps
+
+   !> The reason of the last failed evaluation of a kind's equations of motion eom as the
+   !> kind's own (none when eom's last evaluation succeeded).
+   subroutine adopt_failure(self, eom)
+      class(bearing_system_t), intent(inout) :: self
+      class(derivative_t), intent(in) :: eom
+      if (allocated(eom%failure_reason)) then
+         self%failure_reason = eom%failure_reason
+      else if (allocated(self%failure_reason)) then
+         deallocate (self%failure_reason)
+      end if
+   end subroutine adopt_failure
 
    !> Change the operating condition to c during a run at packed state y: the system is
    !> mounted anew (mount) and the integrator it restarted with its next step size kept, so

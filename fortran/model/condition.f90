@@ -23,8 +23,12 @@ module adore_model_condition
       logical :: rotation(3) = .true.
    end type body_dof_t
 
-   !> The constraints of the bodies that are not rolling elements (report 4.4.6).
+   !> The constraints of the bodies (report 4.4.6).
    type :: dof_constraints_t
+      !> every rolling element: translation along the bearing axis, radially and along the orbit;
+      !> rotation about its own axis and the two transverse axes (a roller's tilt and skew);
+      !> all free by default (used by the roller kind, adore_dynamics_roller_system)
+      type(body_dof_t) :: elements
       type(body_dof_t) :: cage
       !> fixed in the housing, turning at its Rec 9.1.2 speed
       type(body_dof_t) :: outer = body_dof_t([.false., .false., .false.], [.false., .false., .false.])
@@ -65,6 +69,7 @@ contains
       same_condition = all(a%temperature == b%temperature) .and. &
                        all(a%geometry_temperature == b%geometry_temperature) .and. all(a%force == b%force) .and. &
                        all(a%moment == b%moment) .and. same_dof(a%constraints%cage, b%constraints%cage) .and. &
+                       same_dof(a%constraints%elements, b%constraints%elements) .and. &
                        same_dof(a%constraints%outer, b%constraints%outer) .and. &
                        same_dof(a%constraints%inner, b%constraints%inner)
    end function same_condition

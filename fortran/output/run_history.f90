@@ -37,7 +37,7 @@ module adore_output_run_history
    implicit none
    private
 
-   public :: run_history_t, history_shape, new_ball_history, history_due, record_ball_history, &
+   public :: run_history_t, history_shape, check_history_element, new_ball_history, history_due, record_ball_history, &
              write_history_csv, history_file_name, history_columns_text, element_file_name, beside_file_name, &
              write_element_file, ball_element_row, add_history_column, set_history_value
 
@@ -109,6 +109,17 @@ contains
       cols = N_FIXED + max(n_lands, 0) + N_ELEMENT
    end subroutine history_shape
 
+   !> An input error unless `element` is a rolling element of bearing b (1..n_elements): the
+   !> time history's element of any kind.
+   subroutine check_history_element(b, element, error)
+      type(bearing_t), intent(in) :: b
+      integer, intent(in) :: element
+      type(error_type), allocatable, intent(out) :: error
+      if (element < 1 .or. element > b%n_elements) &
+         call input_error(error, "time history element "//itoa(element)//": the bearing has rolling elements 1 to "// &
+                          itoa(b%n_elements))
+   end subroutine check_history_element
+
    !> The empty history of a run of ball bearing b over n_steps steps, with the per-element
    !> columns of rolling element `element` (1..n_elements; input error otherwise) and the
    !> element record of every ball; stride > 0: every stride-th step is a row (history_shape).
@@ -121,11 +132,8 @@ contains
       integer :: rows, cols, k, j, i, c
       character(len=:), allocatable :: e
 
-      if (element < 1 .or. element > b%n_elements) then
-         call input_error(error, "time history element "//itoa(element)//": the bearing has rolling elements 1 to "// &
-                          itoa(b%n_elements))
-         return
-      end if
+      call check_history_element(b, element, error)
+      if (allocated(error)) return
       call history_shape(n_steps, b%controls%print_interval, b%n_lands, rows, cols, h%stride, stride)
       h%element = element
       h%n_lands = b%n_lands

@@ -181,8 +181,9 @@ contains
             thermal(k, 9) = s%contact_temp(2, k)
          end do
          motion(:, 1) = e%orbital_speed*rpm
-         motion(:, 2) = abs(s%spin_speed)*rpm
-         motion(:, 3) = merge(180.0_wp, 0.0_wp, s%spin_speed < 0.0_wp)   ! spin axis along -x or +x
+         ! each roller's spin (relative to its orbit frame): spin axis along -x or +x
+         motion(:, 2) = abs(s%roller_spin)*rpm
+         motion(:, 3) = merge(180.0_wp, 0.0_wp, s%roller_spin < 0.0_wp)
          motion(:, 4) = 0.0_wp                        ! no skew at the start
          motion(:, 5:6) = 0.0_wp                      ! angular positions at time 0
          motion(:, 7:8) = 0.0_wp                      ! cylindrical contact: no spin
@@ -218,8 +219,8 @@ contains
          ! race weights out, so the external loads balance the internal ones
          loads(2, :) = s%race_loads(:, 1)
          loads(3, :) = s%race_loads(:, 2)
-         loads(4, :) = -s%race_loads(:, 1)
-         loads(5, :) = -s%race_loads(:, 2)
+         loads(4, :) = 0.0_wp - s%race_loads(:, 1)    ! (0 - x: no -0 printed)
+         loads(5, :) = 0.0_wp - s%race_loads(:, 2)
       end associate
       cage_el = [(1 + (k - 1)/2, k=1, 2*n)]
       cage_end = [(1 + mod(k - 1, 2), k=1, 2*n)]

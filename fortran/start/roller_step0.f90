@@ -54,7 +54,7 @@ module adore_start_roller_step0
    implicit none
    private
 
-   public :: roller_step0_t, solve_roller_step0
+   public :: roller_step0_t, solve_roller_step0, roller_wear
 
    integer, parameter, public :: SPIN_ROLLING = 1      !< land rolls on both races (ADORE's start, default)
    integer, parameter, public :: SPIN_EQUILIBRIUM = 2  !< spin from the roller's traction moment balance
@@ -214,12 +214,7 @@ contains
          end do
       end associate
       s%contact_power = sum(s%tr_o%power) + sum(s%tr_i%power)
-      s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
-                                 s%tr_o%sliding + s%tr_i%sliding)
-      s%race_wear(1) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
-                                         sum(s%tr_o%sliding))
-      s%race_wear(2) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
-                                         sum(s%tr_i%sliding))
+      call roller_wear(b, s)
       allocate (s%temp_rise(2, n), s%contact_temp(2, n))
       associate (e => s%equilibrium)
          do j = 1, n
@@ -249,5 +244,19 @@ contains
          s%power_loss = ieee_value(1.0_wp, ieee_quiet_nan)
 
    end subroutine roller_tribology
+
+   !> The Archard wear rates (m**3/s) of s's contacts (their sliding, s%tr_o / s%tr_i): each
+   !> roller's over both races with the roller's coefficient and hardness, each race's over
+   !> all its contacts with the race's (adore_tribology_wear).
+   pure subroutine roller_wear(b, s)
+      type(bearing_t), intent(in) :: b
+      type(roller_step0_t), intent(inout) :: s
+      s%wear = archard_wear_rate(b%material(BODY_ELEMENT)%wear, b%material(BODY_ELEMENT)%hardness, &
+                                 s%tr_o%sliding + s%tr_i%sliding)
+      s%race_wear(1) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
+                                         sum(s%tr_o%sliding))
+      s%race_wear(2) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
+                                         sum(s%tr_i%sliding))
+   end subroutine roller_wear
 
 end module adore_start_roller_step0

@@ -1,0 +1,295 @@
+!> The cylindrical roller bearing's equations of motion as the integrator's derivative in
+!> the report's dimensionless time tau (issue #26), on the loads of
+!> adore_forces_roller_bearing.
+!>
+!> Packed state (roller_state_size): per roller ROLLER_SIZE unknowns in its orbit-following
+!> frame (report eq 54) - x, r, phi, xdot, rdot, phidot, tilt gamma, skew zeta, the
+!> transverse angular velocity omega_t, omega_r (absolute, orbit-frame components) and the
+!> spin W_abs about the roller axis (absolute); then the cage angle about x and its rate;
+!> then the inner race centre (x, y, z) and velocity.  The outer race is fixed.
+!>
+!> Roller (polar coordinates in the orbiting frame, m the roller mass):
+!>     m (rddot - r phidot**2) = F_r,   m (r phiddot + 2 rdot phidot) = F_t,   m xddot = F_x.
+!> Rotation (symmetric body, small tilt and skew; I_a axial, I_t transverse moment of
+!> inertia; H = I_a W_abs a + I_t omega_perp, a = e_x + gamma e_r - zeta e_t; dH/dt taken in
+!> the frame turning at phidot about e_x):
+!>     gammadot = omega_t - phidot zeta,   zetadot = omega_r + phidot gamma,
+!>     I_t omega_t' = M_t + (I_a W_abs - I_t phidot) omega_r,
+!>     I_t omega_r' = M_r - (I_a W_abs - I_t phidot) omega_t,
+!>     I_a W_abs' = M_x.
+!> A roller orbiting with a steady tilt gamma thus needs M_t = (I_a W_abs - I_t phidot)
+!> phidot gamma: the gyroscopic moment of the tilted spinning roller.  The spin relative to
+!> the orbit frame (the slip's W) is W_abs - phidot.
+!> The rollers' degrees of freedom are the condition's (dof_constraints_t%elements, report
+!> 4.4.6): a constrained axial translation keeps x and xdot, a constrained rotation about
+!> e_t keeps the tilt (and omega_t), about e_r the skew (and omega_r).
+!> Cage: turning about its axis only (report 4.4.6: translation and tilt constrained, the
+!> operating condition's cage_spin_only constraints; a free roller cage is not modelled):
+!> I_c thetaddot = pocket torques + guide-land viscous torque (adore_contact_cage_land at
+!> zero eccentricity, Petroff's Couette torque).  Inner race: its translation under the
+!> applied load, gravity and the roller reactions, each direction as the condition's
+!> constraints allow; its rotation prescribed.  No module state.
+module adore_dynamics_roller_system
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type, input_error
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_INNER, BODY_CAGE
+   use adore_model_condition, only: dof_constraints_t, default_constraints
+   use adore_model_scales, only: scale_factors
+   use adore_contact_line_slices, only: line_stiffness, contact_modulus
+   use adore_contact_cage_land, only: cage_land_pair_t, cage_land_geometry_t, cage_land_contact
+   use adore_state_bearing_state, only: body_state_t
+   use adore_geometry_mounted, only: mounted_geometry_t
+   use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t
+   use adore_forces_ball_bearing, only: guide_land_pairs
+   use adore_forces_roller_bearing, only: roller_force_model_t, roller_pose_t, race_pose_t, roller_loads_t, &
+                                          roller_loads
+   use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
+                                        INT_METHOD_ARK436
+   use adore_dynamics_ball_system, only: ball_int_method
+   implicit none
+   private
+
+   public :: roller_system_t, roller_state_size, roller_pose, start_roller_dynamics, roller_error_scale
+
+   integer, parameter, public :: ROLLER_SIZE = 11
+   integer, parameter, public :: R_X = 1, R_R = 2, R_PHI = 3, R_XDOT = 4, R_RDOT = 5, R_PHIDOT = 6, R_TILT = 7, &
+                                 R_SKEW = 8, R_WT = 9, R_WR = 10, R_SPIN = 11
+   !> offsets after the rollers: cage angle and rate, inner race position and velocity
+   integer, parameter, public :: CAGE_OFFSET = 0, RACE_OFFSET = 2, TAIL_SIZE = 8
+
+   !> The roller bearing's equations of motion.
+   type, extends(derivative_t) :: roller_system_t
+      type(roller_force_model_t) :: model          !< the loads' data
+      type(cage_land_pair_t), allocatable :: lands(:)   !< guide lands (Rec 7.0/7.2.n)
+      integer :: n = 0                             !< rollers
+      real(wp) :: time_scale = 1.0_wp              !< T (s) per unit tau
+      real(wp) :: inertia(2) = 0.0_wp              !< roller I_a, I_t (kg m**2)
+      real(wp) :: cage_inertia = 0.0_wp            !< about x (kg m**2)
+      real(wp) :: race_mass = 0.0_wp               !< inner race (kg)
+      real(wp) :: force(3) = 0.0_wp                !< applied to the inner race (N)
+      real(wp), allocatable :: pocket_azimuth(:)   !< each pocket's azimuth at cage angle 0 (rad)
+      type(dof_constraints_t) :: constraints = dof_constraints_t()
+      type(roller_loads_t), allocatable :: loads(:)   !< of the last evaluation
+      real(wp) :: land_torque = 0.0_wp             !< guide-land torque on the cage of the last evaluation (N m)
+      real(wp) :: land_power = 0.0_wp              !< guide-land loss (W)
+      integer :: calls = 0
+   contains
+      procedure :: eval => roller_system_eval
+   end type roller_system_t
+
+contains
+
+   pure integer function roller_state_size(n)
+      integer, intent(in) :: n
+      roller_state_size = ROLLER_SIZE*n + TAIL_SIZE
+   end function roller_state_size
+
+   !> Roller k's pose from packed state y (the orbit-frame rates of tilt and skew from the
+   !> transverse angular velocity, module header).
+   pure function roller_pose(y, k) result(p)
+      real(wp), intent(in) :: y(:)
+      integer, intent(in) :: k
+      type(roller_pose_t) :: p
+      associate (v => y(ROLLER_SIZE*(k - 1) + 1:ROLLER_SIZE*k))
+         p = roller_pose_t(v(R_X), v(R_R), v(R_PHI), v(R_XDOT), v(R_RDOT), v(R_PHIDOT), v(R_TILT), v(R_SKEW), &
+                           v(R_WT) - v(R_PHIDOT)*v(R_SKEW), v(R_WR) + v(R_PHIDOT)*v(R_TILT), &
+                           v(R_SPIN) - v(R_PHIDOT))
+      end associate
+   end function roller_pose
+
+   !> dy/dtau at tau = t (module header); the loads of every roller are kept (self%loads).
+   subroutine roller_system_eval(self, t, y, dydt, flag)
+      class(roller_system_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      type(roller_pose_t) :: p
+      type(race_pose_t) :: a
+      type(body_state_t) :: cage, outer
+      type(cage_land_geometry_t) :: lc
+      real(wp) :: race_force(3), cage_torque, m, ia, it, h
+      integer :: k, i0, c0, r0
+
+      self%calls = self%calls + 1
+      if (allocated(self%failure_reason)) deallocate (self%failure_reason)
+      if (.not. allocated(self%loads)) allocate (self%loads(self%n))
+      c0 = ROLLER_SIZE*self%n + CAGE_OFFSET
+      r0 = ROLLER_SIZE*self%n + RACE_OFFSET
+      a%position = y(r0 + 1:r0 + 3)
+      a%velocity = y(r0 + 4:r0 + 6)
+      a%cage_speed = y(c0 + 2)
+      m = self%model%mass
+      ia = self%inertia(1)
+      it = self%inertia(2)
+      race_force = 0.0_wp
+      cage_torque = 0.0_wp
+      do k = 1, self%n
+         i0 = ROLLER_SIZE*(k - 1)
+         p = roller_pose(y, k)
+         ! constrained roller degrees of freedom (report 4.4.6): axial position, tilt and skew
+         ! held with their rates
+         if (.not. self%constraints%elements%translation(1)) p%xdot = 0.0_wp
+         if (.not. self%constraints%elements%rotation(3)) p%tiltdot = 0.0_wp
+         if (.not. self%constraints%elements%rotation(2)) p%skewdot = 0.0_wp
+         a%pocket_azimuth = self%pocket_azimuth(k) + y(c0 + 1)
+         call roller_loads(self%model, p, a, self%loads(k))
+         associate (f => self%loads(k)%force, mo => self%loads(k)%moment, d => dydt(i0 + 1:i0 + ROLLER_SIZE))
+            h = ia*y(i0 + R_SPIN) - it*p%phidot
+            d(R_X) = p%xdot
+            d(R_R) = p%rdot
+            d(R_PHI) = p%phidot
+            d(R_XDOT) = f(1)/m
+            d(R_RDOT) = f(2)/m + p%r*p%phidot**2
+            d(R_PHIDOT) = (f(3)/m - 2.0_wp*p%rdot*p%phidot)/p%r
+            d(R_TILT) = p%tiltdot
+            d(R_SKEW) = p%skewdot
+            d(R_WT) = (mo(3) + h*y(i0 + R_WR))/it
+            d(R_WR) = (mo(2) - h*y(i0 + R_WT))/it
+            d(R_SPIN) = mo(1)/ia
+            if (.not. self%constraints%elements%translation(1)) d(R_X:R_XDOT:R_XDOT - R_X) = 0.0_wp
+            if (.not. self%constraints%elements%rotation(3)) d([R_TILT, R_WT]) = 0.0_wp
+            if (.not. self%constraints%elements%rotation(2)) d([R_SKEW, R_WR]) = 0.0_wp
+         end associate
+         race_force = race_force + self%loads(k)%race_force(:, 2)
+         cage_torque = cage_torque + self%loads(k)%cage_torque
+      end do
+      ! guide lands: the centred cage on its land film (Couette torque) or metal
+      self%land_torque = 0.0_wp
+      self%land_power = 0.0_wp
+      if (allocated(self%lands)) then
+         cage%omega = [y(c0 + 2), 0.0_wp, 0.0_wp]
+         outer%omega = [self%model%speed(1), 0.0_wp, 0.0_wp]
+         do k = 1, size(self%lands)
+            call cage_land_contact(self%lands(k), cage, outer, lc)
+            self%land_torque = self%land_torque + lc%moment_cage(1)
+            self%land_power = self%land_power + lc%power - lc%moment_cage(1)*(y(c0 + 2) - self%model%speed(1))
+         end do
+      end if
+      dydt(c0 + 1) = y(c0 + 2)
+      dydt(c0 + 2) = 0.0_wp
+      if (self%constraints%cage%rotation(1)) dydt(c0 + 2) = (cage_torque + self%land_torque)/self%cage_inertia
+      dydt(r0 + 1:r0 + 3) = a%velocity
+      dydt(r0 + 4:r0 + 6) = merge((self%force + race_force)/self%race_mass + self%model%gravity, 0.0_wp, &
+                                  self%constraints%inner%translation)
+      dydt = self%time_scale*dydt
+      flag = DERIV_OK
+      if (.not. all(ieee_is_finite(dydt))) then
+         self%failure_reason = "roller equations of motion: non-finite rates (a roller or race outside the "// &
+                               "contact model's range)"
+         flag = DERIV_FAIL
+      end if
+   end subroutine roller_system_eval
+
+   !> The integrator's error scale of each unknown (report 4.4.5: ADORE's dimensionless
+   !> variables): positions l (m), velocities l/tt, orbital angle and its rate as the arc
+   !> length at the pitch radius, tilt and skew as the displacement at the roller's ends,
+   !> angular velocities 1/tt, the cage angle 1.
+   pure function roller_error_scale(n, l, tt, pitch_radius, half_length) result(scale)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: l, tt, pitch_radius, half_length
+      real(wp) :: scale(roller_state_size(n))
+      integer :: k
+      do k = 0, n - 1
+         scale(ROLLER_SIZE*k + 1:ROLLER_SIZE*(k + 1)) = [l, l, l/pitch_radius, l/tt, l/tt, l/(tt*pitch_radius), &
+                                                         l/half_length, l/half_length, 1.0_wp/tt, 1.0_wp/tt, &
+                                                         1.0_wp/tt]
+      end do
+      scale(ROLLER_SIZE*n + 1:) = [1.0_wp, 1.0_wp/tt, l, l, l, l/tt, l/tt, l/tt]
+   end function roller_error_scale
+
+   !> The dynamics of roller bearing b (mounted geometry g, slice model qs) from its step-0
+   !> start: azimuth, radius, tilt, orbital speed and spin (relative to the orbit frame) of
+   !> each roller, inner race y, z (u), the cage's angle (rad) and speed (rad/s); the pockets
+   !> centred on the rollers' start azimuths at cage angle 0.  The integrator has the deck's
+   !> Rec 2.1 steps and error limit (tau), the deck's Rec 1 INT METHOD as ball_int_method reads
+   !> it (5: the IMEX ARK4(3)6L with each roller's block of the Jacobian implicit; int_method:
+   !> another adore_dynamics_integrator method) and the packed state y at tau = 0.  An
+   !> explicit method is not advised: the loaded rollers' spin is stiff (traction time
+   !> constant ~0.6 us, 0.009 tau) and Dormand-Prince 5(4) at the deck's error limit holds it
+   !> off its traction balance (docs/dynamics.md, Roller dynamics).
+   subroutine start_roller_dynamics(b, g, qs, azimuth, r, tilt, orbital_speed, spin, u, cage_angle, cage_speed, &
+                                    sys, it, y, error, int_method, damping)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(roller_qs_bearing_t), intent(in) :: qs
+      real(wp), intent(in) :: azimuth(:), r(:), tilt(:), orbital_speed(:), spin(:), u(2), cage_angle, cage_speed
+      type(roller_system_t), intent(out) :: sys
+      type(integrator_t), intent(out) :: it
+      real(wp), allocatable, intent(out) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      integer, intent(in), optional :: int_method
+      real(wp), intent(in), optional :: damping
+      real(wp) :: scales(3)
+      type(integrator_settings_t) :: settings
+      integer :: k, n
+
+      n = b%n_elements
+      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error)
+      if (allocated(error)) return
+      if (.not. (b%moments(1, BODY_CAGE) > 0.0_wp .and. b%mass(BODY_INNER) > 0.0_wp)) then
+         call input_error(error, "roller dynamics: the cage needs a moment of inertia and the inner race a mass")
+         return
+      end if
+      sys%n = n
+      sys%time_scale = scales(3)
+      sys%inertia = [b%moments(1, BODY_ELEMENT), b%moments(2, BODY_ELEMENT)]
+      sys%cage_inertia = b%moments(1, BODY_CAGE)
+      sys%race_mass = b%mass(BODY_INNER)
+      sys%force = b%force
+      sys%constraints = default_constraints(.true.)
+      sys%pocket_azimuth = azimuth
+      associate (md => sys%model)
+         md%qs = qs
+         md%law = b%race_traction
+         md%damping = 2.5e-6_wp
+         if (present(damping)) md%damping = damping
+         md%speed = [b%speed_outer, b%speed_inner]
+         md%gravity = b%gravity
+         md%mass = b%mass(BODY_ELEMENT)
+         md%pocket_clearance = b%pocket_clearance(1)
+         md%pocket_length = b%roller%roller_length - sum(b%roller%corner_radius)
+         md%pocket_k = line_stiffness(contact_modulus(b%material(BODY_ELEMENT)%modulus, &
+                                                      b%material(BODY_ELEMENT)%poisson, &
+                                                      b%material(BODY_CAGE)%modulus, b%material(BODY_CAGE)%poisson), &
+                                      0.5_wp*b%d)
+         md%pocket_friction = b%cage_friction(1)
+      end associate
+      sys%lands = guide_land_pairs(b, g, b%temperature)
+      allocate (y(roller_state_size(n)))
+      y = 0.0_wp
+      do k = 1, n
+         associate (v => y(ROLLER_SIZE*(k - 1) + 1:ROLLER_SIZE*k))
+            v(R_R) = r(k)
+            v(R_PHI) = azimuth(k)
+            v(R_PHIDOT) = orbital_speed(k)
+            v(R_TILT) = tilt(k)
+            ! a roller orbiting with a steady tilt turns about e_r at -phidot gamma
+            v(R_WR) = -orbital_speed(k)*tilt(k)
+            v(R_SPIN) = spin(k) + orbital_speed(k)
+         end associate
+      end do
+      y(ROLLER_SIZE*n + CAGE_OFFSET + 1:ROLLER_SIZE*n + CAGE_OFFSET + 2) = [cage_angle, cage_speed]
+      y(ROLLER_SIZE*n + RACE_OFFSET + 2:ROLLER_SIZE*n + RACE_OFFSET + 3) = u
+      associate (c => b%controls)
+         settings = integrator_settings_t(int_method=ball_int_method(c%int_method), h_initial=c%step_initial, h_min=c%step_min, &
+                                          h_max=c%step_max, error_limit=c%error_limit, rel_weight=0.0_wp, &
+                                          accept_at_h_min=.true.)
+      end associate
+      if (present(int_method)) settings%int_method = int_method
+      if (settings%int_method == INT_METHOD_ARK436) then
+         ! as the ball's IMEX tuning (adore_dynamics_ball_system): a new block Jacobian every 20
+         ! steps, safety 0.8
+         settings%jacobian_every = 20
+         settings%safety = 0.8_wp
+      end if
+      call it%init(size(y), settings, error, scale=roller_error_scale(n, scales(1), scales(3), 0.5_wp*b%dm, &
+                                                                       0.5_wp*b%roller%roller_length))
+      if (allocated(error)) return
+      ! each roller's block of the Jacobian (the linearly implicit methods only): a roller
+      ! touches the races and the cage, never another roller
+      call it%set_jacobian_blocks([(ROLLER_SIZE*(k - 1) + 1, k=1, n)], ROLLER_SIZE, [(k, k=1, ROLLER_SIZE)], error)
+   end subroutine start_roller_dynamics
+
+end module adore_dynamics_roller_system

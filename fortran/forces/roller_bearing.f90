@@ -1,0 +1,271 @@
+!> Loads on one cylindrical roller at any state (issue #26): its race contacts by slices at
+!> any roller attitude and race misalignment, their traction by the run's law, its pocket
+!> contact in a rectangular cage pocket, gravity; the reactions on the races and the cage.
+!>
+!> Frame: the orbit-following frame of the roller (report eq 54 as for the balls): azimuth
+!> phi from +z towards -y, e_r = (0, -sin phi, cos phi), e_t = e_x x e_r the orbit
+!> direction, e_x the bearing axis.  Roller state (roller_pose_t): centre x e_x + r e_r,
+!> rates (xdot, rdot, phidot); attitude by tilt gamma (rotation about e_t: the axis rises by
+!> gamma x along e_r) and skew zeta (rotation about e_r: axis e_x - zeta e_t), small
+!> angles; their rates gammadot, zetadot in the orbit frame; W the roller's spin relative
+!> to the orbit frame (about its axis).
+!>
+!> Race contacts: adore_quasistatic_roller_equilibrium's roller_contacts (the step-0 slice
+!> model: crown profile, interference per slice, Palmgren slice load), with the inner race
+!> radial offset u_r and tilt t_r at the roller's azimuth, the roller's tilt and skew and
+!> its axial offset from each race (the permissible contact ends shift with it).  Normal
+!> damping: stiffness-proportional, beta (k0 hdot0 + k1 hdot1) (N) and beta (k1 hdot0 +
+!> k2 hdot1) (N m) from the slice stiffness integrals (as the ball's contact damping,
+!> docs/dynamics.md); the damped load is kept >= 0.
+!> Slip (report eqs 2-3 on each slice, two components): along e_t the rolling slip of
+!> adore_tribology_roller_traction's line_slip with each race's contact point at the roller's
+!> surface point, radius r + rho(x) (outer) or r - rho(x) (inner), i.e. the difference of the
+!> two surfaces' velocities (so that the traction's power balances: the dissipation eq 4
+!> equals the work taken from the races minus the roller's kinetic energy gain, tested),
+!> minus zetadot x and the race's tangential velocity; along e_x the skewed roller's surface speed +-zeta W rho, the tilt rate's
+!> -+gammadot rho and the roller's axial velocity relative to the race.  Traction on the race
+!> t = kappa(|u|) q u/|u| (the run's law); on the roller -t.  Power eq 4 per slice.
+!> Moments on the roller about its centre of a slice force f = -t w (on the roller) at
+!> x e_x + s rho e_r (s = +1 outer, -1 inner):  M_x = s rho f_t (spin), M_r = -x f_t (skew:
+!> the lever arms of the slice tractions), M_t = -s rho f_x; the normal slice loads give
+!> M_t = M_i - M_o with M = sum w q x (the tilt equation of step 0).
+!> Pocket (rectangular, kPocType 0 taken as flat walls at +-(D + c)/2 from the pocket's
+!> radial mid-plane, adore_cage_step0's roller_pocket_contacts): the roller's offset from
+!> the mid-plane d_t = r sin(phi - psi) (psi the pocket azimuth), each wall's interference
+!> along the roller axis -(c/2 -+ (d_t - zeta x)) on slices, Palmgren slice loads in the
+!> roller/cage contact modulus, Coulomb friction mu (Rec 10.5.1B A) against the sliding of
+!> the roller surface over the wall (regularised below SLIP_REG).  Units SI.
+module adore_forces_roller_bearing
+   use adore_core_kinds, only: wp
+   use adore_core_rotation, only: cross
+   use adore_contact_line_slices, only: line_contact_t, profile_drop, line_stiffness, roller_profile_t
+   use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_contacts
+   use adore_tribology_traction_law, only: traction_law_t, law_kappa
+   use adore_tribology_roller_traction, only: roller_spin_t, line_slip, RACE_OUTER, RACE_INNER
+   implicit none
+   private
+
+   public :: roller_force_model_t, roller_pose_t, race_pose_t, roller_loads_t
+   public :: roller_loads, orbit_axes
+
+   integer, parameter, public :: POCKET_SLICES = 8
+   real(wp), parameter :: SLIP_REG = 1.0e-3_wp   !< friction regularisation speed (m/s)
+
+   !> What does not change with the state.
+   type :: roller_force_model_t
+      type(roller_qs_bearing_t) :: qs            !< slice contact model of step 0
+      type(traction_law_t) :: law                !< the run's traction law
+      real(wp) :: damping = 0.0_wp               !< beta (s) of the normal damping
+      real(wp) :: speed(2) = 0.0_wp              !< outer, inner race speed (rad/s)
+      real(wp) :: misalignment(2) = 0.0_wp       !< inner race theta_2, theta_3 (rad)
+      real(wp) :: gravity(3) = 0.0_wp            !< (m/s**2)
+      real(wp) :: mass = 0.0_wp                  !< roller mass (kg)
+      logical :: pocket = .true.                 !< pocket contacts on
+      real(wp) :: pocket_clearance = 0.0_wp      !< total tangential play of a pocket (m)
+      real(wp) :: pocket_length = 0.0_wp         !< length of the roller touching a pocket wall (m)
+      real(wp) :: pocket_k = 0.0_wp              !< Palmgren slice constant roller/cage (N/m**(19/9))
+      real(wp) :: pocket_friction = 0.0_wp       !< Coulomb coefficient (Rec 10.5.1B A)
+   end type roller_force_model_t
+
+   !> One roller's state in its orbit frame.
+   type :: roller_pose_t
+      real(wp) :: x = 0.0_wp, r = 0.0_wp, phi = 0.0_wp           !< (m, m, rad)
+      real(wp) :: xdot = 0.0_wp, rdot = 0.0_wp, phidot = 0.0_wp  !< (m/s, m/s, rad/s)
+      real(wp) :: tilt = 0.0_wp, skew = 0.0_wp                   !< gamma, zeta (rad)
+      real(wp) :: tiltdot = 0.0_wp, skewdot = 0.0_wp             !< (rad/s), orbit frame
+      real(wp) :: spin = 0.0_wp                                  !< W relative to the orbit frame (rad/s)
+   end type roller_pose_t
+
+   !> The inner race and the cage as one roller sees them.
+   type :: race_pose_t
+      real(wp) :: position(3) = 0.0_wp, velocity(3) = 0.0_wp    !< inner race centre (m, m/s)
+      real(wp) :: pocket_azimuth = 0.0_wp                        !< psi of the roller's pocket (rad)
+      real(wp) :: cage_speed = 0.0_wp                            !< cage angular speed about x (rad/s)
+   end type race_pose_t
+
+   !> The loads of one roller.  Forces and moments on the roller in orbit-frame components
+   !> (x, r, t); reactions on the races and the cage inertial (N, N m about the bearing axis
+   !> point of the body's centre plane).
+   type :: roller_loads_t
+      type(line_contact_t) :: c(2)               !< outer, inner slice contacts
+      real(wp) :: load(2) = 0.0_wp               !< damped normal loads (N)
+      real(wp), allocatable :: traction(:, :, :) !< (slice, t/x, race) traction on the race (N/m)
+      real(wp), allocatable :: slip(:, :, :)     !< (slice, t/x, race) slip (m/s)
+      real(wp) :: power(2) = 0.0_wp              !< race contact losses (W), eq 4
+      real(wp) :: sliding(2) = 0.0_wp            !< sum w |u| q (N m/s)
+      real(wp) :: max_slip(2) = 0.0_wp           !< largest |u| (m/s)
+      real(wp) :: pocket_load(2) = 0.0_wp        !< wall at -e_t (end 1), +e_t (end 2) (N)
+      real(wp) :: pocket_gap(2) = 0.0_wp         !< geometric gap at the pocket centre plane (m; < 0 interference)
+      real(wp) :: pocket_power = 0.0_wp          !< pocket friction loss (W)
+      real(wp) :: force(3) = 0.0_wp              !< on the roller, (x, r, t) (N)
+      real(wp) :: moment(3) = 0.0_wp             !< on the roller about its centre, (x, r, t) (N m)
+      real(wp) :: race_force(3, 2) = 0.0_wp      !< on the outer, inner race, inertial (N)
+      real(wp) :: race_torque(2) = 0.0_wp        !< about the bearing axis on outer, inner race (N m)
+      real(wp) :: cage_torque = 0.0_wp           !< pocket contact torque on the cage about x (N m)
+   end type roller_loads_t
+
+contains
+
+   !> e_r and e_t (inertial) at azimuth phi (rad).
+   pure subroutine orbit_axes(phi, e_r, e_t)
+      real(wp), intent(in) :: phi
+      real(wp), intent(out) :: e_r(3), e_t(3)
+      e_r = [0.0_wp, -sin(phi), cos(phi)]
+      e_t = [0.0_wp, -cos(phi), -sin(phi)]
+   end subroutine orbit_axes
+
+   !> All loads of roller p with the inner race and cage of a (module header).
+   pure subroutine roller_loads(m, p, a, ld)
+      type(roller_force_model_t), intent(in) :: m
+      type(roller_pose_t), intent(in) :: p
+      type(race_pose_t), intent(in) :: a
+      type(roller_loads_t), intent(out) :: ld
+      type(roller_qs_bearing_t) :: qs
+      real(wp) :: e_r(3), e_t(3), e_x(3), u_r, ur_dot, t_r, v_t, hdot(2, 2), f_t, f_x, rho, s, kap, umag
+      real(wp) :: f(3)
+      type(roller_spin_t) :: k
+      integer :: j, i, n
+
+      e_x = [1.0_wp, 0.0_wp, 0.0_wp]
+      call orbit_axes(p%phi, e_r, e_t)
+      u_r = dot_product(a%position, e_r)
+      ur_dot = dot_product(a%velocity, e_r)
+      t_r = -(m%misalignment(1)*cos(p%phi) + m%misalignment(2)*sin(p%phi))
+      qs = m%qs
+      ! permissible contact ends in roller coordinates: the races' ends move by the roller's
+      ! axial offset, the roller's ends stay
+      qs%lim_o = shifted(qs%lim_o, p%x)
+      qs%lim_i = shifted(qs%lim_i, p%x - a%position(1))
+      call roller_contacts(qs, p%r, p%tilt, u_r, t_r, p%skew, ld%c(1), ld%c(2))
+      hdot(:, 1) = [p%rdot, p%tiltdot]
+      hdot(:, 2) = [ur_dot - p%rdot, -p%tiltdot]
+      n = 0
+      if (allocated(ld%c(1)%x)) n = size(ld%c(1)%x)
+      allocate (ld%traction(n, 2, 2), ld%slip(n, 2, 2))
+      ld%traction = 0.0_wp
+      ld%slip = 0.0_wp
+      ! normal loads: outer pushes the roller along -e_r, inner along +e_r; moments about e_t
+      do j = 1, 2
+         associate (c => ld%c(j))
+            s = merge(1.0_wp, -1.0_wp, j == 1)
+            if (.not. c%in_contact) cycle
+            ld%load(j) = max(c%load + m%damping*(c%k0*hdot(1, j) + c%k1*hdot(2, j)), 0.0_wp)
+            ld%force(2) = ld%force(2) - s*ld%load(j)
+            if (ld%load(j) > 0.0_wp) ld%moment(3) = ld%moment(3) - s*(c%moment + m%damping*(c%k1*hdot(1, j) + &
+                                                                                          c%k2*hdot(2, j)))
+         end associate
+      end do
+      ! traction by slices
+      v_t = dot_product(a%velocity, e_t)
+      do j = 1, 2
+         associate (c => ld%c(j))
+            if (.not. c%in_contact) cycle
+            s = merge(1.0_wp, -1.0_wp, j == 1)
+            k%d = m%qs%d
+            k%spin = p%spin
+            k%race_speed = [m%speed(1) - p%phidot, m%speed(2) - p%phidot]
+            ! the land's pure rolling on the race point at radius r +- D/2 (line_slip adds the
+            ! profile drop to both surfaces)
+            if (j == 1) then
+               k%rolling_spin = k%race_speed(1)*(p%r + 0.5_wp*m%qs%d)/(0.5_wp*m%qs%d)
+            else
+               k%rolling_spin = -k%race_speed(2)*(p%r - 0.5_wp*m%qs%d)/(0.5_wp*m%qs%d)
+            end if
+            do i = 1, n
+               if (.not. (c%q(i) > 0.0_wp)) cycle
+               rho = 0.5_wp*m%qs%d - profile_drop(m%qs%profile, c%x(i))
+               ld%slip(i, 1, j) = line_slip(m%qs%profile, k, merge(RACE_OUTER, RACE_INNER, j == 1), c%x(i)) &
+                                  - p%skewdot*c%x(i) - merge(0.0_wp, v_t, j == 1)
+               ld%slip(i, 2, j) = s*(p%skew*p%spin*rho - p%tiltdot*rho) + p%xdot - merge(0.0_wp, a%velocity(1), j == 1)
+               umag = hypot(ld%slip(i, 1, j), ld%slip(i, 2, j))
+               if (umag <= 0.0_wp) cycle
+               kap = law_kappa(m%law, umag)
+               ! q scaled by the damped load (the damping acts on the whole contact)
+               ld%traction(i, :, j) = kap*c%q(i)*(ld%load(j)/c%load)*ld%slip(i, :, j)/umag
+               ld%power(j) = ld%power(j) + c%weight(i)*kap*umag*c%q(i)*(ld%load(j)/c%load)
+               ld%sliding(j) = ld%sliding(j) + c%weight(i)*umag*c%q(i)
+               ld%max_slip(j) = max(ld%max_slip(j), umag)
+               f_t = -c%weight(i)*ld%traction(i, 1, j)     ! on the roller
+               f_x = -c%weight(i)*ld%traction(i, 2, j)
+               ld%force(3) = ld%force(3) + f_t
+               ld%force(1) = ld%force(1) + f_x
+               ! moment of (f_x e_x + f_t e_t) at x e_x + s rho e_r
+               ld%moment(1) = ld%moment(1) + s*rho*f_t
+               ld%moment(2) = ld%moment(2) - c%x(i)*f_t
+               ld%moment(3) = ld%moment(3) - s*rho*f_x
+               ! the race's torque about the axis: its point at radius r + s rho
+               ld%race_torque(j) = ld%race_torque(j) - (p%r + s*rho)*f_t
+            end do
+         end associate
+      end do
+      ! reactions on the races (inertial)
+      do j = 1, 2
+         s = merge(1.0_wp, -1.0_wp, j == 1)
+         f = s*ld%load(j)*e_r
+         if (allocated(ld%c(j)%weight)) f = f + sum(ld%c(j)%weight*ld%traction(:, 1, j))*e_t + &
+                                            sum(ld%c(j)%weight*ld%traction(:, 2, j))*e_x
+         ld%race_force(:, j) = f
+      end do
+      ! gravity
+      ld%force = ld%force + m%mass*[m%gravity(1), dot_product(m%gravity, e_r), dot_product(m%gravity, e_t)]
+      if (m%pocket) call pocket_loads(m, p, a, e_r, e_t, ld)
+   contains
+      pure function shifted(lim, dx) result(l2)
+         real(wp), intent(in) :: lim(2), dx
+         real(wp) :: l2(2)
+         l2 = [max(lim(1) - dx, -0.5_wp*m%qs%profile%length), min(lim(2) - dx, 0.5_wp*m%qs%profile%length)]
+      end function shifted
+   end subroutine roller_loads
+
+   !> The roller in its rectangular pocket (module header): loads of both walls by slices,
+   !> friction, the reactions' torque on the cage.
+   pure subroutine pocket_loads(m, p, a, e_r, e_t, ld)
+      type(roller_force_model_t), intent(in) :: m
+      type(roller_pose_t), intent(in) :: p
+      type(race_pose_t), intent(in) :: a
+      real(wp), intent(in) :: e_r(3), e_t(3)
+      type(roller_loads_t), intent(inout) :: ld
+      real(wp) :: d_t, xs, w, delta, q, v(2), vmag, fr(2), fn, mom_r, pt(3), fc(3)
+      integer :: end, i
+      real(wp) :: sgn
+
+      d_t = p%r*sin(p%phi - a%pocket_azimuth)
+      w = m%pocket_length/POCKET_SLICES
+      ! end 1: the wall on the -e_t side, end 2: on the +e_t side (adore_cage_step0)
+      ld%pocket_gap = [0.5_wp*m%pocket_clearance + d_t, 0.5_wp*m%pocket_clearance - d_t]
+      do end = 1, 2
+         sgn = merge(-1.0_wp, 1.0_wp, end == 1)    ! side of the wall along e_t
+         fn = 0.0_wp
+         mom_r = 0.0_wp
+         do i = 1, POCKET_SLICES
+            xs = -0.5_wp*m%pocket_length + (real(i, wp) - 0.5_wp)*w
+            delta = sgn*(d_t - p%skew*xs) - 0.5_wp*m%pocket_clearance
+            if (delta <= 0.0_wp) cycle
+            q = m%pocket_k*delta**(10.0_wp/9.0_wp)*w
+            fn = fn + q
+            ! force -sgn q e_t at x e_x: moment about e_r = sgn x q (x e_x cross e_t = -e_r)
+            mom_r = mom_r + sgn*xs*q
+         end do
+         ld%pocket_load(end) = fn
+         if (fn <= 0.0_wp) cycle
+         ld%force(3) = ld%force(3) - sgn*fn
+         ld%moment(2) = ld%moment(2) + mom_r
+         ! sliding of the roller surface at sgn D/2 e_t over the wall: radial rdot - sgn (W_abs -
+         ! w_cage) D/2, axial xdot
+         v = [p%xdot, p%rdot - sgn*(p%spin + p%phidot - a%cage_speed)*0.5_wp*m%qs%d]
+         vmag = hypot(v(1), v(2))
+         fr = -m%pocket_friction*fn*v/sqrt(vmag**2 + SLIP_REG**2)
+         ld%pocket_power = ld%pocket_power + m%pocket_friction*fn*vmag**2/sqrt(vmag**2 + SLIP_REG**2)
+         ld%force(1) = ld%force(1) + fr(1)
+         ld%force(2) = ld%force(2) + fr(2)
+         ! moments of the friction at sgn D/2 e_t: (sgn D/2 e_t) x (fr_x e_x + fr_r e_r)
+         ld%moment(1) = ld%moment(1) - sgn*0.5_wp*m%qs%d*fr(2)
+         ld%moment(2) = ld%moment(2) + sgn*0.5_wp*m%qs%d*fr(1)
+         ! reaction on the cage at the contact point (about the bearing axis)
+         pt = p%r*e_r + sgn*0.5_wp*m%qs%d*e_t
+         fc = sgn*fn*e_t - fr(2)*e_r
+         ld%cage_torque = ld%cage_torque + dot_product(cross(pt, fc), [1.0_wp, 0.0_wp, 0.0_wp])
+      end do
+   end subroutine pocket_loads
+
+end module adore_forces_roller_bearing

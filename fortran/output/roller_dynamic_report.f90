@@ -1,0 +1,182 @@
+!> A printed time step and the time history of a cylindrical roller bearing (issue #26):
+!> the dynamic state in the step-0 print's terms (roller_step_view fills an
+!> adore_start_roller_step0 record from the state and the loads of adore_forces_roller_bearing,
+!> which adore_output_step_report's write_roller_step0 prints in the ADORE 5.0 layout,
+!> section 1a - the load along roller 1 - included), and the roller run's history rows.
+!> No module state.
+module adore_output_roller_dynamic_report
+   use adore_core_kinds, only: wp
+   use adore_core_error, only: error_type
+   use adore_core_strings, only: itoa
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
+   use adore_tribology_traction_law, only: law_kappa
+   use adore_life_lundberg_palmgren, only: life_params_t
+   use adore_life_roller, only: roller_bearing_lp_life
+   use adore_forces_race_contact, only: line_flash
+   use adore_tribology_roller_traction, only: line_traction_t
+   use adore_forces_roller_bearing, only: roller_loads_t
+   use adore_dynamics_roller_system, only: roller_system_t, roller_pose, ROLLER_SIZE, RACE_OFFSET, CAGE_OFFSET
+   use adore_start_roller_step0, only: roller_step0_t, roller_wear
+   use adore_output_run_history, only: run_history_t, history_shape, check_history_element
+   implicit none
+   private
+
+   public :: roller_step_view, new_roller_history, record_roller_history, roller_total_power
+
+   integer, parameter :: N_COLUMNS = 15
+
+contains
+
+   !> Total power loss (W) of the last evaluation: race contacts (eq 4), pockets, guide lands.
+   pure real(wp) function roller_total_power(sys) result(p)
+      type(roller_system_t), intent(in) :: sys
+      integer :: k
+      p = sys%land_power
+      do k = 1, size(sys%loads)
+         p = p + sum(sys%loads(k)%power) + sys%loads(k)%pocket_power
+      end do
+   end function roller_total_power
+
+   !> The step-0 record s0 of bearing b brought to the dynamic state y of sys (its last
+   !> evaluation's loads): azimuth (unwrapped, rad), radius, tilt, orbital speed, spin, slice
+   !> contacts and tractions, losses, wear, flash temperature rise, race loads, basic life,
+   !> pocket gaps and the cage speed.
+   subroutine roller_step_view(b, sys, y, azimuth, s0, s, error)
+      type(bearing_t), intent(in) :: b
+      type(roller_system_t), intent(in) :: sys
+      real(wp), intent(in) :: y(:), azimuth(:)
+      type(roller_step0_t), intent(in) :: s0
+      type(roller_step0_t), intent(out) :: s
+      type(error_type), allocatable, intent(out) :: error
+      type(life_params_t) :: lp
+      real(wp) :: w_r
+      integer :: k, n, j, r0
+      n = sys%n
+      s = s0
+      r0 = ROLLER_SIZE*n + RACE_OFFSET
+      s%equilibrium%u = y(r0 + 2:r0 + 3)
+      do k = 1, n
+         associate (p => roller_pose(y, k), ld => sys%loads(k), e => s%equilibrium)
+            e%azimuth(k) = azimuth(k)
+            e%r(k) = p%r
+            e%tilt(k) = p%tilt
+            e%orbital_speed(k) = p%phidot
+            e%c_o(k) = ld%c(1)
+            e%c_i(k) = ld%c(2)
+            s%roller_spin(k) = p%spin
+            call fill_traction(ld, 1, s%tr_o(k))
+            call fill_traction(ld, 2, s%tr_i(k))
+            do j = 1, 2
+               s%cage%pocket(j, k)%geo_int = ld%pocket_gap(j)
+               s%cage%pocket(j, k)%in_contact = ld%pocket_load(j) > 0.0_wp
+            end do
+            w_r = p%spin
+            call line_flash(b, e%c_o(k), s%tr_o(k), BODY_OUTER, s%model%r_o, b%speed_outer - p%phidot, w_r, &
+                            s%temp_rise(1, k), error)
+            if (allocated(error)) return
+            call line_flash(b, e%c_i(k), s%tr_i(k), BODY_INNER, s%model%r_i, b%speed_inner - p%phidot, w_r, &
+                            s%temp_rise(2, k), error)
+            if (allocated(error)) return
+         end associate
+      end do
+      s%spin_speed = sum(s%roller_spin)/n
+      s%contact_power = sum(s%tr_o%power) + sum(s%tr_i%power)
+      s%power_loss = roller_total_power(sys)
+      call roller_wear(b, s)
+      s%race_loads = 0.0_wp
+      do k = 1, n
+         s%race_loads(1:3, 1) = s%race_loads(1:3, 1) + sys%loads(k)%race_force(:, 1)
+         s%race_loads(1:3, 2) = s%race_loads(1:3, 2) + sys%loads(k)%race_force(:, 2)
+         s%race_loads(4, :) = s%race_loads(4, :) + sys%loads(k)%race_torque
+      end do
+      ! the cage centred on the axis (its constraint): no whirl, no mass-centre offset
+      s%cage%state%angular_speed = y(ROLLER_SIZE*n + CAGE_OFFSET + 2)
+      s%cage%state%whirl_speed = 0.0_wp
+      s%cage%state%centre(2:3) = 0.0_wp
+      s%cage%state%orbital_angle = 0.0_wp
+      s%cage%state%velocity = 0.0_wp
+      call roller_bearing_lp_life(lp, s%equilibrium%c_o, s%equilibrium%c_i, s%equilibrium%orbital_speed, &
+                                  b%speed_outer, b%speed_inner, b%d, b%dm, s%life)
+      s%basic_life_hours = s%life%bearing_hours
+   contains
+      !> The printed traction of race j from the loads' slices: the slip magnitude, the
+      !> traction along e_t (N/m on the race), its force, loss and largest slip.
+      subroutine fill_traction(ld, j, t)
+         type(roller_loads_t), intent(in) :: ld
+         integer, intent(in) :: j
+         type(line_traction_t), intent(inout) :: t
+         integer :: m
+         m = size(ld%c(j)%x)
+         if (allocated(t%slip)) deallocate (t%slip, t%kappa, t%traction)
+         allocate (t%slip(m), t%kappa(m), t%traction(m))
+         t%slip = hypot(ld%slip(:, 1, j), ld%slip(:, 2, j))
+         t%kappa = law_kappa(b%race_traction, t%slip)
+         t%traction = ld%traction(:, 1, j)
+         t%force = sum(ld%c(j)%weight*t%traction)
+         t%power = ld%power(j)
+         t%sliding = ld%sliding(j)
+         t%max_slip = ld%max_slip(j)
+         t%max_slip_kappa = 0.0_wp
+         t%net_coefficient = 0.0_wp
+         if (ld%load(j) > 0.0_wp) then
+            t%max_slip_kappa = law_kappa(b%race_traction, t%max_slip)
+            t%net_coefficient = abs(t%force)/ld%load(j)
+         end if
+      end subroutine fill_traction
+   end subroutine roller_step_view
+
+   !> The empty history of a roller run of n_steps steps (stride > 0: every stride-th step a
+   !> row, history_shape): time, step, total power loss, roller `element`'s race loads,
+   !> losses, orbital speed and pocket force, the cage speed, the inner race's y, z, and the
+   !> total loss split into race contacts, pockets and guide lands.
+   subroutine new_roller_history(h, b, n_steps, element, error, stride)
+      type(run_history_t), intent(out) :: h
+      type(bearing_t), intent(in) :: b
+      integer, intent(in) :: n_steps, element
+      type(error_type), allocatable, intent(out) :: error
+      integer, intent(in), optional :: stride
+      integer :: rows, cols
+      character(len=:), allocatable :: e
+      call check_history_element(b, element, error)
+      if (allocated(error)) return
+      call history_shape(n_steps, b%controls%print_interval, 0, rows, cols, h%stride, stride)
+      h%element = element
+      e = itoa(element)
+      allocate (h%names(N_COLUMNS), h%values(rows, N_COLUMNS))
+      h%names = [character(len=len(h%names)) :: "time_s", "step", "total_power_loss_W", &
+                 "re"//e//"_contact_load_outer_N", "re"//e//"_contact_load_inner_N", &
+                 "re"//e//"_contact_loss_outer_W", "re"//e//"_contact_loss_inner_W", &
+                 "re"//e//"_orbital_speed_rad_s", "pocket"//e//"_force_N", "cage_angular_velocity_x_rad_s", &
+                 "inner_race_y_m", "inner_race_z_m", "race_contact_loss_W", "pocket_loss_W", "land_loss_W"]
+   end subroutine new_roller_history
+
+   !> Record step `step` at time `time` (s): the last evaluation of sys at state y.
+   subroutine record_roller_history(h, step, time, sys, y)
+      type(run_history_t), intent(inout) :: h
+      integer, intent(in) :: step
+      real(wp), intent(in) :: time
+      type(roller_system_t), intent(in) :: sys
+      real(wp), intent(in) :: y(:)
+      real(wp), allocatable :: values(:, :)
+      real(wp) :: race_loss
+      integer :: r0, k
+      if (h%rows >= size(h%values, 1)) then
+         allocate (values(max(2*size(h%values, 1), 16), size(h%values, 2)))
+         values(1:h%rows, :) = h%values(1:h%rows, :)
+         call move_alloc(values, h%values)
+      end if
+      h%rows = h%rows + 1
+      r0 = ROLLER_SIZE*sys%n + RACE_OFFSET
+      race_loss = 0.0_wp
+      do k = 1, sys%n
+         race_loss = race_loss + sum(sys%loads(k)%power)
+      end do
+      associate (ld => sys%loads(h%element))
+         h%values(h%rows, :) = [time, real(step, wp), roller_total_power(sys), ld%load, ld%power, &
+                                y(ROLLER_SIZE*(h%element - 1) + 6), sum(ld%pocket_load), &
+                                y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 2), y(r0 + 2), y(r0 + 3), race_loss, &
+                                sum([(sys%loads(k)%pocket_power, k=1, sys%n)]), sys%land_power]
+      end associate
+   end subroutine record_roller_history
+
+end module adore_output_roller_dynamic_report

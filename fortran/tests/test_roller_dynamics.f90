@@ -1,0 +1,255 @@
+!> Engine unit tests of the roller bearing's dynamics (fortran/forces/roller_bearing.f90,
+!> fortran/dynamics/roller_system.f90): independent checks only - symmetry, hand sums of the
+!> slice forces' lever arms, the quasi-static solution, the gyroscopic closed form, energy
+!> and momentum balances.  The comparison with the report's Appendix D print is in
+!> tests/test_roller_dynamics.py.
+program test_roller_dynamics
+   use adore_test_support, only: check, finish, get_decks_dir
+   use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
+   use adore_core_error, only: error_type
+   use adore_model_bearing, only: bearing_t
+   use adore_model_from_deck, only: read_bearing
+   use adore_geometry_mounted, only: mount_geometry
+   use adore_contact_line_slices, only: profile_drop
+   use adore_tribology_traction_law, only: law_kappa
+   use adore_quasistatic_roller_equilibrium, only: roller_qs_load_t, roller_qs_solution_t, solve_roller_equilibrium
+   use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
+   use adore_forces_roller_bearing, only: roller_pose_t, race_pose_t, roller_loads_t, roller_loads
+   use adore_dynamics_integrator, only: integrator_t
+   use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, &
+                                           R_TILT, R_SKEW, R_PHI, RACE_OFFSET
+   implicit none
+
+   character(len=:), allocatable :: decks
+   type(bearing_t) :: b
+   type(roller_step0_t) :: s0
+   type(error_type), allocatable :: error
+
+   call get_decks_dir(decks)
+   call read_bearing(decks//"/appendix_d_roller.inp", b, error)
+   call check(.not. allocated(error), "Appendix D deck read")
+   call solve_roller_step0(b, s0, error)
+   call check(.not. allocated(error), "Appendix D step 0 solved")
+   if (allocated(error)) call finish("roller dynamics")
+
+   call test_tilted_race_moments()
+   call test_gyroscopic_moment()
+   call test_power_balance()
+   call test_radial_load_stays_untilted()
+   call test_averaged_loads_match_quasistatic()
+
+   call finish("roller dynamics")
+
+contains
+
+   !> The start's system (no pocket contacts when pockets is .false.).
+   subroutine start(sys, it, y, pockets)
+      type(roller_system_t), intent(out) :: sys
+      type(integrator_t), intent(out) :: it
+      real(wp), allocatable, intent(out) :: y(:)
+      logical, intent(in) :: pockets
+      associate (e => s0%equilibrium)
+         call start_roller_dynamics(b, mount_geometry(b, b%temperature, 2), s0%model, e%azimuth, e%r, e%tilt, &
+                                    e%orbital_speed, s0%roller_spin, e%u, 0.0_wp, s0%cage%state%angular_speed, &
+                                    sys, it, y, error)
+      end associate
+      call check(.not. allocated(error), "dynamics started")
+      sys%model%pocket = pockets
+   end subroutine start
+
+   !> A race tilted by 2e-4 rad about y: roller 1 (azimuth 0, loaded) has slice loads growing
+   !> along its axis; the skew moment on it equals the hand sum of the slice tractions' lever
+   !> arms, sum w x t_t (t_t = kappa(|u|) q u_t/|u|, the slip by hand from the kinematic
+   !> surface points), and the tilt moment the difference of the slice load moments M_i - M_o.
+   !> Without the race tilt (and skew) the skew moment vanishes.
+   subroutine test_tilted_race_moments()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:)
+      type(roller_pose_t) :: p
+      type(race_pose_t) :: a
+      type(roller_loads_t) :: ld, ld0
+      real(wp) :: hand_skew, hand_tilt, rho, u, w_o, w_i, kap, q
+      integer :: i, j
+
+      call start(sys, it, y, .false.)
+      p = roller_pose(y, 1)
+      a%position = y(ROLLER_SIZE*sys%n + RACE_OFFSET + 1:ROLLER_SIZE*sys%n + RACE_OFFSET + 3)
+      call roller_loads(sys%model, p, a, ld0)
+      call check(abs(ld0%moment(2)) < 1.0e-12_wp*ld0%load(1)*b%roller%roller_length, &
+                 "aligned races: no skew moment on the loaded roller")
+      sys%model%misalignment = [2.0e-4_wp, 0.0_wp]
+      call roller_loads(sys%model, p, a, ld)
+      call check(ld%c(2)%q(size(ld%c(2)%q)) /= ld%c(2)%q(1), "tilted race: slice loads vary along the roller")
+      w_o = b%speed_outer - p%phidot
+      w_i = b%speed_inner - p%phidot
+      hand_skew = 0.0_wp
+      hand_tilt = 0.0_wp
+      do j = 1, 2
+         do i = 1, size(ld%c(j)%x)
+            q = ld%c(j)%q(i)
+            if (q <= 0.0_wp) cycle
+            rho = 0.5_wp*b%d - profile_drop(s0%model%profile, ld%c(j)%x(i))
+            if (j == 1) then
+               u = p%spin*rho - w_o*(p%r + rho)
+            else
+               u = -p%spin*rho - w_i*(p%r - rho)
+            end if
+            kap = law_kappa(b%race_traction, abs(u))
+            hand_skew = hand_skew + ld%c(j)%weight(i)*ld%c(j)%x(i)*kap*q*sign(1.0_wp, u)
+            hand_tilt = hand_tilt + merge(-1.0_wp, 1.0_wp, j == 1)*ld%c(j)%weight(i)*ld%c(j)%x(i)*q
+         end do
+      end do
+      call check(abs(hand_skew) > 1.0e-6_wp, "tilted race: a skew moment appears")
+      call check(abs(ld%moment(2) - hand_skew) <= 1.0e-9_wp*abs(hand_skew), &
+                 "skew moment = hand sum of the slice tractions' lever arms")
+      call check(abs(ld%moment(3) - hand_tilt) <= 1.0e-9_wp*abs(hand_tilt), "tilt moment = M_i - M_o of the slices")
+      print "(a,es12.4,a,es12.4,a)", "  tilted race 2e-4 rad: skew moment ", ld%moment(2), " N m, tilt moment ", &
+         ld%moment(3), " N m"
+   end subroutine test_tilted_race_moments
+
+   !> An unloaded roller (no contact) orbiting with a steady tilt gamma and the kinematics of
+   !> the module header needs M_t = (I_a W_abs - I_t phidot) phidot gamma: with that moment
+   !> applied (here: its absence read from the rates), d(omega_t)/dt = -M_t/I_t exactly.
+   subroutine test_gyroscopic_moment()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), dydt(:)
+      real(wp) :: gam, w_abs, phidot, expected
+      integer :: flag, k
+
+      call start(sys, it, y, .false.)
+      allocate (dydt(size(y)))
+      gam = 1.0e-4_wp
+      k = 5                         ! an unloaded roller: lift it off both races
+      associate (v => y(ROLLER_SIZE*(k - 1) + 1:ROLLER_SIZE*k))
+         v(2) = v(2) - 5.0e-6_wp    ! 2.4 um off the outer race, 2.9 um off the inner
+         v(R_TILT) = gam
+         v(10) = -v(6)*gam          ! steady tilt in the orbit frame
+         phidot = v(6)
+         w_abs = v(11)
+      end associate
+      sys%model%gravity = 0.0_wp
+      call sys%eval(0.0_wp, y, dydt, flag)
+      call check(sys%loads(k)%load(1) == 0.0_wp .and. sys%loads(k)%load(2) == 0.0_wp, "lifted roller is unloaded")
+      call check(dydt(ROLLER_SIZE*(k - 1) + R_TILT) == 0.0_wp .and. dydt(ROLLER_SIZE*(k - 1) + R_SKEW) == 0.0_wp, &
+                 "steady tilt: no tilt or skew rate")
+      expected = -(sys%inertia(1)*w_abs - sys%inertia(2)*phidot)*phidot*gam/sys%inertia(2)
+      call check(abs(dydt(ROLLER_SIZE*(k - 1) + 9)/sys%time_scale - expected) <= 1.0e-12_wp*abs(expected), &
+                 "gyroscopic moment of the tilted orbiting roller (I_a W - I_t phidot) phidot gamma")
+   end subroutine test_gyroscopic_moment
+
+   !> Energy: at the start (no roller or race translation, aligned, no pockets, gravity or
+   !> damping) the traction's dissipation (eq 4 by slices) equals the power the races' torques
+   !> take from their drives minus the rate of the rollers' kinetic energy, computed from the
+   !> equations of motion's rates: sum Omega_j T_j + sum dKE/dt + losses = 0.
+   subroutine test_power_balance()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), dydt(:)
+      real(wp) :: ke_rate, race_power, loss, v(ROLLER_SIZE), d(ROLLER_SIZE)
+      integer :: flag, k
+
+      call start(sys, it, y, .false.)
+      allocate (dydt(size(y)))
+      sys%model%gravity = 0.0_wp
+      sys%model%damping = 0.0_wp
+      y(R_TILT:ROLLER_SIZE*sys%n:ROLLER_SIZE) = 0.0_wp
+      y(10:ROLLER_SIZE*sys%n:ROLLER_SIZE) = 0.0_wp
+      call sys%eval(0.0_wp, y, dydt, flag)
+      dydt = dydt/sys%time_scale
+      ke_rate = 0.0_wp
+      race_power = 0.0_wp
+      loss = 0.0_wp
+      do k = 1, sys%n
+         v = y(ROLLER_SIZE*(k - 1) + 1:ROLLER_SIZE*k)
+         d = dydt(ROLLER_SIZE*(k - 1) + 1:ROLLER_SIZE*k)
+         ke_rate = ke_rate + sys%model%mass*(v(5)*d(5) + v(4)*d(4) + v(2)*v(6)*(v(5)*v(6) + v(2)*d(6))) + &
+                   sys%inertia(1)*v(11)*d(11) + sys%inertia(2)*(v(9)*d(9) + v(10)*d(10))
+         race_power = race_power + sum([b%speed_outer, b%speed_inner]*sys%loads(k)%race_torque)
+         loss = loss + sum(sys%loads(k)%power)
+      end do
+      print "(a,3es13.5,a)", "  power: races ", race_power, ke_rate, loss, " W (race drives, roller KE rate, loss)"
+      call check(loss > 0.1_wp, "the start dissipates")
+      call check(abs(race_power + ke_rate + loss) <= 1.0e-9_wp*(abs(race_power) + abs(ke_rate) + loss), &
+                 "power balance: race work = roller kinetic energy rate + slice dissipation")
+   end subroutine test_power_balance
+
+   !> Pure radial load, aligned races: integrated over a quarter revolution of the cage the
+   !> rollers stay untilted and unskewed (to round-off), and the axial momentum stays zero.
+   subroutine test_radial_load_stays_untilted()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:)
+      real(wp) :: t, t_end
+      integer :: k
+
+      call start(sys, it, y, .true.)
+      t = 0.0_wp
+      t_end = 0.25_wp*2.0_wp*pi/abs(s0%orbital_speed)/sys%time_scale
+      do while (t < t_end .and. .not. allocated(error))
+         call it%step(sys, t, y, error, t_limit=t_end)
+      end do
+      call check(.not. allocated(error), "quarter cage revolution integrated")
+      do k = 1, sys%n
+         call check(abs(y(ROLLER_SIZE*(k - 1) + R_TILT)) < 1.0e-12_wp .and. &
+                    abs(y(ROLLER_SIZE*(k - 1) + R_SKEW)) < 1.0e-12_wp, "roller stays untilted and unskewed")
+         call check(abs(y(ROLLER_SIZE*(k - 1) + 1)) < 1.0e-15_wp, "roller stays axially centred")
+      end do
+      print "(a,es10.3,a,es10.3,a)", "  radial load: largest tilt ", maxval(abs(y(R_TILT:ROLLER_SIZE*sys%n:ROLLER_SIZE))), &
+         " rad, largest skew ", maxval(abs(y(R_SKEW:ROLLER_SIZE*sys%n:ROLLER_SIZE))), " rad"
+   end subroutine test_radial_load_stays_untilted
+
+   !> Time-averaged slice loads against the quasi-static solution at the same speeds: over
+   !> the accepted steps of a run, the quasi-static equilibrium (adore_quasistatic_roller_
+   !> equilibrium) of the rollers at the same orbital phase (the applied load turned by
+   !> the mean roller phase, the rollers at their equal spacing) and orbital speeds; the
+   !> time averages of every roller's outer and inner contact load agree within 2 % of the
+   !> largest load.
+   subroutine test_averaged_loads_match_quasistatic()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), dyn(:, :), qs(:, :), w(:), dydt(:)
+      type(roller_qs_load_t) :: ld
+      type(roller_qs_solution_t) :: sol
+      real(wp) :: t, t_end, t_avg, dt, alpha, t_last, worst
+      integer :: k, n
+
+      call start(sys, it, y, .true.)
+      n = sys%n
+      allocate (dyn(2, n), qs(2, n), w(n), dydt(size(y)))
+      dyn = 0.0_wp
+      qs = 0.0_wp
+      t = 0.0_wp
+      t_avg = 2.0_wp           ! let the start's transient settle (tau)
+      t_end = t_avg + 0.5_wp*2.0_wp*pi/abs(s0%orbital_speed)/sys%time_scale
+      t_last = 0.0_wp
+      do while (t < t_end .and. .not. allocated(error))
+         call it%step(sys, t, y, error, t_limit=t_end)
+         if (t <= t_avg) then
+            t_last = t
+            cycle
+         end if
+         dt = t - t_last
+         t_last = t
+         ! the loads at the accepted state
+         call sys%eval(t, y, dydt, k)
+         alpha = sum(y(R_PHI:ROLLER_SIZE*n:ROLLER_SIZE) - s0%equilibrium%azimuth)/n
+         ld%force(1) = b%force(1)
+         ld%force(2:3) = [b%force(2)*cos(alpha) + b%force(3)*sin(alpha), -b%force(2)*sin(alpha) + b%force(3)*cos(alpha)]
+         w = y(6:ROLLER_SIZE*n:ROLLER_SIZE)
+         call solve_roller_equilibrium(s0%model, ld, w, sol, error)
+         if (allocated(error)) exit
+         do k = 1, n
+            dyn(:, k) = dyn(:, k) + dt*sys%loads(k)%load
+            qs(:, k) = qs(:, k) + dt*[sol%c_o(k)%load, sol%c_i(k)%load]
+         end do
+      end do
+      call check(.not. allocated(error), "run and quasi-static solutions")
+      worst = maxval(abs(dyn - qs))/maxval(qs)
+      print "(a,f7.3,a)", "  time-averaged contact loads vs quasi-static: worst ", 100.0_wp*worst, " % of the largest"
+      call check(worst < 0.02_wp, "time-averaged roller loads within 2 % of the quasi-static solution")
+   end subroutine test_averaged_loads_match_quasistatic
+
+end program test_roller_dynamics

@@ -1,0 +1,148 @@
+"""The roller bearing's time integration (issue #26 [Roller dynamics]) against the report's
+Appendix D print.
+
+The report's step 4000 is at tau = 76.18 (5.453 ms); the engine's steps are its own (the
+deck's INT METHOD 5 is the IMEX ARK4 here, docs/dynamics.md "Roller dynamics"), so its step
+4000 is at another time and its rollers at other azimuths.  The comparison with the report is
+made at the report's simulated time (`--duration 5.453e-3`), where every roller sits within
+0.2 deg of the golden roller's azimuth: contact loads (5 %), orbital speeds (1 %) and the
+total power loss (15 %) of each golden roller.  The one full 4000-step run checks the run
+itself (termination, derivative calls against ADORE's 43 010, a section 1a at every printed
+step).  The physics' independent checks are in fortran/tests/test_roller_dynamics.f90.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from pyadore.printout import read_print
+
+ROOT = Path(__file__).resolve().parents[1]
+DECK = ROOT / "decks" / "appendix_d_roller.inp"
+GOLDEN = ROOT / "golden" / "appendix_d_roller.prt"
+REPORT_TIME = 5.453e-3          # s: the report's step 4000 (tau 76.18)
+ADORE_CALLS = 43010
+#: the golden roller whose inner load misses (module docstring of the xfail below)
+EDGE_ROLLER = 6
+
+
+def _sections_1a(text: str) -> int:
+    return text.count("1a. Load Distribution Along Roller no. 1")
+
+
+def _printed_steps(text: str) -> int:
+    return len(re.findall(r"^1\. Rolling Element Parameters", text, re.M))
+
+
+def test_cli_runs_appendix_d_some_steps(tmp_path):
+    """`pyadore run` integrates the roller deck: Normal termination, the roller run's note,
+    section 1a at every printed step (0 and the last), the time history beside the print."""
+    out = tmp_path / "d.prt"
+    proc = subprocess.run([sys.executable, "-m", "pyadore", "run", str(DECK), "-o", str(out), "--steps", "100"],
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr
+    text = out.read_text()
+    assert "Normal termination: Last Step Number =     100" in text
+    assert _printed_steps(text) == 2 and _sections_1a(text) == 2
+    assert "CAGE CENTRED ON THE BEARING AXIS" in text
+    history = out.with_suffix(".hist.csv").read_text().splitlines()
+    assert history[0].startswith("time_s,step,total_power_loss_W,re1_contact_load_outer_N")
+    assert len(history) == 1 + 101
+
+
+@pytest.fixture(scope="module")
+def report_time_run(tmp_path_factory, adore_exe):
+    out = tmp_path_factory.mktemp("roller_report_time") / "d.prt"
+    proc = subprocess.run([str(adore_exe), str(DECK), str(out), "--duration", str(REPORT_TIME)],
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr
+    return read_print(out)
+
+
+def _paired(run):
+    """(golden row, run row) of section 1's tables for each golden roller, the run's roller
+    the one nearest to the golden roller's azimuth (golden roller 1's azimuth is illegible:
+    45 deg before roller 2's)."""
+    golden = read_print(GOLDEN).step(4000)
+    mine = run.step(run.step_numbers[-1])
+    g_az = golden.tables["re_contact"]["orbital_position_deg"].to_numpy() % 360.0
+    g_az[0] = (g_az[1] - 45.0) % 360.0
+    m_az = mine.tables["re_contact"]["orbital_position_deg"].to_numpy() % 360.0
+    pairs = []
+    for k, a in enumerate(g_az, start=1):
+        gap = abs((m_az - a + 180.0) % 360.0 - 180.0)
+        j = int(gap.argmin()) + 1
+        assert gap.min() < 0.5, f"no roller of the run near golden roller {k}'s azimuth {a:.1f} deg"
+        pairs.append((k, golden, mine, j))
+    return pairs
+
+
+def _errors(run, table, column):
+    """Relative errors (run - golden)/golden of the legible, non-zero golden values."""
+    out = {}
+    for k, golden, mine, j in _paired(run):
+        g = golden.tables[table][column][k]
+        m = mine.tables[table][column][j]
+        if g == g and g != 0.0:
+            out[k] = (m - g) / g
+    return out
+
+
+def test_report_time_is_reached_with_fewer_calls(report_time_run):
+    assert report_time_run.termination["final_time"] == pytest.approx(76.18, abs=5e-3)
+    assert report_time_run.statistics["total_derivative_calls"] < ADORE_CALLS
+
+
+def test_orbital_speeds_within_1_percent(report_time_run):
+    errors = _errors(report_time_run, "re_motion", "orbital_velocity_rpm")
+    assert len(errors) == 8
+    assert max(map(abs, errors.values())) < 0.01
+
+
+def test_outer_contact_loads_within_5_percent(report_time_run):
+    errors = _errors(report_time_run, "re_contact", "contact_load_outer_N")
+    assert len(errors) == 8
+    assert max(map(abs, errors.values())) < 0.05, errors
+
+
+def test_inner_contact_loads_within_5_percent_in_the_load_zone(report_time_run):
+    errors = _errors(report_time_run, "re_contact", "contact_load_inner_N")
+    assert set(errors) == {3, 4, 5, 6}
+    assert max(abs(e) for k, e in errors.items() if k != EDGE_ROLLER) < 0.05, errors
+
+
+@pytest.mark.xfail(strict=True, reason="known deviation: golden roller 6 sits at 77.2 deg, the edge of the load "
+                   "zone, with 77.8 N; the run's roller is at 77.0 deg, 0.2 deg nearer the zone's centre, with 83.8 N "
+                   "(+7.7 %) (docs/dynamics.md, Roller dynamics)")
+def test_inner_contact_load_at_the_load_zone_edge_within_5_percent(report_time_run):
+    errors = _errors(report_time_run, "re_contact", "contact_load_inner_N")
+    assert abs(errors[EDGE_ROLLER]) < 0.05
+
+
+def test_total_power_loss_within_15_percent(report_time_run):
+    golden = read_print(GOLDEN).step(4000).tables["performance"]
+    mine = report_time_run.step(report_time_run.step_numbers[-1]).tables["performance"]
+    g = float(golden["total_power_loss_W"].iloc[0])
+    m = float(mine["total_power_loss_W"].iloc[0])
+    assert g == pytest.approx(0.9677)
+    assert abs(m - g) / g < 0.15
+
+
+def test_full_appendix_d_run(tmp_path, adore_exe):
+    """The one full run: the deck's 4000 steps end in Normal termination with at most ADORE's
+    derivative calls, every printed step (Rec 1: every 500) with its section 1a."""
+    out = tmp_path / "full.prt"
+    proc = subprocess.run([str(adore_exe), str(DECK), str(out)], capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr
+    run = read_print(out)
+    assert run.termination["last_step_number"] == 4000
+    assert run.step_numbers == list(range(0, 4001, 500))
+    text = out.read_text()
+    assert _sections_1a(text) == len(run.step_numbers)
+    assert run.statistics["total_derivative_calls"] <= ADORE_CALLS
+    assert run.statistics["max_truncation"] <= 1e-4
