@@ -12,7 +12,7 @@ module adore_bearings_ball
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error
    use adore_core_strings, only: itoa
-   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE
    use adore_model_condition, only: condition_of, default_constraints
    use adore_model_run_options, only: STEPS_FROM_DECK
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
@@ -26,7 +26,8 @@ module adore_bearings_ball
    use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics, ball_int_method
    use adore_bearings_system, only: bearing_system_t
    use adore_output_step_report, only: write_ball_step0
-   use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
+   use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios, dynamic_lives, orbital_speed, &
+                                                pocket_excursion, cage_wear_sliding
    use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row
    use adore_output_ball_contact_print, only: contact_print_t, ball_contact_print
    implicit none
@@ -35,8 +36,11 @@ module adore_bearings_ball
    public :: ball_kind_t, ball_averaged_values
 
    !> Positions in the vector of ball_averaged_values: power loss (W), the three speed
-   !> ratios, the outer and inner race wear (m**3/s), then each ball's wear (m**3/s).
-   integer, parameter, public :: AVG_POWER = 1, AVG_RATIOS = 2, AVG_RACE_WEAR = 5, AVG_BALL_WEAR = 7
+   !> ratios, the outer and inner race wear (m**3/s), the damage rate 1/L of the modified
+   !> life (1/h), the cage's wear (m**3/s), the RE excursion (m), then each ball's wear, each
+   !> pocket's wear and each guide land's wear (m**3/s).
+   integer, parameter, public :: AVG_POWER = 1, AVG_RATIOS = 2, AVG_RACE_WEAR = 5, AVG_DAMAGE = 7, &
+                                 AVG_CAGE_WEAR = 8, AVG_EXCURSION = 9, AVG_BALL_WEAR = 10
 
    !> A ball bearing run.
    type, extends(bearing_system_t) :: ball_kind_t
@@ -196,14 +200,14 @@ contains
 
    integer function ball_n_values(self)
       class(ball_kind_t), intent(in) :: self
-      ball_n_values = AVG_BALL_WEAR - 1 + self%bearing%n_elements
+      ball_n_values = AVG_BALL_WEAR - 1 + 2*self%bearing%n_elements + max(self%bearing%n_lands, 0)
    end function ball_n_values
 
    !> ball_averaged_values at the last evaluated state.
    subroutine ball_values(self, v)
       class(ball_kind_t), intent(in) :: self
       real(wp), intent(out) :: v(:)
-      call ball_averaged_values(self%bearing, self%eom%state, self%eom%loads, v)
+      call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v)
    end subroutine ball_values
 
    !> Each ball's orbital position unwrapped from step to step (a step moves a ball far
@@ -224,14 +228,20 @@ contains
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: t, mean(:)
-      real(wp) :: time
+      real(wp) :: time, life
+      integer :: n
       time = t*self%time_scale
       associate (b => self%bearing)
+         n = b%n_elements
+         life = ieee_value(1.0_wp, ieee_quiet_nan)                 ! Palmgren-Miner: t / integral dt/L
+         if (mean(AVG_DAMAGE) > 0.0_wp) life = 1.0_wp/mean(AVG_DAMAGE)
          call write_ball_step(unit, step, [t, time, b%speed_outer*time/(2.0_wp*pi), &
                                            b%speed_inner*time/(2.0_wp*pi)], &
                               b, self%eom%geometry, self%eom%state, self%eom%rates, self%eom%loads, self%azimuth, &
-                              self%axial_origin, mean(AVG_BALL_WEAR:), mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), &
-                              mean(AVG_POWER:AVG_RATIOS + 2))
+                              self%axial_origin, mean(AVG_BALL_WEAR:AVG_BALL_WEAR + n - 1), &
+                              mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2), &
+                              mean(AVG_BALL_WEAR + n:AVG_BALL_WEAR + 2*n - 1), mean(AVG_BALL_WEAR + 2*n:), &
+                              [life, mean(AVG_CAGE_WEAR), mean(AVG_EXCURSION)])
       end associate
    end subroutine ball_write_step
 
@@ -254,7 +264,8 @@ contains
       integer, intent(in) :: step
       real(wp), intent(in) :: t, mean(:)
       type(contact_print_t) :: tribology
-      call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, mean(AVG_BALL_WEAR:), &
+      call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, &
+                               mean(AVG_BALL_WEAR:AVG_BALL_WEAR + self%bearing%n_elements - 1), &
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
                               flash=h%printed)
@@ -284,28 +295,47 @@ contains
    end subroutine ball_mount
 
    !> The quantities the print shows as time averages, at one state s of ball bearing b
-   !> with the force assembly's loads there, into v (size AVG_BALL_WEAR - 1 + n): the total
-   !> power loss of the race contacts (W), dynamic_speed_ratios, and the Archard wear rates
-   !> (adore_tribology_wear, as step 0 computes them) of the outer and inner race (over all
-   !> their contacts) and of each ball (over both its contacts), from each contact's
-   !> integral of |slip| dQ of the rolling-direction traction model (0 where unloaded).
-   subroutine ball_averaged_values(b, s, loads, v)
+   !> (mounted geometry g) with the force assembly's loads there, into v (size
+   !> ball_n_values): the total power loss of the race contacts (W), dynamic_speed_ratios,
+   !> the Archard wear rates (adore_tribology_wear, as step 0 computes them) of the outer and
+   !> inner race (over all their contacts) and of each ball (over both its contacts), from
+   !> each contact's integral of |slip| dQ of the rolling-direction traction model (0 where
+   !> unloaded); the damage rate 1/L (1/h) of the modified life L of this state
+   !> (dynamic_lives: its average inverted is the Palmgren-Miner life); the cage's Archard
+   !> wear (cage material) of each pocket and guide land (cage_wear_sliding) and their sum;
+   !> the RE excursion (pocket_excursion).
+   subroutine ball_averaged_values(b, g, s, loads, v)
       type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(out) :: v(:)
-      integer :: k
+      type(contact_print_t) :: tribology
+      real(wp) :: w_orb(b%n_elements), lives(2), pockets(b%n_elements), lands(max(b%n_lands, 0))
+      integer :: k, n
+      n = b%n_elements
       v(AVG_POWER) = total_power_loss(loads)
       v(AVG_RATIOS:AVG_RATIOS + 2) = dynamic_speed_ratios(b, s)
       v(AVG_RACE_WEAR) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
                                            sum(loads%traction(1, :)%sliding))
       v(AVG_RACE_WEAR + 1) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
                                                sum(loads%traction(2, :)%sliding))
-      do k = 1, b%n_elements
+      do k = 1, n
          v(AVG_BALL_WEAR - 1 + k) = archard_wear_rate(b%material(BODY_ELEMENT)%wear, &
                                                       b%material(BODY_ELEMENT)%hardness, &
                                                       loads%traction(1, k)%sliding + loads%traction(2, k)%sliding)
+         w_orb(k) = orbital_speed(s%elements(k))
       end do
+      call ball_contact_print(b, g, s, loads, tribology, flash=.false.)
+      lives = dynamic_lives(b, g, loads, tribology, w_orb)
+      v(AVG_DAMAGE) = 0.0_wp
+      if (lives(2) > 0.0_wp) v(AVG_DAMAGE) = 1.0_wp/lives(2)      ! an infinite life: no damage
+      call cage_wear_sliding(b, loads, pockets, lands)
+      v(AVG_BALL_WEAR + n:AVG_BALL_WEAR + 2*n - 1) = archard_wear_rate(b%material(BODY_CAGE)%wear, &
+                                                                     b%material(BODY_CAGE)%hardness, pockets)
+      v(AVG_BALL_WEAR + 2*n:) = archard_wear_rate(b%material(BODY_CAGE)%wear, b%material(BODY_CAGE)%hardness, lands)
+      v(AVG_CAGE_WEAR) = sum(v(AVG_BALL_WEAR + n:))
+      v(AVG_EXCURSION) = pocket_excursion(loads)
    end subroutine ball_averaged_values
 
    !> Diametral clearance (m) of the cage's guide: the smallest effective diametral play of
