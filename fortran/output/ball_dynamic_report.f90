@@ -3,8 +3,8 @@
 !> that state and the run's time averages (no formatting here, no physics): write_ball_step.
 !>
 !> What a dynamic step prints and which columns stay NaN: docs/print-layout.md, "Dynamic
-!> steps".  A value the dynamics does not compute yet (traction table, flash temperatures,
-!> film, lives, cage contacts and cage wear, angular positions) is IEEE NaN /
+!> steps".  A value the dynamics does not compute yet (the thermal columns: drag, churning,
+!> net loss, HTC, churning fraction, exit fluid temperature) is IEEE NaN /
 !> INT_NOT_COMPUTED and prints "NaN": the print never shows a made-up number.
 module adore_output_ball_dynamic_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
