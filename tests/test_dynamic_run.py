@@ -32,6 +32,8 @@ from pyadore.cli import cli
 from pyadore.diff import diff_prints
 from pyadore.errors import AdoreEngineError, AdoreInputError
 from pyadore.printout import read_print
+
+ROOT = Path(__file__).resolve().parents[1]
 from pyadore.timehistory import history_beside, history_path, read_history_csv
 
 N = 30
@@ -368,6 +370,38 @@ def test_wear_rates_start_at_the_step_0_wear_and_are_printed_as_averages(runs):
             run.steps[n].table("race_cage")["wear_rate_m3_s"].sum()
         assert cage >= 0.0 and cage == pytest.approx(parts, rel=20 * PRINTED, abs=1e-30)
 
+
+
+def _assert_history_row0_is_the_print_step0(result):
+    """The plot-data file's step-0 row holds the print's step 0 (4 printed digits)."""
+    hist, run = result.time_history, read_print(result.print_path)
+    row, step = hist.iloc[0], run.steps[0]
+    assert row["step"] == 0 and row.name == 0.0
+    perf, bodies = step.table("performance").iloc[0], step.table("bodies")
+    assert row["total_power_loss_W"] == pytest.approx(perf["total_power_loss_W"], rel=PRINTED)
+    assert row["wear_rate_outer_race_m3_s"] == pytest.approx(bodies.loc["ORace", "wear_rate_m3_s"], rel=PRINTED)
+    assert row["wear_rate_inner_race_m3_s"] == pytest.approx(bodies.loc["IRace", "wear_rate_m3_s"], rel=PRINTED)
+    assert row["wear_rate_re_m3_s"] == pytest.approx(step.table("re_motion")["wear_rate_m3_s"].mean(), rel=2 * PRINTED)
+    contact, motion, thermal = step.table("re_contact"), step.table("re_motion"), step.table("re_thermal")
+    for race in ("outer", "inner"):
+        assert row[f"re1_contact_load_{race}_N"] == pytest.approx(contact.loc[1, f"contact_load_{race}_N"], rel=PRINTED)
+        assert row[f"re1_contact_loss_{race}_W"] == pytest.approx(motion.loc[1, f"contact_loss_{race}_W"], rel=PRINTED)
+        assert row[f"re1_contact_temp_{race}_K"] == pytest.approx(thermal.loc[1, f"contact_temp_{race}_K"],
+                                                                  rel=PRINTED)
+    r = bodies.loc["Cage", "mc_pos_radial_m"]
+    assert math.hypot(row["cage_y_m"], row["cage_z_m"]) == pytest.approx(r, rel=PRINTED)
+    return hist, run
+
+
+def test_history_step0_row_is_the_print_step0(runs, tmp_path):
+    """Issue #29 item 7: the step-0 row of the plot-data file comes from the step-0 solution
+    the print shows, not from the dynamics' initial state (Appendix C: 547.5 W, the dynamics'
+    state 547.8 W; the deep-groove radial example: 0.0400 W from the dynamics' state against
+    the print's 0.0589 W); the next row is the dynamics' first step."""
+    _assert_history_row0_is_the_print_step0(runs["short"])
+    example = pyadore.run(ROOT / "decks" / "examples" / "deep_groove_radial.inp", steps=2, out=tmp_path / "dg.prt")
+    hist, run = _assert_history_row0_is_the_print_step0(example)
+    assert list(hist["step"]) == [0, 1, 2]
 
 # --- time histories (item 6) ------------------------------------------------------------------
 

@@ -28,7 +28,8 @@ module adore_bearings_ball
    use adore_output_step_report, only: write_ball_step0
    use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios, dynamic_lives, orbital_speed, &
                                                 pocket_excursion, cage_wear_sliding
-   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row
+   use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row, &
+                                       set_step0_row
    use adore_output_ball_contact_print, only: contact_print_t, ball_contact_print
    implicit none
    private
@@ -267,10 +268,51 @@ contains
       call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, &
                                mean(AVG_BALL_WEAR:AVG_BALL_WEAR + self%bearing%n_elements - 1), &
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
+      if (step == 0) call step0_history_values(self, h)
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
                               flash=h%printed)
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
    end subroutine ball_record_row
+
+   !> The plot-data row of step 0 from the step-0 solution the print shows (set_step0_row),
+   !> not from the dynamics' initial state (issue #29: the two differ by the dynamic model's
+   !> contact forces and traction at the quasi-static positions): power, wear, cage centre
+   !> and velocity, guide-land forces and the chosen element's loads, losses and contact
+   !> temperatures of step 0's print.  A contact force step 0 does not compute (a cage
+   !> contact, printed NaN) is NaN here too.
+   subroutine step0_history_values(self, h)
+      class(ball_kind_t), intent(in) :: self
+      type(run_history_t), intent(inout) :: h
+      real(wp) :: nan, r, lands(max(self%bearing%n_lands, 0)), pocket, q(2), loss(2), temp(2)
+      integer :: k, j
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      k = h%element
+      associate (s0 => self%step0, e => self%step0%start%equilibrium, c => self%step0%cage)
+         lands = nan
+         if (allocated(c%land)) then
+            do j = 1, min(size(lands), size(c%land))
+               if (.not. c%land(j)%in_contact) lands(j) = 0.0_wp
+            end do
+         end if
+         pocket = nan
+         if (allocated(c%pocket)) then
+            if (size(c%pocket, 2) >= k) then
+               if (.not. c%pocket(1, k)%in_contact) pocket = 0.0_wp
+            end if
+         end if
+         q = [e%q_o(k), e%q_i(k)]
+         loss = nan
+         temp = nan
+         do j = 1, 2
+            if (.not. (q(j) > 0.0_wp)) cycle
+            loss(j) = s0%loss(j, k)
+            temp(j) = s0%contact_temp(j, k)
+         end do
+         r = hypot(c%state%centre(2), c%state%centre(3))
+         call set_step0_row(h, s0%power_loss, sum(s0%wear)/size(s0%wear), s0%race_wear, c%state%centre(2:3), &
+                            [r*c%state%whirl_speed, 0.0_wp], lands, q, loss, temp, pocket)
+      end associate
+   end subroutine step0_history_values
 
    !> The equations of motion in self%condition: the geometry mounted at its temperatures
    !> (adore_geometry_mounted: fits, growth, clearance from the initial temperatures), its
