@@ -28,6 +28,11 @@ RESULTS = {
     "inner_race_bulk_temp_K": ("Inner race bulk temperature", "K"),
     "housing_bulk_temp_K": ("Housing bulk temperature", "K"),
     "shaft_bulk_temp_K": ("Shaft bulk temperature", "K"),
+    # time averages over the last shaft revolution (docs/sweeps.md)
+    "mean_total_power_loss_W": ("Total power loss, time-averaged", "W"),
+    "mean_max_contact_load_N": ("Largest contact load, time-averaged", "N"),
+    "mean_cage_speed_ratio": ("Cage speed ratio, time-averaged", "-"),
+    "mean_revolutions": ("Revolutions averaged over", "-"),
 }
 
 #: Axis titles of the summary's result columns, ``Title (unit)``.
