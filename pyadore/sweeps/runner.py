@@ -258,12 +258,15 @@ class _Sweep:
 
 
 def _progress(total: int, enabled: bool | None):
+    """A tqdm bar on stderr: shown when enabled, or (None) on a terminal only; None when
+    not shown, without importing tqdm (0.2 s of the client's serial start)."""
+    if enabled is False or (enabled is None and not (hasattr(sys.stderr, "isatty") and sys.stderr.isatty())):
+        return None
     try:
         from tqdm import tqdm
     except ImportError:  # the bar is a convenience
         return None
-    disable = None if enabled is None else not enabled  # None: shown only on a terminal
-    return tqdm(total=total, unit="case", desc="sweep", disable=disable, file=sys.stderr, dynamic_ncols=True)
+    return tqdm(total=total, unit="case", desc="sweep", disable=False, file=sys.stderr, dynamic_ncols=True)
 
 
 def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, workers: int | None = None,
