@@ -321,3 +321,29 @@ def test_every_run_option_applies_to_every_case(tmp_path):
     with pytest.raises(pyadore.AdoreInputError, match="unknown run option 'colour'"):
         pyadore.sweep(ROLLER, {"applied_force_z": [1000]}, tmp_path / "t", steps=0, colour="red", progress=False)
     assert not (tmp_path / "t").exists()
+
+
+def test_worker_starts_without_pandas_and_reads_the_same_key_results(tmp_path):
+    """Sweep scaling (issue #29 item 8): a worker boots without pandas (60 % of its start-up,
+    a serial cost more workers do not share) and a step-0 case stays without it; the plain
+    reading of a print gives exactly the key results of the pandas one, for a step-0 print
+    and a print with dynamic steps."""
+    code = ("import sys\n"
+            "from pyadore.sweeps import worker\n"
+            "worker.warm()\n"
+            "from pyadore.sweeps.execute import run_case\n"
+            f"r = run_case('c', open({str(ROOT / 'decks' / 'appendix_c_ball.inp')!r}).read(), 0, {{}})\n"
+            "assert r['status'] == 'ok', r['error']\n"
+            "print('pandas' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "False"
+    from pyadore.sweeps.results import key_results
+
+    static = pyadore.run(ROOT / "decks" / "appendix_c_ball.inp", steps=0, out=tmp_path / "s.prt").print_path
+    dynamic = pyadore.run(ROOT / "decks" / "appendix_c_ball.inp", steps=3, out=tmp_path / "d.prt").print_path
+    for prt in (static, dynamic):
+        framed, plain = read_print(prt), read_print(prt, frames=False, echo=False)
+        assert plain.step_numbers == framed.step_numbers and plain.echo == {}
+        assert key_results(plain) == key_results(framed)
+        assert all(v == v for v in key_results(plain).values())   # no NaN: every value found

@@ -12,7 +12,7 @@ module adore_bearings_ball
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error
    use adore_core_strings, only: itoa, upper
-   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, deck_constraints, &
                                     dof_constraints_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
@@ -30,9 +30,10 @@ module adore_bearings_ball
    use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics
    use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
    use adore_output_step_report, only: write_ball_step0
-   use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios
+   use adore_output_ball_dynamic_report, only: write_ball_step, dynamic_speed_ratios, dynamic_lives, orbital_speed, &
+                                                pocket_excursion, cage_wear_sliding
    use adore_output_run_history, only: run_history_t, new_ball_history, record_ball_history, ball_element_row, &
-                                       add_history_column, set_history_value
+                                       add_history_column, set_history_value, set_step0_row
    use adore_output_ball_contact_print, only: contact_print_t, ball_contact_print
    implicit none
    private
@@ -40,8 +41,11 @@ module adore_bearings_ball
    public :: ball_kind_t, ball_averaged_values
 
    !> Positions in the vector of ball_averaged_values: power loss (W), the three speed
-   !> ratios, the outer and inner race wear (m**3/s), then each ball's wear (m**3/s).
-   integer, parameter, public :: AVG_POWER = 1, AVG_RATIOS = 2, AVG_RACE_WEAR = 5, AVG_BALL_WEAR = 7
+   !> ratios, the outer and inner race wear (m**3/s), the damage rate 1/L of the modified
+   !> life (1/h), the cage's wear (m**3/s), the RE excursion (m), then each ball's wear, each
+   !> pocket's wear and each guide land's wear (m**3/s).
+   integer, parameter, public :: AVG_POWER = 1, AVG_RATIOS = 2, AVG_RACE_WEAR = 5, AVG_DAMAGE = 7, &
+                                 AVG_CAGE_WEAR = 8, AVG_EXCURSION = 9, AVG_BALL_WEAR = 10
 
    !> A ball bearing run.
    type, extends(bearing_system_t) :: ball_kind_t
@@ -240,14 +244,14 @@ contains
 
    integer function ball_n_values(self)
       class(ball_kind_t), intent(in) :: self
-      ball_n_values = AVG_BALL_WEAR - 1 + self%bearing%n_elements
+      ball_n_values = AVG_BALL_WEAR - 1 + 2*self%bearing%n_elements + max(self%bearing%n_lands, 0)
    end function ball_n_values
 
    !> ball_averaged_values at the last evaluated state.
    subroutine ball_values(self, v)
       class(ball_kind_t), intent(in) :: self
       real(wp), intent(out) :: v(:)
-      call ball_averaged_values(self%bearing, self%eom%state, self%eom%loads, v)
+      call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v)
    end subroutine ball_values
 
    !> Each ball's orbital position unwrapped from step to step (a step moves a ball far
@@ -274,24 +278,33 @@ contains
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: t, mean(:)
-      real(wp) :: time, header(4)
+      real(wp) :: time, header(4), life, cage_avg(3)
+      integer :: n
       time = t*self%time_scale
       associate (b => self%bearing, th => self%thermal)
+         n = b%n_elements
          header = [t, time, b%speed_outer*time/(2.0_wp*pi), b%speed_inner*time/(2.0_wp*pi)]
-         if (th%mode == THERMAL_OFF) then
-            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
-                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
-                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2))
-         else if (.not. th%have_field) then      ! before the first update: no field yet
-            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
-                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
-                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2), th%fluid)
-         else
-            call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
-                                 self%eom%loads, self%azimuth, self%axial_origin, mean(AVG_BALL_WEAR:), &
-                                 mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), mean(AVG_POWER:AVG_RATIOS + 2), th%fluid, &
-                                 th%field)
-         end if
+         life = ieee_value(1.0_wp, ieee_quiet_nan)                 ! Palmgren-Miner: t / integral dt/L
+         if (mean(AVG_DAMAGE) > 0.0_wp) life = 1.0_wp/mean(AVG_DAMAGE)
+         cage_avg = [life, mean(AVG_CAGE_WEAR), mean(AVG_EXCURSION)]
+         associate (ball_wear => mean(AVG_BALL_WEAR:AVG_BALL_WEAR + n - 1), &
+                    race_wear => mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), summary => mean(AVG_POWER:AVG_RATIOS + 2), &
+                    pocket_wear => mean(AVG_BALL_WEAR + n:AVG_BALL_WEAR + 2*n - 1), &
+                    land_wear => mean(AVG_BALL_WEAR + 2*n:))
+            if (th%mode == THERMAL_OFF) then
+               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                    self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
+                                    pocket_wear, land_wear, cage_avg)
+            else if (.not. th%have_field) then      ! before the first update: no field yet
+               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                    self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
+                                    pocket_wear, land_wear, cage_avg, th%fluid)
+            else
+               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+                                    self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
+                                    pocket_wear, land_wear, cage_avg, th%fluid, th%field)
+            end if
+         end associate
       end associate
    end subroutine ball_write_step
 
@@ -319,8 +332,10 @@ contains
       real(wp), intent(in) :: t, mean(:)
       type(contact_print_t) :: tribology
       character(len=:), allocatable :: e
-      call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, mean(AVG_BALL_WEAR:), &
+      call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, &
+                               mean(AVG_BALL_WEAR:AVG_BALL_WEAR + self%bearing%n_elements - 1), &
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
+      if (step == 0) call step0_history_values(self, h)
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
                               flash=h%printed)
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
@@ -338,6 +353,46 @@ contains
          end if
       end if
    end subroutine ball_record_row
+
+   !> The plot-data row of step 0 from the step-0 solution the print shows (set_step0_row),
+   !> not from the dynamics' initial state (issue #29: the two differ by the dynamic model's
+   !> contact forces and traction at the quasi-static positions): power, wear, cage centre
+   !> and velocity, guide-land forces and the chosen element's loads, losses and contact
+   !> temperatures of step 0's print.  A contact force step 0 does not compute (a cage
+   !> contact, printed NaN) is NaN here too.
+   subroutine step0_history_values(self, h)
+      class(ball_kind_t), intent(in) :: self
+      type(run_history_t), intent(inout) :: h
+      real(wp) :: nan, r, lands(max(self%bearing%n_lands, 0)), pocket, q(2), loss(2), temp(2)
+      integer :: k, j
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      k = h%element
+      associate (s0 => self%step0, e => self%step0%start%equilibrium, c => self%step0%cage)
+         lands = nan
+         if (allocated(c%land)) then
+            do j = 1, min(size(lands), size(c%land))
+               if (.not. c%land(j)%in_contact) lands(j) = 0.0_wp
+            end do
+         end if
+         pocket = nan
+         if (allocated(c%pocket)) then
+            if (size(c%pocket, 2) >= k) then
+               if (.not. c%pocket(1, k)%in_contact) pocket = 0.0_wp
+            end if
+         end if
+         q = [e%q_o(k), e%q_i(k)]
+         loss = nan
+         temp = nan
+         do j = 1, 2
+            if (.not. (q(j) > 0.0_wp)) cycle
+            loss(j) = s0%loss(j, k)
+            temp(j) = s0%contact_temp(j, k)
+         end do
+         r = hypot(c%state%centre(2), c%state%centre(3))
+         call set_step0_row(h, s0%power_loss, sum(s0%wear)/size(s0%wear), s0%race_wear, c%state%centre(2:3), &
+                            [r*c%state%whirl_speed, 0.0_wp], lands, q, loss, temp, pocket)
+      end associate
+   end subroutine step0_history_values
 
    !> The equations of motion in self%condition: the geometry mounted at its temperatures
    !> (adore_geometry_mounted: fits, growth, clearance from the initial temperatures), its
@@ -504,28 +559,47 @@ contains
    end subroutine hold_applied_load
 
    !> The quantities the print shows as time averages, at one state s of ball bearing b
-   !> with the force assembly's loads there, into v (size AVG_BALL_WEAR - 1 + n): the total
-   !> power loss of the race contacts (W), dynamic_speed_ratios, and the Archard wear rates
-   !> (adore_tribology_wear, as step 0 computes them) of the outer and inner race (over all
-   !> their contacts) and of each ball (over both its contacts), from each contact's
-   !> integral of |slip| dQ of the rolling-direction traction model (0 where unloaded).
-   subroutine ball_averaged_values(b, s, loads, v)
+   !> (mounted geometry g) with the force assembly's loads there, into v (size
+   !> ball_n_values): the total power loss of the race contacts (W), dynamic_speed_ratios,
+   !> the Archard wear rates (adore_tribology_wear, as step 0 computes them) of the outer and
+   !> inner race (over all their contacts) and of each ball (over both its contacts), from
+   !> each contact's integral of |slip| dQ of the rolling-direction traction model (0 where
+   !> unloaded); the damage rate 1/L (1/h) of the modified life L of this state
+   !> (dynamic_lives: its average inverted is the Palmgren-Miner life); the cage's Archard
+   !> wear (cage material) of each pocket and guide land (cage_wear_sliding) and their sum;
+   !> the RE excursion (pocket_excursion).
+   subroutine ball_averaged_values(b, g, s, loads, v)
       type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(out) :: v(:)
-      integer :: k
+      type(contact_print_t) :: tribology
+      real(wp) :: w_orb(b%n_elements), lives(2), pockets(b%n_elements), lands(max(b%n_lands, 0))
+      integer :: k, n
+      n = b%n_elements
       v(AVG_POWER) = total_power_loss(loads)
       v(AVG_RATIOS:AVG_RATIOS + 2) = dynamic_speed_ratios(b, s)
       v(AVG_RACE_WEAR) = archard_wear_rate(b%material(BODY_OUTER)%wear, b%material(BODY_OUTER)%hardness, &
                                            sum(loads%traction(1, :)%sliding))
       v(AVG_RACE_WEAR + 1) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
                                                sum(loads%traction(2, :)%sliding))
-      do k = 1, b%n_elements
+      do k = 1, n
          v(AVG_BALL_WEAR - 1 + k) = archard_wear_rate(b%material(BODY_ELEMENT)%wear, &
                                                       b%material(BODY_ELEMENT)%hardness, &
                                                       loads%traction(1, k)%sliding + loads%traction(2, k)%sliding)
+         w_orb(k) = orbital_speed(s%elements(k))
       end do
+      call ball_contact_print(b, g, s, loads, tribology, flash=.false.)
+      lives = dynamic_lives(b, g, loads, tribology, w_orb)
+      v(AVG_DAMAGE) = 0.0_wp
+      if (lives(2) > 0.0_wp) v(AVG_DAMAGE) = 1.0_wp/lives(2)      ! an infinite life: no damage
+      call cage_wear_sliding(b, loads, pockets, lands)
+      v(AVG_BALL_WEAR + n:AVG_BALL_WEAR + 2*n - 1) = archard_wear_rate(b%material(BODY_CAGE)%wear, &
+                                                                     b%material(BODY_CAGE)%hardness, pockets)
+      v(AVG_BALL_WEAR + 2*n:) = archard_wear_rate(b%material(BODY_CAGE)%wear, b%material(BODY_CAGE)%hardness, lands)
+      v(AVG_CAGE_WEAR) = sum(v(AVG_BALL_WEAR + n:))
+      v(AVG_EXCURSION) = pocket_excursion(loads)
    end subroutine ball_averaged_values
 
    !> Diametral clearance (m) of the cage's guide: the smallest effective diametral play of

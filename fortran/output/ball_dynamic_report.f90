@@ -3,8 +3,8 @@
 !> that state and the run's time averages (no formatting here, no physics): write_ball_step.
 !>
 !> What a dynamic step prints and which columns stay NaN: docs/print-layout.md, "Dynamic
-!> steps".  A value the dynamics does not compute yet (traction table, flash temperatures,
-!> film, lives, cage contacts and cage wear, angular positions) is IEEE NaN /
+!> steps".  A value the dynamics does not compute yet (the thermal columns: drag, churning,
+!> net loss, HTC, churning fraction, exit fluid temperature) is IEEE NaN /
 !> INT_NOT_COMPUTED and prints "NaN": the print never shows a made-up number.
 module adore_output_ball_dynamic_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -16,7 +16,8 @@ module adore_output_ball_dynamic_report
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, body_azimuth, RACE_OUTER, RACE_INNER
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, total_power_loss, guide_land_pairs
-   use adore_contact_cage_land, only: cage_land_pair_t
+   use adore_contact_cage_land, only: cage_land_pair_t, cage_land_geometry_t
+   use adore_cage_hoop, only: cage_hoop_stress
    use adore_forces_race_contact, only: wall_temperature
    use adore_cage_step0, only: cage_step0_t
    use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
@@ -32,7 +33,8 @@ module adore_output_ball_dynamic_report
    implicit none
    private
 
-   public :: write_ball_step, orbital_speed, dynamic_speed_ratios, ball_axis_angles
+   public :: write_ball_step, orbital_speed, dynamic_speed_ratios, ball_axis_angles, dynamic_lives, &
+             pocket_excursion, cage_wear_sliding
 
 contains
 
@@ -56,14 +58,17 @@ contains
    !> The time averages since the start (adore_driver_time_average) of the "Time Ave" columns:
    !> wear(n) of each ball and race_wear(2) of the outer and inner race (m**3/s), and section
    !> 4's summary_avg = [power loss (W), RE orbital velocity, cage omega and cage whirl
-   !> ratios (dynamic_speed_ratios)].
+   !> ratios (dynamic_speed_ratios)]; the cage's Archard wear (m**3/s) of each pocket
+   !> pocket_wear(n) and guide land land_wear(n_lands), and cage_avg = [fatigue life (h):
+   !> t / integral of dt / L (Palmgren-Miner) of section 3's modified life L, the cage's
+   !> wear (m**3/s: pockets and lands), average RE excursion (m, pocket_excursion)].
    !> With the thermal model on (docs/thermal.md, "The wiring"): fluid(n), each ball's drag,
    !> churning moment and loss (section 1's Drag, Chrn Mom, Net Loss; added to the total
    !> power loss, their share of it the Churning Loss Fraction), and field, the last solved
    !> temperature field (each ball's contact node, bulk temperature and HTC, the exit fluid,
    !> housing and shaft temperatures).
    subroutine write_ball_step(unit, step, header, b, g, s, rates, loads, azimuth, axial_origin, wear, race_wear, &
-                              summary_avg, fluid, field)
+                              summary_avg, pocket_wear, land_wear, cage_avg, fluid, field)
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
@@ -71,7 +76,7 @@ contains
       type(bearing_state_t), intent(in) :: s, rates
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(in) :: azimuth(:), axial_origin
-      real(wp), intent(in) :: wear(:), race_wear(2), summary_avg(4)
+      real(wp), intent(in) :: wear(:), race_wear(2), summary_avg(4), pocket_wear(:), land_wear(:), cage_avg(3)
       type(element_fluid_loss_t), intent(in), optional :: fluid(:)
       type(thermal_field_t), intent(in), optional :: field
 
@@ -79,12 +84,9 @@ contains
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
       real(wp) :: slices(1, 10, 0), race_cage(max(b%n_lands, 1), 7), bodies(3, 11)
       real(wp) :: ld(5, 6), acc(3, 7), perf(N_PERFORMANCE), summary(1, 10), nan, w_orb(size(azimuth))
-      real(wp) :: lives(size(azimuth), 2), n_race(2), hours(3), contact_q(2, size(azimuth)), contact_a(2, size(azimuth))
       integer, allocatable :: re_no(:), cage_code(:), cage_end(:)
       integer :: land_no(max(b%n_lands, 1)), land_code(max(b%n_lands, 1))
       type(contact_print_t) :: tribology
-      type(life_params_t) :: lp
-      real(wp) :: m_race(2), psi
       integer :: n, k, j
 
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -104,6 +106,9 @@ contains
          motion(k, 2:4) = ball_spin_angles(s%elements(k), w_orb(k))
          motion(k, 5:6) = ball_axis_angles(s%elements(k))
          thermal(k, 10) = s%temperature(TEMP_ELEMENT)
+         ! Rel Axial Pos: the ball centre from the outer groove curvature-centre plane
+         ! (the print frame of the cage's Mass Center Axial; docs/print-layout.md)
+         thermal(k, 1) = s%elements(k)%position(1) - g%groove_centre(1, 1)
          do j = 1, 2
             associate (c => loads%contacts(j, k))
                contact(k, 1 + j) = abs(c%alpha)*deg
@@ -131,13 +136,19 @@ contains
       cage_end = 0
       land_no = [(k, k=1, size(land_no))]
       call cage_contact_tables(b, g, s, loads, cage_code, re_cage, land_code, race_cage)
+      if (allocated(loads%pockets)) re_cage(:, 8) = pocket_wear     ! time averages since the start
+      if (allocated(loads%lands)) race_cage(1:size(land_wear), 7) = land_wear
       bodies = nan
       associate (c => s%cage)
          bodies(1, 1) = c%position(1) - g%groove_centre(1, 1)   ! print frame: outer groove centre plane
          bodies(1, 2) = hypot(c%position(2), c%position(3))
-         if (bodies(1, 2) > 0.0_wp) bodies(1, 3) = modulo(body_azimuth(c), 2.0_wp*pi)*deg
+         ! orbital angle of the centre as the races' (race_rows): 0 for a centre on the axis
+         bodies(1, 3) = modulo(body_azimuth(c), 2.0_wp*pi)*deg
          bodies(1, 4) = orbital_speed(c)*rpm
          bodies(1, 5:7) = axis_angles(matmul(quat_matrix(c%attitude), c%omega))
+         bodies(1, 8:9) = race_tilt(c)                          ! tilt of its axis, as the races'
+         bodies(1, 10) = cage_hoop_stress(b%material(BODY_CAGE)%density, b%cage_id, b%cage_od, c%omega(1))
+         bodies(1, 11) = cage_avg(2)
       end associate
       call race_rows(bodies, s%races(RACE_INNER)%position(2:3), s%races(RACE_OUTER)%omega(1), &
                      s%races(RACE_INNER)%omega(1))
@@ -165,23 +176,8 @@ contains
       acc(2, :) = [rates%races(RACE_OUTER)%velocity, rates%races(RACE_OUTER)%omega*rpm, s%temperature(TEMP_OUTER)]
       acc(3, :) = [rates%races(RACE_INNER)%velocity, rates%races(RACE_INNER)%omega*rpm, s%temperature(TEMP_INNER)]
       perf = nan                  ! churning, exit fluid: not computed
-      ! basic life (eqs 73-74, 102) from the contact loads and orbital speeds of this instant
-      contact_q = loads%contacts%load                     ! contiguous copies (no array temporaries)
-      contact_a = abs(loads%contacts%alpha)
-      call ball_basic_life(b, life_params_t(), contact_q(1, :), contact_a(1, :), contact_q(2, :), contact_a(2, :), &
-                           w_orb, lives(:, 1), lives(:, 2), n_race(1), n_race(2), hours)
-      perf(1) = hours(1)
-      ! the Tallian modified life (eqs 77-109) as step 0 computes it (adore_start_ball_step0):
-      ! film parameter = iso film x thermal reduction factor / composite roughness, mu_EHD =
-      ! the printed traction coefficient, 0 where a contact has none (unloaded)
-      call ball_race_modified_life(lp, lives(:, 1), n_race(1), contact_pressure(1), film_parameter(1), &
-                                   no_nan(tribology%coefficient(1, :)), g%mounting%outer_hoop_stress, .false., psi, &
-                                   m_race(1))
-      call ball_race_modified_life(lp, lives(:, 2), n_race(2), contact_pressure(2), film_parameter(2), &
-                                   no_nan(tribology%coefficient(2, :)), g%mounting%inner_hoop_stress, .true., psi, &
-                                   m_race(2))
-      perf(2) = life_hours(bearing_life(m_race(1), m_race(2), lp%weibull_e_point), &
-                           (b%speed_inner - b%speed_outer)*rpm)
+      ! basic life (eqs 73-74, 102) and the Tallian modified life of this instant
+      perf(1:2) = dynamic_lives(b, g, loads, tribology, w_orb)
       perf(3) = g%mounting%outer_fit
       perf(4) = g%mounting%inner_fit
       perf(5) = g%mounting%clearance
@@ -206,29 +202,46 @@ contains
          perf(12:14) = field%shaft
       end if
 
-      summary = nan                                  ! fatigue life, cage wear, RE excursion
       summary(1, 1:3) = header(2:4)
-      summary(1, 5:8) = summary_avg                  ! time averages since the start
+      summary(1, 4) = cage_avg(1)                    ! time averages since the start
+      summary(1, 5:8) = summary_avg
+      summary(1, 9:10) = cage_avg(2:3)
       call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
                       thermal, [integer ::], [integer ::], slices, 0, re_no, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, ld, acc, perf, [step], summary)
-   contains
-
-      !> The largest Hertz pressure (Pa) of race j's contacts.
-      function contact_pressure(j) result(p_max)
-         integer, intent(in) :: j
-         real(wp) :: p_max(n)
-         p_max = loads%contacts(j, :)%ellipse%max_pressure
-      end function contact_pressure
-
-      !> Film parameter Lambda of race j's contacts (0 where the film is not computed).
-      function film_parameter(j) result(lam)
-         integer, intent(in) :: j
-         real(wp) :: lam(n)
-         lam = no_nan(tribology%film(j, :)*tribology%thermal_factor(j, :))/lp%sigma_rms
-      end function film_parameter
-
    end subroutine write_ball_step
+
+   !> [basic, modified] bearing life (hours) of ball bearing b at one state, from the force
+   !> assembly's loads there, the printed tribology p of its race contacts and each ball's
+   !> orbital speed w_orb (rad/s): the basic life (eqs 73-74, 102, adore_life_ball_life,
+   !> shared with step 0) and the Tallian modified life (eqs 77-109) as step 0 computes it
+   !> (adore_start_ball_step0): film parameter = iso film x thermal reduction factor /
+   !> composite roughness, mu_EHD = the printed traction coefficient, 0 where a contact has
+   !> none (unloaded).
+   function dynamic_lives(b, g, loads, p, w_orb) result(hours2)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(ball_bearing_loads_t), intent(in) :: loads
+      type(contact_print_t), intent(in) :: p
+      real(wp), intent(in) :: w_orb(:)
+      real(wp) :: hours2(2)
+      real(wp) :: lives(size(w_orb), 2), n_race(2), hours(3), q(2, size(w_orb)), a(2, size(w_orb)), m_race(2), psi
+      type(life_params_t) :: lp
+      integer :: j
+      q = loads%contacts%load                     ! contiguous copies (no array temporaries)
+      a = abs(loads%contacts%alpha)
+      call ball_basic_life(b, life_params_t(), q(1, :), a(1, :), q(2, :), a(2, :), w_orb, lives(:, 1), lives(:, 2), &
+                           n_race(1), n_race(2), hours)
+      do j = 1, 2
+         call ball_race_modified_life(lp, lives(:, j), n_race(j), loads%contacts(j, :)%ellipse%max_pressure, &
+                                      no_nan(p%film(j, :)*p%thermal_factor(j, :))/lp%sigma_rms, &
+                                      no_nan(p%coefficient(j, :)), &
+                                      merge(g%mounting%outer_hoop_stress, g%mounting%inner_hoop_stress, j == 1), &
+                                      j == 2, psi, m_race(j))
+      end do
+      hours2 = [hours(1), life_hours(bearing_life(m_race(1), m_race(2), lp%weibull_e_point), &
+                                     (b%speed_inner - b%speed_outer)*rad_s_to_rpm)]
+   end function dynamic_lives
 
    !> The entries of v with NaN replaced by 0.
    pure function no_nan(v) result(w)
@@ -308,10 +321,64 @@ contains
                race_cage(k, 5) = 2.0_wp*lp(k)%clearance
                race_cage(k, 6) = c%power
                land_code(k) = merge(1, 0, c%metallic_load > 0.0_wp)
+               race_cage(k, 3:4) = 0.0_wp                 ! no contact: 0, as step 0 prints
+               if (c%metallic_load > 0.0_wp) race_cage(k, 3:4) = land_angles(c)
             end associate
          end do
       end if
    end subroutine cage_contact_tables
+
+   !> A guide land's [contact angle, attitude angle] (deg) of a metallic contact c: the
+   !> azimuth of its eccentricity direction e_e (from +z towards -y in [0, 360), as the
+   !> pockets' and the races' azimuths), and the attitude angle of journal-bearing theory:
+   !> the angle in the radial plane from the load line (the force of the land on the cage,
+   !> reversed) to e_e, in [0, 360) (pyadore's reading; docs/print-layout.md).
+   pure function land_angles(c) result(a)
+      type(cage_land_geometry_t), intent(in) :: c
+      real(wp) :: a(2), load_azimuth
+      a(1) = modulo(atan2(-c%direction(2), c%direction(3)), 2.0_wp*pi)*rad_to_deg
+      load_azimuth = atan2(c%force_cage(2), -c%force_cage(3))
+      a(2) = modulo(atan2(-c%direction(2), c%direction(3)) - load_azimuth, 2.0_wp*pi)*rad_to_deg
+   end function land_angles
+
+   !> Average RE excursion (m) at one state: the root mean square over the balls of each
+   !> ball centre's distance from its pocket centre, |q| (adore_contact_cage_pocket's
+   !> pocket frame); NaN without cage contacts (pyadore's reading, docs/print-layout.md).
+   real(wp) function pocket_excursion(loads)
+      type(ball_bearing_loads_t), intent(in) :: loads
+      integer :: k
+      pocket_excursion = ieee_value(1.0_wp, ieee_quiet_nan)
+      if (.not. allocated(loads%pockets)) return
+      if (size(loads%pockets) < 1) return
+      pocket_excursion = 0.0_wp
+      do k = 1, size(loads%pockets)
+         pocket_excursion = pocket_excursion + dot_product(loads%pockets(k)%q, loads%pockets(k)%q)
+      end do
+      pocket_excursion = sqrt(pocket_excursion/size(loads%pockets))
+   end function pocket_excursion
+
+   !> Archard's load x sliding speed (N m/s) of the cage's metallic contacts at one state:
+   !> pockets(k) = Q |u| of ball k's pocket, lands(j) = Q |u| of guide land j, each its
+   !> friction power over the friction coefficient (b%cage_friction: pocket, land), with the
+   !> friction's own slip regularisation; 0 where there is no contact or no cage contacts.
+   subroutine cage_wear_sliding(b, loads, pockets, lands)
+      type(bearing_t), intent(in) :: b
+      type(ball_bearing_loads_t), intent(in) :: loads
+      real(wp), intent(out) :: pockets(:), lands(:)
+      integer :: k
+      pockets = 0.0_wp
+      lands = 0.0_wp
+      if (allocated(loads%pockets) .and. b%cage_friction(1) > 0.0_wp) then
+         do k = 1, min(size(pockets), size(loads%pockets))
+            pockets(k) = loads%pockets(k)%power/b%cage_friction(1)
+         end do
+      end if
+      if (allocated(loads%lands) .and. b%cage_friction(2) > 0.0_wp) then
+         do k = 1, min(size(lands), size(loads%lands))
+            lands(k) = loads%lands(k)%power/b%cage_friction(2)
+         end do
+      end if
+   end subroutine cage_wear_sliding
 
    !> Section 4's speed ratios at state s of ball bearing b (step 0's speed_ratios): the mean
    !> ball orbital speed (orbital_speed), the cage's angular speed about its axis (body x)

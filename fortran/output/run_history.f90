@@ -39,7 +39,7 @@ module adore_output_run_history
 
    public :: run_history_t, history_shape, check_history_element, new_ball_history, history_due, record_ball_history, &
              write_history_csv, history_file_name, history_columns_text, element_file_name, beside_file_name, &
-             write_element_file, ball_element_row, add_history_column, set_history_value
+             write_element_file, ball_element_row, add_history_column, set_history_value, set_step0_row
 
    !> Regular rows of a history at most (the stride grows beyond HISTORY_ROWS steps).
    integer, parameter, public :: HISTORY_ROWS = 10000
@@ -342,6 +342,36 @@ contains
       c = findloc(h%names, name, 1)
       if (c > 0) h%values(h%rows, c) = value
    end subroutine set_history_value
+
+   !> Replace the whole-bearing and chosen-element values of h's last row (step 0) with those
+   !> of the step-0 solution the print shows (issue #29): power (W), the mean ball wear and
+   !> the race wear (m**3/s), the cage centre's (y, z) (m) and its whirl and radial velocity
+   !> (m/s), each guide land's contact force land_force(n_lands) (N), the chosen element's
+   !> contact loads, losses (W; NaN unloaded) and contact temperatures (K; NaN unloaded)
+   !> of the outer and inner race and its pocket force (N).  Time, step, bulk temperatures
+   !> and the guide clearance stay (the same at both).
+   subroutine set_step0_row(h, power, wear, race_wear, cage_yz, cage_velocity, land_force, load, loss, temp, &
+                            pocket_force)
+      type(run_history_t), intent(inout) :: h
+      real(wp), intent(in) :: power, wear, race_wear(2), cage_yz(2), cage_velocity(2), land_force(:)
+      real(wp), intent(in) :: load(2), loss(2), temp(2), pocket_force
+      integer :: row, c
+      if (h%rows < 1) return
+      row = h%rows
+      associate (v => h%values)
+         v(row, C_POWER) = power
+         v(row, C_WEAR) = wear
+         v(row, C_WEAR + 1:C_WEAR + 2) = race_wear
+         v(row, C_CAGE:C_CAGE + 1) = cage_yz
+         v(row, C_CAGE + 2:C_CAGE + 3) = cage_velocity
+         v(row, N_FIXED + 1:N_FIXED + min(h%n_lands, size(land_force))) = land_force(1:min(h%n_lands, size(land_force)))
+         c = N_FIXED + h%n_lands
+         v(row, c + 1:c + 2) = load
+         v(row, c + 3:c + 4) = loss
+         v(row, c + 5:c + 6) = temp
+         v(row, c + 7) = pocket_force
+      end associate
+   end subroutine set_step0_row
 
    !> Double the row capacity of h, keeping its rows.
    subroutine grow_history(h)

@@ -87,6 +87,9 @@ contains
          thermal(:, 2) = e%delta_o
          thermal(:, 3) = e%delta_i
          thermal(:, 4:5) = 0.0_wp                      ! rigid races: no race flexing
+         ! Rel Axial Pos: the ball centre from the outer groove curvature-centre plane (as
+         ! the dynamic steps; docs/print-layout.md)
+         thermal(:, 1) = e%x - s%geometry%groove_centre(1, 1)
          thermal(:, 6) = s%temp_rise(1, :)
          thermal(:, 7) = s%temp_rise(2, :)
          thermal(:, 8) = s%contact_temp(1, :)

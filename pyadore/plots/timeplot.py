@@ -125,13 +125,20 @@ def run_style(i: int, marks: bool, color) -> dict:
 def constant_note(ax, panel: Panel, lines: list) -> None:
     """When every series drawn of the run in ``lines`` ([(names, y)]) is constant, say so
     beside the axes (below the legend, never over the data): which series, their values
-    and the panel's reason (a flat line is not a result)."""
-    if not lines or any(np.ptp(y) > 0.0 for _n, y in lines if len(y)):
+    and the panel's reason (a flat line is not a result).  Series constant but for their
+    first row are said constant after step 0: the plot data's step-0 row is the print's
+    quasi-static start (docs/plots.md), which the dynamics may leave at once (a cage
+    centred by its DOF constraint starts where the quasi-static cage is not)."""
+    if not lines:
+        return
+    after_start = any(np.ptp(y) > 0.0 for _n, y in lines if len(y))
+    if after_start and not all(len(y) > 2 and np.ptp(y[1:]) == 0.0 for _n, y in lines if len(y)):
         return
     names = [n for group, _y in lines for n in group]
-    values = sorted({float(y[0]) for _n, y in lines})
+    values = sorted({float(y[-1]) for _n, y in lines if len(y)})
     unit = style.label("", panel.unit).strip().strip("()")
-    text = (f"{', '.join(names)}: constant, {' and '.join(f'{v:.6g}' for v in values)} {unit}, throughout the run"
+    when = "after step 0 (the quasi-static start)" if after_start else "throughout the run"
+    text = (f"{', '.join(names)}: constant, {' and '.join(f'{v:.6g}' for v in values)} {unit}, {when}"
             + (f"; {panel.constant_reason}" if panel.constant_reason else ""))
     ax.text(1.01, 0.0, textwrap.fill(text, style.LEGEND_WIDTH), transform=ax.transAxes, ha="left", va="bottom",
             fontsize=8.5, bbox={"boxstyle": "round", "facecolor": "#fff8dc", "edgecolor": "0.6"})

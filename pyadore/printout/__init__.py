@@ -9,7 +9,18 @@ engine).
 from .model import (NOT_COMPUTED, NOT_COMPUTED_VALUE, OVERFLOW, OVERFLOW_VALUE, UNKNOWN, UNKNOWN_VALUE,
                     PrintFormatError, PrintRun, Step, parse_field, parse_number)
 from .reader import read_print
-from .writer import format_step, format_table, format_value
+
+_WRITER = ("format_step", "format_table", "format_value")
+
+
+def __getattr__(name: str):
+    """The writer's functions, imported on first use (the writer needs pandas; reading a
+    print plainly does not: a sweep worker starts without it)."""
+    if name in _WRITER:
+        from . import writer
+
+        return getattr(writer, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
     "read_print", "PrintRun", "Step", "PrintFormatError", "UNKNOWN", "OVERFLOW", "UNKNOWN_VALUE",

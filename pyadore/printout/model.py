@@ -14,7 +14,10 @@ import math
 import re
 from dataclasses import dataclass, field
 
-import pandas as pd
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # pandas is imported where frames are built (reader), not to read a print plainly
+    import pandas as pd
 
 from ..errors import AdoreInputError
 
@@ -122,7 +125,7 @@ class Step:
     tables: dict = field(default_factory=dict)
     markers: dict = field(default_factory=dict)
 
-    def table(self, name: str) -> pd.DataFrame:
+    def table(self, name: str) -> "pd.DataFrame":
         """The DataFrame of table ``name`` (KeyError naming the available tables if absent)."""
         try:
             return self.tables[name]
@@ -169,3 +172,38 @@ class PrintRun:
             return self.steps[number]
         except KeyError:
             raise KeyError(f"{self.path}: no step {number}; printed steps are {self.step_numbers}") from None
+
+
+class PlainTable:
+    """A print table without pandas (``read_print(path, frames=False)``): rows by label.
+    ``t.loc[row, column]`` a value (KeyError for an unknown row, ValueError for an unknown
+    column), ``t.loc[[row, ...]]`` those rows, ``t[column]`` the column's values in row
+    order, ``t.index`` the row labels, ``t.columns`` the column names."""
+
+    def __init__(self, rows: list, index: list, columns: list, index_name: str | None = None) -> None:
+        self.index = list(index)
+        self.columns = list(columns)
+        self.index_name = index_name
+        self._rows = dict(zip(self.index, rows))
+
+    class _Loc:
+        def __init__(self, table: "PlainTable") -> None:
+            self.t = table
+
+        def __getitem__(self, key):
+            t = self.t
+            if isinstance(key, list):
+                return PlainTable([t._rows[k] for k in key], key, t.columns, t.index_name)
+            row, column = key
+            return t._rows[row][t.columns.index(column)]
+
+    @property
+    def loc(self) -> "PlainTable._Loc":
+        return PlainTable._Loc(self)
+
+    def __getitem__(self, column: str) -> list:
+        j = self.columns.index(column)
+        return [self._rows[k][j] for k in self.index]
+
+    def __len__(self) -> int:
+        return len(self.index)

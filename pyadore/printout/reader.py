@@ -13,11 +13,9 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-import pandas as pd
-
 from . import layout as L
 from .echo import parse_echo
-from .model import NUMBER_TOKEN, PrintFormatError, PrintRun, Step, parse_field, parse_number
+from .model import NUMBER_TOKEN, PlainTable, PrintFormatError, PrintRun, Step, parse_field, parse_number
 
 _BANNER_INFO = re.compile(r"Bearing Type\s*=\s*(\S+)\s+Program\s+Mode\s*=\s*(\S+)\s+Run Id\s*=\s*(.*?)\s*\*?\s*$")
 _TERMINATION = re.compile(r"Last Step Number\s*=\s*(\S+)\s+Final Time\s*=\s*(\S+)")
@@ -32,9 +30,24 @@ def _norm(text: str) -> str:
 
 
 class _Reader:
-    def __init__(self, path: Path, lines: list[str]) -> None:
+    def __init__(self, path: Path, lines: list[str], frames: bool = True, echo: bool = True) -> None:
         self.path = path
         self.lines = lines
+        self.frames = frames
+        self.echo = echo
+
+    def frame(self, rows: list, index: list, name: str, columns: list):
+        """A table: a pandas DataFrame (index ``name``; tuples make a MultiIndex of element
+        and end), or a PlainTable when the reader builds no frames."""
+        if not self.frames:
+            return PlainTable(rows, index, columns, name)
+        import pandas as pd
+
+        if index and isinstance(index[0], tuple):
+            idx = pd.MultiIndex.from_tuples(index, names=["element", "end"])
+        else:
+            idx = pd.Index(index, name=name)
+        return pd.DataFrame(rows, index=idx, columns=columns)
 
     def fail(self, lineno: int, expected: str, found: str | None = None) -> PrintFormatError:
         found = self.lines[lineno].strip() if found is None and lineno < len(self.lines) else (found or "end of file")
@@ -78,7 +91,7 @@ class _Reader:
         return vals, marks
 
     # -- tables ---------------------------------------------------------------------------
-    def table(self, i: int, spec: L.TableSpec, name: str) -> tuple[int, pd.DataFrame, pd.DataFrame]:
+    def table(self, i: int, spec: L.TableSpec, name: str) -> tuple:
         """Parse the table whose first heading line is line ``i``; return (next line, values, markers)."""
         i += len(spec.headings)
         index, rows, marks = [], [], []
@@ -109,15 +122,14 @@ class _Reader:
         if not rows:
             raise self.fail(i, f"rows of {what}")
         cols = list(spec.codes) + list(spec.columns)
-        if spec.label == "re_end":
-            idx = pd.MultiIndex.from_tuples(index, names=["element", "end"])
-        else:
-            idx = pd.Index(index, name={"int": "element", "text": "body", "step": "step"}[spec.label])
+        idx_name = None
+        if spec.label != "re_end":
+            idx_name = {"int": "element", "text": "body", "step": "step"}[spec.label]
             if name.startswith("slices"):
-                idx.name = "slice"
+                idx_name = "slice"
             elif name == "race_cage":
-                idx.name = "land"
-        return i, pd.DataFrame(rows, index=idx, columns=cols), pd.DataFrame(marks, index=idx, columns=cols)
+                idx_name = "land"
+        return i, self.frame(rows, index, idx_name, cols), self.frame(marks, index, idx_name, cols)
 
     def section3(self, i: int, step: Step) -> int:
         """Section 3: the force/moment rows, acceleration rows and the labelled cells on the right."""
@@ -150,13 +162,11 @@ class _Reader:
         for name, got, spec, rows in (("loads", loads, L.LOADS, _LOAD_ROWS), ("accelerations", accs, L.ACCELERATIONS, _ACC_ROWS)):
             if not got:
                 raise self.fail(i, f"the {name} rows of section 3 ({', '.join(rows)})")
-            idx = pd.Index(list(got), name="body")
-            step.tables[name] = pd.DataFrame([v[0] for v in got.values()], index=idx, columns=list(spec.columns))
-            step.markers[name] = pd.DataFrame([v[1] for v in got.values()], index=idx, columns=list(spec.columns))
+            step.tables[name] = self.frame([v[0] for v in got.values()], list(got), "body", list(spec.columns))
+            step.markers[name] = self.frame([v[1] for v in got.values()], list(got), "body", list(spec.columns))
         cols = [c for c in L.PERFORMANCE_COLUMNS if c in perf]
-        idx = pd.Index(["bearing"], name="body")
-        step.tables["performance"] = pd.DataFrame([[perf[c][0] for c in cols]], index=idx, columns=cols)
-        step.markers["performance"] = pd.DataFrame([[perf[c][1] for c in cols]], index=idx, columns=cols)
+        step.tables["performance"] = self.frame([[perf[c][0] for c in cols]], ["bearing"], "body", cols)
+        step.markers["performance"] = self.frame([[perf[c][1] for c in cols]], ["bearing"], "body", cols)
         return i
 
     # -- whole file -----------------------------------------------------------------------
@@ -188,7 +198,8 @@ class _Reader:
                 run.bearing_type, mode, run.run_id = m.group(1), m.group(2), m.group(3).strip()
                 run.program_mode = int(mode) if mode.isdigit() else None
                 break
-        run.echo = parse_echo(self.lines, start, first_step, self.fail)
+        if self.echo:
+            run.echo = parse_echo(self.lines, start, first_step, self.fail)
         i, step, section = first_step, None, None
         spec_by_key = {s.key: s for s in L.ALL_TABLES if s.key}
         while i < len(self.lines):
@@ -277,8 +288,13 @@ class _Reader:
         return i
 
 
-def read_print(path) -> PrintRun:
+def read_print(path, frames: bool = True, echo: bool = True) -> PrintRun:
     """Read the print file at ``path`` (golden or engine output) into a :class:`PrintRun`.
+
+    frames: the tables as pandas DataFrames (default), or with ``frames=False`` as
+    :class:`~pyadore.printout.model.PlainTable` rows (no pandas imported: a sweep worker
+    reads its case's key results so, and starts without pandas).  echo: parse the input
+    echo (``echo=False``: ``PrintRun.echo`` stays empty, for a reader of the steps only).
 
     Raises PrintFormatError (an AdoreInputError) when the file is missing, unreadable,
     not text, or departs from docs/print-layout.md; the message names file and line.
@@ -292,4 +308,4 @@ def read_print(path) -> PrintRun:
         text = raw.decode("ascii")
     except UnicodeDecodeError as exc:
         raise PrintFormatError(f"{p}: not a text print file (byte {exc.start} is not ASCII)") from None
-    return _Reader(p, text.splitlines()).run()
+    return _Reader(p, text.splitlines(), frames, echo).run()

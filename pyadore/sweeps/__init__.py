@@ -7,9 +7,18 @@ writes, ``results`` takes the key results from a print file, ``runner`` ties the
 
 from __future__ import annotations
 
-from .grid import SweepError
-from .results import RESULT_COLUMNS
-from .runner import read_summary, sweep
-
 __all__ = ["sweep", "read_summary", "SweepError", "RESULT_COLUMNS"]
+
+_LAZY = {"sweep": ".runner", "read_summary": ".runner", "SweepError": ".grid", "RESULT_COLUMNS": ".results"}
+
+
+def __getattr__(name: str):
+    """The package's names, imported on first use: a local worker process
+    (``python -m pyadore.sweeps.worker``) imports this package but needs neither the deck
+    reader nor the runner (a shorter serial start-up, docs/sweeps.md "Speed")."""
+    if name in _LAZY:
+        import importlib
+
+        return getattr(importlib.import_module(_LAZY[name], __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 

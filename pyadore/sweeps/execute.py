@@ -73,7 +73,8 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                 # the sweep has its own progress bar
                 result = run(deck, steps=steps, out=prt, progress=False, **(options or {}))
                 out["notes"] = list(result.notes)
-                out["results"] = key_results(read_print(prt))
+                # plain tables of the steps: the worker needs no pandas for a run without time steps
+                out["results"] = key_results(read_print(prt, frames=False, echo=False))
                 out["results"].update(mean_results(result.dataset, guide=_guide(deck_text)))
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
                 if result.history_path is not None:
