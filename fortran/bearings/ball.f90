@@ -18,6 +18,8 @@ module adore_bearings_ball
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
+   use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
+                                      BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
@@ -61,6 +63,9 @@ module adore_bearings_ball
       procedure :: new_history => ball_new_history
       procedure :: record_row => ball_record_row
       procedure :: mount => ball_mount
+      procedure :: n_balance => ball_n_balance
+      procedure :: balance_values => ball_balance
+      procedure :: balance_text => ball_balance_text
    end type ball_kind_t
 
 contains
@@ -260,6 +265,56 @@ contains
                               flash=h%printed)
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
    end subroutine ball_record_row
+
+   integer function ball_n_balance(self)
+      class(ball_kind_t), intent(in) :: self
+      ball_n_balance = N_BALANCE + 0*self%bearing%n_elements
+   end function ball_n_balance
+
+   !> adore_forces_ball_power's balance values at the last evaluated state (the equations
+   !> of motion's loads, the condition's applied load).
+   subroutine ball_balance(self, v)
+      class(ball_kind_t), intent(in) :: self
+      real(wp), intent(out) :: v(:)
+      v = ball_balance_values(self%eom%bearing, self%eom%state, self%eom%loads)
+   end subroutine ball_balance
+
+   !> The run note's balance line over the window [window(1), window(2)] (tau) from the
+   !> window's means of the balance values and their first and last values: drive power
+   !> against the dissipation (contacts and cage, contact damping) and the mechanical
+   !> energy's rate of change (adore_forces_ball_power: drive = dissipation + dE/dt); the
+   !> inner race's mean contact force against the applied load and its weight (the residual
+   !> is m dv/dt averaged), the outer race's against the housing's share.
+   subroutine ball_balance_text(self, window, mean, first, last, text)
+      class(ball_kind_t), intent(in) :: self
+      real(wp), intent(in) :: window(2), mean(:), first(:), last(:)
+      character(len=:), allocatable, intent(out) :: text
+      character(len=700) :: buf
+      real(wp) :: seconds, dissipation, rate, carried(3), housing(3)
+      integer :: stat
+      associate (b => self%eom%bearing)
+         seconds = (window(2) - window(1))*self%time_scale
+         dissipation = mean(BAL_RACE_HEAT) + mean(BAL_DAMPING) + mean(BAL_CAGE_WORK)
+         rate = (last(BAL_ENERGY) - first(BAL_ENERGY))/seconds
+         ! what the inner race's contacts carry: the applied load and the race's weight; the
+         ! outer race's: that and the balls' weight (the cage's own constraint holds its weight)
+         carried = b%force + b%mass(BODY_INNER)*b%gravity
+         housing = carried + b%n_elements*b%mass(BODY_ELEMENT)*b%gravity
+         write (buf, "(a,es10.4,a,es10.4,a,f0.2,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,"// &
+                "a,f0.5,a,3es12.4,a,3es12.4,a,es10.3,a,3es12.4,a,3es12.4,a,es10.3,a)", iostat=stat) &
+            "balance over the last half of the run (t ", window(1)*self%time_scale, " to ", window(2)*self%time_scale, &
+            " s, ", seconds*abs(b%speed_inner - b%speed_outer)/(2.0_wp*pi), " shaft revolutions): drive power ", &
+            mean(BAL_DRIVE), " W, dissipation ", dissipation, " W (race contacts ", mean(BAL_RACE_HEAT), &
+            " W, contact damping ", mean(BAL_DAMPING), " W, cage contacts ", mean(BAL_CAGE_WORK), &
+            " W of which friction heat ", mean(BAL_CAGE_HEAT), " W), energy change ", rate, " W, drive/dissipation ", &
+            mean(BAL_DRIVE)/dissipation, "; inner race contact force", mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2), &
+            " N against applied load and weight", carried, " N, residual ", &
+            norm2(mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2) + carried), " N; outer race contact force", &
+            mean(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2), " N against", -housing, " N, residual ", &
+            norm2(mean(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2) - housing), " N"
+         text = trim(buf)
+      end associate
+   end subroutine ball_balance_text
 
    !> The equations of motion in self%condition: the geometry mounted at its temperatures
    !> (adore_geometry_mounted: fits, growth, clearance from the initial temperatures), its

@@ -65,6 +65,8 @@ module adore_forces_ball_bearing
       type(ball_race_geometry_t), allocatable :: contacts(:, :)
       type(contact_traction_t), allocatable :: traction(:, :)  !< zero where unloaded or traction off
       real(wp), allocatable :: heat(:, :)                   !< contact power loss (W)
+      !> work rate of the race contacts' normal damping, sum of beta k d(delta)/dt**2 (W, >= 0)
+      real(wp) :: damping_power = 0.0_wp
       type(cage_pocket_geometry_t), allocatable :: pockets(:)  !< ball k in pocket k (cage flag on)
       type(cage_land_geometry_t), allocatable :: lands(:)      !< per guide land (cage flag on)
       logical :: abnormal = .false.                         !< an abnormal cage contact (4.4.12)
@@ -226,7 +228,7 @@ contains
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: t
-      real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6), beta
+      real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6), beta, q_n, rate
       integer :: n, k, j
       logical :: with_traction, with_2d, with_reference
 
@@ -260,7 +262,9 @@ contains
             end if
             associate (c => loads%contacts(j, k), ball => s%elements(k)%position, race => s%races(j)%position)
                if (.not. (c%load > 0.0_wp)) cycle
-               f_n = normal_force(c, j, k)*c%normal
+               call normal_force(c, j, k, q_n, rate)
+               f_n = q_n*c%normal
+               loads%damping_power = loads%damping_power + (q_n - c%load)*rate
                loads%elements(k)%force = loads%elements(k)%force - f_n
                loads%races(j)%force = loads%races(j)%force + f_n
                loads%races(j)%moment = loads%races(j)%moment + cross(c%point - race, f_n)
@@ -296,20 +300,24 @@ contains
 
    contains
 
-      !> Normal force (N) of race contact c (race j, ball k): the Hertz load plus the contact
-      !> damping beta (1.5 Q / delta) d(delta)/dt, never negative.
-      real(wp) function normal_force(c, j, k)
+      !> Normal force q_n (N) of race contact c (race j, ball k): the Hertz load plus the
+      !> contact damping beta (1.5 Q / delta) d(delta)/dt, never negative; rate: the approach
+      !> rate d(delta)/dt (m/s; 0 without damping, where it is not needed).
+      subroutine normal_force(c, j, k, q_n, rate)
          type(ball_race_geometry_t), intent(in) :: c
          integer, intent(in) :: j, k
+         real(wp), intent(out) :: q_n, rate
          real(wp) :: v_rel(3)
-         normal_force = c%load
+         q_n = c%load
+         rate = 0.0_wp
          if (beta <= 0.0_wp .or. .not. (c%delta > 0.0_wp)) return
          associate (race => s%races(j), ball => s%elements(k))
             v_rel = ball%velocity - race%velocity - &
                     cross(matmul(quat_matrix(race%attitude), race%omega), ball%position - race%position)
          end associate
-         normal_force = max(c%load + beta*1.5_wp*c%load/c%delta*dot_product(v_rel, c%normal), 0.0_wp)
-      end function normal_force
+         rate = dot_product(v_rel, c%normal)
+         q_n = max(c%load + beta*1.5_wp*c%load/c%delta*rate, 0.0_wp)
+      end subroutine normal_force
 
       !> The pocket and guide-land contacts' loads (module header).
       subroutine add_cage_contacts()
