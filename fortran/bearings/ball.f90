@@ -142,6 +142,7 @@ contains
                                int_method=method)
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
+      self%eom%rolling_resistance = self%options%rolling_resistance
       ! the run's degrees of freedom are the condition's from now on (report 4.4.6)
       self%condition%constraints = default_constraints(self%eom%cage_spin_only)
       self%eom%constraints = self%condition%constraints
@@ -176,6 +177,8 @@ contains
             text = text//"  BALL/RACE CONTACT DAMPING "//trim(adjustl(num))//" S (STIFFNESS-PROPORTIONAL, "// &
                    "docs/dynamics.md)"//lf
          end if
+         if (s%rolling_resistance) text = text//"  EHD ROLLING RESISTANCE OF THE RACE CONTACTS (HOUPERT; "// &
+            "docs/tribology.md)"//lf
          if (.not. s%traction_2d) text = text//"  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE ROLLING "// &
             "DIRECTION ONLY, REPORT EQ 1): DEVELOPER OPTION"//lf
       end associate
@@ -196,6 +199,7 @@ contains
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
+         if (s%rolling_resistance) text = text//"; EHD rolling resistance of the race contacts"
       end associate
    end subroutine ball_run_note
 

@@ -80,6 +80,9 @@ module adore_dynamics_ball_system
       !> state (adore_state_bearing_state's orbit): (x, r, phi) and their rates instead of
       !> inertial position and velocity (issue #30); the physics is the same
       logical :: orbit_frame = .false.
+      !> the race contacts' EHD rolling resistance (Houpert, Harris & Kotzalas; ball_bearing_loads'
+      !> rolling): off by default, as in ADORE 5.0 (docs/tribology.md, "Rolling resistance")
+      logical :: rolling_resistance = .false.
       !> (2, n): when allocated, every contact's Hertz stiffness frozen at these values
       !> (N/m**1.5) instead of K(alpha): a verification option, the normal loads then derive
       !> from an energy (fortran/tests/test_dynamics.f90)
@@ -125,17 +128,19 @@ contains
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
-                                 self%contact_damping, self%land_film, self%cage_spin_only)
+                                 self%contact_damping, self%land_film, self%cage_spin_only, rolling=self%rolling_resistance)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
-                                 land_film=self%land_film, constraints=self%constraints)
+                                 land_film=self%land_film, constraints=self%constraints, &
+                                 rolling=self%rolling_resistance)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
-                                 land_film=self%land_film, cage_spin_only=self%cage_spin_only)
+                                 land_film=self%land_film, cage_spin_only=self%cage_spin_only, &
+                                 rolling=self%rolling_resistance)
       end if
       if (allocated(self%failure)) then
          ! a state outside the contact models' range (e.g. a stage of a too long step that

@@ -15,6 +15,7 @@ module adore_forces_race_contact
                                    print_slip_node
    use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
+                                   rolling_resistance_force, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE, viscosity_in_range
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_strip_traction, &
@@ -27,7 +28,8 @@ module adore_forces_race_contact
    private
 
    public :: ehd_traction_model, wall_temperature, wall_rheology, thermal_properties, lubricant_film, &
-             ehd_film_present, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip
+             ehd_film_present, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip, &
+             rolling_resistance
 
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
@@ -119,6 +121,32 @@ contains
                                      temperature_viscosity_coefficient(b%lubricant, t_in), u, &
                                      b%lubricant%conductivity), t%centre_slip/t%rolling_speed)
    end subroutine lubricant_film
+
+   !> The EHD rolling resistance force f_r (N) of a race contact with kinematics t (its
+   !> entraining speed and R_x), ellipticity k_ell, load q (N), maximum pressure p_h (Pa) on
+   !> race (BODY_OUTER/INNER) at bulk temperatures temperature (K): rolling_resistance_force
+   !> with the inlet viscosity at the wall temperature, reduced by the film's inlet-shear
+   !> thermal factor phi_T (lubricant_film; docs/tribology.md, "Rolling resistance"); 0
+   !> without a lubricant or entraining speed.
+   subroutine rolling_resistance(b, temperature, t, k_ell, q, p_h, race, f_r, error)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      type(contact_traction_t), intent(in) :: t
+      real(wp), intent(in) :: k_ell, q, p_h
+      integer, intent(in) :: race
+      real(wp), intent(out) :: f_r
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: h, phi, e_prime
+      f_r = 0.0_wp
+      if (b%lubricant_code == 0 .or. t%rolling_speed == 0.0_wp .or. .not. q > 0.0_wp) return
+      call lubricant_film(b, temperature, t, k_ell, q, p_h, race, h, phi, error)
+      if (allocated(error)) return
+      e_prime = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
+                        (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
+      f_r = phi*rolling_resistance_force(t%rx, k_ell, t%rolling_speed, q, e_prime, &
+                                         dynamic_viscosity(b%lubricant, wall_temperature(temperature, race), 0.0_wp), &
+                                         b%lubricant%alpha)
+   end subroutine rolling_resistance
 
    !> True when a race contact has an EHD film to shear: the isothermal film h (m) times
    !> the thermal reduction factor phi is positive and finite.  Without one (no entraining
