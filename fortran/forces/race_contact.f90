@@ -36,6 +36,13 @@ module adore_forces_race_contact
    integer, parameter, public :: PRINT_GAUSS = 4
    !> Gauss points per slip zone and across each strip of the EHD traction's loss and force
    integer, parameter, public :: EHD_GAUSS = 16, EHD_STRIP = 24
+   !> The thinnest film (m) the EHD traction shears: 1 nm, below any ground surface's
+   !> roughness (a film parameter h / sigma << 1 is boundary lubrication).  The Newtonian
+   !> film's traction slope grows as 1/h, so a film of picometres (a ball's micro-motion on
+   !> a shaft at rest entrains a little oil) made the traction stiff without bound and the
+   !> time steps of a shaft at rest failed (docs/operating-points.md); such contacts take
+   !> the deck's curve.  Films of the decks' running speeds are 1e-8 ... 1e-6 m.
+   real(wp), parameter, public :: MIN_EHD_FILM = 1.0e-9_wp
    !> Rec 10.0 traction_model of the EHD film traction (report Table 5, model 3)
    integer, parameter, public :: TRACTION_EHD = 3
 
@@ -149,13 +156,14 @@ contains
    end subroutine rolling_resistance
 
    !> True when a race contact has an EHD film to shear: the isothermal film h (m) times
-   !> the thermal reduction factor phi is positive and finite.  Without one (no entraining
-   !> speed: a shaft at rest; or Gupta's fit at 0 beyond its range of thermal loading, a
-   !> lubricant far too viscous for the speed) traction model 3 takes the deck's traction
-   !> curve for that contact (docs/tribology.md, "No EHD film").
+   !> the thermal reduction factor phi is at least MIN_EHD_FILM and finite.  Without one (no
+   !> or almost no entraining speed: a shaft at rest, a ball's micro-motion at rest; or
+   !> Gupta's fit at 0 beyond its range of thermal loading, a lubricant far too viscous for
+   !> the speed) traction model 3 takes the deck's traction curve for that contact
+   !> (docs/tribology.md, "No EHD film").
    pure logical function ehd_film_present(h, phi)
       real(wp), intent(in) :: h, phi
-      ehd_film_present = h*phi > 0.0_wp .and. h*phi < huge(1.0_wp)
+      ehd_film_present = h*phi >= MIN_EHD_FILM .and. h*phi < huge(1.0_wp)
    end function ehd_film_present
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):
