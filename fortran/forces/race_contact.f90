@@ -104,8 +104,7 @@ contains
       character(len=400) :: buf
       integer :: stat
 
-      e_prime = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
-                        (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
+      e_prime = reduced_modulus(b, race)
       t_in = wall_temperature(temperature, race)
       if (.not. viscosity_in_range(b%lubricant, t_in)) then
          write (buf, "(3a,es10.3,a)", iostat=stat) "lubricant ", trim(b%lubricant%name), " at ", t_in, &
@@ -148,12 +147,20 @@ contains
       if (b%lubricant_code == 0 .or. t%rolling_speed == 0.0_wp .or. .not. q > 0.0_wp) return
       call lubricant_film(b, temperature, t, k_ell, q, p_h, race, h, phi, error)
       if (allocated(error)) return
-      e_prime = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
-                        (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
+      e_prime = reduced_modulus(b, race)
       f_r = phi*rolling_resistance_force(t%rx, k_ell, t%rolling_speed, q, e_prime, &
                                          dynamic_viscosity(b%lubricant, wall_temperature(temperature, race), 0.0_wp), &
                                          b%lubricant%alpha)
    end subroutine rolling_resistance
+
+   !> E' = 2 / ((1 - nu1**2)/E1 + (1 - nu2**2)/E2) (Pa) of the rolling element on race
+   !> (BODY_OUTER/INNER): the Hamrock-Dowson reduced modulus (adore_tribology_film).
+   pure real(wp) function reduced_modulus(b, race)
+      type(bearing_t), intent(in) :: b
+      integer, intent(in) :: race
+      reduced_modulus = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
+                                (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
+   end function reduced_modulus
 
    !> True when a race contact has an EHD film to shear: the isothermal film h (m) times
    !> the thermal reduction factor phi is at least MIN_EHD_FILM and finite.  Without one (no

@@ -83,6 +83,7 @@ program test_dynamics
    call test_power_identity("appendix_c_ball.inp", .true., .false., .true.)
    call test_power_identity("appendix_c_ball.inp", .true., .true., .false.)
    call test_power_identity("examples/deep_groove_radial.inp", .true., .true., .true.)
+   call test_power_identity("examples/deep_groove_radial.inp", .true., .true., .true., rolling=.true.)
    call test_orbit_averages_match_the_quasi_static_equilibrium()
    call test_accuracy_against_a_tight_run()
    call test_block_jacobian_against_finite_differences()
@@ -295,11 +296,12 @@ contains
    !> from its step-0 start, every ball's and the cage's speeds and the inner race's
    !> velocity disturbed (slip, approach), K frozen so that the normal loads derive from the
    !> Hertz energy (its rate by central differences along the state's velocities).
-   !> two_d, cage, gyro: the run's physics switched (the 2-D traction, the cage contacts,
-   !> the gyroscopic restraint).
-   subroutine test_power_identity(deck, two_d, cage, gyro)
+   !> two_d, cage, gyro, rolling: the run's physics switched (the 2-D traction, the cage
+   !> contacts, the gyroscopic restraint, the EHD rolling resistance).
+   subroutine test_power_identity(deck, two_d, cage, gyro, rolling)
       character(len=*), intent(in) :: deck
       logical, intent(in) :: two_d, cage, gyro
+      logical, intent(in), optional :: rolling     !< the EHD rolling resistance couple on
       type(bearing_t) :: b
       type(mounted_geometry_t) :: g
       type(ball_step0_t) :: s0
@@ -313,19 +315,13 @@ contains
       integer :: k, flag
 
       write (name, "(3a,l1,a,l1,a,l1)") "power identity ", deck, " 2d ", two_d, " cage ", cage, " gyro ", gyro
-      call read_bearing(decks//"/"//deck, b, error)
-      call check(.not. allocated(error), trim(name)//": read the deck")
-      if (allocated(error)) return
-      g = mount_geometry(b, b%temperature)
-      call solve_ball_step0(b, s0, error)
-      call check(.not. allocated(error), trim(name)//": step 0")
-      if (allocated(error)) return
-      call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error)
-      call check(.not. allocated(error), trim(name)//": dynamics set up")
+      if (present(rolling)) name = trim(name)//" rolling resistance"
+      call appendix_c_dynamics(trim(name), b, g, s0, sys, it, y, error, deck)
       if (allocated(error)) return
       sys%traction_2d = two_d
       sys%cage = cage
       sys%gyro_restraint = gyro
+      if (present(rolling)) sys%rolling_resistance = rolling
       allocate (dydt(size(y)))
       s = new_bearing_state(b%n_elements)
       call unpack_state(y, 0.0_wp, s)
@@ -467,7 +463,7 @@ contains
    !> Appendix C's dynamics as a run starts it: the deck read, mounted, its step 0 solved and
    !> the system and integrator of start_ball_dynamics (the run's defaults); each stage
    !> checked under the label `what`.
-   subroutine appendix_c_dynamics(what, b, g, s0, sys, it, y, error)
+   subroutine appendix_c_dynamics(what, b, g, s0, sys, it, y, error, deck)
       character(len=*), intent(in) :: what
       type(bearing_t), intent(out) :: b
       type(mounted_geometry_t), intent(out) :: g
@@ -476,8 +472,13 @@ contains
       type(integrator_t), intent(out) :: it
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
-      call check(.not. allocated(error), what//": read Appendix C")
+      character(len=*), intent(in), optional :: deck   !< another deck of decks/ (path below it)
+      if (present(deck)) then
+         call read_bearing(decks//"/"//deck, b, error)
+      else
+         call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      end if
+      call check(.not. allocated(error), what//": read the deck")
       if (allocated(error)) return
       g = mount_geometry(b, b%temperature)
       call solve_ball_step0(b, s0, error)
