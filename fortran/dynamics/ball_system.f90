@@ -13,6 +13,7 @@ module adore_dynamics_ball_system
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, engine_error
+   use adore_core_strings, only: itoa
    use adore_core_rotation, only: quat_from_rotation_vector
    use adore_model_bearing, only: BODY_ELEMENT, bearing_t
    use adore_model_condition, only: dof_constraints_t
@@ -155,7 +156,10 @@ contains
       dydt = self%time_scale*dydt
       flag = DERIV_OK
       ! an abnormal cage contact (report 4.4.12): the integrator retries with a smaller step
-      if (self%loads%abnormal) flag = DERIV_REJECT_STEP
+      if (self%loads%abnormal) then
+         flag = DERIV_REJECT_STEP
+         self%failure_reason = abnormal_cage_contact(self%loads)
+      end if
       if (.not. all(ieee_is_finite(dydt))) then
          call engine_error(self%failure, "equations of motion: non-finite rates of "// &
                            trim(body_name(size(self%state%elements), findloc(ieee_is_finite(dydt), .false., 1)))// &
@@ -220,6 +224,31 @@ contains
          st%cage%omega = [c%angular_speed, 0.0_wp, 0.0_wp]
       end associate
    end function initial_ball_state
+
+   !> Which cage contact of loads is abnormal (report 4.4.12): "ball k's pocket" or "guide
+   !> land k", with its interference over the clearance it is measured against.
+   function abnormal_cage_contact(loads) result(text)
+      type(ball_bearing_loads_t), intent(in) :: loads
+      character(len=:), allocatable :: text
+      integer :: k
+      text = "an abnormal cage contact"
+      if (allocated(loads%pockets)) then
+         do k = 1, size(loads%pockets)
+            if (loads%pockets(k)%abnormal) then
+               text = text//": ball "//itoa(k)//"'s pocket"
+               return
+            end if
+         end do
+      end if
+      if (allocated(loads%lands)) then
+         do k = 1, size(loads%lands)
+            if (loads%lands(k)%abnormal) then
+               text = text//": guide land "//itoa(k)
+               return
+            end if
+         end do
+      end if
+   end function abnormal_cage_contact
 
    !> The integration method of the ball dynamics for the deck's Rec 1 int_method (INT METHOD):
    !> 5, the value of both of the report's decks, is the additive (IMEX) Runge-Kutta method

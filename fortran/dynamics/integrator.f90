@@ -326,6 +326,8 @@ contains
          if (flag == DERIV_REJECT_STEP) then
             self%stats%rejected_flag = self%stats%rejected_flag + 1
             why = "the derivative refused the step (abnormal contact, report 4.4.12)"
+            ! its reason now: a Jacobian taken before the next attempt evaluates anew
+            if (allocated(deriv%failure_reason)) why = why//": "//deriv%failure_reason
             fac = flag_cut
          else if (.not. ieee_is_finite(err)) then
             self%stats%rejected_nonfinite = self%stats%rejected_nonfinite + 1
@@ -354,7 +356,7 @@ contains
          end if
          if (h <= h_min) then
             call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min)", &
-                            t, h, ": "//why, deriv=deriv)
+                            t, h, ": "//why)
             return
          end if
          h = max(fac*h, h_min)
