@@ -158,7 +158,7 @@ contains
       ! an abnormal cage contact (report 4.4.12): the integrator retries with a smaller step
       if (self%loads%abnormal) then
          flag = DERIV_REJECT_STEP
-         self%failure_reason = abnormal_cage_contact(self%loads)
+         call abnormal_cage_contact(self%loads, self%failure_reason)
       end if
       if (.not. all(ieee_is_finite(dydt))) then
          call engine_error(self%failure, "equations of motion: non-finite rates of "// &
@@ -226,10 +226,10 @@ contains
    end function initial_ball_state
 
    !> Which cage contact of loads is abnormal (report 4.4.12): "ball k's pocket" or "guide
-   !> land k", with its interference over the clearance it is measured against.
-   function abnormal_cage_contact(loads) result(text)
+   !> land k" (a subroutine: no deferred-length function result, adore_core_strings).
+   subroutine abnormal_cage_contact(loads, text)
       type(ball_bearing_loads_t), intent(in) :: loads
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       integer :: k
       text = "an abnormal cage contact"
       if (allocated(loads%pockets)) then
@@ -248,7 +248,7 @@ contains
             end if
          end do
       end if
-   end function abnormal_cage_contact
+   end subroutine abnormal_cage_contact
 
    !> The integration method of the ball dynamics for the deck's Rec 1 int_method (INT METHOD):
    !> 5, the value of both of the report's decks, is the additive (IMEX) Runge-Kutta method
