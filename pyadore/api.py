@@ -38,6 +38,17 @@ class Result:
     notes: list[str] = field(default_factory=list)
     #: time steps integrated after step 0 (0: the print ends after step 0)
     steps_integrated: int = 0
+    #: the run's balances over the last half of a completed time integration (issue #28;
+    #: docs/operating-points.md, "Balances"): ``window_s`` (start, end), ``revolutions``,
+    #: ``drive_power_W``, ``dissipation_W`` (race contacts' heat, their damping, and what
+    #: the cage contacts take), ``race_heat_W``, ``damping_W``, ``cage_work_W``,
+    #: ``cage_heat_W`` (the cage contacts' friction heat, part of the print's power loss),
+    #: ``energy_rate_W`` (mechanical energy's mean rate),
+    #: ``drive_ratio`` (drive / dissipation), ``inner_force_N`` and ``inner_carried_N``
+    #: (the inner race's mean contact force and the applied load plus its weight),
+    #: ``inner_residual_N``, ``outer_force_N``, ``outer_expected_N``, ``outer_residual_N``;
+    #: None without time steps or for a run that stopped early
+    balance: dict | None = None
     #: the time history the run recorded (docs/plots.md: index ``time_s``, column ``step``,
     #: SI columns), the same as its plot-data file :attr:`history_path`; None without time steps
     time_history: "pd.DataFrame | None" = field(default=None, repr=False)
@@ -193,7 +204,36 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
         dataset = _written_dataset(deck, out_path, output)
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
                   notes=[output.note] if output.note else [], steps_integrated=output.integrated,
-                  time_history=history, dataset=dataset)
+                  time_history=history, dataset=dataset, balance=parse_balance(output.note))
+
+
+_NUM = r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)"
+_VEC = _NUM * 3
+
+
+def parse_balance(note: str) -> dict | None:
+    """The balance line of a run note (the engine's ``balance over the last half of the
+    run ...``; fortran/bearings/ball.f90) as numbers (:attr:`Result.balance`); None when
+    the note has none."""
+    import re
+
+    m = re.search(
+        r"balance over the last half of the run \(t" + _NUM + " to" + _NUM + " s," + _NUM +
+        r" shaft revolutions\): drive power" + _NUM + " W, dissipation" + _NUM +
+        r" W \(race contacts" + _NUM + " W, contact damping" + _NUM + " W, cage contacts" + _NUM +
+        " W of which friction heat" + _NUM + r" W\), energy change" + _NUM +
+        " W, drive/dissipation" + _NUM + "; inner race contact force" + _VEC +
+        " N against applied load and weight" + _VEC + " N, residual" + _NUM +
+        " N; outer race contact force" + _VEC + " N against" + _VEC + " N, residual" + _NUM + " N",
+        note or "")
+    if m is None:
+        return None
+    v = [float(x) for x in m.groups()]
+    return {"window_s": (v[0], v[1]), "revolutions": v[2], "drive_power_W": v[3], "dissipation_W": v[4],
+            "race_heat_W": v[5], "damping_W": v[6], "cage_work_W": v[7], "cage_heat_W": v[8],
+            "energy_rate_W": v[9], "drive_ratio": v[10],
+            "inner_force_N": tuple(v[11:14]), "inner_carried_N": tuple(v[14:17]), "inner_residual_N": v[17],
+            "outer_force_N": tuple(v[18:21]), "outer_expected_N": tuple(v[21:24]), "outer_residual_N": v[24]}
 
 
 def run_title(deck_path: Path) -> str:

@@ -107,3 +107,19 @@ def test_cold_ball_warns_and_runs(tmp_path):
     result = pyadore.run(path, steps=0, out=tmp_path / "cold.prt")
     assert any("field rolling_element_temperature = 3.23: implausible temperature" in n for n in result.notes)
     assert (tmp_path / "cold.prt").exists()
+
+
+@pytest.mark.parametrize("base", [BALL, DEEP_GROOVE], ids=["appendix_c", "deep_groove"])
+def test_shaft_at_rest_runs_its_time_steps(tmp_path, base):
+    """0 rpm, 100 time steps: the run completes (a ball's micro-motion used to entrain a
+    film of picometres whose Newtonian traction was stiff without bound; films below
+    MIN_EHD_FILM take the deck's curve, fortran/forces/race_contact.f90).  Nothing turns, so
+    nothing is driven or dissipated beyond the settling of the balls, and the inner race's
+    contacts carry the applied load and its weight (Result.balance)."""
+    rest, force = _variant(tmp_path, base, "rest", speed=0.0)
+    result = pyadore.run(rest, steps=100, out=tmp_path / "rest.prt")
+    assert result.steps_integrated == 100
+    bal = result.balance
+    carried = np.linalg.norm(bal["inner_carried_N"])
+    assert bal["inner_residual_N"] <= 0.01 * carried
+    assert abs(bal["drive_power_W"]) <= 1e-9

@@ -23,6 +23,8 @@ module adore_bearings_ball
    use adore_bearings_ball_thermal, only: ball_thermal_t, new_ball_thermal, thermal_mode_of, ball_heat_rates, &
                                           ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF, THERMAL_GEOMETRY
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
+   use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
+                                      BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
@@ -78,6 +80,9 @@ module adore_bearings_ball
       procedure :: record_row => ball_record_row
       procedure :: mount => ball_mount
       procedure :: on_event => ball_on_event
+      procedure :: n_balance => ball_n_balance
+      procedure :: balance_values => ball_balance
+      procedure :: balance_text => ball_balance_text
    end type ball_kind_t
 
 contains
@@ -147,6 +152,7 @@ contains
                                int_method=method, cage_free=cage_free)
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
+      self%eom%rolling_resistance = self%options%rolling_resistance
       ! the run's degrees of freedom are the condition's from now on (report 4.4.6)
       self%condition%constraints = default_constraints(self%eom%cage_spin_only)
       self%eom%constraints = self%condition%constraints
@@ -193,6 +199,8 @@ contains
             text = text//"  BALL/RACE CONTACT DAMPING "//trim(adjustl(num))//" S (STIFFNESS-PROPORTIONAL, "// &
                    "docs/dynamics.md)"//lf
          end if
+         if (s%rolling_resistance) text = text//"  EHD ROLLING RESISTANCE OF THE RACE CONTACTS (HOUPERT; "// &
+            "docs/tribology.md)"//lf
          if (.not. s%traction_2d) text = text//"  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE ROLLING "// &
             "DIRECTION ONLY, REPORT EQ 1): DEVELOPER OPTION"//lf
       end associate
@@ -215,6 +223,7 @@ contains
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
+         if (s%rolling_resistance) text = text//"; EHD rolling resistance of the race contacts"
       end associate
    end subroutine ball_run_note
 
@@ -393,6 +402,56 @@ contains
                             [r*c%state%whirl_speed, 0.0_wp], lands, q, loss, temp, pocket)
       end associate
    end subroutine step0_history_values
+
+   integer function ball_n_balance(self)
+      class(ball_kind_t), intent(in) :: self
+      ball_n_balance = N_BALANCE + 0*self%bearing%n_elements
+   end function ball_n_balance
+
+   !> adore_forces_ball_power's balance values at the last evaluated state (the equations
+   !> of motion's loads, the condition's applied load).
+   subroutine ball_balance(self, v)
+      class(ball_kind_t), intent(in) :: self
+      real(wp), intent(out) :: v(:)
+      v = ball_balance_values(self%eom%bearing, self%eom%state, self%eom%loads)
+   end subroutine ball_balance
+
+   !> The run note's balance line over the window [window(1), window(2)] (tau) from the
+   !> window's means of the balance values and their first and last values: drive power
+   !> against the dissipation (contacts and cage, contact damping) and the mechanical
+   !> energy's rate of change (adore_forces_ball_power: drive = dissipation + dE/dt); the
+   !> inner race's mean contact force against the applied load and its weight (the residual
+   !> is m dv/dt averaged), the outer race's against the housing's share.
+   subroutine ball_balance_text(self, window, mean, first, last, text)
+      class(ball_kind_t), intent(in) :: self
+      real(wp), intent(in) :: window(2), mean(:), first(:), last(:)
+      character(len=:), allocatable, intent(out) :: text
+      character(len=700) :: buf
+      real(wp) :: seconds, dissipation, rate, carried(3), housing(3)
+      integer :: stat
+      associate (b => self%eom%bearing)
+         seconds = (window(2) - window(1))*self%time_scale
+         dissipation = mean(BAL_RACE_HEAT) + mean(BAL_DAMPING) + mean(BAL_CAGE_WORK)
+         rate = (last(BAL_ENERGY) - first(BAL_ENERGY))/seconds
+         ! what the inner race's contacts carry: the applied load and the race's weight; the
+         ! outer race's: that and the balls' weight (the cage's own constraint holds its weight)
+         carried = b%force + b%mass(BODY_INNER)*b%gravity
+         housing = carried + b%n_elements*b%mass(BODY_ELEMENT)*b%gravity
+         write (buf, "(a,es10.4,a,es10.4,a,f0.2,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,"// &
+                "a,es11.4,a,3es12.4,a,3es12.4,a,es10.3,a,3es12.4,a,3es12.4,a,es10.3,a)", iostat=stat) &
+            "balance over the last half of the run (t ", window(1)*self%time_scale, " to ", window(2)*self%time_scale, &
+            " s, ", seconds*abs(b%speed_inner - b%speed_outer)/(2.0_wp*pi), " shaft revolutions): drive power ", &
+            mean(BAL_DRIVE), " W, dissipation ", dissipation, " W (race contacts ", mean(BAL_RACE_HEAT), &
+            " W, contact damping ", mean(BAL_DAMPING), " W, cage contacts ", mean(BAL_CAGE_WORK), &
+            " W of which friction heat ", mean(BAL_CAGE_HEAT), " W), energy change ", rate, " W, drive/dissipation ", &
+            mean(BAL_DRIVE)/dissipation, "; inner race contact force", mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2), &
+            " N against applied load and weight", carried, " N, residual ", &
+            norm2(mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2) + carried), " N; outer race contact force", &
+            mean(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2), " N against", -housing, " N, residual ", &
+            norm2(mean(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2) - housing), " N"
+         text = trim(buf)
+      end associate
+   end subroutine ball_balance_text
 
    !> The equations of motion in self%condition: the geometry mounted at its temperatures
    !> (adore_geometry_mounted: fits, growth, clearance from the initial temperatures), its

@@ -15,7 +15,10 @@
 !> first-same-as-last derivative is dropped).  An unchanged condition changes nothing.  The
 !> time loop calls `on_event` at the system's event times (every event_period seconds of
 !> simulated time from event_start; none while event_period is 0), landing a step exactly on
-!> each: the hook of the thermal model and of any periodic update.  No module state.
+!> each: the hook of the thermal model and of any periodic update.  The balances (issue #28
+!> item 2): a kind's balance_values at every accepted step (n_balance of them) are averaged
+!> by the time loop over the run's balance window, and balance_text says what they add up
+!> to (the run note).  No module state.
 module adore_bearings_system
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, engine_error
@@ -65,6 +68,9 @@ module adore_bearings_system
       procedure :: new_history => no_new_history
       procedure :: record_row => no_record_row
       procedure :: mount => no_mount
+      procedure :: n_balance => no_values
+      procedure :: balance_values => no_averaged_values
+      procedure :: balance_text => no_balance_text
       procedure :: set_condition
       procedure :: on_event
    end type bearing_system_t
@@ -250,6 +256,14 @@ contains
       integer, intent(in) :: step
       real(wp), intent(in) :: t, mean(:)
    end subroutine no_record_row
+
+   !> No balance to report.
+   subroutine no_balance_text(self, window, mean, first, last, text)
+      class(bearing_system_t), intent(in) :: self
+      real(wp), intent(in) :: window(2), mean(:), first(:), last(:)
+      character(len=:), allocatable, intent(out) :: text
+      text = ""
+   end subroutine no_balance_text
 
    !> An engine error: nothing to mount without a time integration.
    subroutine no_mount(self, y, error)

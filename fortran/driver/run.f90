@@ -56,7 +56,9 @@ contains
       !> the time history the run recorded (no rows without time steps)
       type(run_history_t), intent(out), optional :: history
       !> what the run does not do that a user may expect (thermal model off, a roller
-      !> deck's steps not integrated); blank when there is nothing to say
+      !> deck's steps not integrated) and, after a completed time integration, its balances
+      !> over the last half of the run (adore_driver_time_loop); blank when there is nothing
+      !> to say
       character(len=:), allocatable, intent(out), optional :: note
       !> called after every accepted time step (adore_driver_time_loop's run_progress)
       procedure(run_progress), optional :: progress
@@ -72,7 +74,7 @@ contains
       real(wp), allocatable :: y(:)
       character(len=:), allocatable :: part_path, table_path, start_title, hist_path, incomplete, run_note, listing, &
                                        element_path
-      character(len=:), allocatable :: deck_warnings
+      character(len=:), allocatable :: deck_warnings, balance
       character(len=256) :: iomsg
       real(wp) :: duration, t_end
       integer :: unit, stat, start_method, n_dynamic
@@ -182,11 +184,21 @@ contains
       call write_echo(unit, echo)
       ! Step 0, the quasi-static start; then the time steps.
       incomplete = ""
+      balance = ""
       call sys%write_start(unit)
       if (n_dynamic > 0 .and. to_time) then
-         call run_time_loop(unit, sys, it, y, n_dynamic, hist, incomplete, run_error, progress, opts%substeps, t_end)
+         call run_time_loop(unit, sys, it, y, n_dynamic, hist, incomplete, run_error, progress, opts%substeps, t_end, &
+                            balance=balance)
       else if (n_dynamic > 0) then
-         call run_time_loop(unit, sys, it, y, n_dynamic, hist, incomplete, run_error, progress, opts%substeps)
+         call run_time_loop(unit, sys, it, y, n_dynamic, hist, incomplete, run_error, progress, opts%substeps, &
+                            balance=balance)
+      end if
+      if (len(balance) > 0) then
+         if (len(run_note) > 0) then
+            run_note = run_note//"; "//balance
+         else
+            run_note = balance
+         end if
       end if
 
       close (unit, iostat=stat, iomsg=iomsg)

@@ -7,6 +7,11 @@
 !> stop), with the last accepted step and a last line
 !> "*** RUN INCOMPLETE after step N (tau = ...): <reason> ***".
 !>
+!> The balance window (issue #28 item 2): the last half of the run (from the step
+!> n_steps/2, or from half the end time of a run to a time); over it the system's
+!> balance_values are time-averaged (adore_driver_time_average) and, at the end of a
+!> completed run, the system's balance_text says what they add up to (`balance`).
+!>
 !> Nothing here knows the bearing kind: what is printed, recorded and averaged is the
 !> system's.  No module state.
 module adore_driver_time_loop
@@ -59,7 +64,7 @@ contains
    !> progress asking to stop) prints its last accepted step (when not printed yet) and the
    !> line INCOMPLETE_MARK//incomplete//" ***", and returns an engine error with the same
    !> reason; incomplete = " after step N (tau = T): <reason>" (blank when the run completed).
-   subroutine run_time_loop(unit, sys, it, y, n_steps, history, incomplete, error, progress, substeps, t_end)
+   subroutine run_time_loop(unit, sys, it, y, n_steps, history, incomplete, error, progress, substeps, t_end, balance)
       integer, intent(in) :: unit
       class(bearing_system_t), intent(inout) :: sys
       type(integrator_t), intent(inout) :: it
@@ -71,19 +76,25 @@ contains
       procedure(run_progress), optional :: progress
       integer, intent(in), optional :: substeps
       real(wp), intent(in), optional :: t_end
+      !> what the system's balances add up to over the balance window (module header; blank
+      !> for a kind without balances or a run that stopped early)
+      character(len=:), allocatable, intent(out), optional :: balance
 
-      type(time_average_t) :: averages
-      real(wp), allocatable :: dydt(:), values(:), mean(:)
-      real(wp) :: t, t_old, t_event, t_stop
+      type(time_average_t) :: averages, window
+      real(wp), allocatable :: dydt(:), values(:), mean(:), bal(:), bal_first(:), bal_mean(:)
+      real(wp) :: t, t_old, t_event, t_stop, t_window
       character(len=:), allocatable :: reason
       integer :: i, j, flag, stop, printed_last, n_sub, print_interval, n_events, n_report
-      logical :: print_now, events, to_time, last
+      logical :: print_now, events, to_time, last, in_window
 
       incomplete = ""
+      if (present(balance)) balance = ""
       n_sub = 1
       if (present(substeps)) n_sub = max(substeps, 1)
       print_interval = sys%bearing%controls%print_interval
       allocate (dydt(size(y)), values(sys%n_values()), mean(sys%n_values()))
+      allocate (bal(sys%n_balance()), bal_first(sys%n_balance()), bal_mean(sys%n_balance()))
+      in_window = .false.
       t = 0.0_wp
       printed_last = 0
       events = sys%event_period > 0.0_wp
@@ -103,6 +114,7 @@ contains
       call averages%start(values)
       call averages%mean(mean)
       call record(0, .true.)
+      if (.not. to_time .and. n_steps/2 == 0) call open_window()
       i = 0
       do
          i = i + 1
@@ -126,6 +138,12 @@ contains
             call sys%accepted()
             call sys%averaged_values(values)
             call averages%add(t - t_old, values)
+            if (in_window) then
+               call sys%balance_values(bal)
+               call window%add(t - t_old, bal)
+            else if (to_time .and. t >= 0.5_wp*t_stop) then
+               call open_window()
+            end if
             if (events .and. t >= t_event) then
                n_events = n_events + 1
                call sys%on_event(t*sys%time_scale, it, y, error)
@@ -152,6 +170,7 @@ contains
          if (print_now .or. history_due(history, i, n_report, print_now)) call averages%mean(mean)
          if (history_due(history, i, n_report, print_now)) call record(i, print_now)
          if (print_now) call print_step(i)
+         if (.not. to_time .and. .not. in_window .and. i >= n_steps/2) call open_window()
          if (present(progress)) then
             call progress(i, n_report, t, t*sys%time_scale, stop)
             if (stop /= 0) then
@@ -161,12 +180,27 @@ contains
          end if
          if (last) exit
       end do
+      if (present(balance) .and. in_window .and. size(bal) > 0) then
+         if (window%elapsed > 0.0_wp) then
+            call window%mean(bal_mean)
+            call sys%balance_text([t_window, t], bal_mean, bal_first, window%last, balance)
+         end if
+      end if
       call write_termination(unit, i, t)
       write (unit, "(a)") ""
       call write_statistics(unit, [it%stats%h_min_used, it%stats%h_max_used, it%stats%h_last, &
                                    it%stats%max_truncation], it%stats%derivative_calls)
 
    contains
+
+      !> Open the balance window at the system's last evaluated state (tau = t).
+      subroutine open_window()
+         in_window = .true.
+         t_window = t
+         call sys%balance_values(bal)
+         bal_first = bal
+         call window%start(bal)
+      end subroutine open_window
 
       !> Print step i at the system's last evaluated state (the state at tau = t).
       subroutine print_step(i)

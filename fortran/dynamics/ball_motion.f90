@@ -46,7 +46,7 @@ contains
    !> degrees of freedom (replaces cage_spin_only; absent: default_constraints).  Input
    !> errors of the traction model come back in error.
    subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
-                                 damping, land_film, cage_spin_only, constraints)
+                                 damping, land_film, cage_spin_only, constraints, rolling)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -62,6 +62,8 @@ contains
       !> constraints): it keeps its position and turns about its own axis only
       logical, intent(in), optional :: cage_spin_only
       type(dof_constraints_t), intent(in), optional :: constraints
+      !> the race contacts' EHD rolling resistance (ball_bearing_loads' rolling)
+      logical, intent(in), optional :: rolling
       type(dof_constraints_t) :: dof
       integer :: k
 
@@ -73,7 +75,7 @@ contains
       end if
 
       call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
-                              land_film=land_film)
+                              land_film=land_film, rolling=rolling)
       if (allocated(error)) return
       if (present(gyro_restraint)) then
          if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, BODY_ELEMENT), loads)

@@ -13,6 +13,7 @@ module adore_dynamics_ball_system
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, engine_error
+   use adore_core_strings, only: itoa
    use adore_core_rotation, only: quat_from_rotation_vector
    use adore_model_bearing, only: BODY_ELEMENT, bearing_t
    use adore_model_condition, only: dof_constraints_t
@@ -80,6 +81,9 @@ module adore_dynamics_ball_system
       !> state (adore_state_bearing_state's orbit): (x, r, phi) and their rates instead of
       !> inertial position and velocity (issue #30); the physics is the same
       logical :: orbit_frame = .false.
+      !> the race contacts' EHD rolling resistance (Houpert, Harris & Kotzalas; ball_bearing_loads'
+      !> rolling): off by default, as in ADORE 5.0 (docs/tribology.md, "Rolling resistance")
+      logical :: rolling_resistance = .false.
       !> (2, n): when allocated, every contact's Hertz stiffness frozen at these values
       !> (N/m**1.5) instead of K(alpha): a verification option, the normal loads then derive
       !> from an energy (fortran/tests/test_dynamics.f90)
@@ -125,17 +129,19 @@ contains
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
-                                 self%contact_damping, self%land_film, self%cage_spin_only)
+                                 self%contact_damping, self%land_film, self%cage_spin_only, rolling=self%rolling_resistance)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
-                                 land_film=self%land_film, constraints=self%constraints)
+                                 land_film=self%land_film, constraints=self%constraints, &
+                                 rolling=self%rolling_resistance)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
-                                 land_film=self%land_film, cage_spin_only=self%cage_spin_only)
+                                 land_film=self%land_film, cage_spin_only=self%cage_spin_only, &
+                                 rolling=self%rolling_resistance)
       end if
       if (allocated(self%failure)) then
          ! a state outside the contact models' range (e.g. a stage of a too long step that
@@ -152,7 +158,7 @@ contains
       ! an abnormal cage contact (report 4.4.12): the integrator retries with a smaller step
       if (self%loads%abnormal) then
          flag = DERIV_REJECT_STEP
-         self%failure_reason = "an abnormal cage contact (an interference beyond the physical limit)"
+         call abnormal_cage_contact(self%loads, self%failure_reason)
       end if
       if (.not. all(ieee_is_finite(dydt))) then
          call engine_error(self%failure, "equations of motion: non-finite rates of "// &
@@ -218,6 +224,31 @@ contains
          st%cage%omega = [c%angular_speed, 0.0_wp, 0.0_wp]
       end associate
    end function initial_ball_state
+
+   !> Which cage contact of loads is abnormal (report 4.4.12): "ball k's pocket" or "guide
+   !> land k" (a subroutine: no deferred-length function result, adore_core_strings).
+   subroutine abnormal_cage_contact(loads, text)
+      type(ball_bearing_loads_t), intent(in) :: loads
+      character(len=:), allocatable, intent(out) :: text
+      integer :: k
+      text = "an abnormal cage contact"
+      if (allocated(loads%pockets)) then
+         do k = 1, size(loads%pockets)
+            if (loads%pockets(k)%abnormal) then
+               text = text//": ball "//itoa(k)//"'s pocket"
+               return
+            end if
+         end do
+      end if
+      if (allocated(loads%lands)) then
+         do k = 1, size(loads%lands)
+            if (loads%lands(k)%abnormal) then
+               text = text//": guide land "//itoa(k)
+               return
+            end if
+         end do
+      end if
+   end subroutine abnormal_cage_contact
 
    !> The integration method of the ball dynamics for the deck's Rec 1 int_method (INT METHOD):
    !> 5, the value of both of the report's decks, is the additive (IMEX) Runge-Kutta method

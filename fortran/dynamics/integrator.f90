@@ -372,6 +372,7 @@ contains
          if (flag == DERIV_REJECT_STEP) then
             self%stats%rejected_flag = self%stats%rejected_flag + 1
             why = "the derivative refused the step (report 4.4.12)"
+            ! its reason now: a Jacobian taken before the next attempt evaluates anew
             if (allocated(deriv%failure_reason)) why = why//": "//deriv%failure_reason
             fac = flag_cut
          else if (.not. ieee_is_finite(err)) then

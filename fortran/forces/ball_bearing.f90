@@ -43,7 +43,7 @@ module adore_forces_ball_bearing
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_OUTER, SIDE_INNER, &
                                    contact_kinematics
    use adore_forces_race_contact, only: PRINT_GAUSS, EHD_GAUSS, ehd_traction_model, lubricant_film, &
-                                           ehd_film_present, ehd_traction
+                                           ehd_film_present, ehd_traction, rolling_resistance
    implicit none
    private
 
@@ -65,6 +65,8 @@ module adore_forces_ball_bearing
       type(ball_race_geometry_t), allocatable :: contacts(:, :)
       type(contact_traction_t), allocatable :: traction(:, :)  !< zero where unloaded or traction off
       real(wp), allocatable :: heat(:, :)                   !< contact power loss (W)
+      !> work rate of the race contacts' normal damping, sum of beta k d(delta)/dt**2 (W, >= 0)
+      real(wp) :: damping_power = 0.0_wp
       type(cage_pocket_geometry_t), allocatable :: pockets(:)  !< ball k in pocket k (cage flag on)
       type(cage_land_geometry_t), allocatable :: lands(:)      !< per guide land (cage flag on)
       logical :: abnormal = .false.                         !< an abnormal cage contact (4.4.12)
@@ -210,9 +212,10 @@ contains
    !> docs/dynamics.md, "Contact damping".
    !> land_film (default .true.): the guide lands' short-bearing film (adore_contact_cage_land);
    !> .false. keeps only their metallic contact (docs/dynamics.md, "Cage dynamics").
+   !> rolling (default .false.): the race contacts' EHD rolling resistance (rolling_couple).
    !> Input errors of the traction model (e.g. no EHD film) come back in error.
    subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference, damping, &
-                                 land_film)
+                                 land_film, rolling)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -223,12 +226,13 @@ contains
       logical, intent(in), optional :: two_d, reference
       real(wp), intent(in), optional :: damping
       logical, intent(in), optional :: land_film
+      logical, intent(in), optional :: rolling
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: t
-      real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6), beta
+      real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6), beta, q_n, rate
       integer :: n, k, j
-      logical :: with_traction, with_2d, with_reference
+      logical :: with_traction, with_2d, with_reference, with_rolling
 
       with_traction = .true.
       if (present(traction)) with_traction = traction
@@ -238,6 +242,8 @@ contains
       if (present(reference)) with_reference = reference
       beta = 0.0_wp
       if (present(damping)) beta = damping
+      with_rolling = .false.
+      if (present(rolling)) with_rolling = rolling
       n = size(s%elements)
       pairs = ball_race_pairs(b, g)
       rho = 0.5_wp*g%element_diameter
@@ -260,12 +266,18 @@ contains
             end if
             associate (c => loads%contacts(j, k), ball => s%elements(k)%position, race => s%races(j)%position)
                if (.not. (c%load > 0.0_wp)) cycle
-               f_n = normal_force(c, j, k)*c%normal
+               call normal_force(c, j, k, q_n, rate)
+               f_n = q_n*c%normal
+               loads%damping_power = loads%damping_power + (q_n - c%load)*rate
                loads%elements(k)%force = loads%elements(k)%force - f_n
                loads%races(j)%force = loads%races(j)%force + f_n
                loads%races(j)%moment = loads%races(j)%moment + cross(c%point - race, f_n)
-               if (.not. with_traction) cycle
                cj = planar_contact(pairs(j), c)
+               if (with_rolling) then
+                  call rolling_couple(j, k, cj, loads%contacts(j, k), error)
+                  if (allocated(error)) return
+               end if
+               if (.not. with_traction) cycle
                call race_traction(j, cj, c%transverse_coeff, c%ellipse%semi_minor, c%ellipse%max_pressure, t, &
                                   error)
                if (allocated(error)) then   ! name the contact (the integrator adds time and step)
@@ -276,7 +288,7 @@ contains
                ! the traction along the rolling direction and (two-dimensional only) across it
                sums = [t%force, t%force_cos, t%force_sin, t%cross_force]
                loads%traction(j, k) = t
-               loads%heat(j, k) = t%power
+               loads%heat(j, k) = loads%heat(j, k) + t%power
                ! on the race: along e_t at the nodes, and along e_m(psi) = -sin(psi) n + cos(psi) e_m;
                ! about the ball centre: D/2 [(F_cos n + F_sin e_m) x e_t + F_m (n x e_m)]
                f_t = sums(1)*c%rolling + sums(5)*c%transverse - sums(6)*c%normal
@@ -296,20 +308,52 @@ contains
 
    contains
 
-      !> Normal force (N) of race contact c (race j, ball k): the Hertz load plus the contact
-      !> damping beta (1.5 Q / delta) d(delta)/dt, never negative.
-      real(wp) function normal_force(c, j, k)
+      !> Normal force q_n (N) of race contact c (race j, ball k): the Hertz load plus the
+      !> contact damping beta (1.5 Q / delta) d(delta)/dt, never negative; rate: the approach
+      !> rate d(delta)/dt (m/s; 0 without damping, where it is not needed).
+      subroutine normal_force(c, j, k, q_n, rate)
          type(ball_race_geometry_t), intent(in) :: c
          integer, intent(in) :: j, k
+         real(wp), intent(out) :: q_n, rate
          real(wp) :: v_rel(3)
-         normal_force = c%load
+         q_n = c%load
+         rate = 0.0_wp
          if (beta <= 0.0_wp .or. .not. (c%delta > 0.0_wp)) return
          associate (race => s%races(j), ball => s%elements(k))
             v_rel = ball%velocity - race%velocity - &
                     cross(matmul(quat_matrix(race%attitude), race%omega), ball%position - race%position)
          end associate
-         normal_force = max(c%load + beta*1.5_wp*c%load/c%delta*dot_product(v_rel, c%normal), 0.0_wp)
-      end function normal_force
+         rate = dot_product(v_rel, c%normal)
+         q_n = max(c%load + beta*1.5_wp*c%load/c%delta*rate, 0.0_wp)
+      end subroutine normal_force
+
+      !> The EHD rolling resistance of race contact c (race j, ball k; planar form cj) as a
+      !> couple about the contact's major axis e_m: M = F_R R_x opposing the relative rolling
+      !> rate w = (omega_ball - omega_race).e_m (smoothly through 0: w / sqrt(w**2 + w0**2),
+      !> w0 = 1e-3 u / R_x), -M on the ball and +M on the race; its heat M w enters the
+      !> contact's heat (rolling_resistance; docs/tribology.md, "Rolling resistance").
+      subroutine rolling_couple(j, k, cj, c, error)
+         integer, intent(in) :: j, k
+         type(ball_race_contact_t), intent(in) :: cj
+         type(ball_race_geometry_t), intent(in) :: c
+         type(error_type), allocatable, intent(out) :: error
+         type(contact_traction_t) :: tk
+         real(wp) :: f_r, w, w0, m_r
+         call contact_kinematics(cj, tk)
+         call rolling_resistance(b, s%temperature, tk, c%ellipse%semi_major/c%ellipse%semi_minor, c%load, &
+                                 c%ellipse%max_pressure, merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER), f_r, error)
+         if (allocated(error)) return
+         if (.not. (f_r > 0.0_wp .and. tk%rx > 0.0_wp)) return
+         associate (ball => s%elements(k), race => s%races(j))
+            w = dot_product(matmul(quat_matrix(ball%attitude), ball%omega) - &
+                            matmul(quat_matrix(race%attitude), race%omega), c%transverse)
+         end associate
+         w0 = 1.0e-3_wp*abs(tk%rolling_speed)/tk%rx
+         m_r = f_r*tk%rx*w/sqrt(w*w + w0*w0)
+         loads%elements(k)%moment = loads%elements(k)%moment - m_r*c%transverse
+         loads%races(j)%moment = loads%races(j)%moment + m_r*c%transverse
+         loads%heat(j, k) = loads%heat(j, k) + m_r*w
+      end subroutine rolling_couple
 
       !> The pocket and guide-land contacts' loads (module header).
       subroutine add_cage_contacts()

@@ -15,6 +15,7 @@ module adore_forces_race_contact
                                    print_slip_node
    use adore_tribology_traction_law, only: LAW_CURVE, law_kappa
    use adore_tribology_film, only: central_film_thickness, thermal_loading, thermal_reduction_factor, &
+                                   rolling_resistance_force, &
                                    dynamic_viscosity, temperature_viscosity_coefficient, traction_viscosity, &
                                    THERMAL_LOADING_SCALE, viscosity_in_range
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_strip_traction, &
@@ -27,13 +28,21 @@ module adore_forces_race_contact
    private
 
    public :: ehd_traction_model, wall_temperature, wall_rheology, thermal_properties, lubricant_film, &
-             ehd_film_present, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip
+             ehd_film_present, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip, &
+             rolling_resistance
 
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
    integer, parameter, public :: PRINT_GAUSS = 4
    !> Gauss points per slip zone and across each strip of the EHD traction's loss and force
    integer, parameter, public :: EHD_GAUSS = 16, EHD_STRIP = 24
+   !> The thinnest film (m) the EHD traction shears: 1 nm, below any ground surface's
+   !> roughness (a film parameter h / sigma << 1 is boundary lubrication).  The Newtonian
+   !> film's traction slope grows as 1/h, so a film of picometres (a ball's micro-motion on
+   !> a shaft at rest entrains a little oil) made the traction stiff without bound and the
+   !> time steps of a shaft at rest failed (docs/operating-points.md); such contacts take
+   !> the deck's curve.  Films of the decks' running speeds are 1e-8 ... 1e-6 m.
+   real(wp), parameter, public :: MIN_EHD_FILM = 1.0e-9_wp
    !> Rec 10.0 traction_model of the EHD film traction (report Table 5, model 3)
    integer, parameter, public :: TRACTION_EHD = 3
 
@@ -95,8 +104,7 @@ contains
       character(len=400) :: buf
       integer :: stat
 
-      e_prime = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
-                        (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
+      e_prime = reduced_modulus(b, race)
       t_in = wall_temperature(temperature, race)
       if (.not. viscosity_in_range(b%lubricant, t_in)) then
          write (buf, "(3a,es10.3,a)", iostat=stat) "lubricant ", trim(b%lubricant%name), " at ", t_in, &
@@ -120,14 +128,49 @@ contains
                                      b%lubricant%conductivity), t%centre_slip/t%rolling_speed)
    end subroutine lubricant_film
 
+   !> The EHD rolling resistance force f_r (N) of a race contact with kinematics t (its
+   !> entraining speed and R_x), ellipticity k_ell, load q (N), maximum pressure p_h (Pa) on
+   !> race (BODY_OUTER/INNER) at bulk temperatures temperature (K): rolling_resistance_force
+   !> with the inlet viscosity at the wall temperature, reduced by the film's inlet-shear
+   !> thermal factor phi_T (lubricant_film; docs/tribology.md, "Rolling resistance"); 0
+   !> without a lubricant or entraining speed.
+   subroutine rolling_resistance(b, temperature, t, k_ell, q, p_h, race, f_r, error)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: temperature(:)
+      type(contact_traction_t), intent(in) :: t
+      real(wp), intent(in) :: k_ell, q, p_h
+      integer, intent(in) :: race
+      real(wp), intent(out) :: f_r
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: h, phi, e_prime
+      f_r = 0.0_wp
+      if (b%lubricant_code == 0 .or. t%rolling_speed == 0.0_wp .or. .not. q > 0.0_wp) return
+      call lubricant_film(b, temperature, t, k_ell, q, p_h, race, h, phi, error)
+      if (allocated(error)) return
+      e_prime = reduced_modulus(b, race)
+      f_r = phi*rolling_resistance_force(t%rx, k_ell, t%rolling_speed, q, e_prime, &
+                                         dynamic_viscosity(b%lubricant, wall_temperature(temperature, race), 0.0_wp), &
+                                         b%lubricant%alpha)
+   end subroutine rolling_resistance
+
+   !> E' = 2 / ((1 - nu1**2)/E1 + (1 - nu2**2)/E2) (Pa) of the rolling element on race
+   !> (BODY_OUTER/INNER): the Hamrock-Dowson reduced modulus (adore_tribology_film).
+   pure real(wp) function reduced_modulus(b, race)
+      type(bearing_t), intent(in) :: b
+      integer, intent(in) :: race
+      reduced_modulus = 2.0_wp/((1.0_wp - b%material(BODY_ELEMENT)%poisson**2)/b%material(BODY_ELEMENT)%modulus + &
+                                (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
+   end function reduced_modulus
+
    !> True when a race contact has an EHD film to shear: the isothermal film h (m) times
-   !> the thermal reduction factor phi is positive and finite.  Without one (no entraining
-   !> speed: a shaft at rest; or Gupta's fit at 0 beyond its range of thermal loading, a
-   !> lubricant far too viscous for the speed) traction model 3 takes the deck's traction
-   !> curve for that contact (docs/tribology.md, "No EHD film").
+   !> the thermal reduction factor phi is at least MIN_EHD_FILM and finite.  Without one (no
+   !> or almost no entraining speed: a shaft at rest, a ball's micro-motion at rest; or
+   !> Gupta's fit at 0 beyond its range of thermal loading, a lubricant far too viscous for
+   !> the speed) traction model 3 takes the deck's traction curve for that contact
+   !> (docs/tribology.md, "No EHD film").
    pure logical function ehd_film_present(h, phi)
       real(wp), intent(in) :: h, phi
-      ehd_film_present = h*phi > 0.0_wp .and. h*phi < huge(1.0_wp)
+      ehd_film_present = h*phi >= MIN_EHD_FILM .and. h*phi < huge(1.0_wp)
    end function ehd_film_present
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):

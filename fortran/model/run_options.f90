@@ -52,6 +52,9 @@ module adore_model_run_options
       logical :: moment_equilibrium = .false.
       !> two-dimensional race traction (report eqs 2-3); .false.: the 1-D developer option
       logical :: traction_2d = .true.
+      !> the race contacts' EHD rolling resistance in the time integration (docs/tribology.md,
+      !> "Rolling resistance"; not in ADORE 5.0)
+      logical :: rolling_resistance = .false.
       !> the coordinates of the balls in the integrated state: "orbit" (the report's eq 54:
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
@@ -91,7 +94,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 14
+   integer, parameter :: N_OPTIONS = 15
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -117,6 +120,9 @@ module adore_model_run_options
       option_spec_t("traction_2d", OPTION_FLAG_OFF, "true", 0, "traction_1d", "", "", &
                     "developer option: one-dimensional race traction (slip along the rolling direction "// &
                     "only, report eq 1) instead of the two-dimensional default"), &
+      option_spec_t("rolling_resistance", OPTION_FLAG, "false", 0, "", "", "", &
+                    "the race contacts' EHD rolling resistance (Houpert) in the time steps, not in "// &
+                    "ADORE 5.0 (ball decks)"), &
       option_spec_t("duration", OPTION_REAL, "0", 0, "", "SECONDS", "", &
                     "simulated time to integrate (s): the run ends exactly there, its last step printed "// &
                     "(instead of a step count)"), &
@@ -244,6 +250,8 @@ contains
          opts%moment_equilibrium = flag
       case ("traction_2d")
          opts%traction_2d = flag
+      case ("rolling_resistance")
+         opts%rolling_resistance = flag
       case ("duration")
          opts%duration = x
       case ("revolutions")

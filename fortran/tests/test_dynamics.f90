@@ -47,7 +47,9 @@ end module test_dynamics_free_body
 program test_dynamics
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
-   use adore_core_rotation, only: quat_matrix, quat_from_rotation_vector
+   use adore_core_rotation, only: quat_matrix, quat_from_rotation_vector, quat_rate
+   use adore_forces_ball_bearing, only: total_power_loss
+   use adore_forces_ball_power, only: contact_power_sum, ball_balance_values, BAL_DRIVE
    use adore_model_bearing, only: BODY_CAGE, BODY_ELEMENT, BODY_INNER, bearing_t
    use adore_model_from_deck, only: read_bearing
    use adore_model_scales, only: length_scale, load_scale, time_scale
@@ -76,6 +78,12 @@ program test_dynamics
    call test_orbit_frame_rates()
    call test_orbit_frame_is_the_same_motion()
    call test_run_balances_the_applied_load()
+   call test_power_identity("appendix_c_ball.inp", .true., .true., .true.)
+   call test_power_identity("appendix_c_ball.inp", .false., .true., .true.)
+   call test_power_identity("appendix_c_ball.inp", .true., .false., .true.)
+   call test_power_identity("appendix_c_ball.inp", .true., .true., .false.)
+   call test_power_identity("examples/deep_groove_radial.inp", .true., .true., .true.)
+   call test_power_identity("examples/deep_groove_radial.inp", .true., .true., .true., rolling=.true.)
    call test_orbit_averages_match_the_quasi_static_equilibrium()
    call test_accuracy_against_a_tight_run()
    call test_block_jacobian_against_finite_differences()
@@ -281,6 +289,109 @@ contains
       call check(all(sys%loads%contacts%load > 0.0_wp), "run: every ball loaded at both races")
    end subroutine test_run_balances_the_applied_load
 
+   !> The force assembly's power identity (issue #28 item 2): at any state the contact loads'
+   !> power on all bodies (contact_power_sum) plus the heat of the contacts, the work of the
+   !> contact damping and the rate of the Hertz energy is zero - action and reaction, each
+   !> traction's moment arms consistent with the slip its heat is computed from.  Appendix C
+   !> from its step-0 start, every ball's and the cage's speeds and the inner race's
+   !> velocity disturbed (slip, approach), K frozen so that the normal loads derive from the
+   !> Hertz energy (its rate by central differences along the state's velocities).
+   !> two_d, cage, gyro, rolling: the run's physics switched (the 2-D traction, the cage
+   !> contacts, the gyroscopic restraint, the EHD rolling resistance).
+   subroutine test_power_identity(deck, two_d, cage, gyro, rolling)
+      character(len=*), intent(in) :: deck
+      logical, intent(in) :: two_d, cage, gyro
+      logical, intent(in), optional :: rolling     !< the EHD rolling resistance couple on
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(ball_system_t) :: sys
+      type(integrator_t) :: it
+      type(bearing_state_t) :: s
+      type(error_type), allocatable :: error
+      real(wp), allocatable :: y(:), dydt(:)
+      real(wp) :: h, e_plus, e_minus, p_contacts, p_loss, p_damping, e_rate, drive, residual
+      character(len=100) :: name
+      integer :: k, flag
+
+      write (name, "(3a,l1,a,l1,a,l1)") "power identity ", deck, " 2d ", two_d, " cage ", cage, " gyro ", gyro
+      if (present(rolling)) name = trim(name)//" rolling resistance"
+      call appendix_c_dynamics(trim(name), b, g, s0, sys, it, y, error, deck)
+      if (allocated(error)) return
+      sys%traction_2d = two_d
+      sys%cage = cage
+      sys%gyro_restraint = gyro
+      if (present(rolling)) sys%rolling_resistance = rolling
+      allocate (dydt(size(y)))
+      s = new_bearing_state(b%n_elements)
+      call unpack_state(y, 0.0_wp, s)
+      do k = 1, b%n_elements               ! off-rolling speeds and an approach rate
+         s%elements(k)%velocity = s%elements(k)%velocity + 0.02_wp*[sin(1.0_wp*k), cos(2.0_wp*k), sin(3.0_wp*k)]
+         s%elements(k)%omega = s%elements(k)%omega*(1.0_wp + 0.01_wp*sin(5.0_wp*k)) + 30.0_wp*[cos(1.0_wp*k), &
+                                sin(2.0_wp*k), cos(3.0_wp*k)]
+      end do
+      s%cage%omega = s%cage%omega*1.02_wp
+      s%races(RACE_INNER)%velocity = [1.0e-3_wp, -2.0e-3_wp, 1.5e-3_wp]
+      call pack_state(s, y)
+      call sys%eval(0.0_wp, y, dydt, flag)
+      sys%frozen_stiffness = sys%loads%contacts%stiffness
+      call sys%eval(0.0_wp, y, dydt, flag)
+      call check(flag == 0, trim(name)//": evaluation")
+      p_contacts = contact_power_sum(sys%bearing, sys%state, sys%loads)
+      p_loss = total_power_loss(sys%loads)
+      p_damping = sys%loads%damping_power
+      associate (v => ball_balance_values(sys%bearing, sys%state, sys%loads))
+         drive = v(BAL_DRIVE)
+      end associate
+      h = 1.0e-8_wp                         ! s
+      e_plus = hertz_energy_moved(sys, s, h)
+      e_minus = hertz_energy_moved(sys, s, -h)
+      e_rate = (e_plus - e_minus)/(2.0_wp*h)
+      residual = p_contacts + p_loss + p_damping + e_rate
+      write (*, "(a,6(a,es11.3))") trim(name), ": drive ", drive, " W, contact power ", p_contacts, " W, heat ", p_loss, &
+         " W, damping ", p_damping, " W, Hertz rate ", e_rate, " W, residual ", residual
+      call check(abs(residual) <= 1.0e-6_wp*(p_loss + abs(e_rate)), trim(name)//": contact power + heat + "// &
+                 "damping + Hertz rate = 0 to 1e-6")
+
+   end subroutine test_power_identity
+
+   !> Hertz energy (J) of all race contacts of system sys at state s moved by dt (s) along its
+   !> velocities (positions by v dt, attitudes by their rate).
+   real(wp) function hertz_energy_moved(sys, s, dt) result(e)
+      type(ball_system_t), intent(inout) :: sys
+      type(bearing_state_t), intent(in) :: s
+      real(wp), intent(in) :: dt
+      type(bearing_state_t) :: moved
+      real(wp) :: y(state_size(size(s%elements))), dydt(state_size(size(s%elements)))
+      integer :: j, i, flag
+      moved = s
+      do i = 1, size(s%elements)
+         call move_body(moved%elements(i), s%elements(i), dt)
+      end do
+      call move_body(moved%cage, s%cage, dt)
+      do i = 1, 2
+         call move_body(moved%races(i), s%races(i), dt)
+      end do
+      call pack_state(moved, y)
+      call sys%eval(0.0_wp, y, dydt, flag)
+      e = 0.0_wp
+      do i = 1, size(s%elements)
+         do j = 1, 2
+            e = e + contact_energy(sys%loads%contacts(j, i))
+         end do
+      end do
+   end function hertz_energy_moved
+
+   !> Body `from` moved by dt (s) along its velocity and angular velocity, into `to`.
+   subroutine move_body(to, from, dt)
+      type(body_state_t), intent(inout) :: to
+      type(body_state_t), intent(in) :: from
+      real(wp), intent(in) :: dt
+      to%position = from%position + dt*from%velocity
+      to%attitude = from%attitude + dt*quat_rate(from%attitude, from%omega)
+      to%attitude = to%attitude/norm2(to%attitude)
+   end subroutine move_body
+
    !> Issue #20's check of the dynamics against the statics: Appendix C with the run's
    !> defaults, settled for two inner-race revolutions, then averaged (time-weighted) over
    !> one orbit of the balls: each ball visits every azimuth, so its mean outer and inner
@@ -352,7 +463,7 @@ contains
    !> Appendix C's dynamics as a run starts it: the deck read, mounted, its step 0 solved and
    !> the system and integrator of start_ball_dynamics (the run's defaults); each stage
    !> checked under the label `what`.
-   subroutine appendix_c_dynamics(what, b, g, s0, sys, it, y, error)
+   subroutine appendix_c_dynamics(what, b, g, s0, sys, it, y, error, deck)
       character(len=*), intent(in) :: what
       type(bearing_t), intent(out) :: b
       type(mounted_geometry_t), intent(out) :: g
@@ -361,8 +472,13 @@ contains
       type(integrator_t), intent(out) :: it
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      call read_bearing(decks//"/appendix_c_ball.inp", b, error)
-      call check(.not. allocated(error), what//": read Appendix C")
+      character(len=*), intent(in), optional :: deck   !< another deck of decks/ (path below it)
+      if (present(deck)) then
+         call read_bearing(decks//"/"//deck, b, error)
+      else
+         call read_bearing(decks//"/appendix_c_ball.inp", b, error)
+      end if
+      call check(.not. allocated(error), what//": read the deck")
       if (allocated(error)) return
       g = mount_geometry(b, b%temperature)
       call solve_ball_step0(b, s0, error)

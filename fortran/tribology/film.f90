@@ -50,7 +50,7 @@ module adore_tribology_film
    private
 
    public :: lubricant_t, LUBRICANT_MIL_L_7808
-   public :: central_film_thickness, thermal_loading, thermal_reduction_factor
+   public :: central_film_thickness, thermal_loading, thermal_reduction_factor, rolling_resistance_force
    public :: lubricant_from_code, kinematic_viscosity, dynamic_viscosity
    public :: temperature_viscosity_coefficient, traction_viscosity, viscosity_in_range
 
@@ -105,6 +105,25 @@ contains
       sw = q/(e_prime*rx*rx)
       h = rx*2.69_wp*su**0.67_wp*sg**0.53_wp*sw**(-0.067_wp)*(1.0_wp - 0.61_wp*exp(-0.73_wp*k))
    end subroutine central_film_thickness
+
+   !> Hydrodynamic (EHD) rolling resistance force (N) of an elliptical contact: the force
+   !> the inlet's pressure-driven flow opposes to rolling, after Houpert as given by Harris &
+   !> Kotzalas (Rolling Bearing Analysis, 5th ed., "Advanced Concepts of Bearing Technology",
+   !> ch. 4, hydrodynamic rolling force of a ball/raceway contact):
+   !>     F_R = 2.86 E' R_x**2 k**0.348 G**0.022 U**0.66 W**0.47,
+   !> U, G, W as the Hamrock-Dowson film (central_film_thickness: U = eta0 u / (E' R_x),
+   !> G = alpha E', W = Q / (E' R_x**2)); its power loss is F_R u (docs/tribology.md,
+   !> "Rolling resistance").  Arguments as central_film_thickness; 0 for a contact without
+   !> load or entraining speed.
+   elemental function rolling_resistance_force(rx, k, u, q, e_prime, eta0, alpha) result(f)
+      real(wp), intent(in) :: rx, k, u, q, e_prime, eta0, alpha
+      real(wp) :: f
+      f = 0.0_wp
+      if (.not. (rx > 0.0_wp .and. k > 0.0_wp .and. abs(u) > 0.0_wp .and. q > 0.0_wp .and. e_prime > 0.0_wp &
+                 .and. eta0 > 0.0_wp .and. alpha > 0.0_wp)) return
+      f = 2.86_wp*e_prime*rx*rx*k**0.348_wp*(alpha*e_prime)**0.022_wp*(eta0*abs(u)/(e_prime*rx))**0.66_wp* &
+          (q/(e_prime*rx*rx))**0.47_wp
+   end function rolling_resistance_force
 
    !> Thermal loading L = eta0 beta u**2 / K_f (-) of Gupta et al. (1992): eta0 (Pa s),
    !> beta temperature-viscosity coefficient (1/K), u mean entraining speed (m/s), K_f (W/m/K).

@@ -1,0 +1,122 @@
+"""Balances of a run (issue #28 item 2; docs/operating-points.md, "Balances").
+
+Step 0: the print's race loads (section 3, "Int IRace") are the contact forces of the
+start's solution - the normal loads of the equilibrium plus each contact's net traction at
+its contact centre - summed here from the per-ball step-0 values.  They need not balance the
+drive against the dissipation: the start's ball speeds are kinematic (minimum dissipation
+with the inner contact rolling at its centre, report 4.4.7), not the balls' equilibrium
+along the rolling direction, so the tractions also accelerate the balls (the report's own
+Appendix C step 0: Int IRace Mx -0.1004 N m x 2094 rad/s = 210 W against 546 W).
+
+Dynamics: the engine's balance over the last half of a run (Result.balance) - drive power
+against dissipation plus the rate of the mechanical energy, an exact consequence of
+Newton-Euler that the force assembly keeps (fortran/tests/test_dynamics.f90, "power
+identity"), and the inner race's mean contact force against the applied load and the
+race's weight (its mean acceleration times its mass).  Both hold to the integration error:
+at the decks' error limit (1e-4) the drive torque, a small difference of large opposing
+traction zones, is off by far more than the dissipation, so these runs use 1e-8.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pyadore
+from pyadore import _core
+from pyadore.deck import read_deck
+
+ROOT = Path(__file__).resolve().parents[1]
+BALL = ROOT / "decks" / "appendix_c_ball.inp"
+DEEP_GROOVE = ROOT / "decks" / "examples" / "deep_groove_radial.inp"
+ANGULAR = ROOT / "decks" / "examples" / "angular_contact_thrust.inp"
+
+
+def _variant(tmp_path: Path, base: Path, name: str, speed=None, load=None, error_limit=None) -> Path:
+    """The deck at base with the shaft speed (rpm), the applied force's magnitude (N, its
+    direction kept) and the error limit (Rec 2.1; its minimum step 1e-6 to let it act)."""
+    deck = read_deck(base)
+    if speed is not None:
+        deck.set("9.1.2", "inner_race_speed", float(speed))
+    if load is not None:
+        force = np.array([deck.lookup(f"applied_force_{c}") for c in "xyz"], dtype=float)
+        force = force / np.linalg.norm(force) * load
+        for c, v in zip("xyz", force):
+            deck.set("9.1.1", f"applied_force_{c}", float(f"{v:.4E}"))
+    path = tmp_path / f"{name}.inp"
+    deck.save(path)
+    if error_limit is not None:
+        text = path.read_text().splitlines()
+        for i, line in enumerate(text):
+            if line.startswith("Rec 2.1 "):
+                v = line.split()[2:]
+                v[1], v[4] = "1.0000E-06", f"{error_limit:.4E}"
+                text[i] = "Rec 2.1     " + "".join(f" {x:>10s}" for x in v)
+        path.write_text("\n".join(text) + "\n")
+    return path
+
+
+def _printed_race_loads(text: str, label: str) -> np.ndarray:
+    """Step 0's section-3 row `label` (Fx, Fy, Fz in N; Mx, My, Mz in N m)."""
+    m = re.search(rf"^{label}\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)", text, re.MULTILINE)
+    return np.array([float(x) for x in m.groups()])
+
+
+@pytest.mark.parametrize("base,speed,load", [(BALL, None, None), (DEEP_GROOVE, 5000.0, 3000.0), (ANGULAR, None, None)],
+                         ids=["appendix_c", "deep_groove_3kN_5000rpm", "angular_contact"])
+def test_step0_race_loads_are_the_contact_forces(tmp_path, base, speed, load):
+    """Int IRace = the equilibrium's normal loads on the inner race plus every inner
+    contact's net traction F_t along e_t = (0, -cos phi, -sin phi) at its contact centre
+    (radius r_c = r - D/2 cos alpha_i): Mx = sum F_t r_c.  Summed from the per-ball step-0
+    values to the print's 4 digits; the same traction sums give the print's Fy, Fz."""
+    path = _variant(tmp_path, base, "case", speed=speed, load=load)
+    result = pyadore.run(path, steps=0, out=tmp_path / "case.prt")
+    printed = _printed_race_loads(result.text, "Int IRace")
+    balls, summary = _core.ball_step0_from_deck(path)
+    d = read_deck(path).lookup("ball_diameter")
+    phi, f = balls["azimuth"], balls["traction_i"]
+    r_c = balls["r"] - 0.5 * d * np.cos(balls["alpha_i"])
+    force = np.array([summary["inner_force_x"],
+                      summary["inner_force_y"] - np.sum(f * np.cos(phi)),
+                      summary["inner_force_z"] - np.sum(f * np.sin(phi))])
+    mx = summary["inner_moment_x"] + np.sum(f * r_c)
+    scale = np.max(np.abs(printed[:3]))
+    assert np.all(np.abs(force - printed[:3]) <= 1e-3 * scale)
+    assert mx == pytest.approx(printed[3], rel=1e-3, abs=1e-3 * scale * d)
+    # the start's balls are not in equilibrium along the rolling direction: the drive's
+    # power differs from the loss by what the tractions give the balls (no assertion of a
+    # size: docs/operating-points.md lists the numbers)
+    omega = read_deck(path).lookup("inner_race_speed") * np.pi / 30.0
+    assert np.isfinite(-printed[3] * omega) and summary["power_loss"] > 0.0
+
+
+@pytest.mark.parametrize("base,revolutions", [(BALL, 0.5), (DEEP_GROOVE, 0.25)], ids=["appendix_c", "deep_groove"])
+def test_dynamic_run_reports_closed_balances(tmp_path, base, revolutions):
+    """Result.balance over the last half of a run at error limit 1e-8: drive power =
+    dissipation + the mechanical energy's rate within 1 % of the drive; the inner race's
+    mean contact force balances the applied load and its weight within 1 %; the print's
+    power loss is the dissipation's contact heat."""
+    path = _variant(tmp_path, base, "tight", error_limit=1e-8)
+    result = pyadore.run(path, revolutions=revolutions, out=tmp_path / "tight.prt")
+    bal = result.balance
+    assert bal is not None and bal["revolutions"] == pytest.approx(revolutions / 2, abs=0.01)
+    closure = bal["drive_power_W"] - bal["dissipation_W"] - bal["energy_rate_W"]
+    assert abs(closure) <= 0.01 * max(abs(bal["drive_power_W"]), bal["dissipation_W"])
+    carried = np.array(bal["inner_carried_N"])
+    assert bal["inner_residual_N"] <= 0.01 * np.linalg.norm(carried)
+    assert np.allclose(bal["inner_force_N"], -carried, rtol=0.0, atol=0.01 * np.linalg.norm(carried))
+    assert bal["dissipation_W"] == pytest.approx(bal["race_heat_W"] + bal["damping_W"] + bal["cage_work_W"], rel=1e-3)
+
+
+def test_rolling_resistance_adds_its_heat(tmp_path):
+    """The EHD rolling resistance run option (docs/tribology.md): the same run with it
+    dissipates more, and its balance still closes (its couple's heat is counted)."""
+    path = _variant(tmp_path, DEEP_GROOVE, "rr", speed=3000.0, error_limit=1e-8)
+    off = pyadore.run(path, revolutions=0.25, out=tmp_path / "off.prt").balance
+    on = pyadore.run(path, revolutions=0.25, rolling_resistance=True, out=tmp_path / "on.prt").balance
+    assert on["race_heat_W"] > off["race_heat_W"]
+    closure = on["drive_power_W"] - on["dissipation_W"] - on["energy_rate_W"]
+    assert abs(closure) <= 0.01 * max(abs(on["drive_power_W"]), on["dissipation_W"])
