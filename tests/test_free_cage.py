@@ -82,7 +82,9 @@ def test_cage_option_centred_free_and_deck(tmp_path, short_ball_deck):
     assert "CAGE CENTRED ON THE BEARING AXIS" in c_text and "CAGE FREE" not in c_text
     assert "CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED" in f_text and "CAGE CENTRED" not in f_text
     hc, hf = _history(centred), _history(free)
-    assert np.all(hc["cage_y_m"] == 0.0) and np.all(hc["cage_z_m"] == 0.0)
+    # the step-0 row is the print's quasi-static start (its cage on the Rec 9.5.1 whirl, docs/results.md);
+    # from the first time step on the centred cage is exactly on the axis
+    assert np.all(hc["cage_y_m"].iloc[1:] == 0.0) and np.all(hc["cage_z_m"].iloc[1:] == 0.0)
     # the free cage starts on the Rec 9.5.1 whirl (0.6 mm below the axis) and moves
     r = np.hypot(hf["cage_y_m"], hf["cage_z_m"])
     assert r.iloc[0] == pytest.approx(6.0e-4, rel=0.05) and np.ptp(hf["cage_y_m"]) > 1e-5
