@@ -756,3 +756,18 @@ def test_substeps_integrate_the_same_motion_and_print_only_the_nominal_steps(tmp
     assert list(sub.time_history["step"]) == list(range(0, 21))
     with pytest.raises(AdoreInputError, match="substeps"):
         pyadore.run(ball_deck, steps=2, substeps=0, out=tmp_path / "bad.prt")
+
+
+@pytest.mark.parametrize("deck, options", [("appendix_c_ball.inp", ()), ("appendix_d_roller.inp", ()),
+                                           ("appendix_c_ball.inp", ("--cage", "free", "--duration", "3.2e-3",
+                                                                    "--thermal", "deck"))])
+def test_engine_writes_no_runtime_warnings(tmp_path, adore_exe, deck, options):
+    """A run's stderr holds the run note and nothing from the Fortran runtime: under `make
+    debug` (-fcheck=all) an array temporary on a per-step path printed a warning at every
+    step, flooding a pipe nobody read (the signal tests' adore runs stalled before step 0);
+    a thermal update once stopped on a character-length check."""
+    path = Path(__file__).resolve().parents[1] / "decks" / deck
+    steps = () if "--duration" in options else ("--steps", "20")
+    proc = _exe(adore_exe, path, tmp_path / "w.prt", *steps, *options)
+    assert proc.returncode == 0, proc.stderr
+    assert "Fortran runtime" not in proc.stderr and "Error termination" not in proc.stderr, proc.stderr[:2000]

@@ -437,7 +437,7 @@ contains
          ! outer race's: that and the balls' weight (the cage's own constraint holds its weight)
          carried = b%force + b%mass(BODY_INNER)*b%gravity
          housing = carried + b%n_elements*b%mass(BODY_ELEMENT)*b%gravity
-         write (buf, "(a,es10.4,a,es10.4,a,f0.2,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,"// &
+         write (buf, "(a,es10.4,a,es10.4,a,es10.3,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,"// &
                 "a,es11.4,a,3es12.4,a,3es12.4,a,es10.3,a,3es12.4,a,3es12.4,a,es10.3,a)", iostat=stat) &
             "balance over the last half of the run (t ", window(1)*self%time_scale, " to ", window(2)*self%time_scale, &
             " s, ", seconds*abs(b%speed_inner - b%speed_outer)/(2.0_wp*pi), " shaft revolutions): drive power ", &

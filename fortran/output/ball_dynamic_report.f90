@@ -226,6 +226,7 @@ contains
       real(wp), intent(in) :: w_orb(:)
       real(wp) :: hours2(2)
       real(wp) :: lives(size(w_orb), 2), n_race(2), hours(3), q(2, size(w_orb)), a(2, size(w_orb)), m_race(2), psi
+      real(wp) :: p_max(size(w_orb))
       type(life_params_t) :: lp
       integer :: j
       q = loads%contacts%load                     ! contiguous copies (no array temporaries)
@@ -233,7 +234,8 @@ contains
       call ball_basic_life(b, life_params_t(), q(1, :), a(1, :), q(2, :), a(2, :), w_orb, lives(:, 1), lives(:, 2), &
                            n_race(1), n_race(2), hours)
       do j = 1, 2
-         call ball_race_modified_life(lp, lives(:, j), n_race(j), loads%contacts(j, :)%ellipse%max_pressure, &
+         p_max = loads%contacts(j, :)%ellipse%max_pressure     ! contiguous (this runs at every step)
+         call ball_race_modified_life(lp, lives(:, j), n_race(j), p_max, &
                                       no_nan(p%film(j, :)*p%thermal_factor(j, :))/lp%sigma_rms, &
                                       no_nan(p%coefficient(j, :)), &
                                       merge(g%mounting%outer_hoop_stress, g%mounting%inner_hoop_stress, j == 1), &

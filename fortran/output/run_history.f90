@@ -328,7 +328,7 @@ contains
       values(:, :size(h%values, 2)) = h%values
       values(:, size(values, 2)) = ieee_value(1.0_wp, ieee_quiet_nan)
       call move_alloc(values, h%values)
-      h%names = [h%names, [character(len=HISTORY_NAME_LEN) :: name]]
+      h%names = [character(len=HISTORY_NAME_LEN) :: h%names, name]
    end subroutine add_history_column
 
    !> Set column `name` of the last recorded row of h to value (nothing when h has no such
