@@ -47,17 +47,26 @@ def _one(deck: Path, grid: dict, workers: int) -> dict:
     return {"n": len(frame), "wall": wall, "rerun": rerun, "busy": busy, "fraction": busy / (workers * wall)}
 
 
-def bench_sweep(workers=(1, 2)) -> list[dict]:
-    """Time the sweeps per worker count, print the speedup; returns rows for bench/results/latest.json."""
+def bench_sweep(workers=(1, 2), repeats: int = 2) -> list[dict]:
+    """Time the sweeps per worker count, print the speedup; returns rows for bench/results/latest.json.
+    The worker counts alternate and each keeps its best of ``repeats`` sweeps: the first sweep of the
+    process pays the client's one-time imports (pandas for the summary, about 0.6 s), which would
+    otherwise count against whichever worker count ran first."""
     rows, ball = [], {}
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     for deck, grid, label in ((BALL, GRID, "ball"), (ROLLER, ROLLER_GRID, "roller")):
+        best: dict[int, dict] = {}
+        for _ in range(repeats):
+            for n in workers:
+                r = _one(deck, grid, n)
+                if n not in best or r["wall"] < best[n]["wall"]:
+                    best[n] = r
         for n in workers:
-            r = _one(deck, grid, n)
+            r = best[n]
             if label == "ball":
                 ball[n] = r
-            print(f"sweep {label}: {r['n']} cases on {n} worker(s): {r['wall']:.2f} s wall, cases' own time "
-                  f"{r['busy']:.2f} s, workers busy {100 * r['fraction']:.0f} %, sweep cost "
+            print(f"sweep {label}: {r['n']} cases on {n} worker(s): {r['wall']:.2f} s wall (best of {repeats}), "
+                  f"cases' own time {r['busy']:.2f} s, workers busy {100 * r['fraction']:.0f} %, sweep cost "
                   f"{1000 * (n * r['wall'] - r['busy']) / r['n']:.1f} ms a case; rerun {r['rerun']:.3f} s")
             rows.append({"deck": deck.name, "case": f"sweep {r['n']} cases, {n} worker(s)", "best_s": r["wall"],
                          "median_s": r["wall"]})
@@ -66,7 +75,7 @@ def bench_sweep(workers=(1, 2)) -> list[dict]:
     if 1 in ball and 2 in ball:
         speedup = ball[1]["wall"] / ball[2]["wall"]
         verdict = "met" if speedup >= SPEEDUP_TARGET else "NOT met"
-        print(f"sweep: 32 ball cases, 1 worker {ball[1]['wall']:.1f} s, 2 workers {ball[2]['wall']:.1f} s: speedup "
+        print(f"sweep: 32 ball cases, 1 worker {ball[1]['wall']:.2f} s, 2 workers {ball[2]['wall']:.2f} s: speedup "
               f"{speedup:.2f}x (target >= {SPEEDUP_TARGET}x: {verdict}; {os.cpu_count()} CPUs, load average "
               f"{load:.1f} before the bench)")
         rows.append({"deck": BALL.name, "case": "sweep speedup 2 vs 1", "best_s": speedup, "median_s": speedup})

@@ -98,6 +98,25 @@ def test_sweep_varies_the_diametral_clearance():
         make_cases([varied, parse_vary("free_contact_angle=1,2,3", deck)])
 
 
+def test_case_decks_from_one_parsed_base_equal_those_parsed_per_case():
+    """A sweep parses its base deck once; each case's values are set and then restored, so every
+    case deck (a derived field and a plain one among the varied) equals the one built from the text."""
+    from pyadore.deck import parse_text
+    from pyadore.sweeps.grid import case_deck_text
+
+    text = RADIAL.read_text()
+    deck, problems = parse_text(text, str(RADIAL))
+    assert not problems
+    varied = [parse_vary("diametral_clearance=0:50e-6:3", deck), parse_vary("inner_race_speed=1000,9000", deck)]
+    cases = make_cases(varied)
+    shared = [case_deck_text(text, str(RADIAL), varied, c, base=deck) for c in cases]
+    assert shared == [case_deck_text(text, str(RADIAL), varied, c) for c in cases]
+    assert len(set(shared)) == len(cases)
+    from pyadore.deck.writer import format_deck
+
+    assert format_deck(deck) == text            # the base deck is as read after the cases
+
+
 # -- pyadore.run of a Deck, overrides ------------------------------------------------------------
 def test_run_takes_a_deck_object_and_overrides(ball_deck, tmp_path):
     deck = read_deck(ball_deck)

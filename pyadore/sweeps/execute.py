@@ -43,8 +43,9 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
     time steps, ``results_nc`` its netCDF results file (base64; docs/results.md), ``results``
     the key results of the last printed step and the time averages over the last shaft
     revolution (:func:`pyadore.sweeps.results.mean_results`).
-    ``status`` is ``ok``, ``input-error`` (the engine refused the deck), ``engine-failure``
-    or ``error`` (anything else, e.g. a print file that does not read).  A failed run that
+    ``status`` is ``ok``, ``invalid`` (the deck validator's problems, before any run; the
+    message names the worker's ``tmp_deck``), ``input-error`` (the engine refused the deck),
+    ``engine-failure`` or ``error`` (anything else, e.g. a print file that does not read).  A failed run that
     kept its print and plot-data file (a time integration that stopped early) returns their
     texts as ``incomplete_text`` and ``incomplete_history``: the worker's folder is removed,
     the client keeps them in the case folder (``tmp_deck`` and ``tmp_print``: the paths
@@ -59,6 +60,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
            "incomplete_text": None, "incomplete_history": None}
     try:
         from ..api import run
+        from ..deck import check_deck
         from ..errors import AdoreEngineError, AdoreInputError
         from ..printout import PrintFormatError, read_print
         from .results import key_results, mean_results
@@ -69,6 +71,12 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
             deck.write_text(deck_text, encoding="utf-8")
             prt = Path(tmp) / "case.prt"
             out["tmp_print"] = str(prt)
+            _, problems = check_deck(deck)  # here, in parallel, not in the client's serial loop
+            if problems:
+                out.update(status="invalid", error="\n".join(p.format() for p in problems)
+                           + f"\n{deck}: {len(problems)} problem(s)")
+                out["duration_s"] = time.perf_counter() - start
+                return out
             try:
                 # the sweep has its own progress bar
                 result = run(deck, steps=steps, out=prt, progress=False, **(options or {}))

@@ -161,30 +161,40 @@ def make_cases(varied: list[Varied], zip_values: bool = False) -> list[Case]:
     return [Case(f"case_{i + 1:0{width}d}", dict(zip(names, row))) for i, row in enumerate(rows)]
 
 
-def case_deck_text(base_text: str, base_path: str, varied: list[Varied], case: Case) -> str:
+def case_deck_text(base_text: str, base_path: str, varied: list[Varied], case: Case, base=None) -> str:
     """The deck text of ``case``: the base deck with the varied fields set, unchanged records
-    verbatim.  Raises :class:`~pyadore.deck.DeckError` when a value cannot be written in its
-    field (the case is then invalid)."""
+    verbatim.  ``base``: the base deck already parsed from ``base_text`` (a sweep parses it once;
+    its values are restored before this returns, so it serves every case).  Raises
+    :class:`~pyadore.deck.DeckError` when a value cannot be written in its field (the case is
+    then invalid)."""
     from ..deck import parse_text
 
-    deck, problems = parse_text(base_text, base_path)
-    if problems:
-        raise DeckError(f"{base_path}: {len(problems)} problem(s) reading the deck", problems)
-    for v in varied:
-        value = case.params[v.name]
-        if v.field in DERIVED_FIELDS:
-            deck.set(v.field, value)
-            continue
-        for rec in deck.records:
-            if rec.rid in v.records and v.field in rec.fields:
-                fv = rec.fields[v.field]
-                fv.value = value
-                fv.blank = False
-    for rec in deck.records:  # the case's print is titled with its parameters (Rec 3.1)
-        if rec.rid == "3.1" and "run_id" in rec.fields:
-            rec.fields["run_id"].value = case_title(case)
-            rec.fields["run_id"].blank = False
-    return format_deck(deck)
+    deck = base
+    if deck is None:
+        deck, problems = parse_text(base_text, base_path)
+        if problems:
+            raise DeckError(f"{base_path}: {len(problems)} problem(s) reading the deck", problems)
+    saved = [(fv, fv.value, fv.blank) for rec in deck.records for fv in rec.fields.values()]
+    try:
+        for v in varied:
+            value = case.params[v.name]
+            if v.field in DERIVED_FIELDS:
+                deck.set(v.field, value)
+                continue
+            for rec in deck.records:
+                if rec.rid in v.records and v.field in rec.fields:
+                    fv = rec.fields[v.field]
+                    fv.value = value
+                    fv.blank = False
+        for rec in deck.records:  # the case's print is titled with its parameters (Rec 3.1)
+            if rec.rid == "3.1" and "run_id" in rec.fields:
+                rec.fields["run_id"].value = case_title(case)
+                rec.fields["run_id"].blank = False
+        return format_deck(deck)
+    finally:  # the base deck as read, for the next case
+        for fv, value, blank in saved:
+            fv.value = value
+            fv.blank = blank
 
 
 def case_title(case: Case) -> str:

@@ -57,9 +57,9 @@ def _umask() -> int:
 _MODE = 0o666 & ~_umask()
 
 
-def write_atomic(path: Path, text: str | bytes) -> None:
+def write_atomic(path: Path, text: str | bytes, durable: bool = True) -> None:
     """Write ``text`` (or bytes) to ``path`` so that ``path`` is either the old file or the
-    whole new one."""
+    whole new one; ``durable``: flushed to the disk (fsync) before it replaces the old file."""
     path = Path(path)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}{_TMP_TAG}", dir=path.parent)
     try:
@@ -67,7 +67,8 @@ def write_atomic(path: Path, text: str | bytes) -> None:
         with os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""})) as fh:
             fh.write(text)
             fh.flush()
-            os.fsync(fh.fileno())
+            if durable:
+                os.fsync(fh.fileno())
         os.chmod(tmp, _MODE)
         os.replace(tmp, path)
     except BaseException:
