@@ -27,8 +27,9 @@ ROLLER_GRID = {"inner_race_speed": [50000 + 500 * k for k in range(16)], "applie
 SPEEDUP_TARGET = 1.8
 
 
-def _one(deck: Path, grid: dict, workers: int) -> dict:
-    """One sweep into a fresh folder, then its rerun; wall times, case time sum, busy fraction."""
+def _one(deck: Path, grid: dict, workers) -> dict:
+    """One sweep into a fresh folder, then its rerun; wall times, case time sum, busy fraction.
+    workers: a number (the sweep starts its own processes) or a warm WorkerPool."""
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp) / "sweep"
         start = time.perf_counter()
@@ -44,7 +45,31 @@ def _one(deck: Path, grid: dict, workers: int) -> dict:
             raise SystemExit("sweep bench: the rerun recomputed cases")
         cases = json.loads((folder / "manifest.json").read_text())["cases"]
     busy = sum(c["duration_s"] for c in cases)
-    return {"n": len(frame), "wall": wall, "rerun": rerun, "busy": busy, "fraction": busy / (workers * wall)}
+    n = workers if isinstance(workers, int) else workers.size
+    return {"n": len(frame), "wall": wall, "rerun": rerun, "busy": busy, "fraction": busy / (n * wall)}
+
+
+def bench_warm_pool(workers=(1, 2), repeats: int = 2) -> list[dict]:
+    """The 32-case sweep on a WorkerPool already booted (a sweep of one case first): the speedup
+    without the workers' start-up, for studies that run several sweeps in one process."""
+    from pyadore.sweeps import WorkerPool
+
+    best: dict[int, float] = {}
+    for n in workers:
+        with WorkerPool(n) as pool:
+            with tempfile.TemporaryDirectory() as tmp:  # boots the processes
+                pyadore.sweep(BALL, {"inner_race_speed": [20000 + k for k in range(n)]}, Path(tmp) / "w", steps=0, workers=pool,
+                              progress=False)
+            best[n] = min(_one(BALL, GRID, pool)["wall"] for _ in range(repeats))
+    rows = [{"deck": BALL.name, "case": f"sweep 32 cases, warm pool of {n}", "best_s": t, "median_s": t}
+            for n, t in best.items()]
+    if 1 in best and 2 in best:
+        speedup = best[1] / best[2]
+        print(f"sweep on a warm WorkerPool: 32 ball cases, 1 worker {best[1]:.2f} s, 2 workers {best[2]:.2f} s: "
+              f"speedup {speedup:.2f}x")
+        rows.append({"deck": BALL.name, "case": "sweep speedup 2 vs 1, warm pool", "best_s": speedup,
+                     "median_s": speedup})
+    return rows
 
 
 def bench_sweep(workers=(1, 2), repeats: int = 2) -> list[dict]:
@@ -79,4 +104,4 @@ def bench_sweep(workers=(1, 2), repeats: int = 2) -> list[dict]:
               f"{speedup:.2f}x (target >= {SPEEDUP_TARGET}x: {verdict}; {os.cpu_count()} CPUs, load average "
               f"{load:.1f} before the bench)")
         rows.append({"deck": BALL.name, "case": "sweep speedup 2 vs 1", "best_s": speedup, "median_s": speedup})
-    return rows
+    return rows + bench_warm_pool(workers, repeats)

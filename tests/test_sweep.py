@@ -347,3 +347,28 @@ def test_worker_starts_without_pandas_and_reads_the_same_key_results(tmp_path):
         assert plain.step_numbers == framed.step_numbers and plain.echo == {}
         assert key_results(plain) == key_results(framed)
         assert all(v == v for v in key_results(plain).values())   # no NaN: every value found
+
+
+def test_a_worker_pool_stays_warm_across_sweeps(tmp_path):
+    """Two sweeps on one WorkerPool run on the same two processes (booted once) and give the
+    summary a sweep with its own workers gives; closing the pool ends the processes."""
+    from pyadore.sweeps import WorkerPool
+
+    grid = {"applied_force_z": [500, 750, 1000, 1250]}
+    own = pyadore.sweep(ROLLER, grid, tmp_path / "own", steps=0, workers=2, progress=False)
+    with WorkerPool(2) as pool:
+        first = pyadore.sweep(ROLLER, grid, tmp_path / "a", steps=0, workers=pool, progress=False)
+        procs = [w.proc for w in pool._workers]
+        assert all(p is not None and p.poll() is None for p in procs)
+        second = pyadore.sweep(ROLLER, {"inner_race_speed": [60000, 65000]}, tmp_path / "b", steps=0,
+                               workers=pool, progress=False)
+        assert [w.proc for w in pool._workers] == procs       # the same processes, not restarted
+        pids = {f"{p.pid}" for p in procs}
+        for folder in (tmp_path / "a", tmp_path / "b"):
+            used = {e["worker"].rsplit(":", 1)[1] for e in json.loads((folder / "manifest.json").read_text())["cases"]}
+            assert used <= pids
+    assert all(p.poll() is not None for p in procs)             # ended with the pool
+    assert list(second["status"]) == ["ok", "ok"]
+    pd.testing.assert_frame_equal(first, own)
+    with pytest.raises(SweepError, match="WorkerPool"):
+        pyadore.sweep(ROLLER, grid, tmp_path / "c", steps=0, workers=0, progress=False)

@@ -7,9 +7,10 @@ writes, ``results`` takes the key results from a print file, ``runner`` ties the
 
 from __future__ import annotations
 
-__all__ = ["sweep", "read_summary", "SweepError", "RESULT_COLUMNS"]
+__all__ = ["sweep", "read_summary", "SweepError", "RESULT_COLUMNS", "WorkerPool"]
 
-_LAZY = {"sweep": ".runner", "read_summary": ".runner", "SweepError": ".grid", "RESULT_COLUMNS": ".results"}
+_LAZY = {"sweep": ".runner", "read_summary": ".runner", "SweepError": ".grid", "RESULT_COLUMNS": ".results",
+         "WorkerPool": ".execute"}
 
 
 def __getattr__(name: str):

@@ -21,7 +21,7 @@ import time
 from pathlib import Path
 from typing import Callable, Iterable
 
-__all__ = ["run_case", "run_local", "run_dask"]
+__all__ = ["run_case", "run_local", "run_dask", "WorkerPool"]
 
 
 def _guide(deck_text: str) -> str:
@@ -127,20 +127,24 @@ def _start_process():
 
 
 class _Worker:
-    """One local worker process (:mod:`pyadore.sweeps.worker`) and the thread feeding it."""
+    """One local worker process (:mod:`pyadore.sweeps.worker`), started on demand and
+    restarted after a crash; :meth:`serve` feeds it one sweep's jobs in a thread."""
 
-    def __init__(self, jobs, results) -> None:
-        import threading
+    def __init__(self) -> None:
+        self.proc = None
 
-        self.proc = _start_process()
-        self.thread = threading.Thread(target=self._serve, args=(jobs, results), daemon=True)
-        self.thread.start()
+    def start(self) -> None:
+        """Start the process unless it runs (it boots while the client prepares cases)."""
+        if self.proc is None or self.proc.poll() is not None:
+            self.proc = _start_process()
 
-    def _serve(self, jobs, results) -> None:
+    def serve(self, jobs, results) -> None:
+        """Run jobs from the queue ``jobs`` until a None; each result, then a None, to ``results``."""
         while True:
             job = jobs.get()
             if job is None:
                 break
+            self.start()
             try:
                 self.proc.stdin.write(json.dumps(list(job)) + "\n")
                 self.proc.stdin.flush()
@@ -152,14 +156,14 @@ class _Worker:
                 results.put(_died(job[0], f"the worker process died while running this case (exit status "
                                           f"{code}): a crash of the engine"))
                 self.stop()
-                self.proc = _start_process()
                 continue
             results.put(json.loads(line))
         results.put(None)
-        self.stop()
 
     def stop(self) -> None:
         """Close the worker's stdin (it exits when idle) and end it if it does not."""
+        if self.proc is None:
+            return
         try:
             self.proc.stdin.close()
         except OSError:
@@ -168,36 +172,76 @@ class _Worker:
             self.proc.wait(timeout=5)
         except Exception:
             self.proc.kill()
+        self.proc = None
 
     def kill(self) -> None:
         """End the worker now (the sweep was interrupted)."""
+        if self.proc is None:
+            return
         self.proc.kill()
         try:
             self.proc.wait(timeout=5)
         except Exception:
             pass
+        self.proc = None
 
 
-def run_local(jobs: Iterable[tuple], workers: int, on_result: Callable[[dict], None], count: int) -> None:
+class WorkerPool:
+    """Local worker processes that stay warm across sweeps: ``with WorkerPool(2) as pool:``
+    then ``pyadore.sweep(..., workers=pool)`` as often as needed.  Each process boots once
+    (the interpreter, numpy, the engine: about 0.4 s of CPU, docs/sweeps.md "Scaling"), at
+    its first sweep, instead of at every sweep; :meth:`close` (or the end of the ``with``)
+    ends them, and they end by themselves when this process exits."""
+
+    def __init__(self, workers: int) -> None:
+        if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+            raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
+        self.size = workers
+        self._workers = [_Worker() for _ in range(workers)]
+
+    def __enter__(self) -> "WorkerPool":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def __repr__(self) -> str:
+        running = sum(w.proc is not None for w in self._workers)
+        return f"WorkerPool({self.size}, {running} running)"
+
+    def close(self) -> None:
+        """End the worker processes (a later sweep on this pool starts them again)."""
+        for w in self._workers:
+            w.stop()
+
+
+def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None], count: int) -> None:
     """Run ``jobs`` (tuples of :func:`run_case` arguments, at most ``count``) on ``workers``
-    local worker processes started once for the sweep, when the first job comes (they boot
-    while the client prepares the next ones); ``on_result`` gets each :func:`run_case`
-    result, in this thread, as it arrives.  A case whose process dies (a crash in the
-    engine) is reported as an error and a fresh process takes the next case; the others
-    are not affected."""
+    local worker processes (a number: started for this sweep when the first job comes, so
+    they boot while the client prepares the next ones, and ended after it; or a
+    :class:`WorkerPool`, whose processes stay warm); ``on_result`` gets each
+    :func:`run_case` result, in this thread, as it arrives.  A case whose process dies (a
+    crash in the engine) is reported as an error and a fresh process takes the next case;
+    the others are not affected."""
     import queue
+    import threading
 
+    own = not isinstance(workers, WorkerPool)
+    pool = WorkerPool(max(1, min(workers, count))) if own else workers
     pending: queue.Queue = queue.Queue()
     results: queue.Queue = queue.Queue()
-    pool: list[_Worker] = []
+    used: list[_Worker] = []
     try:
         for job in jobs:
-            if not pool:
-                pool = [_Worker(pending, results) for _ in range(max(1, min(workers, count)))]
+            if not used:
+                used = pool._workers[:max(1, min(pool.size, count))]
+                for w in used:
+                    w.start()
+                    threading.Thread(target=w.serve, args=(pending, results), daemon=True).start()
             pending.put(job)
-        for _ in pool:
-            pending.put(None)  # no more jobs: each worker ends after its last one
-        running = len(pool)
+        for _ in used:
+            pending.put(None)  # no more jobs: each worker's thread ends after its last one
+        running = len(used)
         while running:
             try:
                 res = results.get(timeout=0.5)
@@ -213,10 +257,13 @@ def run_local(jobs: Iterable[tuple], workers: int, on_result: Callable[[dict], N
                 pending.get_nowait()
             except queue.Empty:
                 break
-        for w in pool:
+        for w in used:
             pending.put(None)
             w.kill()
         raise
+    finally:
+        if own:
+            pool.close()
 
 
 def run_dask(jobs: Iterable[tuple], scheduler, on_result: Callable[[dict], None]) -> None:

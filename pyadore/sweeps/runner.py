@@ -287,7 +287,7 @@ def _progress(total: int, enabled: bool | None):
     return tqdm(total=total, unit="case", desc="sweep", disable=False, file=sys.stderr, dynamic_ncols=True)
 
 
-def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, workers: int | None = None,
+def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, workers=None,
           scheduler=None, progress: bool | None = None, **options):
     """Run ``deck`` (a deck file or a :class:`pyadore.deck.Deck`) over the values of ``vary``
     and return the summary as a pandas DataFrame.
@@ -299,7 +299,8 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
     out_dir: the sweep folder (layout in :mod:`pyadore.sweeps.store`); rerunning the same
     sweep into it runs only the cases that are missing or failed.
     steps: as :func:`pyadore.run` (0 = the quasi-static start only).
-    workers: local worker processes [default: the CPU count]; scheduler: the address of a
+    workers: local worker processes [default: the CPU count], or a
+    :class:`~pyadore.sweeps.WorkerPool` whose processes stay warm across sweeps; scheduler: the address of a
     Dask distributed scheduler (or a ``distributed.Client``) to run the cases on instead.
     progress: ``None`` shows a progress bar on a terminal only.
     options: the run options of every case, as :func:`pyadore.run` takes them (the engine's
@@ -312,8 +313,11 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
     deck_path = Path(str(deck.path)) if given is not None else Path(os.fspath(deck))
     if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int) or steps < 0):
         raise SweepError(f"steps must be None or an integer >= 0, got {steps!r}")
-    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
-        raise SweepError(f"workers must be an integer >= 1, got {workers!r}")
+    from .execute import WorkerPool
+
+    if workers is not None and not isinstance(workers, WorkerPool) and (
+            isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
+        raise SweepError(f"workers must be an integer >= 1 or a WorkerPool, got {workers!r}")
     if given is not None:  # a Deck: its text as the deck writer gives it (unchanged records verbatim)
         base_text = format_deck(given)
     elif deck_path.exists() and not deck_path.is_file():  # a FIFO would wait for a writer for ever
