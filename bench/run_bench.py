@@ -10,7 +10,8 @@ fast one over those contacts with slide/roll, spin/roll x 0.5 .. x 2 and loads x
 (tests/test_ehd_fast.py's range of the 1e-4 accuracy test): its rows give the mean over the
 contacts (best_s) and the slowest contact (median_s column: the largest), in seconds, and
 us_per_contact.  The dynamics (`dynamics`): the full Appendix C run, DYNAMIC_STEPS time steps
-after step 0 (the deck's 2500), standalone and f2py, with the default two-dimensional race
+after step 0 (the deck's 2500), standalone and f2py (`pyadore.run`, which also reads the print and plot data and
+writes the netCDF results dataset, and the extension's engine call alone), with the default two-dimensional race
 traction and with the one-dimensional developer option (`--traction-1d`, `traction_2d=False`;
 docs/dynamics.md): best and median wall time of DYNAMIC_REPEAT runs, the least CPU time
 (the process's own, or the child's for the executable: steadier than wall time on a shared
@@ -41,6 +42,7 @@ from pathlib import Path
 
 import pyadore
 from pyadore import _core
+from pyadore.options import options_text
 
 ROOT = Path(__file__).resolve().parent.parent
 DECKS = [ROOT / "decks" / "appendix_c_ball.inp", ROOT / "decks" / "appendix_d_roller.inp"]
@@ -153,8 +155,12 @@ def _dynamic_rows(exe):
         out = Path(tmp) / "dynamics.prt"
         for traction, two_d in (("2-D traction (default)", True), ("1-D traction (--traction-1d)", False)):
             flag = [] if two_d else ["--traction-1d"]
+            engine_options = options_text(steps=DYNAMIC_STEPS, traction_2d=two_d)
             for label, fn in [
+                # pyadore.run: the engine, then the print, plot data and the netCDF results dataset read and written
                 ("f2py", lambda: pyadore.run(deck, steps=DYNAMIC_STEPS, out=out, traction_2d=two_d, progress=False)),
+                # the extension's engine call alone (the same run; no Python progress callback, no dataset)
+                ("f2py engine call", lambda: _core.run_file(deck, out, engine_options)),
                 ("executable", lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(DYNAMIC_STEPS)] + flag,
                                                       check=True, capture_output=True)),
             ]:
