@@ -14,7 +14,7 @@ module adore_core_strings
    private
 
    public :: is_space, is_blank, lstrip_count, strip, rstrip, itoa, quoted
-   public :: join_words, trim_zeros, strip_inner, replaced, upper
+   public :: join_words, trim_zeros, strip_inner, replaced, upper, lower
    public :: first_non_ascii, utf8_chars, utf8_char_start, utf8_code_point
 
 contains
@@ -203,6 +203,17 @@ contains
          if (s(i:i) >= "a" .and. s(i:i) <= "z") t(i:i) = achar(iachar(s(i:i)) - 32)
       end do
    end function upper
+
+   !> Lower-case ASCII copy of `s`.
+   pure function lower(s) result(t)
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: t
+      integer :: i
+      t = s
+      do i = 1, len(s)
+         if (s(i:i) >= "A" .and. s(i:i) <= "Z") t(i:i) = achar(iachar(s(i:i)) + 32)
+      end do
+   end function lower
 
    !> Byte index of the first non-ASCII byte of `s` at or after byte `from`, 0 if none.
    pure integer function first_non_ascii(s, from)

@@ -13,7 +13,7 @@ module adore_deck_tokenizer
    use adore_core_kinds, only: wp
    use adore_deck_schema, only: LABEL_WIDTH, INT_WIDTH, REAL_WIDTH
    use adore_core_strings, only: is_space, is_blank, lstrip_count, strip, itoa, join_words, &
-                                 trim_zeros, strip_inner
+                                 trim_zeros, strip_inner, lower
    implicit none
    private
 
@@ -250,17 +250,6 @@ contains
          j = j + 1
       end do
    end function count_digits
-
-   !> Lower-case ASCII copy of `s`.
-   pure function lower(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: t
-      integer :: i
-      t = s
-      do i = 1, len(s)
-         if (s(i:i) >= "A" .and. s(i:i) <= "Z") t(i:i) = achar(iachar(s(i:i)) + 32)
-      end do
-   end function lower
 
    !> A real as Python formats it with "{:.6G}" (6 significant digits, trailing zeros
    !> removed; exponent form below 1E-4 and from 1E6 up): 0.146292, 1E+10, -9.81.
