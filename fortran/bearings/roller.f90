@@ -9,7 +9,7 @@ module adore_bearings_roller
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t
    use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, body_dof_t, &
-                                    deck_constraints
+                                    cage_option_free
    use adore_geometry_mounted, only: mount_geometry
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_dynamics_integrator, only: integrator_t
@@ -147,17 +147,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: method
       logical :: cage_free
-      type(dof_constraints_t) :: deck_dof
-      select case (self%options%cage)
-      case ("free")
-         cage_free = .true.
-      case ("deck")   ! Rec 3.3 (report 4.4.6): all zero constrains nothing
-         call deck_constraints(self%bearing%dof_flags, deck_dof, error)
-         if (allocated(error)) return
-         cage_free = all(deck_dof%cage%translation)
-      case default
-         cage_free = .false.
-      end select
+      call cage_option_free(self%options%cage, self%bearing%dof_flags, cage_free, error)
+      if (allocated(error)) return
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       associate (s => self%step0, e => self%step0%equilibrium)
          call start_roller_dynamics(self%bearing, mount_geometry(self%bearing, self%bearing%temperature, 2), &
