@@ -13,7 +13,7 @@ module adore_bearings_ball
    use adore_core_error, only: error_type, engine_error
    use adore_core_strings, only: itoa, upper
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE
-   use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, deck_constraints, &
+   use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, cage_option_free, &
                                     dof_constraints_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
@@ -135,17 +135,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: method
       logical :: cage_free
-      type(dof_constraints_t) :: deck_dof
-      select case (self%options%cage)
-      case ("free")
-         cage_free = .true.
-      case ("deck")   ! Rec 3.3 (report 4.4.6): all zero constrains nothing
-         call deck_constraints(self%bearing%dof_flags, deck_dof, error)
-         if (allocated(error)) return
-         cage_free = all(deck_dof%cage%translation)
-      case default
-         cage_free = .false.
-      end select
+      call cage_option_free(self%options%cage, self%bearing%dof_flags, cage_free, error)
+      if (allocated(error)) return
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &

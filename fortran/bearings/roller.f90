@@ -8,7 +8,8 @@ module adore_bearings_roller
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t
-   use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, body_dof_t
+   use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, body_dof_t, &
+                                    cage_option_free
    use adore_geometry_mounted, only: mount_geometry
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_dynamics_integrator, only: integrator_t
@@ -85,9 +86,15 @@ contains
       character(len=:), allocatable, intent(out) :: text
       text = ""
       if (n_steps < 1) return
-      text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage centred, turning "// &
-             "about its axis only (translation and tilt constrained, report 4.4.6); rectangular pockets as flat "// &
-             "walls (kPocType 0 not identified); no flanges"
+      if (self%eom%cage_free) then
+         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage free in the "// &
+                "radial plane and about its axis (axial motion and tilt suppressed, report 4.4.6), on its "// &
+                "pockets and guide lands; rectangular pockets as flat walls (kPocType 0 not identified); no flanges"
+      else
+         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage centred, turning "// &
+                "about its axis only (translation and tilt constrained, report 4.4.6); rectangular pockets as "// &
+                "flat walls (kPocType 0 not identified); no flanges"
+      end if
    end subroutine roller_run_note
 
    !> The print listing's lines on the physics of the time integration.
@@ -98,9 +105,14 @@ contains
       character(len=*), parameter :: lf = new_line("a")
       text = ""
       if (n_steps < 1) return
-      text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf// &
-             "  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf// &
-             "  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/dynamics.md, Roller dynamics)"//lf
+      text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf
+      if (self%eom%cage_free) then
+         text = text//"  CAGE FREE IN THE RADIAL PLANE AND ABOUT ITS AXIS, ON ITS POCKETS AND GUIDE LANDS "// &
+                "(AXIAL MOTION AND TILT SUPPRESSED, REPORT 4.4.6)"//lf
+      else
+         text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
+      end if
+      text = text//"  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/dynamics.md, Roller dynamics)"//lf
    end subroutine roller_listing_lines
 
    !> dy/dtau of the equations of motion (adore_dynamics_roller_system).
@@ -124,14 +136,19 @@ contains
    !> The dynamics from the step-0 start: each roller at its equilibrium radius, tilt and
    !> orbital speed, its land spinning in pure rolling on the outer race (outer race control,
    !> as step 0; adore_forces_roller_bearing's slip), the inner race at its equilibrium, the cage at its step-0
-   !> angle and speed; the pockets centred on the rollers at the start.  The cage's degrees
-   !> of freedom are the condition's (a free roller cage is an input error: not modelled).
+   !> angle and speed; the pockets centred on the rollers at the start.  The cage by the run
+   !> option cage (report 4.4.6): centred (default) turning about its axis only; free (or deck
+   !> with Rec 3.3 all zero) also translating in the radial plane from the deck's Rec 9.5.1
+   !> start whirl (adore_cage_step0's centre and velocity).
    subroutine roller_start_dynamics(self, it, y, error)
       class(roller_kind_t), intent(inout) :: self
       type(integrator_t), intent(out) :: it
       real(wp), allocatable, intent(out) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       integer :: method
+      logical :: cage_free
+      call cage_option_free(self%options%cage, self%bearing%dof_flags, cage_free, error)
+      if (allocated(error)) return
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       associate (s => self%step0, e => self%step0%equilibrium)
          call start_roller_dynamics(self%bearing, mount_geometry(self%bearing, self%bearing%temperature, 2), &
@@ -139,27 +156,30 @@ contains
                                     (self%bearing%speed_outer - e%orbital_speed)*(2.0_wp*e%r + self%bearing%d)/ &
                                     self%bearing%d, e%u, &
                                     s%cage%state%angle(1), s%cage%state%angular_speed, self%eom, it, y, error, &
-                                    int_method=method)
+                                    int_method=method, cage_free=cage_free, &
+                                    cage_start=[s%cage%state%centre(2:3), s%cage%state%velocity(2:3)])
          if (allocated(error)) return
          self%azimuth = e%azimuth
          self%last = e%azimuth
       end associate
       self%time_scale = self%eom%time_scale
-      self%condition%constraints = roller_constraints(self%bearing)
+      self%condition%constraints = roller_constraints(self%bearing, cage_free)
       self%eom%constraints = self%condition%constraints
       self%y = y
    end subroutine roller_start_dynamics
 
    !> The run's degrees of freedom until Rec 3.3's flags are read (issue #25): the cage turning
-   !> about its axis only; the rollers free, except for report 4.4.6's own example - "a
+   !> about its axis (cage_free: and translating in y, z); the rollers free, except for report 4.4.6's own example - "a
    !> perfectly aligned cylindrical roller bearing with purely radial load": no axial force,
    !> no moment, no flange (Rec 5B has none) - whose rollers' axial motion, tilt and skew are
    !> constrained (Appendix D is that case).  Free, a flangeless roller's skew grows from
    !> round-off (docs/dynamics.md, Roller dynamics).
-   pure function roller_constraints(b) result(c)
+   pure function roller_constraints(b, cage_free) result(c)
       type(bearing_t), intent(in) :: b
+      logical, intent(in) :: cage_free
       type(dof_constraints_t) :: c
       c = default_constraints(.true.)
+      if (cage_free) c%cage%translation(2:3) = .true.
       if (b%force(1) == 0.0_wp .and. all(b%moment == 0.0_wp)) &
          c%elements = body_dof_t([.false., .true., .true.], [.true., .false., .false.])
    end function roller_constraints
@@ -223,7 +243,7 @@ contains
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
       real(wp), intent(in) :: t, mean(:)
-      call record_roller_history(h, step, t*self%time_scale, self%eom, self%y)
+      call record_roller_history(h, step, t*self%time_scale, self%bearing, self%eom, self%y)
       if (size(mean) < 0) return
    end subroutine roller_record_row
 
@@ -240,9 +260,10 @@ contains
                              "modelled (thermal re-mounting of roller bearings)")
             return
          end if
-         if (any(c%constraints%cage%translation) .or. any(c%constraints%cage%rotation(2:3))) then
-            call input_error(error, "roller bearing: only the cage turning about its axis is modelled (a free "// &
-                             "roller cage is not)")
+         if (c%constraints%cage%translation(1) .or. any(c%constraints%cage%rotation(2:3)) .or. &
+             (any(c%constraints%cage%translation(2:3)) .neqv. self%eom%cage_free)) then
+            call input_error(error, "roller bearing: the cage turns about its axis and, run option cage=free, "// &
+                             "translates in the radial plane; its axial motion and tilt are not modelled")
             return
          end if
          self%eom%force = c%force

@@ -6,7 +6,8 @@
 !> frame (report eq 54) - x, r, phi, xdot, rdot, phidot, tilt gamma, skew zeta, the
 !> transverse angular velocity omega_t, omega_r (absolute, orbit-frame components) and the
 !> spin W_abs about the roller axis (absolute); then the cage angle about x and its rate;
-!> then the inner race centre (x, y, z) and velocity.  The outer race is fixed.
+!> then the inner race centre (x, y, z) and velocity; then the cage centre's y, z and their
+!> rates (held at zero unless the cage is free).  The outer race is fixed.
 !>
 !> Roller (polar coordinates in the orbiting frame, m the roller mass):
 !>     m (rddot - r phidot**2) = F_r,   m (r phiddot + 2 rdot phidot) = F_t,   m xddot = F_x.
@@ -23,10 +24,14 @@
 !> The rollers' degrees of freedom are the condition's (dof_constraints_t%elements, report
 !> 4.4.6): a constrained axial translation keeps x and xdot, a constrained rotation about
 !> e_t keeps the tilt (and omega_t), about e_r the skew (and omega_r).
-!> Cage: turning about its axis only (report 4.4.6: translation and tilt constrained, the
-!> operating condition's cage_spin_only constraints; a free roller cage is not modelled):
-!> I_c thetaddot = pocket torques + guide-land viscous torque (adore_contact_cage_land at
-!> zero eccentricity, Petroff's Couette torque).  Inner race: its translation under the
+!> Cage: turning about its axis (I_c thetaddot = pocket torques + guide-land torque) and,
+!> when free (cage_free, run option cage=free), translating in the plane normal to the
+!> bearing axis: m_c C'' = pocket forces + guide-land forces (adore_contact_cage_land: the
+!> short-bearing film when the deck has a lubricant, metallic line contact with friction
+!> when the clearance closes) + gravity.  Its axial motion and tilt stay suppressed (report
+!> 4.4.6's own example: an aligned cylindrical roller bearing under radial load).  Centred
+!> (the default), the cage stays on the bearing axis and the lands give their torque at zero
+!> eccentricity (Petroff's Couette torque).  Inner race: its translation under the
 !> applied load, gravity and the roller reactions, each direction as the condition's
 !> constraints allow; its rotation prescribed.  No module state.
 module adore_dynamics_roller_system
@@ -55,8 +60,9 @@ module adore_dynamics_roller_system
    integer, parameter, public :: ROLLER_SIZE = 11
    integer, parameter, public :: R_X = 1, R_R = 2, R_PHI = 3, R_XDOT = 4, R_RDOT = 5, R_PHIDOT = 6, R_TILT = 7, &
                                  R_SKEW = 8, R_WT = 9, R_WR = 10, R_SPIN = 11
-   !> offsets after the rollers: cage angle and rate, inner race position and velocity
-   integer, parameter, public :: CAGE_OFFSET = 0, RACE_OFFSET = 2, TAIL_SIZE = 8
+   !> offsets after the rollers: cage angle and rate, inner race position and velocity, cage
+   !> centre y, z and velocity y, z
+   integer, parameter, public :: CAGE_OFFSET = 0, RACE_OFFSET = 2, CAGE_POS_OFFSET = 8, TAIL_SIZE = 12
 
    !> The roller bearing's equations of motion.
    type, extends(derivative_t) :: roller_system_t
@@ -66,6 +72,8 @@ module adore_dynamics_roller_system
       real(wp) :: time_scale = 1.0_wp              !< T (s) per unit tau
       real(wp) :: inertia(2) = 0.0_wp              !< roller I_a, I_t (kg m**2)
       real(wp) :: cage_inertia = 0.0_wp            !< about x (kg m**2)
+      real(wp) :: cage_mass = 0.0_wp               !< (kg)
+      logical :: cage_free = .false.               !< cage centre integrated in y, z (module header)
       real(wp) :: race_mass = 0.0_wp               !< inner race (kg)
       real(wp) :: force(3) = 0.0_wp                !< applied to the inner race (N)
       real(wp), allocatable :: pocket_azimuth(:)   !< each pocket's azimuth at cage angle 0 (rad)
@@ -73,6 +81,8 @@ module adore_dynamics_roller_system
       type(roller_loads_t), allocatable :: loads(:)   !< of the last evaluation
       real(wp) :: land_torque = 0.0_wp             !< guide-land torque on the cage of the last evaluation (N m)
       real(wp) :: land_power = 0.0_wp              !< guide-land loss (W)
+      type(cage_land_geometry_t), allocatable :: land(:)   !< each guide land of the last evaluation
+      real(wp) :: cage_force(3) = 0.0_wp           !< pocket + land force on the cage, last evaluation (N)
       integer :: calls = 0
    contains
       procedure :: eval => roller_system_eval
@@ -109,22 +119,26 @@ contains
       type(race_pose_t) :: a
       type(body_state_t) :: cage, outer
       type(cage_land_geometry_t) :: lc
-      real(wp) :: race_force(3), cage_torque, m, ia, it, h
-      integer :: k, i0, c0, r0
+      real(wp) :: race_force(3), cage_torque, cage_force(3), m, ia, it, h
+      integer :: k, i0, c0, r0, g0
 
       self%calls = self%calls + 1
       if (allocated(self%failure_reason)) deallocate (self%failure_reason)
       if (.not. allocated(self%loads)) allocate (self%loads(self%n))
       c0 = ROLLER_SIZE*self%n + CAGE_OFFSET
       r0 = ROLLER_SIZE*self%n + RACE_OFFSET
+      g0 = ROLLER_SIZE*self%n + CAGE_POS_OFFSET
       a%position = y(r0 + 1:r0 + 3)
       a%velocity = y(r0 + 4:r0 + 6)
       a%cage_speed = y(c0 + 2)
+      a%cage_position = [0.0_wp, y(g0 + 1), y(g0 + 2)]
+      a%cage_velocity = [0.0_wp, y(g0 + 3), y(g0 + 4)]
       m = self%model%mass
       ia = self%inertia(1)
       it = self%inertia(2)
       race_force = 0.0_wp
       cage_torque = 0.0_wp
+      cage_force = 0.0_wp
       do k = 1, self%n
          i0 = ROLLER_SIZE*(k - 1)
          p = roller_pose(y, k)
@@ -154,22 +168,43 @@ contains
          end associate
          race_force = race_force + self%loads(k)%race_force(:, 2)
          cage_torque = cage_torque + self%loads(k)%cage_torque
+         cage_force = cage_force + self%loads(k)%cage_force
       end do
-      ! guide lands: the centred cage on its land film (Couette torque) or metal
+      ! guide lands: the cage on its land film (at zero eccentricity when centred: the Couette
+      ! torque) or metal; the outer race fixed, the inner race's land at its centre
       self%land_torque = 0.0_wp
       self%land_power = 0.0_wp
       if (allocated(self%lands)) then
+         if (.not. allocated(self%land)) allocate (self%land(size(self%lands)))
+         cage%position = a%cage_position
+         cage%velocity = a%cage_velocity
          cage%omega = [y(c0 + 2), 0.0_wp, 0.0_wp]
-         outer%omega = [self%model%speed(1), 0.0_wp, 0.0_wp]
          do k = 1, size(self%lands)
+            if (self%lands(k)%race_is_journal) then
+               outer%position = a%position
+               outer%velocity = a%velocity
+               outer%omega = [self%model%speed(2), 0.0_wp, 0.0_wp]
+            else
+               outer = body_state_t()
+               outer%omega = [self%model%speed(1), 0.0_wp, 0.0_wp]
+            end if
             call cage_land_contact(self%lands(k), cage, outer, lc)
+            self%land(k) = lc
             self%land_torque = self%land_torque + lc%moment_cage(1)
-            self%land_power = self%land_power + lc%power - lc%moment_cage(1)*(y(c0 + 2) - self%model%speed(1))
+            self%land_power = self%land_power + lc%power - lc%moment_cage(1)*(y(c0 + 2) - outer%omega(1))
+            if (self%cage_free) cage_force = cage_force + lc%force_cage
+            if (self%lands(k)%race_is_journal) race_force = race_force + lc%force_race
          end do
       end if
+      self%cage_force = cage_force
       dydt(c0 + 1) = y(c0 + 2)
       dydt(c0 + 2) = 0.0_wp
       if (self%constraints%cage%rotation(1)) dydt(c0 + 2) = (cage_torque + self%land_torque)/self%cage_inertia
+      dydt(g0 + 1:g0 + 4) = 0.0_wp
+      if (self%cage_free) then
+         dydt(g0 + 1:g0 + 2) = y(g0 + 3:g0 + 4)
+         dydt(g0 + 3:g0 + 4) = cage_force(2:3)/self%cage_mass + self%model%gravity(2:3)
+      end if
       dydt(r0 + 1:r0 + 3) = a%velocity
       dydt(r0 + 4:r0 + 6) = merge((self%force + race_force)/self%race_mass + self%model%gravity, 0.0_wp, &
                                   self%constraints%inner%translation)
@@ -196,13 +231,14 @@ contains
                                                          l/half_length, l/half_length, 1.0_wp/tt, 1.0_wp/tt, &
                                                          1.0_wp/tt]
       end do
-      scale(ROLLER_SIZE*n + 1:) = [1.0_wp, 1.0_wp/tt, l, l, l, l/tt, l/tt, l/tt]
+      scale(ROLLER_SIZE*n + 1:) = [1.0_wp, 1.0_wp/tt, l, l, l, l/tt, l/tt, l/tt, l, l, l/tt, l/tt]
    end function roller_error_scale
 
    !> The dynamics of roller bearing b (mounted geometry g, slice model qs) from its step-0
    !> start: azimuth, radius, tilt, orbital speed and spin (relative to the orbit frame) of
    !> each roller, inner race y, z (u), the cage's angle (rad) and speed (rad/s); the pockets
-   !> centred on the rollers' start azimuths at cage angle 0.  The integrator has the deck's
+   !> centred on the rollers' start azimuths at cage angle 0.  cage_free: the cage centre
+   !> integrated in y, z from cage_start = (y, z, vy, vz) (m, m/s; report 4.4.4's start whirl).  The integrator has the deck's
    !> Rec 2.1 steps and error limit (tau), the deck's Rec 1 INT METHOD as ball_int_method reads
    !> it (5: the IMEX ARK4(3)6L with each roller's block of the Jacobian implicit; int_method:
    !> another adore_dynamics_integrator method) and the packed state y at tau = 0.  An
@@ -210,7 +246,7 @@ contains
    !> constant ~0.6 us, 0.009 tau) and Dormand-Prince 5(4) at the deck's error limit holds it
    !> off its traction balance (docs/dynamics.md, Roller dynamics).
    subroutine start_roller_dynamics(b, g, qs, azimuth, r, tilt, orbital_speed, spin, u, cage_angle, cage_speed, &
-                                    sys, it, y, error, int_method, damping)
+                                    sys, it, y, error, int_method, damping, cage_free, cage_start)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(roller_qs_bearing_t), intent(in) :: qs
@@ -221,6 +257,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: int_method
       real(wp), intent(in), optional :: damping
+      logical, intent(in), optional :: cage_free
+      real(wp), intent(in), optional :: cage_start(4)
       real(wp) :: scales(3)
       type(integrator_settings_t) :: settings
       integer :: k, n
@@ -236,6 +274,12 @@ contains
       sys%time_scale = scales(3)
       sys%inertia = [b%moments(1, BODY_ELEMENT), b%moments(2, BODY_ELEMENT)]
       sys%cage_inertia = b%moments(1, BODY_CAGE)
+      sys%cage_mass = b%mass(BODY_CAGE)
+      if (present(cage_free)) sys%cage_free = cage_free
+      if (sys%cage_free .and. .not. sys%cage_mass > 0.0_wp) then
+         call input_error(error, "roller dynamics: a free cage needs a mass")
+         return
+      end if
       sys%race_mass = b%mass(BODY_INNER)
       sys%force = b%force
       sys%constraints = default_constraints(.true.)
@@ -272,6 +316,8 @@ contains
       end do
       y(ROLLER_SIZE*n + CAGE_OFFSET + 1:ROLLER_SIZE*n + CAGE_OFFSET + 2) = [cage_angle, cage_speed]
       y(ROLLER_SIZE*n + RACE_OFFSET + 2:ROLLER_SIZE*n + RACE_OFFSET + 3) = u
+      if (sys%cage_free .and. present(cage_start)) &
+         y(ROLLER_SIZE*n + CAGE_POS_OFFSET + 1:ROLLER_SIZE*n + CAGE_POS_OFFSET + 4) = cage_start
       associate (c => b%controls)
          settings = integrator_settings_t(int_method=ball_int_method(c%int_method), h_initial=c%step_initial, h_min=c%step_min, &
                                           h_max=c%step_max, error_limit=c%error_limit, rel_weight=0.0_wp, &

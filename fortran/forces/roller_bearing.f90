@@ -30,8 +30,9 @@
 !> the lever arms of the slice tractions), M_t = -s rho f_x; the normal slice loads give
 !> M_t = M_i - M_o with M = sum w q x (the tilt equation of step 0).
 !> Pocket (rectangular, kPocType 0 taken as flat walls at +-(D + c)/2 from the pocket's
-!> radial mid-plane, adore_cage_step0's roller_pocket_contacts): the roller's offset from
-!> the mid-plane d_t = r sin(phi - psi) (psi the pocket azimuth), each wall's interference
+!> radial mid-plane through the cage centre C, adore_cage_step0's roller_pocket_contacts):
+!> the roller's offset from the mid-plane d_t = r sin(phi - psi) - C . e_t(psi) (psi the
+!> pocket azimuth; C = 0 for a centred cage), each wall's interference
 !> along the roller axis -(c/2 -+ (d_t - zeta x)) on slices, Palmgren slice loads in the
 !> roller/cage contact modulus, Coulomb friction mu (Rec 10.5.1B A) against the sliding of
 !> the roller surface over the wall (regularised below SLIP_REG).  Units SI.
@@ -81,6 +82,8 @@ module adore_forces_roller_bearing
       real(wp) :: position(3) = 0.0_wp, velocity(3) = 0.0_wp    !< inner race centre (m, m/s)
       real(wp) :: pocket_azimuth = 0.0_wp                        !< psi of the roller's pocket (rad)
       real(wp) :: cage_speed = 0.0_wp                            !< cage angular speed about x (rad/s)
+      real(wp) :: cage_position(3) = 0.0_wp                      !< cage centre, inertial (m; 0 for a centred cage)
+      real(wp) :: cage_velocity(3) = 0.0_wp                      !< cage centre velocity, inertial (m/s)
    end type race_pose_t
 
    !> The loads of one roller.  Forces and moments on the roller in orbit-frame components
@@ -101,7 +104,8 @@ module adore_forces_roller_bearing
       real(wp) :: moment(3) = 0.0_wp             !< on the roller about its centre, (x, r, t) (N m)
       real(wp) :: race_force(3, 2) = 0.0_wp      !< on the outer, inner race, inertial (N)
       real(wp) :: race_torque(2) = 0.0_wp        !< about the bearing axis on outer, inner race (N m)
-      real(wp) :: cage_torque = 0.0_wp           !< pocket contact torque on the cage about x (N m)
+      real(wp) :: cage_torque = 0.0_wp           !< pocket contact torque on the cage about its centre's x axis (N m)
+      real(wp) :: cage_force(3) = 0.0_wp         !< pocket contact force on the cage, inertial (N)
    end type roller_loads_t
 
 contains
@@ -229,7 +233,8 @@ contains
       integer :: end, i
       real(wp) :: sgn
 
-      d_t = p%r*sin(p%phi - a%pocket_azimuth)
+      d_t = p%r*sin(p%phi - a%pocket_azimuth) + a%cage_position(2)*cos(a%pocket_azimuth) + &
+            a%cage_position(3)*sin(a%pocket_azimuth)
       w = m%pocket_length/POCKET_SLICES
       ! end 1: the wall on the -e_t side, end 2: on the +e_t side (adore_cage_step0)
       ld%pocket_gap = [0.5_wp*m%pocket_clearance + d_t, 0.5_wp*m%pocket_clearance - d_t]
@@ -252,7 +257,8 @@ contains
          ld%moment(2) = ld%moment(2) + mom_r
          ! sliding of the roller surface at sgn D/2 e_t over the wall: radial rdot - sgn (W_abs -
          ! w_cage) D/2, axial xdot
-         v = [p%xdot, p%rdot - sgn*(p%spin + p%phidot - a%cage_speed)*0.5_wp*m%qs%d]
+         v = [p%xdot - a%cage_velocity(1), p%rdot - dot_product(a%cage_velocity, e_r) - &
+              sgn*(p%spin + p%phidot - a%cage_speed)*0.5_wp*m%qs%d]
          vmag = hypot(v(1), v(2))
          fr = -m%pocket_friction*fn*v/sqrt(vmag**2 + SLIP_REG**2)
          ld%pocket_power = ld%pocket_power + m%pocket_friction*fn*vmag**2/sqrt(vmag**2 + SLIP_REG**2)
@@ -261,10 +267,11 @@ contains
          ! moments of the friction at sgn D/2 e_t: (sgn D/2 e_t) x (fr_x e_x + fr_r e_r)
          ld%moment(1) = ld%moment(1) - sgn*0.5_wp*m%qs%d*fr(2)
          ld%moment(2) = ld%moment(2) + sgn*0.5_wp*m%qs%d*fr(1)
-         ! reaction on the cage at the contact point (about the bearing axis)
-         pt = p%r*e_r + sgn*0.5_wp*m%qs%d*e_t
-         fc = sgn*fn*e_t - fr(2)*e_r
+         ! reaction on the cage at the contact point (torque about the cage centre's x axis)
+         pt = p%r*e_r + sgn*0.5_wp*m%qs%d*e_t - a%cage_position
+         fc = sgn*fn*e_t - fr(2)*e_r - fr(1)*[1.0_wp, 0.0_wp, 0.0_wp]
          ld%cage_torque = ld%cage_torque + dot_product(cross(pt, fc), [1.0_wp, 0.0_wp, 0.0_wp])
+         ld%cage_force = ld%cage_force + fc
       end do
    end subroutine pocket_loads
 

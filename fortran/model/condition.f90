@@ -12,7 +12,7 @@ module adore_model_condition
    private
 
    public :: operating_condition_t, condition_of, same_condition
-   public :: body_dof_t, dof_constraints_t, default_constraints, deck_constraints
+   public :: body_dof_t, dof_constraints_t, default_constraints, deck_constraints, cage_option_free
 
    !> Which degrees of freedom of a body move under its loads (.true.: free): translation
    !> along x, y, z and angular acceleration about the body's x, y, z axes.  A constrained
@@ -111,5 +111,25 @@ contains
          end if
       end do
    end subroutine deck_constraints
+
+   !> Whether the run option cage = option (report 4.4.6) frees the cage: "free" yes, "deck"
+   !> as the deck's Rec 3.3 flags say (deck_constraints: all zero constrains nothing, a
+   !> nonzero flag is an input error), anything else ("centred") no.
+   subroutine cage_option_free(option, flags, free, error)
+      character(len=*), intent(in) :: option
+      integer, intent(in) :: flags(:)
+      logical, intent(out) :: free
+      type(error_type), allocatable, intent(out) :: error
+      type(dof_constraints_t) :: deck_dof
+      select case (option)
+      case ("free")
+         free = .true.
+      case ("deck")
+         call deck_constraints(flags, deck_dof, error)
+         free = all(deck_dof%cage%translation) .and. .not. allocated(error)
+      case default
+         free = .false.
+      end select
+   end subroutine cage_option_free
 
 end module adore_model_condition

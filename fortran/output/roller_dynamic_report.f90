@@ -5,17 +5,20 @@
 !> section 1a - the load along roller 1 - included), and the roller run's history rows.
 !> No module state.
 module adore_output_roller_dynamic_report
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_strings, only: itoa
-   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, TEMP_ELEMENT, TEMP_CAGE, &
+                                  TEMP_OUTER, TEMP_INNER, TEMP_HOUSING, TEMP_SHAFT
    use adore_tribology_traction_law, only: law_kappa
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_bearing_lp_life
    use adore_forces_race_contact, only: line_flash
    use adore_tribology_roller_traction, only: line_traction_t
    use adore_forces_roller_bearing, only: roller_loads_t
-   use adore_dynamics_roller_system, only: roller_system_t, roller_pose, ROLLER_SIZE, RACE_OFFSET, CAGE_OFFSET
+   use adore_dynamics_roller_system, only: roller_system_t, roller_pose, ROLLER_SIZE, RACE_OFFSET, CAGE_OFFSET, &
+                                           CAGE_POS_OFFSET
    use adore_start_roller_step0, only: roller_step0_t, roller_wear
    use adore_output_run_history, only: run_history_t, history_shape, check_history_element
    implicit none
@@ -23,7 +26,8 @@ module adore_output_roller_dynamic_report
 
    public :: roller_step_view, new_roller_history, record_roller_history, roller_total_power
 
-   integer, parameter :: N_COLUMNS = 15
+   !> columns before the guide lands' forces, and after them
+   integer, parameter :: N_FIRST = 29, N_LAST = 0
 
 contains
 
@@ -49,7 +53,7 @@ contains
       type(roller_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
       type(life_params_t) :: lp
-      real(wp) :: w_r
+      real(wp) :: w_r, c(3), v(3)
       integer :: k, n, j, r0
       n = sys%n
       s = s0
@@ -89,12 +93,22 @@ contains
          s%race_loads(1:3, 2) = s%race_loads(1:3, 2) + sys%loads(k)%race_force(:, 2)
          s%race_loads(4, :) = s%race_loads(4, :) + sys%loads(k)%race_torque
       end do
-      ! the cage centred on the axis (its constraint): no whirl, no mass-centre offset
+      ! the cage: centred on the axis (its constraint: no whirl, no mass-centre offset) or free
+      ! in the radial plane
       s%cage%state%angular_speed = y(ROLLER_SIZE*n + CAGE_OFFSET + 2)
-      s%cage%state%whirl_speed = 0.0_wp
-      s%cage%state%centre(2:3) = 0.0_wp
+      call cage_motion(sys, y, c, v)
+      s%cage%state%centre(2:3) = c(2:3)
+      s%cage%state%velocity = v
+      s%cage%state%whirl_speed = whirl_rate(c, v)
       s%cage%state%orbital_angle = 0.0_wp
-      s%cage%state%velocity = 0.0_wp
+      if (norm2(c) > 0.0_wp) s%cage%state%orbital_angle = modulo(atan2(-c(2), c(3)), 8.0_wp*atan(1.0_wp))
+      if (allocated(sys%land) .and. allocated(s%cage%land)) then
+         do k = 1, min(size(sys%land), size(s%cage%land))
+            s%cage%land(k)%geo_int = sys%land(k)%gap
+            s%cage%land(k)%eccentricity = sys%land(k)%eccentricity
+            s%cage%land(k)%in_contact = sys%land(k)%gap <= 0.0_wp
+         end do
+      end if
       call roller_bearing_lp_life(lp, s%equilibrium%c_o, s%equilibrium%c_i, s%equilibrium%orbital_speed, &
                                   b%speed_outer, b%speed_inner, b%d, b%dm, s%life)
       s%basic_life_hours = s%life%bearing_hours
@@ -125,40 +139,73 @@ contains
       end subroutine fill_traction
    end subroutine roller_step_view
 
+   !> The cage centre c (m) and its velocity v (m/s), inertial, at state y (0 for a centred cage).
+   pure subroutine cage_motion(sys, y, c, v)
+      type(roller_system_t), intent(in) :: sys
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: c(3), v(3)
+      integer :: g0
+      g0 = ROLLER_SIZE*sys%n + CAGE_POS_OFFSET
+      c = [0.0_wp, y(g0 + 1), y(g0 + 2)]
+      v = [0.0_wp, y(g0 + 3), y(g0 + 4)]
+   end subroutine cage_motion
+
+   !> Whirl rate (rad/s) about +x of a centre at c moving at v: (c x v)_x / |c|**2 (0 on the axis).
+   pure real(wp) function whirl_rate(c, v)
+      real(wp), intent(in) :: c(3), v(3)
+      whirl_rate = 0.0_wp
+      if (c(2)**2 + c(3)**2 > 0.0_wp) whirl_rate = (c(2)*v(3) - c(3)*v(2))/(c(2)**2 + c(3)**2)
+   end function whirl_rate
+
    !> The empty history of a roller run of n_steps steps (stride > 0: every stride-th step a
    !> row, history_shape): time, step, total power loss, roller `element`'s race loads,
-   !> losses, orbital speed and pocket force, the cage speed, the inner race's y, z, and the
-   !> total loss split into race contacts, pockets and guide lands.
+   !> losses, orbital speed and pocket force, the cage speed, the inner race's y, z, the
+   !> total loss split into race contacts, pockets and guide lands, the bulk temperatures
+   !> (fixed: the roller run's thermal model is off), the cage centre's y, z, its whirl
+   !> (tangential) and radial velocity, the diametral guide clearance, the whirl rate, the
+   !> centre's velocity y, z and each guide land's
+   !> normal force (film + metal; the figure types 33-44 of the report's roller run).
    subroutine new_roller_history(h, b, n_steps, element, error, stride)
       type(run_history_t), intent(out) :: h
       type(bearing_t), intent(in) :: b
       integer, intent(in) :: n_steps, element
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: stride
-      integer :: rows, cols
+      integer :: rows, cols, k
       character(len=:), allocatable :: e
       call check_history_element(b, element, error)
       if (allocated(error)) return
       call history_shape(n_steps, b%controls%print_interval, 0, rows, cols, h%stride, stride)
       h%element = element
       e = itoa(element)
-      allocate (h%names(N_COLUMNS), h%values(rows, N_COLUMNS))
-      h%names = [character(len=len(h%names)) :: "time_s", "step", "total_power_loss_W", &
-                 "re"//e//"_contact_load_outer_N", "re"//e//"_contact_load_inner_N", &
-                 "re"//e//"_contact_loss_outer_W", "re"//e//"_contact_loss_inner_W", &
-                 "re"//e//"_orbital_speed_rad_s", "pocket"//e//"_force_N", "cage_angular_velocity_x_rad_s", &
-                 "inner_race_y_m", "inner_race_z_m", "race_contact_loss_W", "pocket_loss_W", "land_loss_W"]
+      h%n_lands = b%n_lands
+      allocate (h%names(N_FIRST + b%n_lands + N_LAST), h%values(rows, N_FIRST + b%n_lands + N_LAST))
+      h%names(:N_FIRST) = [character(len=len(h%names)) :: "time_s", "step", "total_power_loss_W", &
+                           "re"//e//"_contact_load_outer_N", "re"//e//"_contact_load_inner_N", &
+                           "re"//e//"_contact_loss_outer_W", "re"//e//"_contact_loss_inner_W", &
+                           "re"//e//"_orbital_speed_rad_s", "pocket"//e//"_force_N", &
+                           "cage_angular_velocity_x_rad_s", "inner_race_y_m", "inner_race_z_m", &
+                           "race_contact_loss_W", "pocket_loss_W", "land_loss_W", &
+                           "bulk_temp_re_K", "bulk_temp_cage_K", "bulk_temp_outer_race_K", &
+                           "bulk_temp_inner_race_K", "bulk_temp_housing_K", "bulk_temp_shaft_K", &
+                           "cage_y_m", "cage_z_m", "cage_whirl_velocity_m_s", "cage_radial_velocity_m_s", &
+                           "guide_clearance_m", "cage_whirl_speed_rad_s", "cage_velocity_y_m_s", &
+                           "cage_velocity_z_m_s"]
+      do k = 1, b%n_lands
+         h%names(N_FIRST + k) = "land"//itoa(k)//"_force_N"
+      end do
    end subroutine new_roller_history
 
-   !> Record step `step` at time `time` (s): the last evaluation of sys at state y.
-   subroutine record_roller_history(h, step, time, sys, y)
+   !> Record step `step` at time `time` (s): the last evaluation of sys (bearing b) at state y.
+   subroutine record_roller_history(h, step, time, b, sys, y)
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
       real(wp), intent(in) :: time
+      type(bearing_t), intent(in) :: b
       type(roller_system_t), intent(in) :: sys
       real(wp), intent(in) :: y(:)
       real(wp), allocatable :: values(:, :)
-      real(wp) :: race_loss
+      real(wp) :: race_loss, c(3), v(3), rad, e_c(3), clearance, land(h%n_lands)
       integer :: r0, k
       if (h%rows >= size(h%values, 1)) then
          allocate (values(max(2*size(h%values, 1), 16), size(h%values, 2)))
@@ -171,11 +218,30 @@ contains
       do k = 1, sys%n
          race_loss = race_loss + sum(sys%loads(k)%power)
       end do
+      call cage_motion(sys, y, c, v)
+      rad = norm2(c)
+      e_c = 0.0_wp
+      if (rad > 0.0_wp) e_c = c/rad
+      ! whirl (tangential) velocity: along e_x x e_c; radial: along e_c
+      clearance = ieee_value(0.0_wp, ieee_quiet_nan)
+      land = 0.0_wp
+      if (allocated(sys%lands)) then
+         if (size(sys%lands) > 0) clearance = 2.0_wp*minval(sys%lands%clearance)
+      end if
+      if (allocated(sys%land)) then
+         do k = 1, min(h%n_lands, size(sys%land))
+            land(k) = norm2(sys%land(k)%hydro_force) + sys%land(k)%metallic_load
+         end do
+      end if
       associate (ld => sys%loads(h%element))
          h%values(h%rows, :) = [time, real(step, wp), roller_total_power(sys), ld%load, ld%power, &
                                 y(ROLLER_SIZE*(h%element - 1) + 6), sum(ld%pocket_load), &
                                 y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 2), y(r0 + 2), y(r0 + 3), race_loss, &
-                                sum([(sys%loads(k)%pocket_power, k=1, sys%n)]), sys%land_power]
+                                sum([(sys%loads(k)%pocket_power, k=1, sys%n)]), sys%land_power, &
+                                b%temperature(TEMP_ELEMENT), b%temperature(TEMP_CAGE), b%temperature(TEMP_OUTER), &
+                                b%temperature(TEMP_INNER), b%temperature(TEMP_HOUSING), b%temperature(TEMP_SHAFT), &
+                                c(2), c(3), -e_c(3)*v(2) + e_c(2)*v(3), dot_product(e_c, v), clearance, &
+                                whirl_rate(c, v), v(2), v(3), land]
       end associate
    end subroutine record_roller_history
 

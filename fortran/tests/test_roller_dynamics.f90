@@ -18,7 +18,7 @@ program test_roller_dynamics
    use adore_forces_roller_bearing, only: roller_pose_t, race_pose_t, roller_loads_t, roller_loads
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, &
-                                           R_TILT, R_SKEW, R_PHI, RACE_OFFSET
+                                           R_TILT, R_SKEW, R_PHI, RACE_OFFSET, CAGE_POS_OFFSET, CAGE_OFFSET
    implicit none
 
    character(len=:), allocatable :: decks
@@ -38,21 +38,24 @@ program test_roller_dynamics
    call test_power_balance()
    call test_radial_load_stays_untilted()
    call test_averaged_loads_match_quasistatic()
+   call test_held_cage_land_film()
+   call test_free_cage_pockets()
 
    call finish("roller dynamics")
 
 contains
 
    !> The start's system (no pocket contacts when pockets is .false.).
-   subroutine start(sys, it, y, pockets)
+   subroutine start(sys, it, y, pockets, cage_free)
       type(roller_system_t), intent(out) :: sys
       type(integrator_t), intent(out) :: it
       real(wp), allocatable, intent(out) :: y(:)
       logical, intent(in) :: pockets
+      logical, intent(in), optional :: cage_free
       associate (e => s0%equilibrium)
          call start_roller_dynamics(b, mount_geometry(b, b%temperature, 2), s0%model, e%azimuth, e%r, e%tilt, &
                                     e%orbital_speed, s0%roller_spin, e%u, 0.0_wp, s0%cage%state%angular_speed, &
-                                    sys, it, y, error)
+                                    sys, it, y, error, cage_free=cage_free)
       end associate
       call check(.not. allocated(error), "dynamics started")
       sys%model%pocket = pockets
@@ -251,5 +254,94 @@ contains
       print "(a,f7.3,a)", "  time-averaged contact loads vs quasi-static: worst ", 100.0_wp*worst, " % of the largest"
       call check(worst < 0.02_wp, "time-averaged roller loads within 2 % of the quasi-static solution")
    end subroutine test_averaged_loads_match_quasistatic
+
+   !> A held roller cage (free, zero velocity) at eccentricity ratio eps off its outer-race
+   !> guide lands, the lands given a lubricant (Appendix D runs dry): each land's film force is
+   !> the short (Ocvirk) bearing's closed form F_e = -eta w R L**3 eps**2/(c**2 (1 - eps**2)**2),
+   !> F_t = pi eta w R L**3 eps/(4 c**2 (1 - eps**2)**1.5), w the cage speed (the outer race
+   !> is at rest), at eps = 0.2, 0.5, 0.8 and two directions; with the pockets off the cage's
+   !> acceleration is the lands' force over its mass plus gravity.
+   subroutine test_held_cage_land_film()
+      real(wp), parameter :: eta = 0.01_wp, eps_list(3) = [0.2_wp, 0.5_wp, 0.8_wp], dirs(2) = [0.0_wp, 2.0_wp]
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), dydt(:)
+      real(wp) :: e_e(3), e_t(3), f_e, f_t, w, c, fe_exp, ft_exp, total(3), worst, acc(2)
+      integer :: flag, k, i, j, g0
+
+      call start(sys, it, y, .false., cage_free=.true.)
+      call check(.not. allocated(error), "free cage started")
+      call check(size(sys%lands) == 2 .and. .not. any(sys%lands%race_is_journal), &
+                 "Appendix D: two outer-race guide lands")
+      sys%lands%viscosity = eta
+      allocate (dydt(size(y)))
+      g0 = ROLLER_SIZE*sys%n + CAGE_POS_OFFSET
+      w = y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 2)
+      worst = 0.0_wp
+      do i = 1, size(eps_list)
+         do j = 1, size(dirs)
+            associate (ld => sys%lands(1))
+               c = ld%clearance
+               e_e = [0.0_wp, cos(dirs(j)), sin(dirs(j))]
+               e_t = [0.0_wp, -e_e(3), e_e(2)]
+               y(g0 + 1:g0 + 2) = eps_list(i)*c*e_e(2:3)
+               y(g0 + 3:g0 + 4) = 0.0_wp
+               call sys%eval(0.0_wp, y, dydt, flag)
+               call check(flag == 0, "held cage evaluated")
+               fe_exp = -eta*w*ld%radius*ld%width**3*eps_list(i)**2/(c**2*(1.0_wp - eps_list(i)**2)**2)
+               ft_exp = pi*eta*w*ld%radius*ld%width**3*eps_list(i)/(4.0_wp*c**2*(1.0_wp - eps_list(i)**2)**1.5_wp)
+            end associate
+            total = 0.0_wp
+            do k = 1, size(sys%lands)
+               ! the journal is the cage: its film force is the land's hydro force
+               f_e = dot_product(sys%land(k)%hydro_force, e_e)
+               f_t = dot_product(sys%land(k)%hydro_force, e_t)
+               worst = max(worst, abs(f_e - fe_exp)/abs(fe_exp), abs(abs(f_t) - ft_exp)/ft_exp)
+               total = total + sys%land(k)%force_cage
+            end do
+            acc = dydt(g0 + 3:g0 + 4)/sys%time_scale
+            call check(all(abs(acc - (total(2:3)/sys%cage_mass + sys%model%gravity(2:3))) <= &
+                           1.0e-12_wp*(norm2(total)/sys%cage_mass + 10.0_wp)), &
+                       "held cage: acceleration = land forces / mass + gravity")
+         end do
+      end do
+      print "(a,es10.3)", "  held roller cage, land film vs Ocvirk closed form: worst relative error ", worst
+      call check(worst < 1.0e-10_wp, "held roller cage: each land's film force = the short-bearing closed form")
+   end subroutine test_held_cage_land_film
+
+   !> The free cage's pockets: shifting the cage by d along a pocket's e_t changes that
+   !> roller's pocket gaps by -+d (pocket frame through the cage centre); a roller pressed
+   !> into a wall gives the cage the opposite force (action = reaction with the roller's
+   !> pocket force) and the torque of that force about the cage centre.
+   subroutine test_free_cage_pockets()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), dydt(:)
+      real(wp) :: gap0(2), d, e_t(3), psi
+      integer :: flag, g0
+
+      call start(sys, it, y, .true., cage_free=.true.)
+      allocate (dydt(size(y)))
+      g0 = ROLLER_SIZE*sys%n + CAGE_POS_OFFSET
+      y(g0 + 1:g0 + 4) = 0.0_wp
+      call sys%eval(0.0_wp, y, dydt, flag)
+      gap0 = sys%loads(1)%pocket_gap
+      psi = sys%pocket_azimuth(1) + y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 1)
+      e_t = [0.0_wp, -cos(psi), -sin(psi)]
+      d = 1.0e-5_wp
+      y(g0 + 1:g0 + 2) = d*e_t(2:3)
+      call sys%eval(0.0_wp, y, dydt, flag)
+      call check(abs(sys%loads(1)%pocket_gap(1) - (gap0(1) - d)) < 1.0e-15_wp .and. &
+                 abs(sys%loads(1)%pocket_gap(2) - (gap0(2) + d)) < 1.0e-15_wp, &
+                 "cage shifted along the pocket's e_t: the pocket gaps change by -+d")
+      ! push the cage into roller 1 by 2 um beyond its gap on the -e_t wall (end 1)
+      d = gap0(1) + 2.0e-6_wp
+      y(g0 + 1:g0 + 2) = d*e_t(2:3)
+      call sys%eval(0.0_wp, y, dydt, flag)
+      call check(sys%loads(1)%pocket_load(1) > 0.0_wp, "cage pressed onto roller 1: pocket contact")
+      print "(a,es11.4,a)", "  cage pressed 2 um onto roller 1: pocket force ", sys%loads(1)%pocket_load(1), " N"
+      call check(abs(dot_product(sys%loads(1)%cage_force, e_t) + sys%loads(1)%pocket_load(1)) <= &
+                 1.0e-12_wp*sys%loads(1)%pocket_load(1), "pocket force on the cage = -(force on the roller)")
+   end subroutine test_free_cage_pockets
 
 end program test_roller_dynamics

@@ -175,11 +175,18 @@ def has_series(history: pd.DataFrame, column: str, points: int = 2) -> bool:
     return finite(history, column).index.nunique() >= points
 
 
+#: The most step numbers a figure's reason names (a run's history holds every step).
+STEPS_NAMED = 6
+
+
 def _steps_text(source, history: pd.DataFrame) -> str:
     if "step" in history.columns:
         steps = [int(s) for s in history["step"]]
         if not steps:
             return "no step"
+        if len(steps) > STEPS_NAMED:   # a history of every step: first ones, last one, count
+            head = ", ".join(map(str, steps[:STEPS_NAMED - 1]))
+            return f"steps {head}, ..., {steps[-1]} ({len(steps)} steps)"
         return ("only step " if len(steps) == 1 else "steps ") + ", ".join(map(str, steps))
     return f"{len(history)} instant(s)"
 
