@@ -151,15 +151,17 @@ contains
    end subroutine roller_start_dynamics
 
    !> The run's degrees of freedom until Rec 3.3's flags are read (issue #25): the cage turning
-   !> about its axis only; the rollers free, except for report 4.4.6's own example - "a
-   !> perfectly aligned cylindrical roller bearing with purely radial load": no axial force,
-   !> no moment, no flange (Rec 5B has none) - whose rollers' axial motion, tilt and skew are
-   !> constrained (Appendix D is that case).  Free, a flangeless roller's skew grows from
-   !> round-off (docs/dynamics.md, Roller dynamics).
+   !> about its axis only; the rollers free - in all six DOFs when flanges hold both roller
+   !> ends (Rec 5B.2) - except for report 4.4.6's own example - "a perfectly aligned
+   !> cylindrical roller bearing with purely radial load": no axial force, no moment, no
+   !> flange - whose rollers' axial motion, tilt and skew are constrained (Appendix D is that
+   !> case).  Free, a flangeless roller's skew grows from round-off (docs/dynamics.md, Roller
+   !> dynamics).
    pure function roller_constraints(b) result(c)
       type(bearing_t), intent(in) :: b
       type(dof_constraints_t) :: c
       c = default_constraints(.true.)
+      if (any(b%roller%flange(1, :)) .and. any(b%roller%flange(2, :))) return
       if (b%force(1) == 0.0_wp .and. all(b%moment == 0.0_wp)) &
          c%elements = body_dof_t([.false., .true., .true.], [.true., .false., .false.])
    end function roller_constraints

@@ -42,6 +42,7 @@ module adore_forces_roller_bearing
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_contacts
    use adore_tribology_traction_law, only: traction_law_t, law_kappa
    use adore_tribology_roller_traction, only: roller_spin_t, line_slip, RACE_OUTER, RACE_INNER
+   use adore_contact_roller_flange, only: roller_flange_set_t, flange_contact_t, flange_contact
    implicit none
    private
 
@@ -49,6 +50,7 @@ module adore_forces_roller_bearing
    public :: roller_loads, orbit_axes
 
    integer, parameter, public :: POCKET_SLICES = 8
+   integer, parameter, public :: MAX_FLANGES = 4   !< two ends x two races
    real(wp), parameter :: SLIP_REG = 1.0e-3_wp   !< friction regularisation speed (m/s)
 
    !> What does not change with the state.
@@ -65,6 +67,7 @@ module adore_forces_roller_bearing
       real(wp) :: pocket_length = 0.0_wp         !< length of the roller touching a pocket wall (m)
       real(wp) :: pocket_k = 0.0_wp              !< Palmgren slice constant roller/cage (N/m**(19/9))
       real(wp) :: pocket_friction = 0.0_wp       !< Coulomb coefficient (Rec 10.5.1B A)
+      type(roller_flange_set_t) :: flanges       !< roller end / flange contacts (none allocated: no flanges)
    end type roller_force_model_t
 
    !> One roller's state in its orbit frame.
@@ -97,6 +100,11 @@ module adore_forces_roller_bearing
       real(wp) :: pocket_load(2) = 0.0_wp        !< wall at -e_t (end 1), +e_t (end 2) (N)
       real(wp) :: pocket_gap(2) = 0.0_wp         !< geometric gap at the pocket centre plane (m; < 0 interference)
       real(wp) :: pocket_power = 0.0_wp          !< pocket friction loss (W)
+      real(wp) :: flange_load(MAX_FLANGES) = 0.0_wp   !< damped normal load of each flange of the set (N)
+      real(wp) :: flange_axial(MAX_FLANGES) = 0.0_wp  !< its axial component on the roller (N)
+      real(wp) :: flange_height(MAX_FLANGES) = 0.0_wp !< its contact height from the raceway (m)
+      real(wp) :: flange_power = 0.0_wp          !< flange contacts' traction loss (W)
+      logical :: flange_off_face = .false.       !< a loaded contact point off the face or the end's cap
       real(wp) :: force(3) = 0.0_wp              !< on the roller, (x, r, t) (N)
       real(wp) :: moment(3) = 0.0_wp             !< on the roller about its centre, (x, r, t) (N m)
       real(wp) :: race_force(3, 2) = 0.0_wp      !< on the outer, inner race, inertial (N)
@@ -209,6 +217,7 @@ contains
       ! gravity
       ld%force = ld%force + m%mass*[m%gravity(1), dot_product(m%gravity, e_r), dot_product(m%gravity, e_t)]
       if (m%pocket) call pocket_loads(m, p, a, e_r, e_t, ld)
+      if (allocated(m%flanges%flange)) call flange_loads(m, p, a, e_r, e_t, ld)
    contains
       pure function shifted(lim, dx) result(l2)
          real(wp), intent(in) :: lim(2), dx
@@ -267,5 +276,57 @@ contains
          ld%cage_torque = ld%cage_torque + dot_product(cross(pt, fc), [1.0_wp, 0.0_wp, 0.0_wp])
       end do
    end subroutine pocket_loads
+
+   !> The roller's ends against the race flanges (adore_contact_roller_flange; docs/dynamics.md,
+   !> "Flanges"): each contact's Hertz load with the stiffness-proportional damping of the
+   !> slices (beta k ddelta/dt, kept >= 0), its traction by the run's law against the sliding
+   !> of the roller end over the flange, t = kappa(|u|) Q u/|u| opposing u; the force and its
+   !> moment about the roller centre on the roller, the reaction on the race.
+   pure subroutine flange_loads(m, p, a, e_r, e_t, ld)
+      type(roller_force_model_t), intent(in) :: m
+      type(roller_pose_t), intent(in) :: p
+      type(race_pose_t), intent(in) :: a
+      real(wp), intent(in) :: e_r(3), e_t(3)
+      type(roller_loads_t), intent(inout) :: ld
+      type(flange_contact_t) :: c
+      real(wp) :: centre(3), axis(3), v(3), omega(3), o(3), v_o(3), w_o, q, um, kap, f(3)
+      integer :: i, j
+      centre = [p%x, p%r, 0.0_wp]
+      axis = [1.0_wp, p%tilt, -p%skew]
+      axis = axis/norm2(axis)
+      v = [p%xdot, p%rdot, p%r*p%phidot]
+      omega = [p%phidot + p%spin, p%spin*p%tilt + p%skewdot, -p%spin*p%skew + p%tiltdot]
+      do i = 1, size(m%flanges%flange)
+         j = m%flanges%flange(i)%race
+         if (j == 1) then
+            o = 0.0_wp
+            v_o = 0.0_wp
+         else
+            o = [a%position(1), dot_product(a%position, e_r), dot_product(a%position, e_t)]
+            v_o = [a%velocity(1), dot_product(a%velocity, e_r), dot_product(a%velocity, e_t)]
+         end if
+         w_o = m%speed(j)
+         call flange_contact(m%flanges, m%flanges%flange(i), centre, axis, v, omega, o, v_o, w_o, c)
+         if (.not. (c%delta > 0.0_wp)) cycle
+         q = max(c%load + m%damping*c%stiffness*c%rate, 0.0_wp)
+         ld%flange_load(i) = q
+         ld%flange_height(i) = c%height
+         if (q <= 0.0_wp) cycle
+         if (.not. c%on_face) ld%flange_off_face = .true.
+         f = q*c%normal
+         um = norm2(c%slip)
+         if (um > 0.0_wp) then
+            kap = law_kappa(m%law, um)
+            f = f - kap*q*c%slip/um
+            ld%flange_power = ld%flange_power + kap*q*um
+         end if
+         ld%flange_axial(i) = f(1)
+         ld%force = ld%force + f
+         ld%moment = ld%moment + cross(c%point - centre, f)
+         ! the reaction -f on the race at the contact point (inertial; torque about the axis)
+         ld%race_force(:, j) = ld%race_force(:, j) - (f(1)*[1.0_wp, 0.0_wp, 0.0_wp] + f(2)*e_r + f(3)*e_t)
+         ld%race_torque(j) = ld%race_torque(j) - (c%point(2)*f(3) - c%point(3)*f(2))
+      end do
+   end subroutine flange_loads
 
 end module adore_forces_roller_bearing
