@@ -86,8 +86,19 @@ contains
       text = ""
       if (n_steps < 1) return
       text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage centred, turning "// &
-             "about its axis only (translation and tilt constrained, report 4.4.6); rectangular pockets as flat "// &
-             "walls (kPocType 0 not identified); no flanges"
+             "about its axis only (translation and tilt constrained, report 4.4.6); "
+      if (self%bearing%roller%pocket_type == -1) then
+         text = text//"cylindrical pockets (kPocType -1, Rec 5B.2)"
+      else
+         text = text//"rectangular pockets as flat walls (kPocType 0 not identified)"
+      end if
+      if (any(self%bearing%roller%flange)) then
+         text = text//"; roller ends on the flanges of Rec 5B.2 (spherical ends, Hertz)"
+         if (any(self%bearing%roller%flange(1, :)) .and. any(self%bearing%roller%flange(2, :))) &
+            text = text//", rollers free in all six degrees of freedom"
+      else
+         text = text//"; no flanges"
+      end if
    end subroutine roller_run_note
 
    !> The print listing's lines on the physics of the time integration.
@@ -99,8 +110,14 @@ contains
       text = ""
       if (n_steps < 1) return
       text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf// &
-             "  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf// &
-             "  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/dynamics.md, Roller dynamics)"//lf
+             "  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
+      if (self%bearing%roller%pocket_type == -1) then
+         text = text//"  CYLINDRICAL ROLLER POCKETS (KPOCTYPE -1, REPORT 4.4.11)"//lf
+      else
+         text = text//"  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/dynamics.md, Roller dynamics)"//lf
+      end if
+      if (any(self%bearing%roller%flange)) text = text//"  ROLLER END / FLANGE CONTACTS: SPHERICAL ENDS ON "// &
+                                                  "LAID-BACK FLANGES (REC 5B.2, docs/dynamics.md, Flanges)"//lf
    end subroutine roller_listing_lines
 
    !> dy/dtau of the equations of motion (adore_dynamics_roller_system).

@@ -256,6 +256,8 @@ contains
                                                       b%material(BODY_CAGE)%modulus, b%material(BODY_CAGE)%poisson), &
                                       0.5_wp*b%d)
          md%pocket_friction = b%cage_friction(1)
+         md%pocket_type = b%roller%pocket_type
+         md%pocket_radius = 0.5_wp*b%dm
       end associate
       if (any(b%roller%flange)) then
          call check_flanges(b, error)

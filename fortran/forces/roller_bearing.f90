@@ -47,7 +47,7 @@ module adore_forces_roller_bearing
    private
 
    public :: roller_force_model_t, roller_pose_t, race_pose_t, roller_loads_t
-   public :: roller_loads, orbit_axes
+   public :: roller_loads, orbit_axes, cylindrical_pocket_loads
 
    integer, parameter, public :: POCKET_SLICES = 8
    integer, parameter, public :: MAX_FLANGES = 4   !< two ends x two races
@@ -68,6 +68,8 @@ module adore_forces_roller_bearing
       real(wp) :: pocket_k = 0.0_wp              !< Palmgren slice constant roller/cage (N/m**(19/9))
       real(wp) :: pocket_friction = 0.0_wp       !< Coulomb coefficient (Rec 10.5.1B A)
       type(roller_flange_set_t) :: flanges       !< roller end / flange contacts (none allocated: no flanges)
+      integer :: pocket_type = 0                 !< kPocType: 0 rectangular, -1 cylindrical (report 4.4.11)
+      real(wp) :: pocket_radius = 0.0_wp         !< radius of the pockets' centres (the cylindrical pocket's axis, m)
    end type roller_force_model_t
 
    !> One roller's state in its orbit frame.
@@ -216,7 +218,8 @@ contains
       end do
       ! gravity
       ld%force = ld%force + m%mass*[m%gravity(1), dot_product(m%gravity, e_r), dot_product(m%gravity, e_t)]
-      if (m%pocket) call pocket_loads(m, p, a, e_r, e_t, ld)
+      if (m%pocket .and. m%pocket_type == 0) call pocket_loads(m, p, a, e_r, e_t, ld)
+      if (m%pocket .and. m%pocket_type == -1) call cylindrical_pocket_loads(m, p, a, ld)
       if (allocated(m%flanges%flange)) call flange_loads(m, p, a, e_r, e_t, ld)
    contains
       pure function shifted(lim, dx) result(l2)
@@ -276,6 +279,59 @@ contains
          ld%cage_torque = ld%cage_torque + dot_product(cross(pt, fc), [1.0_wp, 0.0_wp, 0.0_wp])
       end do
    end subroutine pocket_loads
+
+   !> The roller in its cylindrical pocket (kPocType -1, report 4.4.11: a roller guided cage):
+   !> the pocket a cylinder of diameter D + c (c the pocket clearance, Rec 7.1) whose axis is
+   !> parallel to the bearing axis at the pocket radius and azimuth psi of the centred cage.
+   !> In the roller's orbit frame the pocket axis is at (r, t) = (R_p cos(phi - psi),
+   !> -R_p sin(phi - psi)); on POCKET_SLICES slices over the roller length less its corner
+   !> radii the roller axis is offset from it by e(x) = (r - R_p cos(phi - psi) + gamma x,
+   !> R_p sin(phi - psi) - zeta x) and the slice interference is |e| - c/2 along n = e/|e|
+   !> (the conformal internal line contact: the same Palmgren slice law in the roller/cage
+   !> contact modulus as the rectangular pocket's walls).  Friction: Coulomb mu (Rec 10.5.1B
+   !> A) against the sliding of the roller surface over the pocket, axially xdot and around
+   !> the pocket tau = e_x x n: (rdot, r (phidot - w_c)) . tau + (W_abs - w_c) D/2,
+   !> regularised below SLIP_REG.  pocket_load and pocket_gap: end 1 the slices at x < 0,
+   !> end 2 those at x > 0 (load, N) and the least gap of each half (m).
+   pure subroutine cylindrical_pocket_loads(m, p, a, ld)
+      type(roller_force_model_t), intent(in) :: m
+      type(roller_pose_t), intent(in) :: p
+      type(race_pose_t), intent(in) :: a
+      type(roller_loads_t), intent(inout) :: ld
+      real(wp) :: w, xs, e(2), emag, n(3), tau(3), delta, q, v(2), vmag, fx, ft, f(3), pt(3), mom(3)
+      integer :: i, h
+      w = m%pocket_length/POCKET_SLICES
+      ld%pocket_gap = huge(1.0_wp)
+      do i = 1, POCKET_SLICES
+         xs = -0.5_wp*m%pocket_length + (real(i, wp) - 0.5_wp)*w
+         h = merge(1, 2, xs < 0.0_wp)
+         e = [p%r - m%pocket_radius*cos(p%phi - a%pocket_azimuth) + p%tilt*xs, &
+              m%pocket_radius*sin(p%phi - a%pocket_azimuth) - p%skew*xs]
+         emag = norm2(e)
+         ld%pocket_gap(h) = min(ld%pocket_gap(h), 0.5_wp*m%pocket_clearance - emag)
+         delta = emag - 0.5_wp*m%pocket_clearance
+         if (delta <= 0.0_wp .or. emag <= 0.0_wp) cycle
+         q = m%pocket_k*delta**(10.0_wp/9.0_wp)*w
+         n = [0.0_wp, e(1)/emag, e(2)/emag]
+         tau = [0.0_wp, -n(3), n(2)]
+         ld%pocket_load(h) = ld%pocket_load(h) + q
+         ! sliding of the roller surface over the pocket: axial, around the pocket
+         v = [p%xdot, p%rdot*tau(2) + p%r*(p%phidot - a%cage_speed)*tau(3) + &
+              (p%spin + p%phidot - a%cage_speed)*0.5_wp*m%qs%d]
+         vmag = hypot(v(1), v(2))
+         fx = -m%pocket_friction*q*v(1)/sqrt(vmag**2 + SLIP_REG**2)
+         ft = -m%pocket_friction*q*v(2)/sqrt(vmag**2 + SLIP_REG**2)
+         ld%pocket_power = ld%pocket_power + m%pocket_friction*q*vmag**2/sqrt(vmag**2 + SLIP_REG**2)
+         f = -q*n + fx*[1.0_wp, 0.0_wp, 0.0_wp] + ft*tau
+         ld%force = ld%force + f
+         ! moment about the roller centre of f at x e_x + (D/2) n
+         mom = cross([xs, 0.5_wp*m%qs%d*n(2), 0.5_wp*m%qs%d*n(3)], f)
+         ld%moment = ld%moment + mom
+         ! the reaction -f on the cage at the contact point: its torque about the bearing axis
+         pt = [xs, p%r + 0.5_wp*m%qs%d*n(2), 0.5_wp*m%qs%d*n(3)]
+         ld%cage_torque = ld%cage_torque - (pt(2)*f(3) - pt(3)*f(2))
+      end do
+   end subroutine cylindrical_pocket_loads
 
    !> The roller's ends against the race flanges (adore_contact_roller_flange; docs/dynamics.md,
    !> "Flanges"): each contact's Hertz load with the stiffness-proportional damping of the

@@ -15,7 +15,8 @@ program test_roller_flange
    use adore_contact_line_slices, only: profile_drop
    use adore_contact_roller_flange, only: roller_flange_set_t, flange_contact_t, roller_flanges, flange_contact
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
-   use adore_forces_roller_bearing, only: roller_pose_t, race_pose_t, roller_loads_t, roller_loads
+   use adore_forces_roller_bearing, only: roller_pose_t, race_pose_t, roller_loads_t, roller_loads, &
+                                          roller_force_model_t, cylindrical_pocket_loads, POCKET_SLICES
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, &
                                            R_TILT, R_SKEW, R_X, RACE_OFFSET
@@ -26,6 +27,7 @@ program test_roller_flange
 
    call get_decks_dir(decks)
    call test_face_geometry_and_hertz()
+   call test_cylindrical_pocket()
    call test_example_deck()
    call finish("roller flanges")
 
@@ -68,6 +70,69 @@ contains
             " N, height ", c%height, " m"
       end do
    end subroutine test_face_geometry_and_hertz
+
+   !> The cylindrical pocket (kPocType -1) by hand: a roller of 7.5 mm in a pocket of
+   !> 7.6 mm (c = 0.1 mm) on a pocket radius of 23.5 mm; centred it touches nothing (gap
+   !> c/2 at both halves); pushed by delta0 = 5 um beyond the gap along the orbit (e_t) or
+   !> radially (e_r), untilted, every slice has delta0: the normal force is K delta0**(10/9)
+   !> L_p against the push, the friction mu N against the sliding of the roller surface
+   !> (spin relative to the cage times D/2, regularised: factor v/sqrt(v**2 + 1e-6)), its
+   !> moment about the roller axis -mu N D/2, and the cage's torque the reaction's about the
+   !> bearing axis.
+   subroutine test_cylindrical_pocket()
+      type(roller_force_model_t) :: m
+      type(roller_pose_t) :: p
+      type(race_pose_t) :: a
+      type(roller_loads_t) :: ld
+      real(wp), parameter :: rp = 0.0235_wp, cl = 1.0e-4_wp, d0 = 5.0e-6_wp, mu = 0.05_wp, w_rel = 100.0_wp
+      real(wp) :: dphi, fn, ff, torque
+      m%qs%d = 7.5e-3_wp
+      m%pocket_type = -1
+      m%pocket_radius = rp
+      m%pocket_clearance = cl
+      m%pocket_length = 8.0e-3_wp - 6.0e-4_wp
+      m%pocket_k = 3.0e10_wp
+      m%pocket_friction = mu
+      a%pocket_azimuth = 0.3_wp
+      a%cage_speed = 150.0_wp
+      ! centred
+      p = roller_pose_t(x=0.0_wp, r=rp, phi=0.3_wp, phidot=150.0_wp, spin=w_rel)
+      call cylindrical_pocket_loads(m, p, a, ld)
+      call check(all(abs(ld%pocket_gap - 0.5_wp*cl) < 1.0e-15_wp) .and. all(ld%pocket_load == 0.0_wp), &
+                 "centred roller: gap c/2 at both halves, no load")
+      fn = m%pocket_k*d0**(10.0_wp/9.0_wp)*m%pocket_length
+      ff = mu*fn*w_rel*0.5_wp*m%qs%d/sqrt((w_rel*0.5_wp*m%qs%d)**2 + 1.0e-6_wp)
+      ! pushed along +e_t: the pocket axis at (r, t) = (R_p cos dphi, -R_p sin dphi)
+      dphi = asin((0.5_wp*cl + d0)/rp)
+      p%phi = a%pocket_azimuth + dphi
+      p%r = rp*cos(dphi)
+      ld = roller_loads_t()
+      call cylindrical_pocket_loads(m, p, a, ld)
+      print "(a,2es13.5,a,2es13.5,a)", "  cylindrical pocket, orbit push: load ", sum(ld%pocket_load), fn, &
+         " N (run, hand); friction ", ld%force(2), ff, " N"
+      call check(abs(sum(ld%pocket_load) - fn) < 1.0e-12_wp*fn .and. abs(ld%pocket_load(1) - ld%pocket_load(2)) < &
+                 1.0e-12_wp*fn, "orbit push: load K delta0**(10/9) L_p, shared by the halves")
+      call check(abs(ld%force(3) + fn) < 1.0e-12_wp*fn, "orbit push: normal force against the push")
+      ! tau = e_x x e_t = -e_r: sliding (W_abs - w_c) D/2 along tau, friction along -tau = +e_r
+      call check(abs(ld%force(2) - ff) < 1.0e-12_wp*fn, "orbit push: Coulomb friction mu N against the sliding")
+      call check(abs(ld%moment(1) + ff*0.5_wp*m%qs%d) < 1.0e-12_wp*fn*m%qs%d, "orbit push: spin moment -mu N D/2")
+      call check(all(abs(ld%moment(2:3)) < 1.0e-12_wp*fn*m%qs%d), "orbit push, aligned roller: no tilt or skew moment")
+      ! cage torque about the axis: reaction (N e_t - ff e_r) at the point r e_r + D/2 e_t
+      torque = p%r*fn + 0.5_wp*m%qs%d*ff
+      call check(abs(ld%cage_torque - torque) < 1.0e-12_wp*fn*rp, "orbit push: the cage's torque by hand")
+      call check(abs(ld%pocket_power - ff*w_rel*0.5_wp*m%qs%d) < 1.0e-9_wp*ff*w_rel*m%qs%d, &
+                 "orbit push: friction loss mu N v")
+      ! pushed radially outwards (the roller guided cage holds the roller radially)
+      p%phi = a%pocket_azimuth
+      p%r = rp + 0.5_wp*cl + d0
+      p%spin = 0.0_wp
+      p%phidot = a%cage_speed
+      ld = roller_loads_t()
+      call cylindrical_pocket_loads(m, p, a, ld)
+      call check(abs(ld%force(2) + fn) < 1.0e-12_wp*fn .and. abs(ld%force(3)) < 1.0e-12_wp*fn .and. &
+                 ld%pocket_power == 0.0_wp, "radial push: load K delta0**(10/9) L_p inwards, no sliding, no friction")
+      call check(size(ld%pocket_load) == 2 .and. POCKET_SLICES > 0, "pocket halves")
+   end subroutine test_cylindrical_pocket
 
    !> The flanged example deck (NUP type, 5 kN radial + 0.5 kN axial, 3000 rpm) integrated
    !> past its start transient, then averaged (docs/dynamics.md, "Flanges").
