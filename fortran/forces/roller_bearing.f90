@@ -1,6 +1,8 @@
 !> Loads on one cylindrical roller at any state (issue #26): its race contacts by slices at
 !> any roller attitude and race misalignment, their traction by the run's law, its pocket
-!> contact in a rectangular cage pocket, gravity; the reactions on the races and the cage.
+!> contact in a rectangular or cylindrical (kPocType -1) cage pocket, its ends on the race
+!> flanges (adore_contact_roller_flange, flange_loads), gravity; the reactions on the races
+!> and the cage.
 !>
 !> Frame: the orbit-following frame of the roller (report eq 54 as for the balls): azimuth
 !> phi from +z towards -y, e_r = (0, -sin phi, cos phi), e_t = e_x x e_r the orbit
