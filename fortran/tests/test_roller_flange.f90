@@ -209,7 +209,8 @@ contains
       loaded_share = 0.0_wp
       worst_axial = 0.0_wp
       worst_tilt = 0.0_wp
-      print "(a)", "  roller  azimuth(deg) radial load(N) flange loads in/out(N)  couple by hand / slices (N m)"
+      print "(a)", "  roller  azimuth(deg) radial load(N) flange loads in/out(N)  couple by hand / slices, "// &
+         "all loads' tilt moment (N m)"
       do k = 1, n
          associate (ld => sys%loads(k))
             q = 0.5_wp*(ld%flange_load(2) + ld%flange_load(3))
@@ -221,8 +222,8 @@ contains
                              profile_drop(sys%model%qs%profile, ld%c(j)%x(i)))*ld%c(j)%weight(i)*ld%traction(i, 2, j)
                end do
             end do
-            print "(i7,f12.2,f14.2,2f11.3,2f12.5)", k, modulo(y(ROLLER_SIZE*(k - 1) + 3)*180.0_wp/pi, 360.0_wp), &
-               ld%load(1), ld%flange_load(3), ld%flange_load(2), m_hand, -m_slices
+            print "(i7,f12.2,f14.2,2f11.3,3f12.5)", k, modulo(y(ROLLER_SIZE*(k - 1) + 3)*180.0_wp/pi, 360.0_wp), &
+               ld%load(1), ld%flange_load(3), ld%flange_load(2), m_hand, -m_slices, ld%moment(3)
             if (ld%load(2) > 0.1_wp*b%force(3)/n) then
                loaded_share = loaded_share + ld%flange_axial(3)
                worst_axial = max(worst_axial, abs(ld%flange_axial(3) + ld%flange_axial(2))/ld%flange_axial(3))
