@@ -59,3 +59,17 @@ def test_flat_roller_end_on_a_flange_is_an_input_error(tmp_path, adore_exe):
     proc = _run(adore_exe, deck, tmp_path / "flat.prt", 10)
     assert proc.returncode == 1
     assert "spherical roller end" in proc.stderr
+
+
+def test_roller_extension_record_on_a_ball_deck_is_an_input_error(tmp_path, adore_exe):
+    """Rec 5B.2 in a ball deck (Rec 3.2 field 11 = 1) is refused, not ignored."""
+    lines = []
+    for line in (ROOT / "decks" / "appendix_c_ball.inp").read_text().splitlines():
+        lines.append(line + "     1" if line.startswith("Rec 3.2 ") else line)
+        if line.startswith("Rec 5A "):
+            lines.append("Rec 5B.2         0")
+    deck = tmp_path / "ball.inp"
+    deck.write_text("\n".join(lines) + "\n")
+    proc = _run(adore_exe, deck, tmp_path / "ball.prt", 0)
+    assert proc.returncode == 1
+    assert "applies to cylindrical roller bearings" in proc.stderr

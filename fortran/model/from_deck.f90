@@ -145,6 +145,11 @@ contains
       if (allocated(error)) return
 
       if (b%bearing_type == BALL_BEARING) then
+         if (deck_has(deck, "5B.2")) then
+            call input_error(error, "Rec 5B.2 (roller ends, flanges, pocket type) applies to cylindrical roller "// &
+                             "bearings; this deck is a ball bearing (Rec 3.2): set Rec 3.2 field 11 to 0")
+            return
+         end if
          call deck_collect_real(deck, "5A", "ball_diameter", b%d, error)
          call deck_collect_real(deck, "5A", "pitch_diameter", b%dm, error)
          call deck_collect_real(deck, "5A", "free_contact_angle", deg, error)
