@@ -89,11 +89,22 @@ contains
       if (self%eom%cage_free) then
          text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage free in the "// &
                 "radial plane and about its axis (axial motion and tilt suppressed, report 4.4.6), on its "// &
-                "pockets and guide lands; rectangular pockets as flat walls (kPocType 0 not identified); no flanges"
+                "pockets and guide lands; "
       else
          text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage centred, turning "// &
-                "about its axis only (translation and tilt constrained, report 4.4.6); rectangular pockets as "// &
-                "flat walls (kPocType 0 not identified); no flanges"
+                "about its axis only (translation and tilt constrained, report 4.4.6); "
+      end if
+      if (self%bearing%roller%pocket_type == -1) then
+         text = text//"cylindrical pockets (kPocType -1, Rec 5B.2)"
+      else
+         text = text//"rectangular pockets as flat walls (kPocType 0 not identified)"
+      end if
+      if (any(self%bearing%roller%flange)) then
+         text = text//"; roller ends on the flanges of Rec 5B.2 (spherical ends, Hertz)"
+         if (any(self%bearing%roller%flange(1, :)) .and. any(self%bearing%roller%flange(2, :))) &
+            text = text//", rollers free in all six degrees of freedom"
+      else
+         text = text//"; no flanges"
       end if
    end subroutine roller_run_note
 
@@ -112,7 +123,13 @@ contains
       else
          text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
       end if
-      text = text//"  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/dynamics.md, Roller dynamics)"//lf
+      if (self%bearing%roller%pocket_type == -1) then
+         text = text//"  CYLINDRICAL ROLLER POCKETS (KPOCTYPE -1, REPORT 4.4.11)"//lf
+      else
+         text = text//"  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/dynamics.md, Roller dynamics)"//lf
+      end if
+      if (any(self%bearing%roller%flange)) text = text//"  ROLLER END / FLANGE CONTACTS: SPHERICAL ENDS ON "// &
+                                                  "LAID-BACK FLANGES (REC 5B.2, docs/dynamics.md, Flanges)"//lf
    end subroutine roller_listing_lines
 
    !> dy/dtau of the equations of motion (adore_dynamics_roller_system).
@@ -169,17 +186,19 @@ contains
    end subroutine roller_start_dynamics
 
    !> The run's degrees of freedom until Rec 3.3's flags are read (issue #25): the cage turning
-   !> about its axis (cage_free: and translating in y, z); the rollers free, except for report 4.4.6's own example - "a
-   !> perfectly aligned cylindrical roller bearing with purely radial load": no axial force,
-   !> no moment, no flange (Rec 5B has none) - whose rollers' axial motion, tilt and skew are
-   !> constrained (Appendix D is that case).  Free, a flangeless roller's skew grows from
-   !> round-off (docs/dynamics.md, Roller dynamics).
+   !> about its axis (cage_free: and translating in y, z); the rollers free - in all six DOFs
+   !> when flanges hold both roller ends (Rec 5B.2) - except for report 4.4.6's own example -
+   !> "a perfectly aligned cylindrical roller bearing with purely radial load": no axial
+   !> force, no moment, no flange - whose rollers' axial motion, tilt and skew are constrained
+   !> (Appendix D is that case).  Free, a flangeless roller's skew grows from round-off
+   !> (docs/dynamics.md, Roller dynamics).
    pure function roller_constraints(b, cage_free) result(c)
       type(bearing_t), intent(in) :: b
       logical, intent(in) :: cage_free
       type(dof_constraints_t) :: c
       c = default_constraints(.true.)
       if (cage_free) c%cage%translation(2:3) = .true.
+      if (any(b%roller%flange(1, :)) .and. any(b%roller%flange(2, :))) return
       if (b%force(1) == 0.0_wp .and. all(b%moment == 0.0_wp)) &
          c%elements = body_dof_t([.false., .true., .true.], [.true., .false., .false.])
    end function roller_constraints

@@ -101,6 +101,10 @@ module adore_cage_step0
       !> while roller 7 end 1, also at zero gap, prints 0; a zero gap is a contact whose force
       !> needs the cage contact model (not done)
       logical :: in_contact = .false.
+      !> the contact's force (N) and friction loss (W) when a contact model computed them
+      !> (the roller dynamics' pocket contacts); < 0: not computed (step 0)
+      real(wp) :: force = -1.0_wp
+      real(wp) :: loss = -1.0_wp
    end type pocket_contact_t
 
    !> One cage/land geometric interaction.

@@ -40,17 +40,17 @@ module adore_deck_schema
    !> Condition operators: none, ==, !=, <, <=, >, >=.
    integer, parameter :: OP_NONE = 0, OP_EQ = 1, OP_NE = 2, OP_LT = 3, OP_LE = 4, OP_GT = 5, OP_GE = 6
 
-   integer, parameter :: N_RECORDS = 33
-   integer, parameter :: N_FIELDS = 225
-   integer, parameter :: N_CHOICES = 22
+   integer, parameter :: N_RECORDS = 34
+   integer, parameter :: N_FIELDS = 238
+   integer, parameter :: N_CHOICES = 34
    integer, parameter :: ID_LEN = 7, NAME_LEN = 29, TITLE_LEN = 58
    integer, parameter :: RANGE_LEN = 21, MEANING_LEN = 170
 
    ! --- records -----------------------------------------------------------------------
    character(len=ID_LEN), parameter :: REC_ID(N_RECORDS) = [character(len=ID_LEN) :: &
       "1", "2.1", "2.4", "2.5", "2.7", "3.1", "3.2", "3.3", "3.4", "4", "5A", "5B", "5B.1", &
-      "7.0", "7.1", "7.2.n", "8.1", "8.2", "8.3", "8.4", "8.5", "8.6", "9.0", "9.1.1", "9.1.2", &
-      "9.5.1", "10.0", "10.1B", "10.1C", "10.3", "10.5.1B", "10.5.2B", "11" &
+      "5B.2", "7.0", "7.1", "7.2.n", "8.1", "8.2", "8.3", "8.4", "8.5", "8.6", "9.0", "9.1.1", &
+      "9.1.2", "9.5.1", "10.0", "10.1B", "10.1C", "10.3", "10.5.1B", "10.5.2B", "11" &
       ]
    character(len=TITLE_LEN), parameter :: REC_TITLE(N_RECORDS) = [character(len=TITLE_LEN) :: &
       "Program mode and output control", "Step size information", "Thermal option flags", &
@@ -58,44 +58,45 @@ module adore_deck_schema
       "Program options: bearing type, rolling elements, materials", "Program options (flags)", &
       "Program options (flags, incl. kRotFrames)", "Bearing envelope", &
       "Ball and race geometry", "Cylindrical roller and race geometry", &
-      "Race lengths (roller bearings)", "Cage options and guide lands", "Cage geometry", &
-      "Cage guide land (one per land)", "Material properties: rolling element", &
-      "Material properties: outer race", "Material properties: inner race", &
-      "Material properties: cage", "Material properties: shaft", &
-      "Material properties: housing", "Room temperature and race fits", &
-      "Applied loads and moments", "Race motion", "Cage initial conditions", &
-      "Traction and lubricant model codes", "Traction-slip curve (traction model 2)", &
-      "Traction-slip curve (traction model 3)", "Lubricant data", "RE/cage friction", &
-      "race/cage friction", "Gravity" &
+      "Race lengths (roller bearings)", &
+      "Roller ends, flanges and pocket type (pyadore extension)", &
+      "Cage options and guide lands", "Cage geometry", "Cage guide land (one per land)", &
+      "Material properties: rolling element", "Material properties: outer race", &
+      "Material properties: inner race", "Material properties: cage", &
+      "Material properties: shaft", "Material properties: housing", &
+      "Room temperature and race fits", "Applied loads and moments", "Race motion", &
+      "Cage initial conditions", "Traction and lubricant model codes", &
+      "Traction-slip curve (traction model 2)", "Traction-slip curve (traction model 3)", &
+      "Lubricant data", "RE/cage friction", "race/cage friction", "Gravity" &
       ]
    character(len=NAME_LEN), parameter :: REC_WHEN_FIELD(N_RECORDS) = [character(len=NAME_LEN) :: &
       "", "", "", "", "", "", "", "", "", "", "bearing_type", "bearing_type", "bearing_type", &
-      "", "", "", "material_flag_rolling_element", "material_flag_outer_race", &
-      "material_flag_inner_race", "material_flag_cage", "material_flag_shaft", &
-      "material_flag_housing", "", "", "", "", "", "traction_model", "traction_model", &
-      "lubricant_code", "", "", "" &
+      "roller_extension", "", "", "", "material_flag_rolling_element", &
+      "material_flag_outer_race", "material_flag_inner_race", "material_flag_cage", &
+      "material_flag_shaft", "material_flag_housing", "", "", "", "", "", "traction_model", &
+      "traction_model", "lubricant_code", "", "", "" &
       ]
    integer, parameter :: REC_WHEN_OP(N_RECORDS) = [&
       OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, &
-      OP_EQ, OP_EQ, OP_EQ, OP_NONE, OP_NONE, OP_NONE, OP_NE, OP_NE, OP_NE, OP_NE, OP_NE, OP_NE, &
-      OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_EQ, OP_EQ, OP_NE, OP_NONE, OP_NONE, &
-      OP_NONE &
+      OP_EQ, OP_EQ, OP_EQ, OP_NE, OP_NONE, OP_NONE, OP_NONE, OP_NE, OP_NE, OP_NE, OP_NE, OP_NE, &
+      OP_NE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_NONE, OP_EQ, OP_EQ, OP_NE, OP_NONE, &
+      OP_NONE, OP_NONE &
       ]
    integer, parameter :: REC_WHEN_VALUE(N_RECORDS) = [&
-      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 3, 0, &
-      0, 0, 0 &
+      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 3, &
+      0, 0, 0, 0 &
       ]
    character(len=NAME_LEN), parameter :: REC_REPEAT(N_RECORDS) = [character(len=NAME_LEN) :: &
-      "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "n_guide_lands", "", "", "", &
-      "", "", "", "", "", "", "", "", "", "", "", "", "", "" &
+      "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "n_guide_lands", "", "", &
+      "", "", "", "", "", "", "", "", "", "", "", "", "", "", "" &
       ]
    integer, parameter :: REC_FIRST_FIELD(N_RECORDS) = [&
-      1, 15, 21, 25, 30, 36, 37, 47, 58, 70, 76, 82, 92, 96, 106, 115, 119, 128, 137, 146, 155, &
-      164, 173, 176, 182, 189, 198, 203, 207, 211, 213, 218, 223 &
+      1, 15, 21, 25, 30, 36, 37, 48, 59, 71, 77, 83, 93, 97, 109, 119, 128, 132, 141, 150, 159, &
+      168, 177, 186, 189, 195, 202, 211, 216, 220, 224, 226, 231, 236 &
       ]
    integer, parameter :: REC_N_FIELDS(N_RECORDS) = [&
-      14, 6, 4, 5, 6, 1, 10, 11, 12, 6, 6, 10, 4, 10, 9, 4, 9, 9, 9, 9, 9, 9, 3, 6, 7, 9, 5, 4, &
-      4, 2, 5, 5, 3 &
+      14, 6, 4, 5, 6, 1, 11, 11, 12, 6, 6, 10, 4, 12, 10, 9, 4, 9, 9, 9, 9, 9, 9, 3, 6, 7, 9, &
+      5, 4, 4, 2, 5, 5, 3 &
       ]
 
    ! --- fields ------------------------------------------------------------------------
@@ -110,25 +111,28 @@ module adore_deck_schema
       "cage_temperature", "outer_race_temperature", "inner_race_temperature", "run_id", &
       "rec3_2_flag_1", "bearing_type", "n_rolling_elements", "material_flag_rolling_element", &
       "material_flag_outer_race", "material_flag_inner_race", "material_flag_cage", &
-      "material_flag_shaft", "material_flag_housing", "rec3_2_flag_10", "rec3_3_flag_1", &
-      "rec3_3_flag_2", "rec3_3_flag_3", "rec3_3_flag_4", "rec3_3_flag_5", "rec3_3_flag_6", &
-      "rec3_3_flag_7", "rec3_3_flag_8", "rec3_3_flag_9", "rec3_3_flag_10", "rec3_3_flag_11", &
-      "rec3_4_flag_1", "rec3_4_flag_2", "rec3_4_flag_3", "rec3_4_flag_4", "rec3_4_flag_5", &
-      "rec3_4_flag_6", "rec3_4_flag_7", "rec3_4_flag_8", "rec3_4_flag_9", "rec3_4_flag_10", &
-      "rec3_4_flag_11", "rec3_4_flag_12", "shaft_outer_diameter", "bearing_outer_diameter", &
-      "shaft_inner_diameter", "housing_outer_diameter", "outer_race_width", "inner_race_width", &
-      "ball_diameter", "pitch_diameter", "free_contact_angle", "rec5a_value_4", &
-      "outer_curvature_factor", "inner_curvature_factor", "roller_diameter", "roller_length", &
-      "central_land_length", "pitch_diameter", "crown_radius", "corner_radius_1", &
-      "corner_radius_2", "diametral_play", "outer_race_crown_radius", &
-      "inner_race_crown_radius", "outer_race_len1", "outer_race_len2", "inner_race_len1", &
-      "inner_race_len2", "rec7_0_flag_1", "rec7_0_flag_2", "rec7_0_flag_3", "rec7_0_flag_4", &
-      "rec7_0_flag_5", "rec7_0_flag_6", "rec7_0_flag_7", "rec7_0_flag_8", "n_guide_lands", &
-      "guide_type", "cage_outer_diameter", "cage_inner_diameter", "cage_width", &
-      "cage_outer_clearance", "cage_inner_clearance", "pocket_clearance_1", &
-      "pocket_clearance_2", "segment_cut_angle", "cage_cone_angle", "guide_land_diameter", &
-      "guide_land_width", "guide_land_position", "guide_land_clearance", "density", &
-      "elastic_modulus", "poisson_ratio", "thermal_expansion", "heat_capacity", &
+      "material_flag_shaft", "material_flag_housing", "rec3_2_flag_10", "roller_extension", &
+      "rec3_3_flag_1", "rec3_3_flag_2", "rec3_3_flag_3", "rec3_3_flag_4", "rec3_3_flag_5", &
+      "rec3_3_flag_6", "rec3_3_flag_7", "rec3_3_flag_8", "rec3_3_flag_9", "rec3_3_flag_10", &
+      "rec3_3_flag_11", "rec3_4_flag_1", "rec3_4_flag_2", "rec3_4_flag_3", "rec3_4_flag_4", &
+      "rec3_4_flag_5", "rec3_4_flag_6", "rec3_4_flag_7", "rec3_4_flag_8", "rec3_4_flag_9", &
+      "rec3_4_flag_10", "rec3_4_flag_11", "rec3_4_flag_12", "shaft_outer_diameter", &
+      "bearing_outer_diameter", "shaft_inner_diameter", "housing_outer_diameter", &
+      "outer_race_width", "inner_race_width", "ball_diameter", "pitch_diameter", &
+      "free_contact_angle", "rec5a_value_4", "outer_curvature_factor", &
+      "inner_curvature_factor", "roller_diameter", "roller_length", "central_land_length", &
+      "pitch_diameter", "crown_radius", "corner_radius_1", "corner_radius_2", "diametral_play", &
+      "outer_race_crown_radius", "inner_race_crown_radius", "outer_race_len1", &
+      "outer_race_len2", "inner_race_len1", "inner_race_len2", "pocket_type", "outer_flange_1", &
+      "outer_flange_2", "inner_flange_1", "inner_flange_2", "roller_end_radius", &
+      "outer_flange_height", "inner_flange_height", "outer_flange_angle", "inner_flange_angle", &
+      "outer_flange_clearance", "inner_flange_clearance", "rec7_0_flag_1", "rec7_0_flag_2", &
+      "rec7_0_flag_3", "rec7_0_flag_4", "rec7_0_flag_5", "rec7_0_flag_6", "rec7_0_flag_7", &
+      "rec7_0_flag_8", "n_guide_lands", "guide_type", "cage_outer_diameter", &
+      "cage_inner_diameter", "cage_width", "cage_outer_clearance", "cage_inner_clearance", &
+      "pocket_clearance_1", "pocket_clearance_2", "segment_cut_angle", "cage_cone_angle", &
+      "guide_land_diameter", "guide_land_width", "guide_land_position", "guide_land_clearance", &
+      "density", "elastic_modulus", "poisson_ratio", "thermal_expansion", "heat_capacity", &
       "thermal_conductivity", "elastic_strain_limit", "hardness", "wear_coefficient", &
       "density", "elastic_modulus", "poisson_ratio", "thermal_expansion", "heat_capacity", &
       "thermal_conductivity", "elastic_strain_limit", "hardness", "wear_coefficient", &
@@ -164,11 +168,15 @@ module adore_deck_schema
       KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, &
       KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, &
       KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, &
+      KIND_INT, KIND_INT, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
+      KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
+      KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
+      KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_INT, KIND_INT, KIND_INT, KIND_INT, &
+      KIND_INT, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
+      KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, &
       KIND_INT, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
-      KIND_REAL, KIND_REAL, KIND_REAL, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, &
-      KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
@@ -177,13 +185,11 @@ module adore_deck_schema
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
+      KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_INT, KIND_INT, KIND_INT, &
+      KIND_INT, KIND_INT, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
       KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
-      KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
-      KIND_REAL, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_INT, KIND_REAL, KIND_REAL, &
-      KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
-      KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, &
-      KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL, KIND_REAL &
+      KIND_REAL &
       ]
    logical, parameter :: FLD_REQUIRED(N_FIELDS) = [&
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
@@ -192,22 +198,24 @@ module adore_deck_schema
       .true., .true., .true., .true., .true., .false., .false., .true., .true., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .false., .false., .true., &
-      .true., .false., .true., .true., .true., .true., .true., .true., .false., .true., .true., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .true., .true., .false., .true., .true., .true., .true., .true., .true., .false., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .true., .true., .true., .true., .true., .true., &
+      .true., .true., .false., .false., .false., .true., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
       .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .true., .true., .true., .true., .true., .true., .true., .true., .false., &
-      .false., .false., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .false., .false., .false., .false., &
+      .false., .false., .false., .true., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .true., .false., .false., .false., .false., .false., .true., &
+      .false., .true., .false., .true., .false., .true., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .true., .false., .false., .false., .false., .false., .true., .false., .true., .false., &
-      .true., .false., .true., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .false. &
+      .false. &
       ]
    integer, parameter :: FLD_DEFAULT_INT(N_FIELDS) = [&
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
@@ -217,7 +225,7 @@ module adore_deck_schema
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
-      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 &
+      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 &
       ]
    real(wp), parameter :: FLD_DEFAULT_REAL(N_FIELDS) = [&
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
@@ -237,10 +245,11 @@ module adore_deck_schema
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp &
       ]
    character(len=TEXT_WIDTH), parameter :: FLD_DEFAULT_TEXT(N_FIELDS) = [character(len=TEXT_WIDTH) :: &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
@@ -253,7 +262,7 @@ module adore_deck_schema
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
-      "", "", "", "", "" &
+      "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "" &
       ]
    logical, parameter :: FLD_HAS_LO(N_FIELDS) = [&
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
@@ -262,22 +271,23 @@ module adore_deck_schema
       .true., .true., .true., .true., .true., .false., .false., .false., .true., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .false., .false., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .false., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .false., .true., .true., .true., &
-      .true., .true., .true., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .true., .false., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .false., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .true., .true., .true., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .true., .true., .true., .true., .true., .true., &
-      .true., .true., .false., .false., .true., .false., .false., .false., .false., .true., &
-      .false., .false., .false., .false., .false., .false., .false. &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .false., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .false., .true., .true., &
+      .true., .true., .true., .true., .false., .false., .false., .false., .false., .true., &
+      .true., .true., .true., .true., .true., .true., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .true., .false., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .false., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .true., .true., .true., .true., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .true., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .true., .true., .true., &
+      .true., .true., .true., .true., .true., .false., .false., .true., .false., .false., &
+      .false., .false., .true., .false., .false., .false., .false., .false., .false., .false. &
       ]
    real(wp), parameter :: FLD_LO(N_FIELDS) = [&
       -2.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
@@ -287,20 +297,21 @@ module adore_deck_schema
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, -90.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.5_wp, 0.5_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, -90.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp &
       ]
    logical, parameter :: FLD_LO_OPEN(N_FIELDS) = [&
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
@@ -309,23 +320,24 @@ module adore_deck_schema
       .true., .true., .true., .true., .true., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .false., .false., .true., &
-      .true., .false., .true., .true., .true., .true., .true., .false., .false., .true., &
-      .true., .true., .true., .false., .true., .true., .false., .false., .false., .true., &
-      .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .true., .true., .true., .false., .false., &
-      .true., .false., .false., .true., .true., .true., .false., .true., .true., .true., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .true., .true., .false., .true., .true., .true., .true., .true., .false., .false., &
+      .true., .true., .true., .true., .false., .true., .true., .false., .false., .false., &
+      .true., .true., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .true., .true., &
+      .true., .false., .false., .true., .false., .false., .true., .true., .true., .false., &
+      .true., .true., .true., .true., .false., .true., .true., .true., .false., .false., &
+      .true., .true., .true., .false., .true., .true., .true., .false., .false., .true., &
+      .true., .true., .false., .true., .true., .true., .false., .false., .true., .true., &
       .true., .false., .true., .true., .true., .false., .false., .true., .true., .true., &
       .false., .true., .true., .true., .false., .false., .true., .true., .true., .false., &
-      .true., .true., .true., .false., .false., .true., .true., .true., .false., .true., &
-      .true., .true., .false., .false., .true., .true., .true., .false., .true., .true., &
-      .true., .false., .false., .true., .true., .true., .false., .true., .true., .true., &
-      .false., .false., .true., .false., .false., .false., .false., .false., .false., .false., &
+      .true., .true., .true., .false., .false., .true., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .true., .false., .true., .false., .true., .false., .true., &
-      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false. &
+      .false., .false., .false., .false., .false., .false., .true., .false., .true., .false., &
+      .true., .false., .true., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false. &
       ]
    logical, parameter :: FLD_HAS_HI(N_FIELDS) = [&
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
@@ -335,22 +347,23 @@ module adore_deck_schema
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .true., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .true., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .true., .true., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .true., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .true., .true., .false., .false., .false., &
       .false., .false., .false., .true., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .true., .true., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .true., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .true., .false., .false., .false., .false., .false., .false., .false., .false., &
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .true., &
       .false., .false., .false., .false., .false., .false., .false., .false., .true., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .true., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .true., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .true., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false. &
+      .false., .false., .false., .false., .false., .false., .false., .false. &
       ]
    real(wp), parameter :: FLD_HI(N_FIELDS) = [&
       2.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
@@ -360,20 +373,21 @@ module adore_deck_schema
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      90.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 90.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 10.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 360.0_wp, 90.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 10.0_wp, 10.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 10.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 360.0_wp, 90.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.0_wp, 0.0_wp, 0.5_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.5_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.5_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.5_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.5_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.5_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.5_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
       0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
-      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp &
+      0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp &
       ]
    logical, parameter :: FLD_HI_OPEN(N_FIELDS) = [&
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
@@ -383,82 +397,87 @@ module adore_deck_schema
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .true., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .true., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .false., .false., .false., .false., .true., .false., .false., .false., &
       .false., .false., .false., .true., .false., .false., .false., .false., .false., .false., &
+      .false., .false., .true., .false., .false., .false., .false., .false., .false., .false., &
+      .false., .true., .false., .false., .false., .false., .false., .false., .false., .false., &
       .true., .false., .false., .false., .false., .false., .false., .false., .false., .true., &
       .false., .false., .false., .false., .false., .false., .false., .false., .true., .false., &
-      .false., .false., .false., .false., .false., .false., .false., .true., .false., .false., &
-      .false., .false., .false., .false., .false., .false., .true., .false., .false., .false., &
-      .false., .false., .false., .false., .false., .true., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
       .false., .false., .false., .false., .false., .false., .false., .false., .false., .false., &
-      .false., .false., .false., .false., .false. &
+      .false., .false., .false., .false., .false., .false., .false., .false. &
       ]
    integer, parameter :: FLD_FIRST_CHOICE(N_FIELDS) = [&
       1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, &
-      3, 3, 3, 3, 3, 3, 3, 3, 5, 5, 7, 9, 11, 13, 15, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
-      17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
-      17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, 17, &
-      17, 17, 17, 17, 17, 17, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
+      3, 3, 3, 3, 3, 3, 3, 3, 5, 5, 7, 9, 11, 13, 15, 17, 17, 19, 19, 19, 19, 19, 19, 19, 19, &
       19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
-      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
-      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, &
-      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 21, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, &
-      23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23, 23 &
+      19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 19, 21, 23, &
+      25, 27, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 29, 31, 31, 31, &
+      31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, &
+      31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, &
+      31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, &
+      31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, 31, &
+      31, 31, 33, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, 35, &
+      35, 35, 35, 35, 35, 35, 35 &
       ]
    integer, parameter :: FLD_N_CHOICES(N_FIELDS) = [&
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
-      0, 0, 0, 0, 0, 0, 0, 2, 0, 2, 2, 2, 2, 2, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
+      0, 0, 0, 0, 0, 0, 0, 2, 0, 2, 2, 2, 2, 2, 2, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
-      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
+      0, 0, 0, 0, 0, 0, 2, 2, 2, 2, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
       0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
-      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
-      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 &
+      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, &
+      2, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 &
       ]
    integer, parameter :: CHOICES(N_CHOICES) = [&
-      3, 5, 1, 2, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 1, 2, 2, 3, 0, 1 &
+      3, 5, 1, 2, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, -1, 0, 0, 1, 0, 1, 0, 1, 0, 1, 1, &
+      2, 2, 3, 0, 1 &
       ]
    character(len=NAME_LEN), parameter :: FLD_COUNT(N_FIELDS) = [character(len=NAME_LEN) :: &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
-      "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "n_guide_lands", "", "", &
+      "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
+      "", "", "", "", "", "", "", "n_guide_lands", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
       "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
-      "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", &
-      "", "", "", "", "", "", "", "" &
+      "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "" &
       ]
    character(len=RANGE_LEN), parameter :: FLD_RANGE_TEXT(N_FIELDS) = [character(len=RANGE_LEN) :: &
       "[-2, 2]", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", ">= 0", &
       "any", "3, 5", "> 0", "> 0", "> 0", "any", "(0, 1)", "[0, 1]", ">= 0", "any", "any", &
       "any", ">= 0", ">= 0", "any", ">= 0", ">= 0", "> 0", "> 0", "> 0", "> 0", "> 0", "> 0", &
       "at most 36 characters", "any", "1, 2", "[3, 999]", "0, 1", "0, 1", "0, 1", "0, 1", &
-      "0, 1", "0, 1", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", &
+      "0, 1", "0, 1", "any", "0, 1", "any", "any", "any", "any", "any", "any", "any", "any", &
       "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", &
-      "any", "any", "> 0", "> 0", ">= 0", "> 0", "> 0", "> 0", "> 0", "> 0", "[0, 90)", "any", &
-      "> 0.5", "> 0.5", "> 0", "> 0", ">= 0", "> 0", "> 0", ">= 0", ">= 0", "any", "> 0", &
-      "> 0", ">= 0", ">= 0", ">= 0", ">= 0", "any", "any", "any", "any", "any", "any", "any", &
-      "any", "[1, 10]", "1, 2", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", ">= 0", "[0, 360]", &
-      "(-90, 90)", "> 0", "> 0", "any", "> 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", &
-      "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", &
-      ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", &
-      "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", &
+      "any", "any", "any", "> 0", "> 0", ">= 0", "> 0", "> 0", "> 0", "> 0", "> 0", "[0, 90)", &
+      "any", "> 0.5", "> 0.5", "> 0", "> 0", ">= 0", "> 0", "> 0", ">= 0", ">= 0", "any", &
+      "> 0", "> 0", ">= 0", ">= 0", ">= 0", ">= 0", "-1, 0", "0, 1", "0, 1", "0, 1", "0, 1", &
+      ">= 0", ">= 0", ">= 0", "[0, 10]", "[0, 10]", ">= 0", ">= 0", "any", "any", "any", "any", &
+      "any", "any", "any", "any", "[1, 10]", "1, 2", "> 0", "> 0", "> 0", ">= 0", ">= 0", &
+      "> 0", ">= 0", "[0, 360]", "(-90, 90)", "> 0", "> 0", "any", "> 0", "> 0", "> 0", &
+      "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", &
       ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", &
-      "> 0", "> 0", ">= 0", ">= 0", "> 0", "any", "any", "any", "any", "any", "any", "any", &
-      "any", "any", "any", "any", "any", "any", "any", "any", ">= 0", "any", "any", "any", &
-      "any", "any", "any", "any", "any", "2, 3", "0, 1", "any", "any", "any", ">= 0", "> 0", &
-      ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", "any", "any", ">= 0", "any", "any", "any", &
-      "any", ">= 0", "any", "any", "any", "any", "any", "any", "any" &
+      "> 0", "> 0", ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", &
+      ">= 0", ">= 0", "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", &
+      "> 0", "> 0", "(0, 0.5)", ">= 0", "> 0", "> 0", "> 0", ">= 0", ">= 0", "> 0", "any", &
+      "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", "any", &
+      "any", "any", ">= 0", "any", "any", "any", "any", "any", "any", "any", "any", "2, 3", &
+      "0, 1", "any", "any", "any", ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", ">= 0", "> 0", &
+      "any", "any", ">= 0", "any", "any", "any", "any", ">= 0", "any", "any", "any", "any", &
+      "any", "any", "any" &
       ]
    character(len=MEANING_LEN), parameter :: FLD_MEANING(N_FIELDS) = [character(len=MEANING_LEN) :: &
       "program mode MODE (1 in both decks", "unknown", "unknown", "unknown", "unknown", &
@@ -501,9 +520,12 @@ module adore_deck_schema
       "inferred: 1 = housing material given on Rec 8.6, 0 = default" // &
       " steel. Fields 4-9 of the roller line are 1 0 0 0 0 0 and on" // &
       "ly that deck has Rec 8.1 (ceramic rollers)", &
+      "unknown", &
+      "pyadore extension, not ADORE's: 1 = Rec 5B.2 (roller ends, f" // &
+      "langes, pocket type) follows a roller deck's Rec 5B.1", &
       "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", &
       "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", &
-      "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", &
+      "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", &
       "shaft OD = bearing bore (echo SHAFT OD)", "bearing outer diameter (echo BEARING OD)", &
       "shaft inner diameter, 0 = solid (echo SHAFT ID)", &
       "housing outer diameter (echo HOUSING OD)", "outer race width (echo WIDTH I)", &
@@ -520,7 +542,24 @@ module adore_deck_schema
       "outer race crown radius (echo OUTER CRN", "inner race crown radius (echo INNER CRN)", &
       "echo OUTER LEN1 (race length for roller interaction, probabl" // &
       "y raceLandLmt)", &
-      "echo OUTER LEN2", "echo INNER LEN1", "echo INNER LEN2", "unknown", "unknown", "unknown", &
+      "echo OUTER LEN2", "echo INNER LEN1", "echo INNER LEN2", &
+      "roller pocket code as kPocType of report 4.4.11: 0 = rectang" // &
+      "ular, -1 = cylindrical (roller guided cage)", &
+      "outer race flange at the negative-axis roller end: 1 = prese" // &
+      "nt", &
+      "outer race flange at the positive-axis roller end", &
+      "inner race flange at the negative-axis roller end", &
+      "inner race flange at the positive-axis roller end", &
+      "spherical roller end radius (centre on the roller axis, apex" // &
+      " at the end face)", &
+      "outer flange height below the outer raceway", &
+      "inner flange height above the inner raceway", &
+      "outer flange lay-back angle (face inclined away from the rol" // &
+      "ler with height)", &
+      "inner flange lay-back angle", &
+      "axial play of the centred, aligned roller between the outer " // &
+      "race's flange faces (each face c/2 beyond the roller end)", &
+      "axial play between the inner race's flange faces", "unknown", "unknown", "unknown", &
       "unknown", "unknown", "unknown", "unknown", "unknown", &
       "number of cage/race guide lands (echo NO OF C/R LANDS)", &
       "guidance type of each land: 1 = outer race, 2 = inner race (" // &

@@ -47,6 +47,7 @@ module adore_dynamics_roller_system
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t
    use adore_forces_ball_bearing, only: guide_land_pairs
+   use adore_contact_roller_flange, only: roller_flanges
    use adore_forces_roller_bearing, only: roller_force_model_t, roller_pose_t, race_pose_t, roller_loads_t, &
                                           roller_loads
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
@@ -299,7 +300,18 @@ contains
                                                       b%material(BODY_CAGE)%modulus, b%material(BODY_CAGE)%poisson), &
                                       0.5_wp*b%d)
          md%pocket_friction = b%cage_friction(1)
+         md%pocket_type = b%roller%pocket_type
+         md%pocket_radius = 0.5_wp*b%dm
       end associate
+      if (any(b%roller%flange)) then
+         call check_flanges(b, error)
+         if (allocated(error)) return
+         associate (r => b%roller)
+            sys%model%flanges = roller_flanges(b%d, r%roller_length, r%corner_radius, r%end_radius, r%flange, &
+                                               r%flange_height, r%flange_angle, r%flange_clearance, [qs%r_o, qs%r_i], &
+                                               [qs%e_o, qs%e_i])
+         end associate
+      end if
       sys%lands = guide_land_pairs(b, g, b%temperature)
       allocate (y(roller_state_size(n)))
       y = 0.0_wp
@@ -337,5 +349,41 @@ contains
       ! touches the races and the cage, never another roller
       call it%set_jacobian_blocks([(ROLLER_SIZE*(k - 1) + 1, k=1, n)], ROLLER_SIZE, [(k, k=1, ROLLER_SIZE)], error)
    end subroutine start_roller_dynamics
+
+   !> What the flange contact model (adore_contact_roller_flange) cannot honour is an input
+   !> error: a flat roller end (conformal flat-on-flat contact), a contact point of the
+   !> centred aligned roller off the flange face (its height D/2 - R_e sin theta outside
+   !> [0, flange height]) or off the end's spherical cap (R_e sin theta > D/2 - r_c), a
+   !> roller end sphere that is not within the roller (R_e < L/2 is a ball end, refused).
+   subroutine check_flanges(b, error)
+      type(bearing_t), intent(in) :: b
+      type(error_type), allocatable, intent(out) :: error
+      character(len=160) :: msg
+      real(wp) :: hc, off
+      integer :: j
+      associate (r => b%roller)
+         if (.not. (r%end_radius > 0.0_wp)) then
+            call input_error(error, "Rec 5B.2: a flange needs a spherical roller end (roller_end_radius > 0); "// &
+                             "a flat end on a flange is a conformal contact the flange model does not have")
+            return
+         end if
+         if (r%end_radius < 0.5_wp*r%roller_length) then
+            call input_error(error, "Rec 5B.2: roller_end_radius below half the roller length is not modelled")
+            return
+         end if
+         do j = 1, 2
+            if (.not. any(r%flange(:, j))) cycle
+            off = r%end_radius*sin(r%flange_angle(j))
+            hc = 0.5_wp*b%d - off
+            if (hc < 0.0_wp .or. hc > r%flange_height(j) .or. off > 0.5_wp*b%d - maxval(r%corner_radius)) then
+               write (msg, "(a,es10.3,a,es10.3,a,es10.3,a)") " flange: the end sphere meets the face at height ", hc, &
+                  " m (D/2 - R_e sin theta), off the flange (height ", r%flange_height(j), &
+                  " m) or the end's cap (R_e sin theta = ", off, " m)"
+               call input_error(error, "Rec 5B.2: the "//trim(merge("outer", "inner", j == 1))//trim(msg))
+               return
+            end if
+         end do
+      end associate
+   end subroutine check_flanges
 
 end module adore_dynamics_roller_system

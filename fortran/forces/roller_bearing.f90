@@ -1,6 +1,8 @@
 !> Loads on one cylindrical roller at any state (issue #26): its race contacts by slices at
 !> any roller attitude and race misalignment, their traction by the run's law, its pocket
-!> contact in a rectangular cage pocket, gravity; the reactions on the races and the cage.
+!> contact in a rectangular or cylindrical (kPocType -1) cage pocket, its ends on the race
+!> flanges (adore_contact_roller_flange, flange_loads), gravity; the reactions on the races
+!> and the cage.
 !>
 !> Frame: the orbit-following frame of the roller (report eq 54 as for the balls): azimuth
 !> phi from +z towards -y, e_r = (0, -sin phi, cos phi), e_t = e_x x e_r the orbit
@@ -43,13 +45,15 @@ module adore_forces_roller_bearing
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_contacts
    use adore_tribology_traction_law, only: traction_law_t, law_kappa
    use adore_tribology_roller_traction, only: roller_spin_t, line_slip, RACE_OUTER, RACE_INNER
+   use adore_contact_roller_flange, only: roller_flange_set_t, flange_contact_t, flange_contact
    implicit none
    private
 
    public :: roller_force_model_t, roller_pose_t, race_pose_t, roller_loads_t
-   public :: roller_loads, orbit_axes
+   public :: roller_loads, orbit_axes, cylindrical_pocket_loads
 
    integer, parameter, public :: POCKET_SLICES = 8
+   integer, parameter, public :: MAX_FLANGES = 4   !< two ends x two races
    real(wp), parameter :: SLIP_REG = 1.0e-3_wp   !< friction regularisation speed (m/s)
 
    !> What does not change with the state.
@@ -66,6 +70,9 @@ module adore_forces_roller_bearing
       real(wp) :: pocket_length = 0.0_wp         !< length of the roller touching a pocket wall (m)
       real(wp) :: pocket_k = 0.0_wp              !< Palmgren slice constant roller/cage (N/m**(19/9))
       real(wp) :: pocket_friction = 0.0_wp       !< Coulomb coefficient (Rec 10.5.1B A)
+      type(roller_flange_set_t) :: flanges       !< roller end / flange contacts (none allocated: no flanges)
+      integer :: pocket_type = 0                 !< kPocType: 0 rectangular, -1 cylindrical (report 4.4.11)
+      real(wp) :: pocket_radius = 0.0_wp         !< radius of the pockets' centres (the cylindrical pocket's axis, m)
    end type roller_force_model_t
 
    !> One roller's state in its orbit frame.
@@ -100,6 +107,11 @@ module adore_forces_roller_bearing
       real(wp) :: pocket_load(2) = 0.0_wp        !< wall at -e_t (end 1), +e_t (end 2) (N)
       real(wp) :: pocket_gap(2) = 0.0_wp         !< geometric gap at the pocket centre plane (m; < 0 interference)
       real(wp) :: pocket_power = 0.0_wp          !< pocket friction loss (W)
+      real(wp) :: flange_load(MAX_FLANGES) = 0.0_wp   !< damped normal load of each flange of the set (N)
+      real(wp) :: flange_axial(MAX_FLANGES) = 0.0_wp  !< its axial component on the roller (N)
+      real(wp) :: flange_height(MAX_FLANGES) = 0.0_wp !< its contact height from the raceway (m)
+      real(wp) :: flange_power = 0.0_wp          !< flange contacts' traction loss (W)
+      logical :: flange_off_face = .false.       !< a loaded contact point off the face or the end's cap
       real(wp) :: force(3) = 0.0_wp              !< on the roller, (x, r, t) (N)
       real(wp) :: moment(3) = 0.0_wp             !< on the roller about its centre, (x, r, t) (N m)
       real(wp) :: race_force(3, 2) = 0.0_wp      !< on the outer, inner race, inertial (N)
@@ -212,7 +224,9 @@ contains
       end do
       ! gravity
       ld%force = ld%force + m%mass*[m%gravity(1), dot_product(m%gravity, e_r), dot_product(m%gravity, e_t)]
-      if (m%pocket) call pocket_loads(m, p, a, e_r, e_t, ld)
+      if (m%pocket .and. m%pocket_type == 0) call pocket_loads(m, p, a, e_r, e_t, ld)
+      if (m%pocket .and. m%pocket_type == -1) call cylindrical_pocket_loads(m, p, a, ld)
+      if (allocated(m%flanges%flange)) call flange_loads(m, p, a, e_r, e_t, ld)
    contains
       pure function shifted(lim, dx) result(l2)
          real(wp), intent(in) :: lim(2), dx
@@ -274,5 +288,110 @@ contains
          ld%cage_force = ld%cage_force + fc
       end do
    end subroutine pocket_loads
+
+   !> The roller in its cylindrical pocket (kPocType -1, report 4.4.11: a roller guided cage):
+   !> the pocket a cylinder of diameter D + c (c the pocket clearance, Rec 7.1) whose axis is
+   !> parallel to the bearing axis at the pocket radius and azimuth psi of the centred cage.
+   !> In the roller's orbit frame the pocket axis is at (r, t) = (R_p cos(phi - psi),
+   !> -R_p sin(phi - psi)); on POCKET_SLICES slices over the roller length less its corner
+   !> radii the roller axis is offset from it by e(x) = (r - R_p cos(phi - psi) + gamma x,
+   !> R_p sin(phi - psi) - zeta x) and the slice interference is |e| - c/2 along n = e/|e|
+   !> (the conformal internal line contact: the same Palmgren slice law in the roller/cage
+   !> contact modulus as the rectangular pocket's walls).  Friction: Coulomb mu (Rec 10.5.1B
+   !> A) against the sliding of the roller surface over the pocket, axially xdot and around
+   !> the pocket tau = e_x x n: (rdot, r (phidot - w_c)) . tau + (W_abs - w_c) D/2,
+   !> regularised below SLIP_REG.  pocket_load and pocket_gap: end 1 the slices at x < 0,
+   !> end 2 those at x > 0 (load, N) and the least gap of each half (m).
+   pure subroutine cylindrical_pocket_loads(m, p, a, ld)
+      type(roller_force_model_t), intent(in) :: m
+      type(roller_pose_t), intent(in) :: p
+      type(race_pose_t), intent(in) :: a
+      type(roller_loads_t), intent(inout) :: ld
+      real(wp) :: w, xs, e(2), emag, n(3), tau(3), delta, q, v(2), vmag, fx, ft, f(3), pt(3), mom(3)
+      integer :: i, h
+      w = m%pocket_length/POCKET_SLICES
+      ld%pocket_gap = huge(1.0_wp)
+      do i = 1, POCKET_SLICES
+         xs = -0.5_wp*m%pocket_length + (real(i, wp) - 0.5_wp)*w
+         h = merge(1, 2, xs < 0.0_wp)
+         e = [p%r - m%pocket_radius*cos(p%phi - a%pocket_azimuth) + p%tilt*xs, &
+              m%pocket_radius*sin(p%phi - a%pocket_azimuth) - p%skew*xs]
+         emag = norm2(e)
+         ld%pocket_gap(h) = min(ld%pocket_gap(h), 0.5_wp*m%pocket_clearance - emag)
+         delta = emag - 0.5_wp*m%pocket_clearance
+         if (delta <= 0.0_wp .or. emag <= 0.0_wp) cycle
+         q = m%pocket_k*delta**(10.0_wp/9.0_wp)*w
+         n = [0.0_wp, e(1)/emag, e(2)/emag]
+         tau = [0.0_wp, -n(3), n(2)]
+         ld%pocket_load(h) = ld%pocket_load(h) + q
+         ! sliding of the roller surface over the pocket: axial, around the pocket
+         v = [p%xdot, p%rdot*tau(2) + p%r*(p%phidot - a%cage_speed)*tau(3) + &
+              (p%spin + p%phidot - a%cage_speed)*0.5_wp*m%qs%d]
+         vmag = hypot(v(1), v(2))
+         fx = -m%pocket_friction*q*v(1)/sqrt(vmag**2 + SLIP_REG**2)
+         ft = -m%pocket_friction*q*v(2)/sqrt(vmag**2 + SLIP_REG**2)
+         ld%pocket_power = ld%pocket_power + m%pocket_friction*q*vmag**2/sqrt(vmag**2 + SLIP_REG**2)
+         f = -q*n + fx*[1.0_wp, 0.0_wp, 0.0_wp] + ft*tau
+         ld%force = ld%force + f
+         ! moment about the roller centre of f at x e_x + (D/2) n
+         mom = cross([xs, 0.5_wp*m%qs%d*n(2), 0.5_wp*m%qs%d*n(3)], f)
+         ld%moment = ld%moment + mom
+         ! the reaction -f on the cage at the contact point: its torque about the bearing axis
+         pt = [xs, p%r + 0.5_wp*m%qs%d*n(2), 0.5_wp*m%qs%d*n(3)]
+         ld%cage_torque = ld%cage_torque - (pt(2)*f(3) - pt(3)*f(2))
+      end do
+   end subroutine cylindrical_pocket_loads
+
+   !> The roller's ends against the race flanges (adore_contact_roller_flange; docs/dynamics.md,
+   !> "Flanges"): each contact's Hertz load with the stiffness-proportional damping of the
+   !> slices (beta k ddelta/dt, kept >= 0), its traction by the run's law against the sliding
+   !> of the roller end over the flange, t = kappa(|u|) Q u/|u| opposing u; the force and its
+   !> moment about the roller centre on the roller, the reaction on the race.
+   pure subroutine flange_loads(m, p, a, e_r, e_t, ld)
+      type(roller_force_model_t), intent(in) :: m
+      type(roller_pose_t), intent(in) :: p
+      type(race_pose_t), intent(in) :: a
+      real(wp), intent(in) :: e_r(3), e_t(3)
+      type(roller_loads_t), intent(inout) :: ld
+      type(flange_contact_t) :: c
+      real(wp) :: centre(3), axis(3), v(3), omega(3), o(3), v_o(3), w_o, q, um, kap, f(3)
+      integer :: i, j
+      centre = [p%x, p%r, 0.0_wp]
+      axis = [1.0_wp, p%tilt, -p%skew]
+      axis = axis/norm2(axis)
+      v = [p%xdot, p%rdot, p%r*p%phidot]
+      omega = [p%phidot + p%spin, p%spin*p%tilt + p%skewdot, -p%spin*p%skew + p%tiltdot]
+      do i = 1, size(m%flanges%flange)
+         j = m%flanges%flange(i)%race
+         if (j == 1) then
+            o = 0.0_wp
+            v_o = 0.0_wp
+         else
+            o = [a%position(1), dot_product(a%position, e_r), dot_product(a%position, e_t)]
+            v_o = [a%velocity(1), dot_product(a%velocity, e_r), dot_product(a%velocity, e_t)]
+         end if
+         w_o = m%speed(j)
+         call flange_contact(m%flanges, m%flanges%flange(i), centre, axis, v, omega, o, v_o, w_o, c)
+         if (.not. (c%delta > 0.0_wp)) cycle
+         q = max(c%load + m%damping*c%stiffness*c%rate, 0.0_wp)
+         ld%flange_load(i) = q
+         ld%flange_height(i) = c%height
+         if (q <= 0.0_wp) cycle
+         if (.not. c%on_face) ld%flange_off_face = .true.
+         f = q*c%normal
+         um = norm2(c%slip)
+         if (um > 0.0_wp) then
+            kap = law_kappa(m%law, um)
+            f = f - kap*q*c%slip/um
+            ld%flange_power = ld%flange_power + kap*q*um
+         end if
+         ld%flange_axial(i) = f(1)
+         ld%force = ld%force + f
+         ld%moment = ld%moment + cross(c%point - centre, f)
+         ! the reaction -f on the race at the contact point (inertial; torque about the axis)
+         ld%race_force(:, j) = ld%race_force(:, j) - (f(1)*[1.0_wp, 0.0_wp, 0.0_wp] + f(2)*e_r + f(3)*e_t)
+         ld%race_torque(j) = ld%race_torque(j) - (c%point(2)*f(3) - c%point(3)*f(2))
+      end do
+   end subroutine flange_loads
 
 end module adore_forces_roller_bearing

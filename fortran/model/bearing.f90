@@ -72,6 +72,16 @@ module adore_model_bearing
       real(wp) :: corner_radius(2) = 0.0_wp    !< roller corner radii, -x and +x end (m)
       real(wp) :: race_crown(2) = 1.0e10_wp    !< outer, inner race crown radii (m)
       real(wp) :: race_length(2) = 0.0_wp      !< outer, inner race length 1 (Rec 5B.1, m; 0 = none)
+      !> pyadore's Rec 5B.2 (docs/dynamics.md, "Flanges"): kPocType (0 rectangular, -1
+      !> cylindrical, report 4.4.11); flange present (end 1 = -x, end 2 = +x; race 1 outer, 2
+      !> inner); spherical end radius (m; 0 flat); flange height (m), lay-back angle (rad) and
+      !> axial play between the race's flange faces (m), per race
+      integer :: pocket_type = 0
+      logical :: flange(2, 2) = .false.
+      real(wp) :: end_radius = 0.0_wp
+      real(wp) :: flange_height(2) = 0.0_wp
+      real(wp) :: flange_angle(2) = 0.0_wp
+      real(wp) :: flange_clearance(2) = 0.0_wp
    end type roller_data_t
 
    !> Everything the physics needs from the deck: the data common to every bearing kind, the

@@ -145,6 +145,11 @@ contains
       if (allocated(error)) return
 
       if (b%bearing_type == BALL_BEARING) then
+         if (deck_has(deck, "5B.2")) then
+            call input_error(error, "Rec 5B.2 (roller ends, flanges, pocket type) applies to cylindrical roller "// &
+                             "bearings; this deck is a ball bearing (Rec 3.2): set Rec 3.2 field 11 to 0")
+            return
+         end if
          call deck_collect_real(deck, "5A", "ball_diameter", b%d, error)
          call deck_collect_real(deck, "5A", "pitch_diameter", b%dm, error)
          call deck_collect_real(deck, "5A", "free_contact_angle", deg, error)
@@ -176,6 +181,7 @@ contains
          call deck_collect_real(deck, "5B", "inner_race_crown_radius", b%roller%race_crown(2), error)
          call deck_collect_real(deck, "5B.1", "outer_race_len1", b%roller%race_length(1), error)
          call deck_collect_real(deck, "5B.1", "inner_race_len1", b%roller%race_length(2), error)
+         if (deck_has(deck, "5B.2")) call read_roller_extension(deck, b, error)
          call deck_collect_real(deck, "10.1B", "traction_at_zero_slip", k(1), error)
          call deck_collect_real(deck, "10.1B", "max_traction", k(2), error)
          call deck_collect_real(deck, "10.1B", "traction_at_infinite_slip", k(3), error)
@@ -216,6 +222,33 @@ contains
       end if
 
    end subroutine build_bearing
+
+   !> pyadore's Rec 5B.2 (roller ends, flanges, pocket type; docs/dynamics.md, "Flanges"):
+   !> angles from degrees to radians.
+   subroutine read_roller_extension(deck, b, error)
+      type(deck_t), intent(in) :: deck
+      type(bearing_t), intent(inout) :: b
+      type(error_type), allocatable, intent(inout) :: error
+      character(len=*), parameter :: flag(2, 2) = reshape([character(len=14) :: "outer_flange_1", &
+                                                           "outer_flange_2", "inner_flange_1", "inner_flange_2"], [2, 2])
+      integer :: j, k, v
+      call deck_collect_int(deck, "5B.2", "pocket_type", b%roller%pocket_type, error)
+      do j = 1, 2
+         do k = 1, 2
+            v = 0
+            call deck_collect_int(deck, "5B.2", flag(k, j), v, error)
+            b%roller%flange(k, j) = v /= 0
+         end do
+      end do
+      call deck_collect_real(deck, "5B.2", "roller_end_radius", b%roller%end_radius, error)
+      call deck_collect_real(deck, "5B.2", "outer_flange_height", b%roller%flange_height(1), error)
+      call deck_collect_real(deck, "5B.2", "inner_flange_height", b%roller%flange_height(2), error)
+      call deck_collect_real(deck, "5B.2", "outer_flange_angle", b%roller%flange_angle(1), error)
+      call deck_collect_real(deck, "5B.2", "inner_flange_angle", b%roller%flange_angle(2), error)
+      call deck_collect_real(deck, "5B.2", "outer_flange_clearance", b%roller%flange_clearance(1), error)
+      call deck_collect_real(deck, "5B.2", "inner_flange_clearance", b%roller%flange_clearance(2), error)
+      b%roller%flange_angle = b%roller%flange_angle*pi/180.0_wp
+   end subroutine read_roller_extension
 
    !> Read the deck at `path` (all checks of adore_deck_parser) and build its bearing model.
    subroutine read_bearing(path, b, error)

@@ -27,7 +27,7 @@ module adore_output_roller_dynamic_report
    public :: roller_step_view, new_roller_history, record_roller_history, roller_total_power
 
    !> columns before the guide lands' forces, and after them
-   integer, parameter :: N_FIRST = 29, N_LAST = 0
+   integer, parameter :: N_FIRST = 30, N_LAST = 0
 
 contains
 
@@ -37,14 +37,14 @@ contains
       integer :: k
       p = sys%land_power
       do k = 1, size(sys%loads)
-         p = p + sum(sys%loads(k)%power) + sys%loads(k)%pocket_power
+         p = p + sum(sys%loads(k)%power) + sys%loads(k)%pocket_power + sys%loads(k)%flange_power
       end do
    end function roller_total_power
 
    !> The step-0 record s0 of bearing b brought to the dynamic state y of sys (its last
    !> evaluation's loads): azimuth (unwrapped, rad), radius, tilt, orbital speed, spin, slice
    !> contacts and tractions, losses, wear, flash temperature rise, race loads, basic life,
-   !> pocket gaps and the cage speed.
+   !> pocket gaps, forces and friction losses and the cage speed.
    subroutine roller_step_view(b, sys, y, azimuth, s0, s, error)
       type(bearing_t), intent(in) :: b
       type(roller_system_t), intent(in) :: sys
@@ -73,6 +73,11 @@ contains
             do j = 1, 2
                s%cage%pocket(j, k)%geo_int = ld%pocket_gap(j)
                s%cage%pocket(j, k)%in_contact = ld%pocket_load(j) > 0.0_wp
+               ! the pocket's force of this end and its share of the friction loss
+               s%cage%pocket(j, k)%force = ld%pocket_load(j)
+               s%cage%pocket(j, k)%loss = 0.0_wp
+               if (sum(ld%pocket_load) > 0.0_wp) s%cage%pocket(j, k)%loss = ld%pocket_power*ld%pocket_load(j)/ &
+                                                                            sum(ld%pocket_load)
             end do
             w_r = p%spin
             call line_flash(b, e%c_o(k), s%tr_o(k), BODY_OUTER, s%model%r_o, b%speed_outer - p%phidot, w_r, &
@@ -185,7 +190,7 @@ contains
                            "re"//e//"_contact_loss_outer_W", "re"//e//"_contact_loss_inner_W", &
                            "re"//e//"_orbital_speed_rad_s", "pocket"//e//"_force_N", &
                            "cage_angular_velocity_x_rad_s", "inner_race_y_m", "inner_race_z_m", &
-                           "race_contact_loss_W", "pocket_loss_W", "land_loss_W", &
+                           "race_contact_loss_W", "pocket_loss_W", "land_loss_W", "flange_loss_W", &
                            "bulk_temp_re_K", "bulk_temp_cage_K", "bulk_temp_outer_race_K", &
                            "bulk_temp_inner_race_K", "bulk_temp_housing_K", "bulk_temp_shaft_K", &
                            "cage_y_m", "cage_z_m", "cage_whirl_velocity_m_s", "cage_radial_velocity_m_s", &
@@ -238,6 +243,7 @@ contains
                                 y(ROLLER_SIZE*(h%element - 1) + 6), sum(ld%pocket_load), &
                                 y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 2), y(r0 + 2), y(r0 + 3), race_loss, &
                                 sum([(sys%loads(k)%pocket_power, k=1, sys%n)]), sys%land_power, &
+                                sum([(sys%loads(k)%flange_power, k=1, sys%n)]), &
                                 b%temperature(TEMP_ELEMENT), b%temperature(TEMP_CAGE), b%temperature(TEMP_OUTER), &
                                 b%temperature(TEMP_INNER), b%temperature(TEMP_HOUSING), b%temperature(TEMP_SHAFT), &
                                 c(2), c(3), -e_c(3)*v(2) + e_c(2)*v(3), dot_product(e_c, v), clearance, &

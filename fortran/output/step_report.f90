@@ -257,7 +257,8 @@ contains
    !>
    !> Contact force, loss and wear rate are 0 and the code 0 where there is no contact
    !> (pocket and land: gap > 0, see adore_cage_step0); a contact needs the cage
-   !> contact model (Rec 10.5.x, not done): NaN / not computed.  Land contact and attitude angles print 0 without contact
+   !> contact model: at step 0 NaN / not computed; in the roller dynamics' printed steps
+   !> the pocket's force and loss (code 1; the wear rate NaN).  Land contact and attitude angles print 0 without contact
    !> (as the report's ball step 0), NaN with contact.  The cage's angular velocity is about
    !> +x (theta = phi = 0); its angular position theta, phi is 0 for an untilted cage (the
    !> mapping of Rec 9.5.1 angles y, z onto theta, phi is not identified: NaN otherwise).
@@ -297,6 +298,13 @@ contains
                   re_cage(row, [2, 7, 8]) = 0.0_wp
                else
                   any_contact = .true.
+                  ! a contact with its force computed (the roller dynamics): code 1 as the
+                  ! ball print's metallic contact, force and loss; the wear rate stays NaN
+                  if (c%pocket(j, k)%force >= 0.0_wp) then
+                     code(row) = 1
+                     re_cage(row, 2) = c%pocket(j, k)%force
+                     re_cage(row, 7) = c%pocket(j, k)%loss
+                  end if
                end if
             end do
          end do

@@ -141,8 +141,13 @@ RECORDS: tuple[RecordSpec, ...] = (
                             ("cage", "8.4"), ("shaft", "8.5"), ("housing", "8.6"))),
         F("rec3_2_flag_10", "int", "-", "unknown; 1 in the roller deck (ball line lost)", "", "unknown",
           default=0),
+        F("roller_extension", "int", "-", "pyadore extension, not ADORE's: 1 = Rec 5B.2 (roller ends, "
+          "flanges, pocket type) follows a roller deck's Rec 5B.1; 0 or blank = none (both appendix "
+          "decks)", "", "pyadore", default=0, choices=(0, 1)),
     ), section="echo: Bearing Type, NO OF BALLS/ROLLERS",
-        notes="Field count (10) from the roller listing line `1 2 8 1 0 0 0 0 0 1`."),
+        notes="Field count (10) from the roller listing line `1 2 8 1 0 0 0 0 0 1`; field 11 is "
+              "pyadore's (the report gives no record layout for flanges or the pocket code: "
+              "docs/dynamics.md, \"Flanges\")."),
     RecordSpec("3.3", "Program options (flags)", _unknown_ints(
         "3.3", 1, 11, "roller deck 1 1 1 1 0 0 0 0 0 0 1; the ball line is lost. The echo prints "
         "QUASI-STATIC CONSTRAINTS, TRANSLATIONAL and ROTATIONAL CONSTRAINTS (section 4.4.6) that "
@@ -199,6 +204,38 @@ RECORDS: tuple[RecordSpec, ...] = (
         F("inner_race_len1", "real", "m", "echo INNER LEN1", "", "listing; echo", default=0.0, lo=0.0),
         F("inner_race_len2", "real", "m", "echo INNER LEN2", "", "listing; echo", default=0.0, lo=0.0),
     ), when="bearing_type == 2", section="echo: BEARING GEOMETRY"),
+    RecordSpec("5B.2", "Roller ends, flanges and pocket type (pyadore extension)", (
+        F("pocket_type", "int", "-", "roller pocket code as kPocType of report 4.4.11: 0 = rectangular, "
+          "-1 = cylindrical (roller guided cage); which Rec 7.0 field carries kPocType is not identified",
+          "kPocType", "section 4.4.11", default=0, choices=(-1, 0)),
+        F("outer_flange_1", "int", "-", "outer race flange at the negative-axis roller end: 1 = present",
+          "kFlngInd(1,1)", "A", default=0, choices=(0, 1)),
+        F("outer_flange_2", "int", "-", "outer race flange at the positive-axis roller end",
+          "kFlngInd(2,1)", "A", default=0, choices=(0, 1)),
+        F("inner_flange_1", "int", "-", "inner race flange at the negative-axis roller end",
+          "kFlngInd(1,2)", "A", default=0, choices=(0, 1)),
+        F("inner_flange_2", "int", "-", "inner race flange at the positive-axis roller end",
+          "kFlngInd(2,2)", "A", default=0, choices=(0, 1)),
+        F("roller_end_radius", "real", "m", "spherical roller end radius (centre on the roller axis, "
+          "apex at the end face); 0 = flat end, refused with a flange", "bReEndRad", "A", default=0.0,
+          lo=0.0),
+        F("outer_flange_height", "real", "m", "outer flange height below the outer raceway", "flngHt",
+          "A", default=0.0, lo=0.0),
+        F("inner_flange_height", "real", "m", "inner flange height above the inner raceway", "flngHt",
+          "A", default=0.0, lo=0.0),
+        F("outer_flange_angle", "real", "deg", "outer flange lay-back angle (face inclined away from "
+          "the roller with height)", "flngAng", "A", default=0.0, lo=0.0, hi=10.0),
+        F("inner_flange_angle", "real", "deg", "inner flange lay-back angle", "flngAng", "A",
+          default=0.0, lo=0.0, hi=10.0),
+        F("outer_flange_clearance", "real", "m", "axial play of the centred, aligned roller between "
+          "the outer race's flange faces (each face c/2 beyond the roller end)", "flngCls", "A",
+          default=0.0, lo=0.0),
+        F("inner_flange_clearance", "real", "m", "axial play between the inner race's flange faces",
+          "flngCls", "A", default=0.0, lo=0.0),
+    ), when="roller_extension != 0", section="4.4.11; A (guide flange data)",
+        notes="pyadore's record (not in ADORE decks): the report's Appendix A names the data "
+              "(kFlngInd, flngHt, flngAng, flngCls, bReEndRad) but not its input record.  Flange "
+              "contact model: docs/dynamics.md, \"Flanges\"."),
     RecordSpec("7.0", "Cage options and guide lands", (
         *_unknown_ints("7.0", 1, 8, "0 in both decks; one of fields 1-8 is the pocket code kPocType "
                        "(section 4.4.11; echo POCKET SHAPE 0), which one is not recoverable"),

@@ -1,0 +1,244 @@
+!> Engine unit tests of the roller end / flange contacts (fortran/contact/roller_flange.f90,
+!> the flange hook of fortran/forces/roller_bearing.f90) and of the flanged example deck
+!> decks/examples/cylindrical_roller_nup_combined.inp against hand calculations
+!> (docs/dynamics.md, "Flanges"): the geometry of the laid-back face and the Hertz load of
+!> the end sphere, the force and moment on the roller, the axial load of the inner race
+!> carried by the flange contacts and each roller's axial and tilt balance.
+program test_roller_flange
+   use adore_test_support, only: check, finish, get_decks_dir
+   use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
+   use adore_core_error, only: error_type
+   use adore_model_bearing, only: bearing_t
+   use adore_model_from_deck, only: read_bearing
+   use adore_geometry_mounted, only: mount_geometry
+   use adore_contact_line_slices, only: profile_drop
+   use adore_contact_roller_flange, only: roller_flange_set_t, flange_contact_t, roller_flanges, flange_contact
+   use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
+   use adore_forces_roller_bearing, only: roller_pose_t, race_pose_t, roller_loads_t, roller_loads, &
+                                          roller_force_model_t, cylindrical_pocket_loads, POCKET_SLICES
+   use adore_dynamics_integrator, only: integrator_t
+   use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, &
+                                           R_TILT, R_SKEW, R_X, RACE_OFFSET
+   implicit none
+
+   character(len=:), allocatable :: decks
+   type(error_type), allocatable :: error
+
+   call get_decks_dir(decks)
+   call test_face_geometry_and_hertz()
+   call test_cylindrical_pocket()
+   call test_example_deck()
+   call finish("roller flanges")
+
+contains
+
+   !> An aligned roller (D 7.5 mm, L 8 mm, R_e 60 mm) pushed axially against an inner-race
+   !> flange laid back by theta: the interference is the axial push beyond the play times
+   !> cos theta, the contact height D/2 - R_e sin theta, the load Hertz's with the
+   !> equivalent sphere sqrt(R_x R_y) by hand; at theta = 0 the exact sphere on a plane.
+   subroutine test_face_geometry_and_hertz()
+      type(roller_flange_set_t) :: s
+      type(flange_contact_t) :: c
+      real(wp), parameter :: d = 7.5e-3_wp, l = 8.0e-3_wp, re = 0.06_wp, cl = 4.0e-5_wp, es = 1.0e11_wp
+      real(wp), parameter :: r_i = 0.019_wp, push = 2.0e-6_wp
+      real(wp) :: theta, centre(3), q, rc, ry, reff
+      integer :: k
+      do k = 1, 2
+         theta = merge(0.0_wp, 2.5_wp*pi/180.0_wp, k == 1)
+         s = roller_flanges(d, l, [3.0e-4_wp, 3.0e-4_wp], re, reshape([.false., .false., .true., .false.], [2, 2]), &
+                            [4.0e-3_wp, 4.0e-3_wp], [theta, theta], [cl, cl], [0.0265_wp, r_i], [es, es])
+         call check(size(s%flange) == 1 .and. s%flange(1)%race == 2 .and. s%flange(1)%side == -1, "one inner flange at -x")
+         ! the roller moved along -x by the half play and push: interference push cos theta
+         centre = [-(0.5_wp*cl + push), r_i + 0.5_wp*d, 0.0_wp]
+         call flange_contact(s, s%flange(1), centre, [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], &
+                             [0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], 0.0_wp, c)
+         call check(abs(c%delta - push*cos(theta)) < 1.0e-12_wp, "interference = axial push x cos(lay-back angle)")
+         call check(abs(c%height - (0.5_wp*d - re*sin(theta))) < 1.0e-12_wp, "contact height D/2 - R_e sin theta")
+         call check(c%on_face, "contact on the face")
+         rc = r_i + c%height
+         ry = 1.0_wp/(1.0_wp/re + sin(theta)/rc)
+         reff = sqrt(re*ry)
+         q = 4.0_wp/3.0_wp*es*sqrt(reff)*(push*cos(theta))**1.5_wp
+         ! 1e-9: the face position holds R_e/cos theta - R_e (0.06 m) against delta = 2 um
+         call check(abs(c%load - q) < 1.0e-9_wp*q, "Hertz load of the equivalent sphere by hand")
+         call check(abs(c%normal(1) - cos(theta)) < 1.0e-15_wp .and. abs(c%normal(2) - sin(theta)) < 1.0e-15_wp, &
+                    "normal towards the roller: (cos theta, sin theta)")
+         if (k == 1) call check(abs(c%load - 4.0_wp/3.0_wp*es*sqrt(re)*push**1.5_wp) < 1.0e-9_wp*q, &
+                                "theta = 0: the sphere-on-plane law (4/3) E* sqrt(R) delta**1.5")
+         print "(a,f5.2,a,es11.4,a,es11.4,a)", "  flange at ", theta*180.0_wp/pi, " deg: load ", c%load, &
+            " N, height ", c%height, " m"
+      end do
+   end subroutine test_face_geometry_and_hertz
+
+   !> The cylindrical pocket (kPocType -1) by hand: a roller of 7.5 mm in a pocket of
+   !> 7.6 mm (c = 0.1 mm) on a pocket radius of 23.5 mm; centred it touches nothing (gap
+   !> c/2 at both halves); pushed by delta0 = 5 um beyond the gap along the orbit (e_t) or
+   !> radially (e_r), untilted, every slice has delta0: the normal force is K delta0**(10/9)
+   !> L_p against the push, the friction mu N against the sliding of the roller surface
+   !> (spin relative to the cage times D/2, regularised: factor v/sqrt(v**2 + 1e-6)), its
+   !> moment about the roller axis -mu N D/2, and the cage's torque the reaction's about the
+   !> bearing axis.
+   subroutine test_cylindrical_pocket()
+      type(roller_force_model_t) :: m
+      type(roller_pose_t) :: p
+      type(race_pose_t) :: a
+      type(roller_loads_t) :: ld
+      real(wp), parameter :: rp = 0.0235_wp, cl = 1.0e-4_wp, d0 = 5.0e-6_wp, mu = 0.05_wp, w_rel = 100.0_wp
+      real(wp) :: dphi, fn, ff, torque
+      m%qs%d = 7.5e-3_wp
+      m%pocket_type = -1
+      m%pocket_radius = rp
+      m%pocket_clearance = cl
+      m%pocket_length = 8.0e-3_wp - 6.0e-4_wp
+      m%pocket_k = 3.0e10_wp
+      m%pocket_friction = mu
+      a%pocket_azimuth = 0.3_wp
+      a%cage_speed = 150.0_wp
+      ! centred
+      p = roller_pose_t(x=0.0_wp, r=rp, phi=0.3_wp, phidot=150.0_wp, spin=w_rel)
+      call cylindrical_pocket_loads(m, p, a, ld)
+      call check(all(abs(ld%pocket_gap - 0.5_wp*cl) < 1.0e-15_wp) .and. all(ld%pocket_load == 0.0_wp), &
+                 "centred roller: gap c/2 at both halves, no load")
+      fn = m%pocket_k*d0**(10.0_wp/9.0_wp)*m%pocket_length
+      ff = mu*fn*w_rel*0.5_wp*m%qs%d/sqrt((w_rel*0.5_wp*m%qs%d)**2 + 1.0e-6_wp)
+      ! pushed along +e_t: the pocket axis at (r, t) = (R_p cos dphi, -R_p sin dphi)
+      dphi = asin((0.5_wp*cl + d0)/rp)
+      p%phi = a%pocket_azimuth + dphi
+      p%r = rp*cos(dphi)
+      ld = roller_loads_t()
+      call cylindrical_pocket_loads(m, p, a, ld)
+      print "(a,2es13.5,a,2es13.5,a)", "  cylindrical pocket, orbit push: load ", sum(ld%pocket_load), fn, &
+         " N (run, hand); friction ", ld%force(2), ff, " N"
+      call check(abs(sum(ld%pocket_load) - fn) < 1.0e-12_wp*fn .and. abs(ld%pocket_load(1) - ld%pocket_load(2)) < &
+                 1.0e-12_wp*fn, "orbit push: load K delta0**(10/9) L_p, shared by the halves")
+      call check(abs(ld%force(3) + fn) < 1.0e-12_wp*fn, "orbit push: normal force against the push")
+      ! tau = e_x x e_t = -e_r: sliding (W_abs - w_c) D/2 along tau, friction along -tau = +e_r
+      call check(abs(ld%force(2) - ff) < 1.0e-12_wp*fn, "orbit push: Coulomb friction mu N against the sliding")
+      call check(abs(ld%moment(1) + ff*0.5_wp*m%qs%d) < 1.0e-12_wp*fn*m%qs%d, "orbit push: spin moment -mu N D/2")
+      call check(all(abs(ld%moment(2:3)) < 1.0e-12_wp*fn*m%qs%d), "orbit push, aligned roller: no tilt or skew moment")
+      ! cage torque about the axis: reaction (N e_t - ff e_r) at the point r e_r + D/2 e_t
+      torque = p%r*fn + 0.5_wp*m%qs%d*ff
+      call check(abs(ld%cage_torque - torque) < 1.0e-12_wp*fn*rp, "orbit push: the cage's torque by hand")
+      call check(abs(ld%pocket_power - ff*w_rel*0.5_wp*m%qs%d) < 1.0e-9_wp*ff*w_rel*m%qs%d, &
+                 "orbit push: friction loss mu N v")
+      ! pushed radially outwards (the roller guided cage holds the roller radially)
+      p%phi = a%pocket_azimuth
+      p%r = rp + 0.5_wp*cl + d0
+      p%spin = 0.0_wp
+      p%phidot = a%cage_speed
+      ld = roller_loads_t()
+      call cylindrical_pocket_loads(m, p, a, ld)
+      call check(abs(ld%force(2) + fn) < 1.0e-12_wp*fn .and. abs(ld%force(3)) < 1.0e-12_wp*fn .and. &
+                 ld%pocket_power == 0.0_wp, "radial push: load K delta0**(10/9) L_p inwards, no sliding, no friction")
+      call check(size(ld%pocket_load) == 2 .and. POCKET_SLICES > 0, "pocket halves")
+   end subroutine test_cylindrical_pocket
+
+   !> The flanged example deck (NUP type, 5 kN radial + 0.5 kN axial, 3000 rpm) integrated
+   !> past its start transient, then averaged (docs/dynamics.md, "Flanges").
+   subroutine test_example_deck()
+      type(bearing_t) :: b
+      type(roller_step0_t) :: s0
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), dydt(:), fl(:, :), fax(:, :), slice_m(:), flange_m(:), hgt(:, :)
+      real(wp) :: t, t_avg, t_end, dt, t_last, axial_on_race, total, theta, lc, q, m_hand, m_slices, loaded_share
+      real(wp) :: worst_axial, worst_tilt
+      integer :: k, n, flag, i, j
+
+      call read_bearing(decks//"/examples/cylindrical_roller_nup_combined.inp", b, error)
+      call check(.not. allocated(error), "flanged example deck read")
+      if (allocated(error)) return
+      call check(all(b%roller%flange), "four flanges")
+      call solve_roller_step0(b, s0, error)
+      call check(.not. allocated(error), "example step 0 solved")
+      if (allocated(error)) return
+      associate (e => s0%equilibrium)
+         call start_roller_dynamics(b, mount_geometry(b, b%temperature, 2), s0%model, e%azimuth, e%r, e%tilt, &
+                                    e%orbital_speed, s0%roller_spin, e%u, 0.0_wp, s0%cage%state%angular_speed, &
+                                    sys, it, y, error)
+      end associate
+      call check(.not. allocated(error), "example dynamics started")
+      if (allocated(error)) return
+      n = sys%n
+      allocate (dydt(size(y)), fl(4, n), fax(4, n), slice_m(n), flange_m(n), hgt(4, n))
+      fl = 0.0_wp; fax = 0.0_wp; slice_m = 0.0_wp; flange_m = 0.0_wp; hgt = 0.0_wp
+      axial_on_race = 0.0_wp
+      t = 0.0_wp
+      t_avg = 3.0e-3_wp/sys%time_scale
+      t_end = 6.0e-3_wp/sys%time_scale
+      t_last = 0.0_wp
+      total = 0.0_wp
+      do while (t < t_end .and. .not. allocated(error))
+         call it%step(sys, t, y, error, t_limit=t_end)
+         if (t <= t_avg) then
+            t_last = t
+            cycle
+         end if
+         dt = t - t_last
+         t_last = t
+         call sys%eval(t, y, dydt, flag)
+         total = total + dt
+         do k = 1, n
+            associate (ld => sys%loads(k))
+               fl(:, k) = fl(:, k) + dt*ld%flange_load
+               fax(:, k) = fax(:, k) + dt*ld%flange_axial
+               hgt(:, k) = hgt(:, k) + dt*ld%flange_height
+               axial_on_race = axial_on_race + dt*ld%race_force(1, 2)
+            end associate
+         end do
+      end do
+      call check(.not. allocated(error), "example integrated to 6 ms")
+      if (allocated(error)) return
+      fax = fax/total
+      axial_on_race = axial_on_race/total
+      ! (1) the inner race's axial balance, time-averaged: the rollers' reactions (flanges and
+      ! slice traction) carry the applied axial load
+      print "(a,f10.4,a,f10.4,a)", "  axial reaction of the rollers on the inner race ", axial_on_race, &
+         " N, of its flange contacts ", -sum(fax(3:4, :)), " N (applied 500 N)"
+      call check(abs(axial_on_race + b%force(1)) < 0.01_wp*b%force(1), &
+                 "time-averaged axial reaction of the rollers = the applied axial load within 1 %")
+      ! (2), (3) each roller at the last state: its axial balance (inner flange = outer flange)
+      ! and its tilt balance: the flange pair's couple by hand, Q (cos theta (D - h_i - h_o) -
+      ! sin theta L_c) with L_c = L - 2 R_e (1 - cos theta) the contact points' axial distance,
+      ! against the slices' tilt moment M_i - M_o plus the couple of their axial tractions
+      ! (the skewed roller's), sum -s rho f_x by hand
+      call sys%eval(t, y, dydt, flag)
+      theta = b%roller%flange_angle(1)
+      lc = b%roller%roller_length - 2.0_wp*b%roller%end_radius*(1.0_wp - cos(theta))
+      loaded_share = 0.0_wp
+      worst_axial = 0.0_wp
+      worst_tilt = 0.0_wp
+      print "(a)", "  roller  azimuth(deg) radial load(N) flange loads in/out(N)  couple by hand / slices, "// &
+         "all loads' tilt moment (N m)"
+      do k = 1, n
+         associate (ld => sys%loads(k))
+            q = 0.5_wp*(ld%flange_load(2) + ld%flange_load(3))
+            m_hand = q*(cos(theta)*(b%d - ld%flange_height(2) - ld%flange_height(3)) - sin(theta)*lc)
+            m_slices = ld%c(2)%moment - ld%c(1)%moment
+            do j = 1, 2
+               do i = 1, size(ld%c(j)%x)
+                  m_slices = m_slices + merge(1.0_wp, -1.0_wp, j == 1)*(0.5_wp*b%d - &
+                             profile_drop(sys%model%qs%profile, ld%c(j)%x(i)))*ld%c(j)%weight(i)*ld%traction(i, 2, j)
+               end do
+            end do
+            print "(i7,f12.2,f14.2,2f11.3,3f12.5)", k, modulo(y(ROLLER_SIZE*(k - 1) + 3)*180.0_wp/pi, 360.0_wp), &
+               ld%load(1), ld%flange_load(3), ld%flange_load(2), m_hand, -m_slices, ld%moment(3)
+            if (ld%load(2) > 0.1_wp*b%force(3)/n) then
+               loaded_share = loaded_share + ld%flange_axial(3)
+               worst_axial = max(worst_axial, abs(ld%flange_axial(3) + ld%flange_axial(2))/ld%flange_axial(3))
+               worst_tilt = max(worst_tilt, abs(m_hand + m_slices)/m_hand)
+            end if
+         end associate
+      end do
+      print "(a,f8.2,a,f8.2,a,f7.3,a,f7.3,a)", "  loaded rollers' inner flanges carry ", &
+         100.0_wp*loaded_share/b%force(1), " % of the axial load (all rollers ", 100.0_wp*sum(sys%loads(:)%flange_axial(3))/ &
+         b%force(1), " %); worst axial balance ", 100.0_wp*worst_axial, " %, worst tilt balance ", 100.0_wp*worst_tilt, " %"
+      call check(loaded_share > 0.9_wp*sum(sys%loads(:)%flange_axial(3)), &
+                 "the loaded zone's flange contacts carry over 90 % of the flanges' axial load")
+      call check(worst_axial < 0.02_wp, "each loaded roller: inner and outer flange axial forces equal within 2 %")
+      call check(worst_tilt < 0.05_wp, "each loaded roller: the slices' tilt moment balances the flange couple "// &
+                 "by hand within 5 %")
+   end subroutine test_example_deck
+
+end program test_roller_flange
