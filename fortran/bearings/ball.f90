@@ -170,6 +170,11 @@ contains
       if (method /= THERMAL_OFF) then
          self%event_start = self%thermal%interval
          self%event_period = self%thermal%interval
+         ! ADORE 5.0's traction does not follow the computed temperatures (report 5.3: "the
+         ! traction model constants are presently not subject to change as the bulk
+         ! temperatures of the bearing elements vary"; 7 rec. 1): the race contacts'
+         ! lubricant stays at the initial temperatures unless the run asks otherwise
+         if (.not. self%options%thermal_traction) self%eom%lubricant_temperature = self%bearing%temperature
       end if
    end subroutine ball_start_dynamics
 
