@@ -133,8 +133,8 @@ contains
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
-                                 self%contact_damping, self%land_film, self%cage_spin_only, rolling=self%rolling_resistance, &
-                                 lubricant_temperature=self%lubricant_temperature)
+                                 self%contact_damping, self%land_film, self%cage_spin_only, &
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
