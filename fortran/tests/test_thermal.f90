@@ -20,6 +20,11 @@ program test_thermal
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, &
       coolant_capacity_rate, default_thermal_options, new_thermal_heat
    use adore_thermal_march, only: solve_thermal_march, solve_thermal_field, element_heat_fraction
+   use adore_geometry_mounted, only: mounted_geometry_t
+   use adore_start_ball_step0, only: ball_step0_t
+   use adore_state_bearing_state, only: bearing_state_t
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads
+   use adore_test_ball_fixture, only: step0_state, appendix_c_race_control
    use adore_thermal_distortion, only: distortion_t, thermal_distortion
    use adore_thermal_drag, only: sphere_drag_coefficient, cylinder_drag_coefficient, element_drag, churning_moment, &
                                  element_fluid_loss_t, element_fluid_loss
@@ -48,6 +53,7 @@ program test_thermal
    call test_report_fits()
    call test_report_bulk_conventions()
    call test_drag()
+   call test_traction_at_initial_temperatures()
 
    call finish("thermal")
 
@@ -523,5 +529,36 @@ contains
          call check(r%loss == 0.0_wp, "no lubricant in the free space: no drag, no churning")
       end block
    end subroutine test_drag
+
+   !> ADORE 5.0's traction does not follow the computed bulk temperatures (report 5.3, 7
+   !> rec. 1): at Appendix C's step-0 state with the balls and races 30 K warmer, the force
+   !> assembly with the lubricant at the initial temperatures gives the initial heat and
+   !> forces bit for bit; at the state's own temperatures the EHD traction changes (thinner
+   !> oil: less heat).
+   subroutine test_traction_at_initial_temperatures()
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(bearing_state_t) :: st, warm
+      type(ball_bearing_loads_t) :: l0, l1, l2
+      call appendix_c_race_control("thermal", b, g, s0)
+      st = step0_state(b, s0)
+      warm = st
+      warm%temperature([TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER]) = st%temperature([TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER]) &
+                                                                 + 30.0_wp
+      call ball_bearing_loads(b, g, st, l0, error)
+      call check(.not. allocated(error), "loads at the initial temperatures")
+      if (allocated(error)) return
+      call ball_bearing_loads(b, g, warm, l1, error, lubricant_temperature=b%temperature)
+      call check(.not. allocated(error), "loads of the warm state, lubricant at the initial temperatures")
+      if (allocated(error)) return
+      call ball_bearing_loads(b, g, warm, l2, error)
+      call check(.not. allocated(error), "loads of the warm state at its own temperatures")
+      if (allocated(error)) return
+      call check(all(l1%heat == l0%heat) .and. all(l1%races(2)%force == l0%races(2)%force), &
+                 "lubricant at the initial temperatures: the warm state's heat and forces are the initial ones")
+      write (*, "(a,2f9.2,a)") "  race contact heat at 323 K and at the state's +30 K: ", sum(l0%heat), sum(l2%heat), " W"
+      call check(sum(l2%heat) < 0.95_wp*sum(l0%heat), "lubricant at the state's temperatures: 30 K warmer, less heat")
+   end subroutine test_traction_at_initial_temperatures
 
 end program test_thermal
