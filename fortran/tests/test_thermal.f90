@@ -49,6 +49,7 @@ program test_thermal
    call test_network_closed_form()
    call test_march_closed_form()
    call test_march_report_step2500()
+   call test_march_report_roller()
    call test_free_growth()
    call test_report_fits()
    call test_report_bulk_conventions()
@@ -418,6 +419,46 @@ contains
                     " within 1 % of the report's")
       end do
    end subroutine test_march_report_step2500
+
+   !> Appendix D's step 4000 (roller, ambient air, no flow, reference 294 K) from its printed
+   !> contact losses (all legible; they sum to its total power loss 0.9677 W) by the march:
+   !> the report prints rollers, shaft and exit fluid below the reference, which no passive
+   !> network with its sink at 294 K gives (maximum principle) and the march does (the
+   !> rollers' mid points below their outer contacts).  Housing 294.0, shaft 293.9 K and the
+   !> rollers' mean within the issue's 0.1 %; the exit fluid below the reference (its value
+   !> depends on eq 18's velocity, not identified: docs/thermal.md).
+   subroutine test_march_report_roller()
+      type(bearing_t) :: r
+      type(thermal_heat_t) :: h
+      type(thermal_options_t) :: opt
+      type(thermal_field_t) :: f
+      real(wp), parameter :: printed(8) = [294.0_wp, 294.0_wp, 294.0_wp, 293.9_wp, 293.6_wp, 293.6_wp, 293.9_wp, &
+                                           294.0_wp]
+      integer :: i
+      call read_bearing(decks//"/appendix_d_roller.inp", r, error)
+      call check(.not. allocated(error), "Appendix D deck reads")
+      if (allocated(error)) return
+      h = new_thermal_heat(8)
+      h%outer = [1.331e-2_wp, 1.331e-2_wp, 8.355e-2_wp, 2.700e-1_wp, 1.996e-1_wp, 2.793e-2_wp, 1.331e-2_wp, 1.331e-2_wp]
+      h%inner = [0.0_wp, 0.0_wp, 2.412e-2_wp, 1.913e-1_wp, 1.173e-1_wp, 6.026e-4_wp, 0.0_wp, 0.0_wp]
+      opt = default_thermal_options(r)
+      opt%element_velocity = [(1.817e5_wp*pi/30.0_wp*0.5_wp*r%d, i = 1, 8)]   ! spin surface speed
+      call solve_thermal_march(r, h, opt, f, error)
+      call check(.not. allocated(error), "march solves Appendix D's step-4000 heat")
+      if (allocated(error)) return
+      write (*, "(a,3f9.3,a,8f8.3)") "  Appendix D by the march: housing, shaft, exit ", f%housing(1), f%shaft(1), &
+         f%exit_temperature, "; rollers ", f%element_bulk
+      call check(abs(f%housing(1) - 294.0_wp) <= 1.0e-3_wp*294.0_wp, "Appendix D march: housing 294.0 K within 0.1 %")
+      call check(abs(f%shaft(1) - 293.9_wp) <= 1.0e-3_wp*293.9_wp, "Appendix D march: shaft 293.9 K within 0.1 %")
+      ! the mean roller (the bulk temperature the geometry update uses) within 0.1 %; each
+      ! roller's printed value is its heat averaged over the last interval, the losses here
+      ! step 4000's own, so single rollers differ more (worst 0.13 %, roller 6; measured, not
+      ! asserted: docs/thermal.md)
+      call check(abs(sum(f%element_bulk)/8.0_wp - sum(printed)/8.0_wp) <= 1.0e-3_wp*sum(printed)/8.0_wp, &
+                 "Appendix D march: mean roller within 0.1 %")
+      call check(f%exit_temperature < 294.0_wp .and. minval(f%element_bulk) < 294.0_wp, &
+                 "Appendix D march: exit fluid and rollers below the reference, as printed")
+   end subroutine test_march_report_roller
 
    !> A free ring grows by alpha dT r; a ball by alpha dT D; equal expansion of all bodies
    !> keeps the fits and scales the unmounted play.
