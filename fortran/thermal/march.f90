@@ -28,7 +28,8 @@ module adore_thermal_march
                                   BODY_HOUSING
    use adore_thermal_conduction, only: cylinder_conductance, element_conductance, element_bulk
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, &
-                                    coolant_capacity_rate, complete_field, element_coefficient, FIELD_NETWORK
+                                    coolant_capacity_rate, complete_field, element_coefficient, thermal_input, &
+                                    FIELD_NETWORK
    implicit none
    private
 
@@ -81,27 +82,8 @@ contains
       integer :: n, j, pass
 
       n = b%n_elements
-      if (n < 1) then
-         call input_error(error, "thermal march: no rolling elements")
-         return
-      end if
-      if (.not. (size(heat%outer) == n .and. size(heat%inner) == n .and. size(heat%pocket) == n .and. &
-                 size(heat%drag) == n)) then
-         call input_error(error, "thermal march: heat arrays must have one value per rolling element")
-         return
-      end if
-      if (b%coolant%coolant_type == 1 .and. b%lubricant%density <= 0.0_wp) then
-         call input_error(error, "thermal march: coolant type 1 (lubricant) needs a lubricant (Rec 10.0)")
-         return
-      end if
-      allocate (vel(n), source=0.0_wp)
-      if (allocated(opt%element_velocity)) then
-         if (size(opt%element_velocity) /= n) then
-            call input_error(error, "thermal march: one element velocity per rolling element")
-            return
-         end if
-         vel = opt%element_velocity
-      end if
+      call thermal_input(b, heat, opt, "thermal march", vel, error)
+      if (allocated(error)) return
       l_el = 0.0_wp
       area = pi*b%d*b%d
       if (b%bearing_type == ROLLER_BEARING) then

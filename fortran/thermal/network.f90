@@ -51,7 +51,7 @@ module adore_thermal_network
    private
 
    public :: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, coolant_capacity_rate
-   public :: default_thermal_options, new_thermal_heat, complete_field, element_coefficient
+   public :: default_thermal_options, new_thermal_heat, complete_field, element_coefficient, thermal_input
 
    !> The field models of thermal_options_t%field_model: the report's march of 2.10
    !> (adore_thermal_march, ADORE 5.0's) and this module's network
@@ -158,33 +158,14 @@ contains
       logical :: ok, in_range, liquid
 
       n = b%n_elements
-      if (n < 1) then
-         call input_error(error, "thermal network: no rolling elements")
-         return
-      end if
-      if (.not. (size(heat%outer) == n .and. size(heat%inner) == n .and. size(heat%pocket) == n .and. &
-                 size(heat%drag) == n)) then
-         call input_error(error, "thermal network: heat arrays must have one value per rolling element")
-         return
-      end if
+      call thermal_input(b, heat, opt, "thermal network", vel, error)
+      if (allocated(error)) return
       liquid = b%coolant%coolant_type == 1
-      if (liquid .and. b%lubricant%density <= 0.0_wp) then
-         call input_error(error, "thermal network: coolant type 1 (lubricant) needs a lubricant (Rec 10.0)")
-         return
-      end if
       shape = SHAPE_SPHERE
       l_el = 0.0_wp
       if (b%bearing_type == ROLLER_BEARING) then
          shape = SHAPE_CYLINDER
          l_el = b%roller%roller_length
-      end if
-      allocate (vel(n), source=0.0_wp)
-      if (allocated(opt%element_velocity)) then
-         if (size(opt%element_velocity) /= n) then
-            call input_error(error, "thermal network: one element velocity per rolling element")
-            return
-         end if
-         vel = opt%element_velocity
       end if
 
       ! conductances (W/K)
@@ -321,6 +302,41 @@ contains
       end subroutine contact_row
 
    end subroutine solve_thermal_network
+
+   !> Checks of a field solve's input (`who` names the model in the message): elements,
+   !> one heat value per element, a lubricant for coolant type 1, one velocity per element;
+   !> vel (m/s) the elements' velocities (0 when opt gives none).  Input error otherwise.
+   subroutine thermal_input(b, heat, opt, who, vel, error)
+      type(bearing_t), intent(in) :: b
+      type(thermal_heat_t), intent(in) :: heat
+      type(thermal_options_t), intent(in) :: opt
+      character(len=*), intent(in) :: who
+      real(wp), allocatable, intent(out) :: vel(:)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n
+      n = b%n_elements
+      if (n < 1) then
+         call input_error(error, who//": no rolling elements")
+         return
+      end if
+      if (.not. (size(heat%outer) == n .and. size(heat%inner) == n .and. size(heat%pocket) == n .and. &
+                 size(heat%drag) == n)) then
+         call input_error(error, who//": heat arrays must have one value per rolling element")
+         return
+      end if
+      if (b%coolant%coolant_type == 1 .and. b%lubricant%density <= 0.0_wp) then
+         call input_error(error, who//": coolant type 1 (lubricant) needs a lubricant (Rec 10.0)")
+         return
+      end if
+      allocate (vel(n), source=0.0_wp)
+      if (allocated(opt%element_velocity)) then
+         if (size(opt%element_velocity) /= n) then
+            call input_error(error, who//": one element velocity per rolling element")
+            return
+         end if
+         vel = opt%element_velocity
+      end if
+   end subroutine thermal_input
 
    !> The bulk temperatures of a field whose node temperatures are set (contact, mid-point,
    !> exit, housing surfaces housing(2:3), shaft surfaces shaft(2:3)): elements by eq 17,
