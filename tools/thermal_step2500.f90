@@ -14,6 +14,7 @@ program thermal_step2500
    use adore_model_bearing, only: bearing_t, TEMP_HOUSING, TEMP_SHAFT, TEMP_ELEMENT, TEMP_CAGE, TEMP_OUTER, TEMP_INNER
    use adore_model_from_deck, only: read_bearing
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network
+   use adore_thermal_march, only: solve_thermal_march
    use adore_thermal_distortion, only: distortion_t, thermal_distortion
    implicit none
    ! report step 2500, section 1: contact loss outer/inner (W), spin amplitude (rpm); 0 = illegible
@@ -119,18 +120,25 @@ contains
       hr%drag = 0.0_wp
       o%reference_temperature = r%temperature(TEMP_HOUSING)
       o%element_velocity = [(1.817e5_wp*pi/30.0_wp*0.5_wp*r%d, i = 1, 8)]
-      call solve_thermal_network(r, hr, o, f, error)
-      if (allocated(error)) then
-         print "(a)", error%message
-         return
-      end if
-      print "(/,a,f8.4,a)", "Appendix D step 4000: heat ", f%q_generated, " W (report total power loss 0.9677 W)"
-      print "(a,3f9.3)", "  exit, housing bulk, shaft bulk (report 293.9, 294.0, 293.9): ", f%exit_temperature, &
-         f%housing(1), f%shaft(1)
-      print "(a,3f9.3)", "  outer race, inner race, cage (report -, -, 293.9): ", f%temperature(TEMP_OUTER), &
-         f%temperature(TEMP_INNER), f%temperature(TEMP_CAGE)
-      print "(a,8f8.3)", "  roller bulk (report 294.0 294.0 294.0 293.9 293.6 293.6 293.9 294.0): ", f%element_bulk
-      print "(a,es10.3,a)", "  mean HTC ", sum(f%htc)/8, " W/(m^2 K) (report 4.18e5)"
+      do i = 1, 2
+         if (i == 1) then
+            call solve_thermal_network(r, hr, o, f, error)
+         else
+            call solve_thermal_march(r, hr, o, f, error)
+         end if
+         if (allocated(error)) then
+            print "(a)", error%message
+            return
+         end if
+         print "(/,2a,f8.4,a)", trim(merge("network", "march  ", i == 1)), ": Appendix D step 4000: heat ", &
+            f%q_generated, " W (report total power loss 0.9677 W)"
+         print "(a,3f9.3)", "  exit, housing bulk, shaft bulk (report 293.9, 294.0, 293.9): ", f%exit_temperature, &
+            f%housing(1), f%shaft(1)
+         print "(a,3f9.3)", "  outer race, inner race, cage (report -, -, 293.9): ", f%temperature(TEMP_OUTER), &
+            f%temperature(TEMP_INNER), f%temperature(TEMP_CAGE)
+         print "(a,8f8.3)", "  roller bulk (report 294.0 294.0 294.0 293.9 293.6 293.6 293.9 294.0): ", f%element_bulk
+         print "(a,es10.3,a)", "  mean HTC ", sum(f%htc)/8, " W/(m^2 K) (report 4.18e5)"
+      end do
    end subroutine roller_step4000
 
 end program thermal_step2500

@@ -18,7 +18,7 @@ module adore_bearings_ball
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
    use adore_thermal_distortion, only: distorted_bearing
-   use adore_thermal_network, only: thermal_heat_t
+   use adore_thermal_network, only: thermal_heat_t, FIELD_NETWORK
    use adore_core_linalg, only: solve_dense
    use adore_bearings_ball_thermal, only: ball_thermal_t, new_ball_thermal, thermal_mode_of, ball_heat_rates, &
                                           ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF, THERMAL_GEOMETRY
@@ -158,9 +158,21 @@ contains
       call thermal_mode_of(self%options%thermal, self%bearing, method, error)
       if (allocated(error)) return
       self%thermal = new_ball_thermal(self%bearing, method)
+      ! the march is ADORE 5.0's: its shaft bulk temperature as ADORE prints it (docs/thermal.md)
+      self%thermal%options%shaft_bulk_as_printed = .true.
+      if (self%options%thermal_field == "network") then
+         self%thermal%options%field_model = FIELD_NETWORK
+         self%thermal%options%shaft_bulk_as_printed = .false.
+      end if
+      self%thermal%options%reference_htc = self%options%housing_htc
       if (method /= THERMAL_OFF) then
          self%event_start = self%thermal%interval
          self%event_period = self%thermal%interval
+         ! ADORE 5.0's traction does not follow the computed temperatures (report 5.3: "the
+         ! traction model constants are presently not subject to change as the bulk
+         ! temperatures of the bearing elements vary"; 7 rec. 1): the race contacts'
+         ! lubricant stays at the initial temperatures unless the run asks otherwise
+         if (.not. self%options%thermal_traction) self%eom%lubricant_temperature = self%bearing%temperature
       end if
    end subroutine ball_start_dynamics
 
@@ -251,7 +263,8 @@ contains
    subroutine ball_values(self, v)
       class(ball_kind_t), intent(in) :: self
       real(wp), intent(out) :: v(:)
-      call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v)
+      call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v, &
+                                self%eom%lubricant_temperature)
    end subroutine ball_values
 
    !> Each ball's orbital position unwrapped from step to step (a step moves a ball far
@@ -294,15 +307,18 @@ contains
             if (th%mode == THERMAL_OFF) then
                call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
-                                    pocket_wear, land_wear, cage_avg)
+                                    pocket_wear, land_wear, cage_avg, &
+                                    lubricant_temperature=self%eom%lubricant_temperature)
             else if (.not. th%have_field) then      ! before the first update: no field yet
                call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
-                                    pocket_wear, land_wear, cage_avg, th%fluid)
+                                    pocket_wear, land_wear, cage_avg, th%fluid, &
+                                    lubricant_temperature=self%eom%lubricant_temperature)
             else
                call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
-                                    pocket_wear, land_wear, cage_avg, th%fluid, th%field)
+                                    pocket_wear, land_wear, cage_avg, th%fluid, th%field, &
+                                    self%eom%lubricant_temperature)
             end if
          end associate
       end associate
@@ -337,7 +353,7 @@ contains
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
       if (step == 0) call step0_history_values(self, h)
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
-                              flash=h%printed)
+                              flash=h%printed, lubricant_temperature=self%eom%lubricant_temperature)
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
       ! the thermal model's exit fluid temperature and the history element's contact
       ! temperatures (the network's contact nodes; NaN / the bulk ones before the first field)
@@ -617,13 +633,14 @@ contains
    !> unloaded); the damage rate 1/L (1/h) of the modified life L of this state
    !> (dynamic_lives: its average inverted is the Palmgren-Miner life); the cage's Archard
    !> wear (cage material) of each pocket and guide land (cage_wear_sliding) and their sum;
-   !> the RE excursion (pocket_excursion).
-   subroutine ball_averaged_values(b, g, s, loads, v)
+   !> the RE excursion (pocket_excursion).  lubricant_temperature: as the force assembly's.
+   subroutine ball_averaged_values(b, g, s, loads, v, lubricant_temperature)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(out) :: v(:)
+      real(wp), intent(in), optional :: lubricant_temperature(:)
       type(contact_print_t) :: tribology
       real(wp) :: w_orb(b%n_elements), lives(2), pockets(b%n_elements), lands(max(b%n_lands, 0))
       integer :: k, n
@@ -640,7 +657,7 @@ contains
                                                       loads%traction(1, k)%sliding + loads%traction(2, k)%sliding)
          w_orb(k) = orbital_speed(s%elements(k))
       end do
-      call ball_contact_print(b, g, s, loads, tribology, flash=.false.)
+      call ball_contact_print(b, g, s, loads, tribology, flash=.false., lubricant_temperature=lubricant_temperature)
       lives = dynamic_lives(b, g, loads, tribology, w_orb)
       v(AVG_DAMAGE) = 0.0_wp
       if (lives(2) > 0.0_wp) v(AVG_DAMAGE) = 1.0_wp/lives(2)      ! an infinite life: no damage

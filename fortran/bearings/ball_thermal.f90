@@ -20,8 +20,9 @@ module adore_bearings_ball_thermal
    use adore_model_bearing, only: bearing_t
    use adore_state_bearing_state, only: bearing_state_t
    use adore_forces_ball_bearing, only: ball_bearing_loads_t
-   use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, &
-                                    default_thermal_options, new_thermal_heat
+   use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, default_thermal_options, &
+                                    new_thermal_heat
+   use adore_thermal_march, only: solve_thermal_field
    use adore_thermal_convection, only: fluid_properties_t, lubricant_properties
    use adore_thermal_drag, only: element_fluid_loss_t, element_fluid_loss
    implicit none
@@ -169,7 +170,7 @@ contains
    end function heat_total
 
    !> The end of an interval (report 2.10 steps 2-9): the heat averaged over it, the
-   !> network solved for it (eq 18's velocity of ball k = its spin surface speed
+   !> field (th%options%field_model: the report's march or the network) solved for it (eq 18's velocity of ball k = its spin surface speed
    !> |omega| D / 2 at state s, docs/thermal.md), the heat balance checked (th%balance, the
    !> worst so far), the integral restarted; time (s) recorded in th%update_times.  Engine
    !> error for an empty interval.
@@ -194,7 +195,7 @@ contains
       do k = 1, b%n_elements
          th%options%element_velocity(k) = 0.5_wp*b%d*norm2(s%elements(k)%omega)
       end do
-      call solve_thermal_network(b, mean, th%options, th%field, error)
+      call solve_thermal_field(b, mean, th%options, th%field, error)
       if (allocated(error)) return
       th%have_field = .true.
       th%updates = th%updates + 1

@@ -43,10 +43,11 @@ contains
    !> .false.): the balls' gyroscopic moments resisted by the races without slip
    !> (add_gyroscopic_restraint); damping, land_film as ball_bearing_loads; cage_spin_only:
    !> the cage's translation and tilt constrained (report 4.4.6); constraints: the bodies'
-   !> degrees of freedom (replaces cage_spin_only; absent: default_constraints).  Input
-   !> errors of the traction model come back in error.
+   !> degrees of freedom (replaces cage_spin_only; absent: default_constraints);
+   !> lubricant_temperature as ball_bearing_loads'.  Input errors of the traction model come
+   !> back in error.
    subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
-                                 damping, land_film, cage_spin_only, constraints, rolling)
+                                 damping, land_film, cage_spin_only, constraints, rolling, lubricant_temperature)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -64,6 +65,7 @@ contains
       type(dof_constraints_t), intent(in), optional :: constraints
       !> the race contacts' EHD rolling resistance (ball_bearing_loads' rolling)
       logical, intent(in), optional :: rolling
+      real(wp), intent(in), optional :: lubricant_temperature(:)
       type(dof_constraints_t) :: dof
       integer :: k
 
@@ -75,7 +77,7 @@ contains
       end if
 
       call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
-                              land_film=land_film, rolling=rolling)
+                              land_film=land_film, rolling=rolling, lubricant_temperature=lubricant_temperature)
       if (allocated(error)) return
       if (present(gyro_restraint)) then
          if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, BODY_ELEMENT), loads)

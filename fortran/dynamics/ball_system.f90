@@ -88,6 +88,10 @@ module adore_dynamics_ball_system
       !> (N/m**1.5) instead of K(alpha): a verification option, the normal loads then derive
       !> from an energy (fortran/tests/test_dynamics.f90)
       real(wp), allocatable :: frozen_stiffness(:, :)
+      !> (7, K) when allocated: the bulk temperatures the race contacts' lubricant is
+      !> evaluated at instead of the state's (ball_bearing_loads' lubricant_temperature; the
+      !> thermal model holds them at the initial ones, docs/thermal.md)
+      real(wp), allocatable :: lubricant_temperature(:)
       type(bearing_state_t) :: state, rates  !< scratch of eval
       type(ball_bearing_loads_t) :: loads    !< the loads of the last evaluation
       integer :: calls = 0                   !< evaluations so far
@@ -129,19 +133,20 @@ contains
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
-                                 self%contact_damping, self%land_film, self%cage_spin_only, rolling=self%rolling_resistance)
+                                 self%contact_damping, self%land_film, self%cage_spin_only, &
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, constraints=self%constraints, &
-                                 rolling=self%rolling_resistance)
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, cage_spin_only=self%cage_spin_only, &
-                                 rolling=self%rolling_resistance)
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
       end if
       if (allocated(self%failure)) then
          ! a state outside the contact models' range (e.g. a stage of a too long step that

@@ -213,9 +213,13 @@ contains
    !> land_film (default .true.): the guide lands' short-bearing film (adore_contact_cage_land);
    !> .false. keeps only their metallic contact (docs/dynamics.md, "Cage dynamics").
    !> rolling (default .false.): the race contacts' EHD rolling resistance (rolling_couple).
+   !> lubricant_temperature (K, the TEMP_* order; default: s%temperature): the bulk
+   !> temperatures the race contacts' lubricant (film, EHD traction, rolling resistance) is
+   !> evaluated at - the thermal model holds them at the initial ones, as ADORE 5.0 does
+   !> (report 5.3, 7 rec. 1; docs/thermal.md, "Traction and the temperatures").
    !> Input errors of the traction model (e.g. no EHD film) come back in error.
    subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference, damping, &
-                                 land_film, rolling)
+                                 land_film, rolling, lubricant_temperature)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -227,10 +231,12 @@ contains
       real(wp), intent(in), optional :: damping
       logical, intent(in), optional :: land_film
       logical, intent(in), optional :: rolling
+      real(wp), intent(in), optional :: lubricant_temperature(:)
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: t
       real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6), beta, q_n, rate
+      real(wp) :: t_lub(size(s%temperature))
       integer :: n, k, j
       logical :: with_traction, with_2d, with_reference, with_rolling
 
@@ -244,6 +250,8 @@ contains
       if (present(damping)) beta = damping
       with_rolling = .false.
       if (present(rolling)) with_rolling = rolling
+      t_lub = s%temperature
+      if (present(lubricant_temperature)) t_lub = lubricant_temperature
       n = size(s%elements)
       pairs = ball_race_pairs(b, g)
       rho = 0.5_wp*g%element_diameter
@@ -340,7 +348,7 @@ contains
          type(contact_traction_t) :: tk
          real(wp) :: f_r, w, w0, m_r
          call contact_kinematics(cj, tk)
-         call rolling_resistance(b, s%temperature, tk, c%ellipse%semi_major/c%ellipse%semi_minor, c%load, &
+         call rolling_resistance(b, t_lub, tk, c%ellipse%semi_major/c%ellipse%semi_minor, c%load, &
                                  c%ellipse%max_pressure, merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER), f_r, error)
          if (allocated(error)) return
          if (.not. (f_r > 0.0_wp .and. tk%rx > 0.0_wp)) return
@@ -394,7 +402,7 @@ contains
       !> Traction of race contact j of ball k (planar form cj, transverse slip coefficients
       !> tc, m/s; semi-minor axis b_minor, m; Hertz pressure p_h, Pa) by the run's model: the
       !> law, or the EHD film traction with the film of the current state (report 2.6) at
-      !> the bulk temperatures of s; one- or two-dimensional (with_2d: tc used), by the fast
+      !> the lubricant temperatures t_lub; one- or two-dimensional (with_2d: tc used), by the fast
       !> or (with_reference) the reference EHD quadrature.  The film needs only the
       !> contact's centre kinematics (entraining speed, R_x, centre slip).
       subroutine race_traction(j, cj, tc, b_minor, p_h, t, error)
@@ -412,7 +420,7 @@ contains
          phi = 0.0_wp
          if (ehd_traction_model(b)) then
             call contact_kinematics(cj, tk)
-            call lubricant_film(b, s%temperature, tk, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
+            call lubricant_film(b, t_lub, tk, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
             if (allocated(error)) return
          end if
          if (.not. ehd_film_present(h, phi)) then
@@ -427,9 +435,9 @@ contains
             return
          end if
          if (with_2d) then
-            call ehd_traction(b, s%temperature, cj, b_minor, race, h*phi, t, error, with_reference, tc)
+            call ehd_traction(b, t_lub, cj, b_minor, race, h*phi, t, error, with_reference, tc)
          else
-            call ehd_traction(b, s%temperature, cj, b_minor, race, h*phi, t, error, with_reference)
+            call ehd_traction(b, t_lub, cj, b_minor, race, h*phi, t, error, with_reference)
          end if
       end subroutine race_traction
 

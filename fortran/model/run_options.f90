@@ -80,6 +80,16 @@ module adore_model_run_options
       !> "temperatures" (updated, geometry held: report 5.3's first set) or "geometry"
       !> (temperatures and geometry updated: its second set)
       character(len=16) :: thermal = "off"
+      !> with the thermal model on, the race contacts' lubricant (film, EHD traction) at the
+      !> computed bulk temperatures (report 7 rec. 1: not in ADORE 5.0, whose traction stays at
+      !> the initial temperatures, report 5.3; docs/thermal.md, "Traction and the temperatures")
+      logical :: thermal_traction = .false.
+      !> the thermal model's temperature field (docs/thermal.md): "march" (the report's 2.10
+      !> steps 3-8, ADORE 5.0's) or "network" (a conduction/convection network)
+      character(len=16) :: thermal_field = "march"
+      !> film coefficient (W/(m**2 K)) from the housing's outer surface to the reference
+      !> temperature; 0 (default): the surface at the reference (report 2.10's text)
+      real(wp) :: housing_htc = 0.0_wp
    end type run_options_t
 
    !> One row of the option table.
@@ -94,7 +104,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 15
+   integer, parameter :: N_OPTIONS = 18
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -140,7 +150,16 @@ module adore_model_run_options
                     "free (all six, land films on) or as the deck's Rec 3.3 says (ball decks)"), &
       option_spec_t("thermal", OPTION_CHOICE, "off", 0, "", "MODE", "off,deck,temperatures,geometry", &
                     "thermal model (report 2.10, 5.3): off, the deck's (geometry updated when Rec 2.5 gives an "// &
-                    "averaging interval), temperatures only, or temperatures and geometry") &
+                    "averaging interval), temperatures only, or temperatures and geometry"), &
+      option_spec_t("thermal_traction", OPTION_FLAG, "false", 0, "", "", "", &
+                    "thermal model on: the race contacts' lubricant follows the computed bulk temperatures "// &
+                    "(report 7 rec. 1; not ADORE 5.0: its traction stays at the initial ones)"), &
+      option_spec_t("thermal_field", OPTION_CHOICE, "march", 0, "", "NAME", "march,network", &
+                    "thermal model's temperature field: the report's march (2.10 steps 3-8, ADORE 5.0) or a "// &
+                    "conduction/convection network"), &
+      option_spec_t("housing_htc", OPTION_REAL, "0", 0, "", "W/M2K", "", &
+                    "thermal model: film coefficient from the housing's outer surface to the reference "// &
+                    "temperature (0: the surface at it, report 2.10)") &
       ]
 
 contains
@@ -252,6 +271,13 @@ contains
          opts%traction_2d = flag
       case ("rolling_resistance")
          opts%rolling_resistance = flag
+      case ("thermal_traction")
+         opts%thermal_traction = flag
+      case ("thermal_field")
+         opts%thermal_field = "march"
+         if (len_trim(value) > 0) opts%thermal_field = trim(adjustl(value))
+      case ("housing_htc")
+         opts%housing_htc = x
       case ("duration")
          opts%duration = x
       case ("revolutions")

@@ -44,22 +44,27 @@ contains
    !> computed, so this does not happen in a run that got here).  flash = .false.: the flash
    !> temperature rise is left NaN (it costs about four times the rest of a time step with
    !> the EHD traction: the element record computes it at printed steps only).
-   subroutine ball_contact_print(b, g, s, loads, p, flash)
+   !> lubricant_temperature: as the force assembly's (ball_bearing_loads; default the
+   !> bulk temperatures of s).
+   subroutine ball_contact_print(b, g, s, loads, p, flash, lubricant_temperature)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(in) :: loads
       type(contact_print_t), intent(out) :: p
       logical, intent(in), optional :: flash
+      real(wp), intent(in), optional :: lubricant_temperature(:)
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: tk
       type(error_type), allocatable :: error
-      real(wp) :: nan, b_minor, p_h, h
+      real(wp) :: nan, b_minor, p_h, h, t_lub(size(s%temperature))
       integer :: n, k, j, race
       logical :: ehd, with_flash
 
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      t_lub = s%temperature
+      if (present(lubricant_temperature)) t_lub = lubricant_temperature
       n = size(loads%contacts, 2)
       allocate (p%slip(2, n), p%coefficient(2, n), p%film(2, n), p%thermal_factor(2, n), p%temp_rise(2, n), &
                 source=nan)
@@ -78,7 +83,7 @@ contains
                call contact_kinematics(cj, tk)
                h = 0.0_wp
                if (b%lubricant_code /= 0) then
-                  call lubricant_film(b, s%temperature, tk, cj%a/b_minor, cj%load, p_h, race, p%film(j, k), &
+                  call lubricant_film(b, t_lub, tk, cj%a/b_minor, cj%load, p_h, race, p%film(j, k), &
                                       p%thermal_factor(j, k), error)
                   if (allocated(error)) then
                      p%film(j, k) = nan
@@ -89,14 +94,14 @@ contains
                ! as step 0: the EHD flash with a film, the law's flash without one
                if (ehd .and. ehd_film_present(p%film(j, k), p%thermal_factor(j, k))) then
                   h = p%film(j, k)*p%thermal_factor(j, k)
-                  if (with_flash) call ehd_flash(b, s%temperature, cj, b_minor, race, h, abs(tk%rolling_speed), &
+                  if (with_flash) call ehd_flash(b, t_lub, cj, b_minor, race, h, abs(tk%rolling_speed), &
                                                  p%temp_rise(j, k), error)
                else if (with_flash) then
                   call law_flash(b, cj, b_minor, p_h, race, abs(tk%rolling_speed), p%temp_rise(j, k), error)
                end if
                if (allocated(error)) p%temp_rise(j, k) = nan
                ! the printed node of the traction used: model 3's with a film, else the curve's
-               call printed_slip(b, s%temperature, cj, b_minor, race, h, h > 0.0_wp, p%slip(j, k), p%coefficient(j, k))
+               call printed_slip(b, t_lub, cj, b_minor, race, h, h > 0.0_wp, p%slip(j, k), p%coefficient(j, k))
             end associate
          end do
       end do

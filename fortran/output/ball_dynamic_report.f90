@@ -66,9 +66,10 @@ contains
    !> churning moment and loss (section 1's Drag, Chrn Mom, Net Loss; added to the total
    !> power loss, their share of it the Churning Loss Fraction), and field, the last solved
    !> temperature field (each ball's contact node, bulk temperature and HTC, the exit fluid,
-   !> housing and shaft temperatures).
+   !> housing and shaft temperatures); lubricant_temperature as the force assembly's
+   !> (ball_contact_print).
    subroutine write_ball_step(unit, step, header, b, g, s, rates, loads, azimuth, axial_origin, wear, race_wear, &
-                              summary_avg, pocket_wear, land_wear, cage_avg, fluid, field)
+                              summary_avg, pocket_wear, land_wear, cage_avg, fluid, field, lubricant_temperature)
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
@@ -79,6 +80,7 @@ contains
       real(wp), intent(in) :: wear(:), race_wear(2), summary_avg(4), pocket_wear(:), land_wear(:), cage_avg(3)
       type(element_fluid_loss_t), intent(in), optional :: fluid(:)
       type(thermal_field_t), intent(in), optional :: field
+      real(wp), intent(in), optional :: lubricant_temperature(:)
 
       real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
@@ -92,7 +94,7 @@ contains
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
       n = b%n_elements
       allocate (contact(n, 11), motion(n, 11), traction(n, 11), thermal(n, 11), re_cage(n, 8))
-      call ball_contact_print(b, g, s, loads, tribology)
+      call ball_contact_print(b, g, s, loads, tribology, lubricant_temperature=lubricant_temperature)
       allocate (re_no(n), cage_code(n), cage_end(n))
       re_no = [(k, k=1, n)]
       motion = nan

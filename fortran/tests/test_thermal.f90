@@ -1,6 +1,7 @@
 !> Engine unit tests of the thermal model (fortran/thermal/): independent checks only -
 !> closed forms, conservation, textbook limits, the report's tables at their own points -
-!> and the report's printed step-2500 fits from its printed temperatures (ADRC2).
+!> and the report's printed step-2500 fits from its printed temperatures (ADRC2) and its
+!> printed step-2500 temperature field from its printed contact losses (the march, ADRH1).
 program test_thermal
    use adore_test_support, only: check, finish, get_decks_dir, near
    use adore_core_kinds, only: wp
@@ -18,6 +19,12 @@ program test_thermal
       cylinder_bulk_weight, cylinder_bulk_mirrored, element_core_area, element_conductance, element_bulk
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, &
       coolant_capacity_rate, default_thermal_options, new_thermal_heat
+   use adore_thermal_march, only: solve_thermal_march, solve_thermal_field, element_heat_fraction
+   use adore_geometry_mounted, only: mounted_geometry_t
+   use adore_start_ball_step0, only: ball_step0_t
+   use adore_state_bearing_state, only: bearing_state_t
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads
+   use adore_test_ball_fixture, only: step0_state, appendix_c_race_control
    use adore_thermal_distortion, only: distortion_t, thermal_distortion
    use adore_thermal_drag, only: sphere_drag_coefficient, cylinder_drag_coefficient, element_drag, churning_moment, &
                                  element_fluid_loss_t, element_fluid_loss
@@ -40,10 +47,14 @@ program test_thermal
    call test_rolling_element()
    call test_network_balance()
    call test_network_closed_form()
+   call test_march_closed_form()
+   call test_march_report_step2500()
+   call test_march_report_roller()
    call test_free_growth()
    call test_report_fits()
    call test_report_bulk_conventions()
    call test_drag()
+   call test_traction_at_initial_temperatures()
 
    call finish("thermal")
 
@@ -292,6 +303,163 @@ contains
                  "housing outer surface = T_ref + Q / (h A)")
    end subroutine test_network_closed_form
 
+   !> The report's march (2.10 steps 3-8) against its closed forms: partition 1/2 for like
+   !> materials (eq 49), the races' shares through housing and shaft (eq 11), the element by
+   !> eqs 15-16, the exit by the heat balance; generated = coolant + housing + shaft to
+   !> round-off; no heat leaves everything at the reference; without flow the fluid is the
+   !> temperature at which the elements convect their heat (eqs 18-27).
+   subroutine test_march_closed_form()
+      type(bearing_t) :: b
+      type(thermal_heat_t) :: h
+      type(thermal_options_t) :: opt
+      type(thermal_field_t) :: f
+      real(wp) :: g_h, g_o, g_e, g_s, g_i, q_rest, w, e, r, area
+      integer :: i, n
+      b = ball
+      n = b%n_elements
+      h = sample_heat(n)
+      opt = default_thermal_options(b)
+      opt%element_velocity = [(75.0_wp, i = 1, n)]
+      call check(element_heat_fraction(b, BODY_OUTER) == 0.5_wp, "eq 49: like materials share the heat equally")
+      call solve_thermal_field(b, h, opt, f, error)
+      call check(.not. allocated(error), "march solves (the default field model)")
+      if (allocated(error)) return
+      call check(abs(f%q_generated - (f%q_coolant + f%q_reference + f%q_bore)) <= 1.0e-12_wp*f%q_generated, &
+                 "march: heat generated = coolant + housing + shaft")
+      call check(near(f%q_reference, 0.5_wp*sum(h%outer), 1.0e-14_wp) .and. &
+                 near(f%q_bore, 0.5_wp*sum(h%inner), 1.0e-14_wp), "march: the races' halves leave through housing and shaft")
+      q_rest = 0.5_wp*(sum(h%outer) + sum(h%inner)) + sum(h%pocket) + h%land + sum(h%drag)
+      w = 945.429_wp*1836.10_wp*1.0e-5_wp
+      call check(near(f%exit_temperature - 323.0_wp, q_rest/w, 1.0e-12_wp), "march: exit = inlet + rest / (rho c_p Q)")
+      g_h = 2.0_wp*pi*b%width_outer*43.0_wp/log(b%housing_od/b%bearing_od)
+      g_o = (2.0_wp*pi/n)*b%width_outer*43.0_wp/log(b%bearing_od/b%outer_raceway_dia)
+      g_i = (2.0_wp*pi/n)*b%width_inner*43.0_wp/log(b%inner_raceway_dia/b%shaft_od)
+      g_s = 2.0_wp*pi*b%width_inner*43.0_wp/log(b%shaft_od/b%shaft_id)
+      g_e = 43.0_wp*pi*b%d/6.0_wp
+      call check(abs(f%housing(2) - 323.0_wp) < 1.0e-12_wp .and. near(f%housing(3) - f%housing(2), &
+                 0.5_wp*sum(h%outer)/g_h, 1.0e-12_wp), "march: housing outer at the reference, inner by eq 11")
+      call check(all(abs(f%contact_outer - f%housing(3) - 0.5_wp*h%outer/g_o) < 1.0e-9_wp), &
+                 "march: each outer raceway sector by eq 11 over 2 pi / n")
+      call check(all(abs(f%contact_outer - f%mid - 0.5_wp*h%outer/g_e) < 1.0e-9_wp) .and. &
+                 all(abs(f%contact_inner - f%mid - 0.5_wp*h%inner/g_e) < 1.0e-9_wp), "march: the element by eqs 15-16")
+      call check(abs(f%shaft(2) - sum(f%contact_inner - 0.5_wp*h%inner/g_i)/n) < 1.0e-9_wp, &
+                 "march: inner race bore = the sectors' mean by eq 11")
+      call check(near(f%shaft(2) - f%shaft(3), 0.5_wp*sum(h%inner)/g_s, 1.0e-12_wp), "march: shaft bore by eq 11")
+      call check(all(abs(f%element_bulk - element_bulk(f%mid, f%contact_outer, f%contact_inner)) < 1.0e-12_wp), &
+                 "march: element bulk by eq 17")
+      ! no heat: everything at the reference (= inlet)
+      call solve_thermal_march(b, new_thermal_heat(n), opt, f, error)
+      call check(.not. allocated(error), "march solves without heat")
+      if (allocated(error)) return
+      call check(all(abs(f%temperature(TEMP_HOUSING:TEMP_INNER) - 323.0_wp) < 1.0e-9_wp) .and. &
+                 abs(f%exit_temperature - 323.0_wp) < 1.0e-9_wp, "march, no heat: everything at the reference")
+      ! unlike materials: eq 49 with sqrt(rho c k) of each body
+      b%material(BODY_ELEMENT)%density = 3200.0_wp
+      b%material(BODY_ELEMENT)%heat_capacity = 800.0_wp
+      b%material(BODY_ELEMENT)%conductivity = 30.0_wp
+      e = sqrt(3200.0_wp*800.0_wp*30.0_wp)
+      r = sqrt(7750.0_wp*470.0_wp*43.0_wp)
+      call check(near(element_heat_fraction(b, BODY_OUTER), e/(e + r), 1.0e-14_wp), "eq 49: unlike materials")
+      ! no flow, air: the fluid near the elements takes their heat by convection
+      b = ball
+      b%coolant%coolant_type = 0
+      b%coolant%flow_rate = 0.0_wp
+      call solve_thermal_march(b, h, opt, f, error)
+      call check(.not. allocated(error), "march solves without flow (air)")
+      if (allocated(error)) return
+      area = pi*b%d**2
+      call check(abs(sum(f%htc*area*(f%element_bulk - f%exit_temperature)) - q_rest) <= 1.0e-6_wp*q_rest, &
+                 "march without flow: the elements convect the coolant's share to the fluid near them")
+      call check(abs(f%q_generated - (f%q_coolant + f%q_reference + f%q_bore)) <= 1.0e-12_wp*f%q_generated, &
+                 "march without flow: heat balance")
+   end subroutine test_march_closed_form
+
+   !> The report's step-2500 field (Appendix C section 3 and section 1's last table) from
+   !> its printed contact losses (section 1 "Contact Loss"; balls 12 and 18 are illegible:
+   !> ball 12 takes ball 5's, the ball at its load, and ball 18 the rest of the printed total
+   !> 567.7 W split as ball 17's) by the march with the housing film backed out of the
+   !> printed housing surfaces (h = 2 k dT_housing / (D_h ln(D_h/D_o) dT_film) = 327
+   !> W/(m**2 K), docs/thermal.md) and the printed shaft bulk convention.  The march's
+   !> races carry their halves: the printed housing and shaft drops follow within the
+   !> instantaneous-against-averaged heat (the print's losses are step 2500's, ADORE's field
+   !> the last revolution's average).  Asserted within the issue's 1 % (3.5 K).
+   subroutine test_march_report_step2500()
+      type(thermal_heat_t) :: h
+      type(thermal_options_t) :: opt
+      type(thermal_field_t) :: f
+      real(wp), parameter :: ball_bulk(18) = [335.4_wp, 335.4_wp, 336.4_wp, 338.2_wp, 340.7_wp, 343.7_wp, 347.2_wp, &
+                                              347.7_wp, 353.5_wp, 347.6_wp, 346.4_wp, 344.5_wp, 342.0_wp, 340.0_wp, &
+                                              338.2_wp, 336.5_wp, 336.7_wp, 344.0_wp]
+      real(wp) :: rest, got(9), want(9)
+      integer :: k
+      character(len=12), parameter :: names(9) = [character(len=12) :: "exit", "housing in", "housing bulk", &
+                                                   "outer race", "inner race", "shaft outer", "shaft bore", &
+                                                   "shaft bulk", "ball mean"]
+      h = new_thermal_heat(18)
+      h%outer = [16.32_wp, 14.57_wp, 13.07_wp, 12.55_wp, 13.16_wp, 14.13_wp, 14.80_wp, 15.05_wp, 14.50_wp, 14.31_wp, &
+                 13.34_wp, 13.16_wp, 12.64_wp, 13.46_wp, 14.77_wp, 16.69_wp, 17.91_wp, 0.0_wp]
+      h%inner = [27.35_wp, 22.71_wp, 18.22_wp, 14.32_wp, 11.45_wp, 8.797_wp, 7.595_wp, 7.474_wp, 8.171_wp, 7.608_wp, &
+                 8.763_wp, 11.45_wp, 14.11_wp, 18.80_wp, 23.05_wp, 27.25_wp, 30.93_wp, 0.0_wp]
+      rest = 567.7_wp - sum(h%outer) - sum(h%inner)
+      h%outer(18) = rest*17.91_wp/(17.91_wp + 30.93_wp)
+      h%inner(18) = rest - h%outer(18)
+      opt = default_thermal_options(ball)
+      opt%reference_htc = 327.0_wp
+      opt%shaft_bulk_as_printed = .true.
+      call solve_thermal_march(ball, h, opt, f, error)
+      call check(.not. allocated(error), "march solves the report's step-2500 heat")
+      if (allocated(error)) return
+      got = [f%exit_temperature, f%housing(3), f%housing(1), f%temperature(TEMP_OUTER), f%temperature(TEMP_INNER), &
+             f%shaft(2), f%shaft(3), f%shaft(1), f%temperature(TEMP_ELEMENT)]
+      want = [341.9_wp, 348.0_wp, 346.8_wp, 349.0_wp, 351.4_wp, 349.6_wp, 317.4_wp, 329.3_wp, sum(ball_bulk)/18.0_wp]
+      do k = 1, 9
+         write (*, "(2a,f8.2,a,f8.2,a,f6.2,a)") "  report step 2500 by the march: ", names(k), got(k), " K (report ", &
+            want(k), ", ", 100.0_wp*(got(k) - want(k))/want(k), " %)"
+         call check(abs(got(k) - want(k)) <= 0.01_wp*want(k), "march from the report's losses: "//trim(names(k))// &
+                    " within 1 % of the report's")
+      end do
+   end subroutine test_march_report_step2500
+
+   !> Appendix D's step 4000 (roller, ambient air, no flow, reference 294 K) from its printed
+   !> contact losses (all legible; they sum to its total power loss 0.9677 W) by the march:
+   !> the report prints rollers, shaft and exit fluid below the reference, which no passive
+   !> network with its sink at 294 K gives (maximum principle) and the march does (the
+   !> rollers' mid points below their outer contacts).  Housing 294.0, shaft 293.9 K and the
+   !> rollers' mean within the issue's 0.1 %; the exit fluid below the reference (its value
+   !> depends on eq 18's velocity, not identified: docs/thermal.md).
+   subroutine test_march_report_roller()
+      type(bearing_t) :: r
+      type(thermal_heat_t) :: h
+      type(thermal_options_t) :: opt
+      type(thermal_field_t) :: f
+      real(wp), parameter :: printed(8) = [294.0_wp, 294.0_wp, 294.0_wp, 293.9_wp, 293.6_wp, 293.6_wp, 293.9_wp, &
+                                           294.0_wp]
+      integer :: i
+      call read_bearing(decks//"/appendix_d_roller.inp", r, error)
+      call check(.not. allocated(error), "Appendix D deck reads")
+      if (allocated(error)) return
+      h = new_thermal_heat(8)
+      h%outer = [1.331e-2_wp, 1.331e-2_wp, 8.355e-2_wp, 2.700e-1_wp, 1.996e-1_wp, 2.793e-2_wp, 1.331e-2_wp, 1.331e-2_wp]
+      h%inner = [0.0_wp, 0.0_wp, 2.412e-2_wp, 1.913e-1_wp, 1.173e-1_wp, 6.026e-4_wp, 0.0_wp, 0.0_wp]
+      opt = default_thermal_options(r)
+      opt%element_velocity = [(1.817e5_wp*pi/30.0_wp*0.5_wp*r%d, i = 1, 8)]   ! spin surface speed
+      call solve_thermal_march(r, h, opt, f, error)
+      call check(.not. allocated(error), "march solves Appendix D's step-4000 heat")
+      if (allocated(error)) return
+      write (*, "(a,3f9.3,a,8f8.3)") "  Appendix D by the march: housing, shaft, exit ", f%housing(1), f%shaft(1), &
+         f%exit_temperature, "; rollers ", f%element_bulk
+      call check(abs(f%housing(1) - 294.0_wp) <= 1.0e-3_wp*294.0_wp, "Appendix D march: housing 294.0 K within 0.1 %")
+      call check(abs(f%shaft(1) - 293.9_wp) <= 1.0e-3_wp*293.9_wp, "Appendix D march: shaft 293.9 K within 0.1 %")
+      ! the mean roller (the bulk temperature the geometry update uses) within 0.1 %; each
+      ! roller's printed value is its heat averaged over the last interval, the losses here
+      ! step 4000's own, so single rollers differ more (worst 0.13 %, roller 6; measured, not
+      ! asserted: docs/thermal.md)
+      call check(abs(sum(f%element_bulk)/8.0_wp - sum(printed)/8.0_wp) <= 1.0e-3_wp*sum(printed)/8.0_wp, &
+                 "Appendix D march: mean roller within 0.1 %")
+      call check(f%exit_temperature < 294.0_wp .and. minval(f%element_bulk) < 294.0_wp, &
+                 "Appendix D march: exit fluid and rollers below the reference, as printed")
+   end subroutine test_march_report_roller
+
    !> A free ring grows by alpha dT r; a ball by alpha dT D; equal expansion of all bodies
    !> keeps the fits and scales the unmounted play.
    subroutine test_free_growth()
@@ -402,5 +570,36 @@ contains
          call check(r%loss == 0.0_wp, "no lubricant in the free space: no drag, no churning")
       end block
    end subroutine test_drag
+
+   !> ADORE 5.0's traction does not follow the computed bulk temperatures (report 5.3, 7
+   !> rec. 1): at Appendix C's step-0 state with the balls and races 30 K warmer, the force
+   !> assembly with the lubricant at the initial temperatures gives the initial heat and
+   !> forces bit for bit; at the state's own temperatures the EHD traction changes (thinner
+   !> oil: less heat).
+   subroutine test_traction_at_initial_temperatures()
+      type(bearing_t) :: b
+      type(mounted_geometry_t) :: g
+      type(ball_step0_t) :: s0
+      type(bearing_state_t) :: st, warm
+      type(ball_bearing_loads_t) :: l0, l1, l2
+      call appendix_c_race_control("thermal", b, g, s0)
+      st = step0_state(b, s0)
+      warm = st
+      warm%temperature([TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER]) = st%temperature([TEMP_ELEMENT, TEMP_OUTER, TEMP_INNER]) &
+                                                                 + 30.0_wp
+      call ball_bearing_loads(b, g, st, l0, error)
+      call check(.not. allocated(error), "loads at the initial temperatures")
+      if (allocated(error)) return
+      call ball_bearing_loads(b, g, warm, l1, error, lubricant_temperature=b%temperature)
+      call check(.not. allocated(error), "loads of the warm state, lubricant at the initial temperatures")
+      if (allocated(error)) return
+      call ball_bearing_loads(b, g, warm, l2, error)
+      call check(.not. allocated(error), "loads of the warm state at its own temperatures")
+      if (allocated(error)) return
+      call check(all(l1%heat == l0%heat) .and. all(l1%races(2)%force == l0%races(2)%force), &
+                 "lubricant at the initial temperatures: the warm state's heat and forces are the initial ones")
+      write (*, "(a,2f9.2,a)") "  race contact heat at 323 K and at the state's +30 K: ", sum(l0%heat), sum(l2%heat), " W"
+      call check(sum(l2%heat) < 0.95_wp*sum(l0%heat), "lubricant at the state's temperatures: 30 K warmer, less heat")
+   end subroutine test_traction_at_initial_temperatures
 
 end program test_thermal

@@ -51,7 +51,11 @@ module adore_thermal_network
    private
 
    public :: thermal_heat_t, thermal_options_t, thermal_field_t, solve_thermal_network, coolant_capacity_rate
-   public :: default_thermal_options, new_thermal_heat
+   public :: default_thermal_options, new_thermal_heat, complete_field, element_coefficient, thermal_input
+
+   !> The field models of thermal_options_t%field_model: the report's march of 2.10
+   !> (adore_thermal_march, ADORE 5.0's) and this module's network
+   integer, parameter, public :: FIELD_MARCH = 1, FIELD_NETWORK = 2
 
    !> Heat of the interactions averaged over the interval (W), per rolling element.
    type :: thermal_heat_t
@@ -64,6 +68,9 @@ module adore_thermal_network
 
    !> What the deck does not say about the boundaries (docs/thermal.md).
    type :: thermal_options_t
+      !> FIELD_MARCH (the report's 2.10 steps 3-8, docs/thermal.md "The march") or
+      !> FIELD_NETWORK (this module: a conduction/convection network)
+      integer :: field_model = FIELD_MARCH
       !> reference temperature (K) of the housing's outer surface, or of the ambient the
       !> housing convects to (reference_htc > 0); the wiring passes Rec 2.7's housing temperature
       real(wp) :: reference_temperature = 0.0_wp
@@ -144,43 +151,21 @@ contains
       type(thermal_field_t), intent(out) :: field
       type(error_type), allocatable, intent(out) :: error
 
-      integer :: n, m, j, pass, fluid, shape, ih, iib, isb, if_
-      real(wp) :: g_h, g_o, g_e, g_i, g_s, g_ref, g_bore, g_of, g_if, w_cap, area, t_in, l_el, q_cage, g_cage
-      real(wp) :: r_in, r_out, w_cage, t_film, change
+      integer :: n, m, j, pass, shape, ih, iib, isb, if_
+      real(wp) :: g_h, g_o, g_e, g_i, g_s, g_ref, g_bore, g_of, g_if, w_cap, area, t_in, l_el, q_cage
+      real(wp) :: t_film, change
       real(wp), allocatable :: a(:, :), rhs(:), x(:), x_old(:), c(:), vel(:)
-      type(fluid_properties_t) :: props
       logical :: ok, in_range, liquid
 
       n = b%n_elements
-      if (n < 1) then
-         call input_error(error, "thermal network: no rolling elements")
-         return
-      end if
-      if (.not. (size(heat%outer) == n .and. size(heat%inner) == n .and. size(heat%pocket) == n .and. &
-                 size(heat%drag) == n)) then
-         call input_error(error, "thermal network: heat arrays must have one value per rolling element")
-         return
-      end if
+      call thermal_input(b, heat, opt, "thermal network", vel, error)
+      if (allocated(error)) return
       liquid = b%coolant%coolant_type == 1
-      if (liquid .and. b%lubricant%density <= 0.0_wp) then
-         call input_error(error, "thermal network: coolant type 1 (lubricant) needs a lubricant (Rec 10.0)")
-         return
-      end if
-      fluid = FLUID_AIR
-      if (liquid) fluid = FLUID_LIQUID
       shape = SHAPE_SPHERE
       l_el = 0.0_wp
       if (b%bearing_type == ROLLER_BEARING) then
          shape = SHAPE_CYLINDER
          l_el = b%roller%roller_length
-      end if
-      allocate (vel(n), source=0.0_wp)
-      if (allocated(opt%element_velocity)) then
-         if (size(opt%element_velocity) /= n) then
-            call input_error(error, "thermal network: one element velocity per rolling element")
-            return
-         end if
-         vel = opt%element_velocity
       end if
 
       ! conductances (W/K)
@@ -227,14 +212,8 @@ contains
          ! convective coefficients at the film temperature (ADRH3)
          do j = 1, n
             t_film = 0.5_wp*(element_bulk(x(1 + n + j), x(1 + j), x(1 + 2*n + j)) + x(if_))
-            if (liquid) then
-               props = lubricant_properties(b%lubricant, t_film)
-               ok = .true.
-            else
-               call air_properties(t_film, props, ok)
-            end if
-            call heat_transfer_coefficient(shape, fluid, props, vel(j), b%d, field%htc(j), in_range)
-            field%htc_in_range = field%htc_in_range .and. ok .and. in_range
+            call element_coefficient(b, vel(j), t_film, field%htc(j), in_range)
+            field%htc_in_range = field%htc_in_range .and. in_range
          end do
          c = field%htc*area
          a = 0.0_wp
@@ -295,56 +274,19 @@ contains
       field%contact_outer = x(2:1 + n)
       field%mid = x(2 + n:1 + 2*n)
       field%contact_inner = x(2 + 2*n:1 + 3*n)
-      field%element_bulk = element_bulk(field%mid, field%contact_outer, field%contact_inner)
       field%exit_temperature = x(if_)
       field%q_reference = g_ref*(x(ih) - opt%reference_temperature)
       field%q_bore = g_bore*(x(isb) - opt%reference_temperature)
       field%q_coolant = w_cap*(x(if_) - t_in)
-      field%q_convection = sum(c*(field%element_bulk - x(if_)))
       field%q_generated = sum(heat%outer) + sum(heat%inner) + q_cage + sum(heat%drag)
       ! housing: inner surface x(ih), outer surface after its conduction
       field%housing(3) = x(ih)
       field%housing(2) = x(ih) - field%q_reference/g_h
-      field%housing(1) = x(ih) + cylinder_bulk_weight(0.5_wp*b%housing_od, 0.5_wp*b%bearing_od)* &
-                         (field%housing(2) - x(ih))
       ! shaft: outer surface = inner race bore, inner surface = bore
       field%shaft(2) = x(iib)
       field%shaft(3) = x(isb)
-      field%shaft(1) = x(iib)
-      if (g_s > 0.0_wp) then
-         if (opt%shaft_bulk_as_printed) then
-            field%shaft(1) = cylinder_bulk_mirrored(0.5_wp*b%shaft_od, 0.5_wp*b%shaft_id, x(iib), x(isb))
-         else
-            field%shaft(1) = x(isb) + cylinder_bulk_weight(0.5_wp*b%shaft_od, 0.5_wp*b%shaft_id)*(x(iib) - x(isb))
-         end if
-      end if
-      ! race sectors: eq 12 between raceway and the other surface
-      allocate (field%race_bulk(n, 2))
-      field%race_bulk(:, 1) = field%contact_outer + cylinder_bulk_weight(0.5_wp*b%bearing_od, &
-                              0.5_wp*b%outer_raceway_dia)*(x(ih) - field%contact_outer)
-      field%race_bulk(:, 2) = x(iib) + cylinder_bulk_weight(0.5_wp*b%inner_raceway_dia, 0.5_wp*b%shaft_od)* &
-                              (field%contact_inner - x(iib))
-      ! cage: heat in at the guided surface, base surface at the coolant temperature (2.5)
-      r_in = 0.5_wp*b%cage_id
-      r_out = 0.5_wp*b%cage_od
-      field%cage_surface = x(if_)
-      field%temperature(TEMP_CAGE) = x(if_)
-      if (r_out > r_in .and. r_in > 0.0_wp) then
-         g_cage = cylinder_conductance(r_out, r_in, b%cage_width, b%material(BODY_CAGE)%conductivity, 2.0_wp*pi)
-         field%cage_surface(1) = x(if_) + q_cage/g_cage
-         w_cage = cylinder_bulk_weight(r_out, r_in)
-         if (cage_guided_outside(b)) then   ! guided at the OD: base (coolant) at the bore
-            field%temperature(TEMP_CAGE) = x(if_) + w_cage*(field%cage_surface(1) - x(if_))
-         else                               ! guided at the bore: base at the OD
-            field%temperature(TEMP_CAGE) = field%cage_surface(1) + w_cage*(x(if_) - field%cage_surface(1))
-         end if
-      end if
-      field%temperature(TEMP_ROOM) = b%temperature(TEMP_ROOM)
-      field%temperature(TEMP_HOUSING) = field%housing(1)
-      field%temperature(TEMP_SHAFT) = field%shaft(1)
-      field%temperature(TEMP_ELEMENT) = sum(field%element_bulk)/n
-      field%temperature(TEMP_OUTER) = sum(field%race_bulk(:, 1))/n
-      field%temperature(TEMP_INNER) = sum(field%race_bulk(:, 2))/n
+      call complete_field(b, opt, q_cage, field)
+      field%q_convection = sum(c*(field%element_bulk - x(if_)))
    contains
 
       !> The equation (row `row` of a, rhs) of a contact node of element j: conductance
@@ -360,6 +302,121 @@ contains
       end subroutine contact_row
 
    end subroutine solve_thermal_network
+
+   !> Checks of a field solve's input (`who` names the model in the message): elements,
+   !> one heat value per element, a lubricant for coolant type 1, one velocity per element;
+   !> vel (m/s) the elements' velocities (0 when opt gives none).  Input error otherwise.
+   subroutine thermal_input(b, heat, opt, who, vel, error)
+      type(bearing_t), intent(in) :: b
+      type(thermal_heat_t), intent(in) :: heat
+      type(thermal_options_t), intent(in) :: opt
+      character(len=*), intent(in) :: who
+      real(wp), allocatable, intent(out) :: vel(:)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n
+      n = b%n_elements
+      if (n < 1) then
+         call input_error(error, who//": no rolling elements")
+         return
+      end if
+      if (.not. (size(heat%outer) == n .and. size(heat%inner) == n .and. size(heat%pocket) == n .and. &
+                 size(heat%drag) == n)) then
+         call input_error(error, who//": heat arrays must have one value per rolling element")
+         return
+      end if
+      if (b%coolant%coolant_type == 1 .and. b%lubricant%density <= 0.0_wp) then
+         call input_error(error, who//": coolant type 1 (lubricant) needs a lubricant (Rec 10.0)")
+         return
+      end if
+      allocate (vel(n), source=0.0_wp)
+      if (allocated(opt%element_velocity)) then
+         if (size(opt%element_velocity) /= n) then
+            call input_error(error, who//": one element velocity per rolling element")
+            return
+         end if
+         vel = opt%element_velocity
+      end if
+   end subroutine thermal_input
+
+   !> The bulk temperatures of a field whose node temperatures are set (contact, mid-point,
+   !> exit, housing surfaces housing(2:3), shaft surfaces shaft(2:3)): elements by eq 17,
+   !> housing and shaft by eq 12 (the shaft as printed with opt%shaft_bulk_as_printed),
+   !> each race sector by eq 12 between its raceway and its other surface, the cage by 2.5
+   !> (heat q_cage, W, in at its guided surface, its other surface at the coolant
+   !> temperature); field%temperature in the TEMP_* order (room kept).  K.
+   subroutine complete_field(b, opt, q_cage, field)
+      type(bearing_t), intent(in) :: b
+      type(thermal_options_t), intent(in) :: opt
+      real(wp), intent(in) :: q_cage
+      type(thermal_field_t), intent(inout) :: field
+      real(wp) :: r_in, r_out, w_cage, g_cage, t_f
+      integer :: n
+      n = size(field%mid)
+      t_f = field%exit_temperature
+      field%element_bulk = element_bulk(field%mid, field%contact_outer, field%contact_inner)
+      field%housing(1) = field%housing(3) + cylinder_bulk_weight(0.5_wp*b%housing_od, 0.5_wp*b%bearing_od)* &
+                         (field%housing(2) - field%housing(3))
+      field%shaft(1) = field%shaft(2)
+      if (b%shaft_id > 0.0_wp .and. b%shaft_od > b%shaft_id) then
+         if (opt%shaft_bulk_as_printed) then
+            field%shaft(1) = cylinder_bulk_mirrored(0.5_wp*b%shaft_od, 0.5_wp*b%shaft_id, field%shaft(2), &
+                                                    field%shaft(3))
+         else
+            field%shaft(1) = field%shaft(3) + cylinder_bulk_weight(0.5_wp*b%shaft_od, 0.5_wp*b%shaft_id)* &
+                             (field%shaft(2) - field%shaft(3))
+         end if
+      end if
+      if (allocated(field%race_bulk)) deallocate (field%race_bulk)
+      allocate (field%race_bulk(n, 2))
+      field%race_bulk(:, 1) = field%contact_outer + cylinder_bulk_weight(0.5_wp*b%bearing_od, &
+                              0.5_wp*b%outer_raceway_dia)*(field%housing(3) - field%contact_outer)
+      field%race_bulk(:, 2) = field%shaft(2) + cylinder_bulk_weight(0.5_wp*b%inner_raceway_dia, 0.5_wp*b%shaft_od)* &
+                              (field%contact_inner - field%shaft(2))
+      r_in = 0.5_wp*b%cage_id
+      r_out = 0.5_wp*b%cage_od
+      field%cage_surface = t_f
+      field%temperature(TEMP_CAGE) = t_f
+      if (r_out > r_in .and. r_in > 0.0_wp) then
+         g_cage = cylinder_conductance(r_out, r_in, b%cage_width, b%material(BODY_CAGE)%conductivity, 2.0_wp*pi)
+         field%cage_surface(1) = t_f + q_cage/g_cage
+         w_cage = cylinder_bulk_weight(r_out, r_in)
+         if (cage_guided_outside(b)) then   ! guided at the OD: base (coolant) at the bore
+            field%temperature(TEMP_CAGE) = t_f + w_cage*(field%cage_surface(1) - t_f)
+         else                               ! guided at the bore: base at the OD
+            field%temperature(TEMP_CAGE) = field%cage_surface(1) + w_cage*(t_f - field%cage_surface(1))
+         end if
+      end if
+      field%temperature(TEMP_ROOM) = b%temperature(TEMP_ROOM)
+      field%temperature(TEMP_HOUSING) = field%housing(1)
+      field%temperature(TEMP_SHAFT) = field%shaft(1)
+      field%temperature(TEMP_ELEMENT) = sum(field%element_bulk)/n
+      field%temperature(TEMP_OUTER) = sum(field%race_bulk(:, 1))/n
+      field%temperature(TEMP_INNER) = sum(field%race_bulk(:, 2))/n
+   end subroutine complete_field
+
+   !> Convective coefficient h (W/(m**2 K)) of one rolling element of bearing b moving at
+   !> velocity (m/s) through the coolant at film temperature t_film (K): eqs 18-27 with the
+   !> lubricant's properties (Rec 2.4 type 1) or air's (Table 2); in_range .false. when a
+   !> correlation or the air table was left (ADRH3).
+   subroutine element_coefficient(b, velocity, t_film, h, in_range)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: velocity, t_film
+      real(wp), intent(out) :: h
+      logical, intent(out) :: in_range
+      type(fluid_properties_t) :: props
+      logical :: ok
+      integer :: shape
+      shape = SHAPE_SPHERE
+      if (b%bearing_type == ROLLER_BEARING) shape = SHAPE_CYLINDER
+      if (b%coolant%coolant_type == 1) then
+         props = lubricant_properties(b%lubricant, t_film)
+         call heat_transfer_coefficient(shape, FLUID_LIQUID, props, velocity, b%d, h, in_range)
+      else
+         call air_properties(t_film, props, ok)
+         call heat_transfer_coefficient(shape, FLUID_AIR, props, velocity, b%d, h, in_range)
+         in_range = in_range .and. ok
+      end if
+   end subroutine element_coefficient
 
    !> Whether bearing b's cage is guided on the outer race (at its OD): its first land's type.
    pure logical function cage_guided_outside(b)
