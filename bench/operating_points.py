@@ -93,8 +93,6 @@ def static_capacity(base: Path, tmp: Path) -> float:
 
 
 _NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
-_BALANCE = re.compile(r"balance over .*?(?P<rev>\S+) shaft revolutions\): drive power\s+(?P<drive>\S+) W, "
-                      r"dissipation\s+(?P<diss>\S+) W.*?drive/dissipation\s+(?P<ratio>\S+);")
 
 
 def category(message: str) -> str:
@@ -114,19 +112,25 @@ def category(message: str) -> str:
 
 
 def balance(stderr: str) -> dict:
-    """The run note's balance numbers (W; revolutions of the shaft in the window)."""
-    m = _BALANCE.search(stderr.replace("\n", " "))
-    if not m:
+    """The run note's balance numbers (pyadore.api.parse_balance): revolutions in the window,
+    drive power, dissipation, energy change (W), their ratio, the closure (drive - dissipation
+    - energy change) / max(|drive|, dissipation) and the inner race's force residual against
+    the applied load (fraction)."""
+    from pyadore.api import parse_balance
+
+    b = parse_balance(stderr.replace("\n", " "))
+    if not b:
         return {}
-    try:
-        return {"revolutions": float(m["rev"]), "drive_W": float(m["drive"]),
-                "dissipation_W": float(m["diss"]), "drive_over_dissipation": float(m["ratio"])}
-    except ValueError:
-        return {}
+    scale = max(abs(b["drive_power_W"]), b["dissipation_W"])
+    load = float(np.linalg.norm(b["inner_carried_N"]))
+    return {"revolutions": b["revolutions"], "drive_W": b["drive_power_W"], "dissipation_W": b["dissipation_W"],
+            "energy_rate_W": b["energy_rate_W"], "drive_over_dissipation": b["drive_ratio"],
+            "closure": (b["drive_power_W"] - b["dissipation_W"] - b["energy_rate_W"]) / scale if scale > 0 else 0.0,
+            "inner_force_residual": b["inner_residual_N"] / load if load > 0 else float("nan")}
 
 
 def _case(args) -> dict:
-    base, speed, load, fit, steps, exe = args
+    base, speed, load, fit, steps, exe, extra = args
     from pyadore.deck import check_deck
 
     with tempfile.TemporaryDirectory() as tmp:
@@ -138,7 +142,7 @@ def _case(args) -> dict:
             message = problems[0].format().split("\n")[0].replace(str(path), "deck")
             return row | {"outcome": "refused", "category": category(message), "message": message}
         start = time.perf_counter()
-        proc = subprocess.run([exe, str(path), str(Path(tmp) / "case.prt"), "--steps", str(steps)],
+        proc = subprocess.run([exe, str(path), str(Path(tmp) / "case.prt"), "--steps", str(steps), *extra],
                               capture_output=True, text=True)
         row["seconds"] = round(time.perf_counter() - start, 3)
         if proc.returncode == 0:
@@ -148,7 +152,8 @@ def _case(args) -> dict:
 
 
 FIELDS = ("deck", "speed_rpm", "load_N", "fit_m", "outcome", "category", "message", "seconds",
-          "revolutions", "drive_W", "dissipation_W", "drive_over_dissipation")
+          "revolutions", "drive_W", "dissipation_W", "energy_rate_W", "drive_over_dissipation", "closure",
+          "inner_force_residual")
 
 
 def _floats(text: str) -> tuple:
@@ -166,7 +171,9 @@ def main() -> int:
     ap.add_argument("--rerun", default="", help="a CSV of an earlier run: run its failed cases again")
     ap.add_argument("--out", default="operating_points", help="name of the results in bench/results/")
     ap.add_argument("--exe", default=os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore")))
+    ap.add_argument("--extra", default="", help="further engine options, e.g. '--traction-table t.txt' (diagnosis)")
     a = ap.parse_args()
+    extra = a.extra.split()
     decks = [Path(d) for d in a.decks.split(",")] if a.decks else _ball_decks()
     speeds = _floats(a.speeds) if a.speeds else SPEEDS
     loads = _floats(a.loads) if a.loads else LOADS
@@ -179,7 +186,7 @@ def main() -> int:
         by_name = {d.name: d for d in _ball_decks()}
         for r in old:
             cases.append((str(by_name[r["deck"]]), float(r["speed_rpm"]), float(r["load_N"]),
-                          float(r["fit_m"]), a.steps, a.exe))
+                          float(r["fit_m"]), a.steps, a.exe, extra))
     else:
         cache = ROOT / "bench" / "results" / "static_capacity.json"
         known = json.loads(cache.read_text()) if cache.exists() else {}
@@ -192,7 +199,7 @@ def main() -> int:
             cache.write_text(json.dumps(known | capacities, indent=1) + "\n")
         for d in decks:
             for s, L, f in itertools.product(speeds, loads, fits):
-                cases.append((str(d), s, capacities[d.name] if L == "C0" else L, f, a.steps, a.exe))
+                cases.append((str(d), s, capacities[d.name] if L == "C0" else L, f, a.steps, a.exe, extra))
     # a fixed random order: a run stopped part way is a sample of the whole grid
     order = np.random.default_rng(28).permutation(len(cases))
     cases = [cases[k] for k in order]
