@@ -156,6 +156,18 @@ FIELDS = ("deck", "speed_rpm", "load_N", "fit_m", "outcome", "category", "messag
           "inner_force_residual")
 
 
+def summarize(rows: list[dict]) -> None:
+    """Print a grid's counts: outcomes, failures by category, deck, speed, load and fit."""
+    print(f"{len(rows)} cases: {dict(collections.Counter(r['outcome'] for r in rows))}")
+    bad = [r for r in rows if r["outcome"] != "ran"]
+    for title, key in (("category", lambda r: category(r["message"])[:110]), ("deck", lambda r: r["deck"]),
+                       ("speed (rpm)", lambda r: float(r["speed_rpm"])), ("load (N)", lambda r: float(r["load_N"]) if float(r["load_N"]) in LOADS else "C0"),
+                       ("fit (um)", lambda r: round(float(r["fit_m"]) * 1e6))):
+        print(f"failures by {title}:")
+        for k, n in sorted(collections.Counter(key(r) for r in bad).items(), key=lambda kv: -kv[1]):
+            print(f"  {n:4d}  {k}")
+
+
 def _floats(text: str) -> tuple:
     return tuple("C0" if v.strip() == "C0" else float(v) for v in text.split(","))
 
@@ -172,7 +184,12 @@ def main() -> int:
     ap.add_argument("--out", default="operating_points", help="name of the results in bench/results/")
     ap.add_argument("--exe", default=os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore")))
     ap.add_argument("--extra", default="", help="further engine options, e.g. '--traction-table t.txt' (diagnosis)")
+    ap.add_argument("--summarize", default="", help="a CSV of an earlier run: print its counts and stop")
     a = ap.parse_args()
+    if a.summarize:
+        with open(a.summarize, newline="") as f:
+            summarize(list(csv.DictReader(f)))
+        return 0
     extra = a.extra.split()
     decks = [Path(d) for d in a.decks.split(",")] if a.decks else _ball_decks()
     speeds = _floats(a.speeds) if a.speeds else SPEEDS
