@@ -121,11 +121,10 @@ def balance(stderr: str) -> dict:
     b = parse_balance(stderr.replace("\n", " "))
     if not b:
         return {}
-    scale = max(abs(b["drive_power_W"]), b["dissipation_W"])
     load = float(np.linalg.norm(b["inner_carried_N"]))
     return {"revolutions": b["revolutions"], "drive_W": b["drive_power_W"], "dissipation_W": b["dissipation_W"],
             "energy_rate_W": b["energy_rate_W"], "drive_over_dissipation": b["drive_ratio"],
-            "closure": (b["drive_power_W"] - b["dissipation_W"] - b["energy_rate_W"]) / scale if scale > 0 else 0.0,
+            "closure": b["closure"],
             "inner_force_residual": b["inner_residual_N"] / load if load > 0 else float("nan")}
 
 
