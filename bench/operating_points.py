@@ -9,16 +9,23 @@ on step-0 runs).
 
 Each case ends in one of: ran (exit 0), refused by validate (a deck problem naming the
 field; counted apart: the goal is none), or failed (the engine's message).  Results:
-counts by outcome and by message, written to bench/results/operating_points.json.
+counts by outcome and by message, written to bench/results/NAME.json (NAME: --out).
 
     .venv/bin/python bench/operating_points.py [--steps 300] [--workers 2] [--decks a.inp,b.inp]
         [--speeds 0,10] [--loads 1,C0] [--fits 0] [--out NAME] [--rerun failed.csv]
+        [--extra '--traction-table t.txt'] [--exe other/adore]
+    .venv/bin/python bench/operating_points.py --summarize bench/operating_points_grid.csv
 
 Every case is also appended, as it ends, to bench/results/NAME.csv (deck, speed, load, fit,
 outcome, a message category, the message, seconds, and for a run that ran the balance line's
-drive power, dissipation, drive/dissipation and revolutions in the window), so a long grid
+revolutions in the window, drive power, dissipation, energy change, drive/dissipation, closure
+and the inner race's force residual as a fraction of its load), so a long grid
 run killed part way keeps what it measured.  ``--rerun`` takes the failed cases of an
-earlier CSV (e.g. after a fix).
+earlier CSV (e.g. after a fix, or with ``--extra`` engine options / ``--exe`` another
+executable to find a cause); ``--summarize`` prints a CSV's failures by message category,
+deck, speed, load and fit.  The measured grid and its diagnosis re-runs are kept in
+bench/operating_points_grid.csv and bench/operating_points_diagnosis.csv
+(docs/operating-points.md, "The dynamic grid, all 14 decks").
 """
 
 from __future__ import annotations
