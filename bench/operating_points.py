@@ -9,23 +9,39 @@ on step-0 runs).
 
 Each case ends in one of: ran (exit 0), refused by validate (a deck problem naming the
 field; counted apart: the goal is none), or failed (the engine's message).  Results:
-counts by outcome and by message, written to bench/results/operating_points.json.
+counts by outcome and by message, written to bench/results/NAME.json (NAME: --out).
 
     .venv/bin/python bench/operating_points.py [--steps 300] [--workers 2] [--decks a.inp,b.inp]
+        [--speeds 0,10] [--loads 1,C0] [--fits 0] [--out NAME] [--rerun failed.csv]
+        [--extra '--traction-table t.txt'] [--exe other/adore]
+    .venv/bin/python bench/operating_points.py --summarize bench/operating_points_grid.csv
+
+Every case is also appended, as it ends, to bench/results/NAME.csv (deck, speed, load, fit,
+outcome, a message category, the message, seconds, and for a run that ran the balance line's
+revolutions in the window, drive power, dissipation, energy change, drive/dissipation, closure
+and the inner race's force residual as a fraction of its load), so a long grid
+run killed part way keeps what it measured.  ``--rerun`` takes the failed cases of an
+earlier CSV (e.g. after a fix, or with ``--extra`` engine options / ``--exe`` another
+executable to find a cause); ``--summarize`` prints a CSV's failures by message category,
+deck, speed, load and fit.  The measured grid and its diagnosis re-runs are kept in
+bench/operating_points_grid.csv and bench/operating_points_diagnosis.csv
+(docs/operating-points.md, "The dynamic grid, all 14 decks").
 """
 
 from __future__ import annotations
 
 import argparse
 import collections
+import csv
 import itertools
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
 import time
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 import numpy as np
@@ -83,24 +99,83 @@ def static_capacity(base: Path, tmp: Path) -> float:
     return float(f"{hi:.3E}")
 
 
+_NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
+
+
+def category(message: str) -> str:
+    """A failure message without its numbers, ball and contact names: the class it is
+    counted in ("the derivative refused the step: ball N, outer race contact: ...")."""
+    m = message.split("; kept: ")[0]
+    for head in ("integration stopped: ", "the derivative refused the step (report 4.4.12): "):
+        if head in m:
+            m = m.split(head, 1)[1]
+    m = m.split(" (t ")[0]
+    m = re.sub(r" at time t = .*?\)", "", m)
+    m = re.sub(r"(outside the model \(need 0 < a < rho < r_b\)).*", r"\1", m)
+    m = re.sub(r"ball \d+", "ball N", m)
+    m = re.sub(r"pocket \d+", "pocket N", m)
+    m = _NUMBER.sub("#", m)
+    return m[:160]
+
+
+def balance(stderr: str) -> dict:
+    """The run note's balance numbers (pyadore.api.parse_balance): revolutions in the window,
+    drive power, dissipation, energy change (W), their ratio, the closure (drive - dissipation
+    - energy change) / max(|drive|, dissipation) and the inner race's force residual against
+    the applied load (fraction)."""
+    from pyadore.api import parse_balance
+
+    b = parse_balance(stderr.replace("\n", " "))
+    if not b:
+        return {}
+    load = float(np.linalg.norm(b["inner_carried_N"]))
+    return {"revolutions": b["revolutions"], "drive_W": b["drive_power_W"], "dissipation_W": b["dissipation_W"],
+            "energy_rate_W": b["energy_rate_W"], "drive_over_dissipation": b["drive_ratio"],
+            "closure": b["closure"],
+            "inner_force_residual": b["inner_residual_N"] / load if load > 0 else float("nan")}
+
+
 def _case(args) -> dict:
-    base, speed, load, fit, steps, exe = args
+    base, speed, load, fit, steps, exe, extra = args
     from pyadore.deck import check_deck
 
     with tempfile.TemporaryDirectory() as tmp:
         path = _variant(Path(base), Path(tmp) / "case.inp", speed, load, fit)
         _, problems = check_deck(path)
+        problems = [p for p in problems if p.kind != "warning"]
         row = {"deck": Path(base).name, "speed_rpm": speed, "load_N": load, "fit_m": fit}
         if problems:
-            return row | {"outcome": "refused", "message": problems[0].format().split("\n")[0]}
+            message = problems[0].format().split("\n")[0].replace(str(path), "deck")
+            return row | {"outcome": "refused", "category": category(message), "message": message}
         start = time.perf_counter()
-        proc = subprocess.run([exe, str(path), str(Path(tmp) / "case.prt"), "--steps", str(steps)],
+        proc = subprocess.run([exe, str(path), str(Path(tmp) / "case.prt"), "--steps", str(steps), *extra],
                               capture_output=True, text=True)
         row["seconds"] = round(time.perf_counter() - start, 3)
         if proc.returncode == 0:
-            return row | {"outcome": "ran"}
+            return row | {"outcome": "ran"} | balance(proc.stderr)
         message = proc.stderr.strip().split("\n")[0].replace(str(path) + ": ", "")
-        return row | {"outcome": "failed", "message": message}
+        return row | {"outcome": "failed", "category": category(message), "message": message}
+
+
+FIELDS = ("deck", "speed_rpm", "load_N", "fit_m", "outcome", "category", "message", "seconds",
+          "revolutions", "drive_W", "dissipation_W", "energy_rate_W", "drive_over_dissipation", "closure",
+          "inner_force_residual")
+
+
+def summarize(rows: list[dict]) -> None:
+    """Print a grid's counts: outcomes, failures by category, deck, speed, load and fit."""
+    print(f"{len(rows)} cases: {dict(collections.Counter(r['outcome'] for r in rows))}")
+    bad = [r for r in rows if r["outcome"] != "ran"]
+    for title, key in (("category", lambda r: category(r["message"])[:110]), ("deck", lambda r: r["deck"]),
+                       ("speed (rpm)", lambda r: float(r["speed_rpm"])), ("load (N)", lambda r: float(r["load_N"]) if float(r["load_N"]) in LOADS else "C0"),
+                       ("fit (um)", lambda r: round(float(r["fit_m"]) * 1e6))):
+        print(f"failures by {title}:")
+        for k, n in sorted(collections.Counter(key(r) for r in bad).items(), key=lambda kv: -kv[1]):
+            print(f"  {n:4d}  {k}")
+
+
+def _floats(text: str) -> tuple:
+    return tuple("C0" if v.strip() == "C0" else float(v) for v in text.split(","))
 
 
 def main() -> int:
@@ -108,33 +183,77 @@ def main() -> int:
     ap.add_argument("--steps", type=int, default=300)
     ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--decks", default="", help="comma-separated decks (default: every ball deck)")
+    ap.add_argument("--speeds", default="", help="comma-separated shaft speeds, rpm (default: the grid's)")
+    ap.add_argument("--loads", default="", help="comma-separated loads, N, or C0 (default: the grid's)")
+    ap.add_argument("--fits", default="", help="comma-separated inner race fits, m (default: the grid's)")
+    ap.add_argument("--rerun", default="", help="a CSV of an earlier run: run its failed cases again")
+    ap.add_argument("--out", default="operating_points", help="name of the results in bench/results/")
     ap.add_argument("--exe", default=os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore")))
+    ap.add_argument("--extra", default="", help="further engine options, e.g. '--traction-table t.txt' (diagnosis)")
+    ap.add_argument("--summarize", default="", help="a CSV of an earlier run: print its counts and stop")
     a = ap.parse_args()
+    if a.summarize:
+        with open(a.summarize, newline="") as f:
+            summarize(list(csv.DictReader(f)))
+        return 0
+    extra = a.extra.split()
     decks = [Path(d) for d in a.decks.split(",")] if a.decks else _ball_decks()
+    speeds = _floats(a.speeds) if a.speeds else SPEEDS
+    loads = _floats(a.loads) if a.loads else LOADS
+    fits = _floats(a.fits) if a.fits else FITS
     cases = []
     capacities = {}
-    with tempfile.TemporaryDirectory() as tmp:
+    if a.rerun:
+        with open(a.rerun, newline="") as f:
+            old = [r for r in csv.DictReader(f) if r["outcome"] != "ran"]
+        by_name = {d.name: d for d in _ball_decks()}
+        for r in old:
+            cases.append((str(by_name[r["deck"]]), float(r["speed_rpm"]), float(r["load_N"]),
+                          float(r["fit_m"]), a.steps, a.exe, extra))
+    else:
+        cache = ROOT / "bench" / "results" / "static_capacity.json"
+        known = json.loads(cache.read_text()) if cache.exists() else {}
+        with tempfile.TemporaryDirectory() as tmp:
+            if "C0" in loads:
+                for d in decks:
+                    capacities[d.name] = known.get(d.name) or static_capacity(d, Path(tmp))
+        if capacities:
+            cache.parent.mkdir(exist_ok=True)
+            cache.write_text(json.dumps(known | capacities, indent=1) + "\n")
         for d in decks:
-            capacities[d.name] = static_capacity(d, Path(tmp))
-    for d in decks:
-        for s, L, f in itertools.product(SPEEDS, LOADS, FITS):
-            cases.append((str(d), s, capacities[d.name] if L == "C0" else L, f, a.steps, a.exe))
+            for s, L, f in itertools.product(speeds, loads, fits):
+                cases.append((str(d), s, capacities[d.name] if L == "C0" else L, f, a.steps, a.exe, extra))
+    # a fixed random order: a run stopped part way is a sample of the whole grid
+    order = np.random.default_rng(28).permutation(len(cases))
+    cases = [cases[k] for k in order]
+    out = ROOT / "bench" / "results" / a.out
+    out.parent.mkdir(exist_ok=True)
     start = time.perf_counter()
-    with ProcessPoolExecutor(max_workers=a.workers) as pool:
-        rows = list(pool.map(_case, cases, chunksize=4))
+    rows = []
+    with open(out.with_suffix(".csv"), "w", newline="") as f, ProcessPoolExecutor(max_workers=a.workers) as pool:
+        writer = csv.DictWriter(f, FIELDS)
+        writer.writeheader()
+        for fut in as_completed([pool.submit(_case, c) for c in cases]):
+            row = fut.result()
+            rows.append(row)
+            writer.writerow(row)
+            f.flush()
     counts = collections.Counter(r["outcome"] for r in rows)
-    messages = collections.Counter(r["message"][:120] for r in rows if r["outcome"] != "ran")
+    messages = collections.Counter(r["category"] for r in rows if r["outcome"] != "ran")
+    by_deck = collections.Counter(r["deck"] for r in rows if r["outcome"] != "ran")
     summary = {"steps": a.steps, "cases": len(rows), "outcomes": dict(counts),
                "static_capacity_N": capacities, "wall_s": round(time.perf_counter() - start, 1),
-               "messages": messages.most_common(), "failures": [r for r in rows if r["outcome"] != "ran"]}
-    out = ROOT / "bench" / "results" / "operating_points.json"
-    out.parent.mkdir(exist_ok=True)
-    out.write_text(json.dumps(summary, indent=1) + "\n")
+               "categories": messages.most_common(), "failures_by_deck": by_deck.most_common(),
+               "failures": [r for r in rows if r["outcome"] != "ran"]}
+    out.with_suffix(".json").write_text(json.dumps(summary, indent=1) + "\n")
     print(f"{len(rows)} cases, {a.steps} steps: {dict(counts)} ({summary['wall_s']} s)")
     for m, n in messages.most_common(12):
         print(f"  {n:4d}  {m}")
-    print(f"static capacities (ISO 76, 4200 MPa): {capacities}")
-    print(f"written: {out}")
+    for d, n in by_deck.most_common():
+        print(f"  {n:4d}  {d}")
+    if capacities:
+        print(f"static capacities (ISO 76, 4200 MPa): {capacities}")
+    print(f"written: {out.with_suffix('.csv')}, {out.with_suffix('.json')}")
     return 0
 
 

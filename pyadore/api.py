@@ -46,7 +46,8 @@ class Result:
     #: ``energy_rate_W`` (mechanical energy's mean rate),
     #: ``drive_ratio`` (drive / dissipation), ``inner_force_N`` and ``inner_carried_N``
     #: (the inner race's mean contact force and the applied load plus its weight),
-    #: ``inner_residual_N``, ``outer_force_N``, ``outer_expected_N``, ``outer_residual_N``;
+    #: ``inner_residual_N``, ``outer_force_N``, ``outer_expected_N``, ``outer_residual_N``,
+    #: ``closure`` ((drive - dissipation - energy change) / max(|drive|, dissipation, 1 uW));
     #: None without time steps or for a run that stopped early
     balance: dict | None = None
     #: the time history the run recorded (docs/plots.md: index ``time_s``, column ``step``,
@@ -233,7 +234,15 @@ def parse_balance(note: str) -> dict | None:
             "race_heat_W": v[5], "damping_W": v[6], "cage_work_W": v[7], "cage_heat_W": v[8],
             "energy_rate_W": v[9], "drive_ratio": v[10],
             "inner_force_N": tuple(v[11:14]), "inner_carried_N": tuple(v[14:17]), "inner_residual_N": v[17],
-            "outer_force_N": tuple(v[18:21]), "outer_expected_N": tuple(v[21:24]), "outer_residual_N": v[24]}
+            "outer_force_N": tuple(v[18:21]), "outer_expected_N": tuple(v[21:24]), "outer_residual_N": v[24],
+            "closure": _closure(v[3], v[4], v[9])}
+
+
+def _closure(drive: float, dissipation: float, rate: float) -> float:
+    """(drive - dissipation - energy change) / max(|drive|, dissipation, 1 uW): 0 up to the
+    integration error (Newton-Euler; the run note flags it above 0.01; below a microwatt,
+    a shaft at rest, there is nothing to balance: fortran/bearings/ball.f90)."""
+    return (drive - dissipation - rate) / max(abs(drive), dissipation, 1e-6)
 
 
 def run_title(deck_path: Path) -> str:

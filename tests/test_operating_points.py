@@ -123,3 +123,31 @@ def test_shaft_at_rest_runs_its_time_steps(tmp_path, base):
     carried = np.linalg.norm(bal["inner_carried_N"])
     assert bal["inner_residual_N"] <= 0.01 * carried
     assert abs(bal["drive_power_W"]) <= 1e-9
+
+
+EXAMPLES = ROOT / "decks" / "examples"
+# A representative subset of the grid of bench/operating_points.py (every example ball deck
+# x speed x load x fit, 300 steps): one case per region that runs - a shaft at rest under a
+# load at the deck's static capacity scale, a crawl at a light load with the fit taking
+# clearance, a combined load at medium speed, an axial bearing with clearance at 60 000 rpm.
+GRID_SUBSET = [
+    ("deep_groove_axial.inp", 0.0, 1e4, -20e-6),
+    ("iso16281_ex6_moment.inp", 10.0, 100.0, 0.0),
+    ("iso16281_ex3_radial_clearance.inp", 1000.0, 1e3, 0.0),
+    ("iso16281_ex4_axial_clearance.inp", 60000.0, 1e3, -20e-6),
+]
+
+
+@pytest.mark.parametrize("deck,speed,load,fit", GRID_SUBSET,
+                         ids=[f"{d.split('.')[0]}-{s:g}rpm-{L:g}N-{f * 1e6:+g}um" for d, s, L, f in GRID_SUBSET])
+def test_grid_subset_runs_and_carries_its_load(tmp_path, deck, speed, load, fit):
+    """A grid case runs its 300 time steps, and over the last half of the run the inner
+    race's mean contact force balances the applied load and the race's weight (Newton: the
+    residual is the race's mass times its mean acceleration) within 1 % of the load."""
+    path, force = _variant(tmp_path, EXAMPLES / deck, "case", speed=speed, load=load, fit=fit)
+    result = pyadore.run(path, steps=300, out=tmp_path / "case.prt")
+    assert result.steps_integrated == 300
+    bal = result.balance
+    carried = np.linalg.norm(bal["inner_carried_N"])
+    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)   # the load and the race weight
+    assert bal["inner_residual_N"] <= 0.01 * carried

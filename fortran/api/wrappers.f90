@@ -69,7 +69,7 @@ subroutine adore_run_file(deck_path, out_path, options, integrated, history_rows
    character(len=*), intent(in) :: options     !< run options, "name=value" lines (adore_model_run_options)
    integer, intent(out) :: integrated          !< time steps after step 0
    integer, intent(out) :: history_rows        !< rows of the plot-data file written (0: none)
-   character(len=1024), intent(out) :: note    !< what the run does not do; blank: nothing
+   character(len=4096), intent(out) :: note    !< what the run does not do; blank: nothing
    integer, intent(out) :: status              !< 0 ok, 1 input error, 2 engine failure
    character(len=16384), intent(out) :: message !< error message, blank on success
 
@@ -86,7 +86,7 @@ subroutine adore_run_file_progress(deck_path, out_path, options, integrated, his
    implicit none
    character(len=*), intent(in) :: deck_path, out_path, options
    integer, intent(out) :: integrated, history_rows, status
-   character(len=1024), intent(out) :: note
+   character(len=4096), intent(out) :: note
    character(len=16384), intent(out) :: message
    procedure(run_progress) :: progress
 

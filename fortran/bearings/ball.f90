@@ -48,6 +48,8 @@ module adore_bearings_ball
    !> pocket's wear and each guide land's wear (m**3/s).
    integer, parameter, public :: AVG_POWER = 1, AVG_RATIOS = 2, AVG_RACE_WEAR = 5, AVG_DAMAGE = 7, &
                                  AVG_CAGE_WEAR = 8, AVG_EXCURSION = 9, AVG_BALL_WEAR = 10
+   !> Power (W) below which a run's balance has nothing to close (a shaft at rest).
+   real(wp), parameter :: MIN_BALANCED_POWER = 1.0e-6_wp
 
    !> A ball bearing run.
    type, extends(bearing_system_t) :: ball_kind_t
@@ -428,13 +430,14 @@ contains
    !> against the dissipation (contacts and cage, contact damping) and the mechanical
    !> energy's rate of change (adore_forces_ball_power: drive = dissipation + dE/dt); the
    !> inner race's mean contact force against the applied load and its weight (the residual
-   !> is m dv/dt averaged), the outer race's against the housing's share.
+   !> is m dv/dt averaged), the outer race's against the housing's share; the closure
+   !> (drive - dissipation - dE/dt) / max(|drive|, dissipation, 1 uW), flagged above 1 %.
    subroutine ball_balance_text(self, window, mean, first, last, text)
       class(ball_kind_t), intent(in) :: self
       real(wp), intent(in) :: window(2), mean(:), first(:), last(:)
       character(len=:), allocatable, intent(out) :: text
       character(len=700) :: buf
-      real(wp) :: seconds, dissipation, rate, carried(3), housing(3)
+      real(wp) :: seconds, dissipation, rate, carried(3), housing(3), closure
       integer :: stat
       associate (b => self%eom%bearing)
          seconds = (window(2) - window(1))*self%time_scale
@@ -457,6 +460,14 @@ contains
             mean(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2), " N against", -housing, " N, residual ", &
             norm2(mean(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2) - housing), " N"
          text = trim(buf)
+         ! the closure: Newton-Euler makes it 0 up to the integration error (issue #28);
+         ! below a microwatt (a shaft at rest) there is nothing to balance
+         closure = (mean(BAL_DRIVE) - dissipation - rate)/max(abs(mean(BAL_DRIVE)), dissipation, MIN_BALANCED_POWER)
+         write (buf, "(a,es10.3)", iostat=stat) "; closure (drive - dissipation - energy change)/max(|drive|, "// &
+            "dissipation, 1 uW) ", closure
+         text = text//trim(buf)
+         if (abs(closure) > 0.01_wp) text = text//", above 0.01: the time steps do not resolve the drive torque "// &
+                                            "(a smaller Rec 2.1 maximum step does; docs/operating-points.md)"
       end associate
    end subroutine ball_balance_text
 

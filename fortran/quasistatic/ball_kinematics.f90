@@ -250,7 +250,12 @@ contains
       logical :: done
 
       if (.not. ((q(1) > 0.0_wp .and. a(1) > 0.0_wp) .or. (q(2) > 0.0_wp .and. a(2) > 0.0_wp))) then
-         call input_error(error, "minimum dissipation kinematics: no loaded race contact")
+         block
+            character(len=160) :: buf
+            write (buf, "(a,4es10.2)") " (outer load, semi-major axis; inner load, semi-major axis:", q(1), a(1), &
+               q(2), a(2)
+            call input_error(error, "minimum dissipation kinematics: no loaded race contact"//trim(buf)//" N, m)")
+         end block
          return
       end if
       if (.not. (d > 0.0_wp .and. r_b + 0.5_wp*d*n_i(2) > 0.0_wp)) then
