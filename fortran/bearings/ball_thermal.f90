@@ -246,7 +246,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(thermal_heat_t) :: mean
       real(wp) :: leaving, w(2), wsum(b%n_elements), vsum(b%n_elements), phi(b%n_elements), v
-      integer :: k, j(2), n
+      integer :: k, j(2), n, i
       if (.not. (th%elapsed > 0.0_wp)) then
          call engine_error(error, "thermal update: no heat averaged (empty interval)")
          return
@@ -267,8 +267,10 @@ contains
          vsum = 0.0_wp
          do k = 1, n
             call location_weights(phi(k), n, j, w)
-            wsum(j) = wsum(j) + w
-            vsum(j) = vsum(j) + w*th%options%element_velocity(k)
+            do i = 1, 2   ! (one at a time: j(1) = j(2) when n = 1)
+               wsum(j(i)) = wsum(j(i)) + w(i)
+               vsum(j(i)) = vsum(j(i)) + w(i)*th%options%element_velocity(k)
+            end do
          end do
          v = sum(th%options%element_velocity)/n
          th%options%element_velocity = v
