@@ -13,12 +13,22 @@
 !> (the force assembly's loads%heat), its pocket's power, all guide lands' power, the
 !> ball's drag and churning loss; integrated over time by the trapezoidal rule between
 !> accepted instants (the first interval of a run starts with a rectangle from t = 0).
+!> Where the heat is averaged (docs/thermal.md, "Heat by location"): by default per
+!> space-fixed location around the orbit, location j at azimuth 2 pi (j - 1) / n (the balls'
+!> places at t = 0): at every accepted instant each ball's heat rates go to the two
+!> locations either side of its azimuth with linear weights (summing to 1, so no heat is
+!> lost); the field is solved per location, and at the update each ball takes the field of
+!> the place it occupies then (the same weights).  Report 2.3: conduction through the race
+!> "is carried out at each rolling element location, where the race surface temperature may
+!> be different due to variation in contact load"; 2.10: "the local heat generations are
+!> first averaged".  `by_location = .false.` averages each ball's own heat instead.
 !> No module state: the record is part of the ball kind.
 module adore_bearings_ball_thermal
    use adore_core_kinds, only: wp
+   use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t
-   use adore_state_bearing_state, only: bearing_state_t
+   use adore_state_bearing_state, only: bearing_state_t, body_azimuth
    use adore_forces_ball_bearing, only: ball_bearing_loads_t
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, default_thermal_options, &
                                     new_thermal_heat
@@ -29,7 +39,7 @@ module adore_bearings_ball_thermal
    private
 
    public :: ball_thermal_t, new_ball_thermal, thermal_mode_of, ball_heat_rates, ball_thermal_accumulate
-   public :: ball_thermal_update, heat_total
+   public :: ball_thermal_update, heat_total, location_weights, heat_by_location
 
    !> The thermal modes of a run: off (bulk temperatures fixed at Rec 2.7's), temperatures
    !> updated with the geometry held (report 5.3's first set), temperatures and geometry
@@ -44,6 +54,8 @@ module adore_bearings_ball_thermal
       !> lubricant volume fraction of the free space for drag and churning (Harris); the deck
       !> gives none (docs/thermal.md): 0
       real(wp) :: lubricant_fraction = 0.0_wp
+      !> heat averaged per space-fixed location (default) or per ball (module header)
+      logical :: by_location = .true.
       type(thermal_options_t) :: options     !< the network's boundaries (default_thermal_options)
       type(thermal_heat_t) :: integral       !< heat over the current interval (J)
       type(thermal_heat_t) :: last           !< heat rates at the last accepted instant (W)
@@ -141,7 +153,59 @@ contains
          end associate
          heat%drag(k) = th%fluid(k)%loss
       end do
+      if (th%by_location) heat = heat_by_location(heat, [(body_azimuth(s%elements(k)), k = 1, n)])
    end subroutine ball_heat_rates
+
+   !> The two space-fixed locations either side of azimuth phi (rad) among n, location j at
+   !> 2 pi (j - 1) / n, and the linear weights w (sum 1; all on j(1) at its own azimuth).
+   pure subroutine location_weights(phi, n, j, w)
+      real(wp), intent(in) :: phi
+      integer, intent(in) :: n
+      integer, intent(out) :: j(2)
+      real(wp), intent(out) :: w(2)
+      real(wp) :: x
+      x = modulo(phi, 2.0_wp*pi)*n/(2.0_wp*pi)
+      j(1) = min(int(x), n - 1)
+      w(2) = min(max(x - j(1), 0.0_wp), 1.0_wp)
+      w(1) = 1.0_wp - w(2)
+      j(1) = j(1) + 1
+      j(2) = modulo(j(1), n) + 1
+   end subroutine location_weights
+
+   !> Heat rates per ball (W; ball k at azimuth phi(k), rad) as heat rates per space-fixed
+   !> location (location_weights); the total is kept, the lands' heat is not per ball.
+   pure function heat_by_location(heat, phi) result(loc)
+      type(thermal_heat_t), intent(in) :: heat
+      real(wp), intent(in) :: phi(:)
+      type(thermal_heat_t) :: loc
+      integer :: k, i, n, j(2)
+      real(wp) :: w(2)
+      n = size(phi)
+      loc = new_thermal_heat(n)
+      loc%land = heat%land
+      do k = 1, n
+         call location_weights(phi(k), n, j, w)
+         do i = 1, 2
+            loc%outer(j(i)) = loc%outer(j(i)) + w(i)*heat%outer(k)
+            loc%inner(j(i)) = loc%inner(j(i)) + w(i)*heat%inner(k)
+            loc%pocket(j(i)) = loc%pocket(j(i)) + w(i)*heat%pocket(k)
+            loc%drag(j(i)) = loc%drag(j(i)) + w(i)*heat%drag(k)
+         end do
+      end do
+   end function heat_by_location
+
+   !> Per-location values v(n) (the field solved per location) read at each ball's azimuth
+   !> phi(k) (rad): the location weights' interpolation.
+   pure function at_balls(v, phi) result(vb)
+      real(wp), intent(in) :: v(:), phi(:)
+      real(wp) :: vb(size(phi))
+      integer :: k, j(2)
+      real(wp) :: w(2)
+      do k = 1, size(phi)
+         call location_weights(phi(k), size(v), j, w)
+         vb(k) = w(1)*v(j(1)) + w(2)*v(j(2))
+      end do
+   end function at_balls
 
    !> Add the heat rates `heat` (W) of the accepted instant `time` (s) to the interval's
    !> integral (trapezoidal rule with the previous instant; a rectangle for the first).
@@ -181,8 +245,8 @@ contains
       real(wp), intent(in) :: time
       type(error_type), allocatable, intent(out) :: error
       type(thermal_heat_t) :: mean
-      real(wp) :: leaving
-      integer :: k
+      real(wp) :: leaving, w(2), wsum(b%n_elements), vsum(b%n_elements), phi(b%n_elements), v
+      integer :: k, j(2), n, i
       if (.not. (th%elapsed > 0.0_wp)) then
          call engine_error(error, "thermal update: no heat averaged (empty interval)")
          return
@@ -192,11 +256,36 @@ contains
       mean%pocket = th%integral%pocket/th%elapsed
       mean%drag = th%integral%drag/th%elapsed
       mean%land = th%integral%land/th%elapsed
-      do k = 1, b%n_elements
+      n = b%n_elements
+      phi = [(body_azimuth(s%elements(k)), k = 1, n)]
+      do k = 1, n
          th%options%element_velocity(k) = 0.5_wp*b%d*norm2(s%elements(k)%omega)
       end do
+      if (th%by_location) then
+         ! each location's velocity: the balls' there now (weighted), else their mean
+         wsum = 0.0_wp
+         vsum = 0.0_wp
+         do k = 1, n
+            call location_weights(phi(k), n, j, w)
+            do i = 1, 2   ! (one at a time: j(1) = j(2) when n = 1)
+               wsum(j(i)) = wsum(j(i)) + w(i)
+               vsum(j(i)) = vsum(j(i)) + w(i)*th%options%element_velocity(k)
+            end do
+         end do
+         v = sum(th%options%element_velocity)/n
+         th%options%element_velocity = v
+         where (wsum > 0.0_wp) th%options%element_velocity = vsum/wsum
+      end if
       call solve_thermal_field(b, mean, th%options, th%field, error)
       if (allocated(error)) return
+      if (th%by_location) then
+         ! each ball takes the field of the place it occupies at the update
+         th%field%contact_outer = at_balls(th%field%contact_outer, phi)
+         th%field%contact_inner = at_balls(th%field%contact_inner, phi)
+         th%field%mid = at_balls(th%field%mid, phi)
+         th%field%element_bulk = at_balls(th%field%element_bulk, phi)
+         th%field%htc = at_balls(th%field%htc, phi)
+      end if
       th%have_field = .true.
       th%updates = th%updates + 1
       th%update_times = [th%update_times, time]

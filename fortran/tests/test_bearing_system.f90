@@ -175,7 +175,10 @@ program test_bearing_system
    use adore_bearings_system, only: bearing_system_t
    use adore_bearings_select, only: new_bearing_system
    use adore_bearings_ball, only: ball_kind_t
-   use adore_bearings_ball_thermal, only: THERMAL_GEOMETRY
+   use adore_bearings_ball_thermal, only: THERMAL_GEOMETRY, location_weights, heat_by_location, ball_thermal_t, &
+                                          ball_thermal_accumulate
+   use adore_thermal_network, only: thermal_heat_t, new_thermal_heat
+   use adore_core_constants, only: pi
    use adore_output_run_history, only: run_history_t
    use adore_driver_time_loop, only: run_time_loop
    use adore_test_toy_kind, only: toy_kind_t
@@ -185,6 +188,7 @@ program test_bearing_system
    call test_toy_events_and_condition_change()
    call test_run_options_text()
    call test_ball_condition_change()
+   call test_heat_by_location()
    call test_ball_thermal_run()
    call finish("bearing system")
 
@@ -433,6 +437,72 @@ contains
       call check(all(y == y_fresh) .and. t == t_fresh, &
                  "ball: the step after the "//what//" change equals a brand-new integrator's bit for bit")
    end subroutine compare_with_a_new_integrator
+
+   !> The heat averaged by location (bearings/ball_thermal.f90, docs/thermal.md "Heat by
+   !> location"): a ball at location j's azimuth 2 pi (j - 1) / n puts all its heat there; a
+   !> ball a quarter of the way to the next location splits it 3/4 : 1/4; the last location
+   !> wraps to the first; balls rotated by one place give their heat to the next location;
+   !> every ball's heat kept (the total within round-off), the lands' too.
+   subroutine test_heat_by_location()
+      integer, parameter :: n = 6
+      type(thermal_heat_t) :: h, loc
+      integer :: j(2), k
+      real(wp) :: w(2), phi(n), q(n)
+      call location_weights(2.0_wp*pi*2/n, n, j, w)
+      call check(j(1) == 3 .and. abs(w(1) - 1.0_wp) < 1.0e-12_wp, "location: a ball at location 3's azimuth")
+      call location_weights(2.0_wp*pi*(2.25_wp)/n, n, j, w)
+      call check(j(1) == 3 .and. j(2) == 4 .and. abs(w(1) - 0.75_wp) < 1.0e-12_wp .and. &
+                 abs(w(2) - 0.25_wp) < 1.0e-12_wp, "location: a quarter of the way splits 3/4 : 1/4")
+      call location_weights(-2.0_wp*pi*0.5_wp/n, n, j, w)
+      call check(j(1) == n .and. j(2) == 1 .and. abs(w(1) - 0.5_wp) < 1.0e-12_wp, &
+                 "location: the last location wraps to the first (negative azimuth)")
+      h = new_thermal_heat(n)
+      q = [(10.0_wp + k, k = 1, n)]
+      h%outer = q
+      h%inner = 2.0_wp*q
+      h%pocket = 0.1_wp*q
+      h%land = 3.0_wp
+      ! balls at their own locations rotated by one: ball k at location k + 1
+      phi = [(2.0_wp*pi*k/n, k = 1, n)]
+      loc = heat_by_location(h, phi)
+      call check(all(abs(loc%outer - cshift(q, -1)) < 1.0e-12_wp) .and. all(abs(loc%inner - 2.0_wp*cshift(q, -1)) &
+                 < 1.0e-12_wp), "location: each ball's heat at the location it occupies")
+      phi = phi + 0.37_wp
+      loc = heat_by_location(h, phi)
+      call check(abs(sum(loc%outer) - sum(q)) < 1.0e-12_wp*sum(q) .and. abs(sum(loc%pocket) - 0.1_wp*sum(q)) &
+                 < 1.0e-12_wp*sum(q) .and. loc%land == 3.0_wp, "location: the heat is kept")
+      call test_location_average_closed_form()
+   end subroutine test_heat_by_location
+
+   !> A heat pattern fixed in space, q(phi) = a + c cos(phi) per ball, and n balls orbiting
+   !> uniformly through m whole spacings (Delta = 2 pi / n): the heat averaged by location j
+   !> (linear weights, trapezoidal rule) is (1/Delta) integral of the hat (1 - |u|/Delta) times
+   !> q(phi_j + u) over |u| < Delta = a + c cos(phi_j) (sin(Delta/2)/(Delta/2))**2, the
+   !> pattern at the place, not each ball's own mean over its path.  Within 1e-6 of c with
+   !> 2000 steps per spacing (the trapezoidal rule's error, O(step**2)).
+   subroutine test_location_average_closed_form()
+      integer, parameter :: n = 18, m = 3, steps = 2000*m
+      real(wp), parameter :: a = 20.0_wp, c = 10.0_wp
+      type(ball_thermal_t) :: th
+      type(thermal_heat_t) :: h
+      real(wp) :: delta, t, phi(n), mean(n), want(n), omega
+      integer :: i, k
+      delta = 2.0_wp*pi/n
+      omega = 1.0_wp
+      th%integral = new_thermal_heat(n)
+      th%last = new_thermal_heat(n)
+      do i = 0, steps
+         t = m*delta/omega*i/steps
+         phi = [(delta*(k - 1) + omega*t, k = 1, n)]
+         h = new_thermal_heat(n)
+         h%outer = a + c*cos(phi)
+         call ball_thermal_accumulate(th, t, heat_by_location(h, phi))
+      end do
+      mean = th%integral%outer/th%elapsed
+      want = [(a + c*cos(delta*(k - 1))*(sin(0.5_wp*delta)/(0.5_wp*delta))**2, k = 1, n)]
+      call check(maxval(abs(mean - want)) <= 1.0e-6_wp*c, "location: a space-fixed pattern averaged by place "// &
+                 "= the pattern smoothed by the hat, a + c cos(phi_j) sinc(Delta/2)**2")
+   end subroutine test_location_average_closed_form
 
    !> Appendix C with its own thermal model (Rec 2.5: heat averaged every 3 ms, geometry
    !> updated from 30 ms) through run_time_loop to 33.5 ms: eleven updates at 3, 6, ... 33 ms

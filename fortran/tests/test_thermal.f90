@@ -492,7 +492,7 @@ contains
    !> shaft 329.3, outer race 349.0, inner race 351.4 K) give its printed outer race fit
    !> 1.458e-5 m and effective inner race fit -2.484e-5 m (section 3).
    subroutine test_report_fits()
-      type(distortion_t) :: d
+      type(distortion_t) :: d, d0
       real(wp) :: t(7)
       t = ball%temperature
       t(TEMP_HOUSING) = 346.8_wp
@@ -506,6 +506,18 @@ contains
       call check(near(d%mounted%mounting%inner_fit, -2.484e-5_wp, 0.01_wp), "report: inner race fit -2.484e-5 within 1 %")
       write (*, "(a,3es12.4,a)") "  step-2500 temperatures -> fits, clearance: ", d%mounted%mounting%outer_fit, &
          d%mounted%mounting%inner_fit, d%clearance, "  (report 1.458e-5 -2.484e-5 1.537e-4)"
+      ! the clearance's parts (measured, docs/thermal.md "Thermal distortion"): change from
+      ! step 0, the free growth of outer and inner raceway and of the ball, the mounting's
+      d0 = thermal_distortion(ball, ball%temperature)
+      write (*, "(a,5es12.4)") "  clearance change, outer/inner raceway growth, 2 dD, mounting change: ", &
+         d%clearance - d0%clearance, 2.0_wp*d%mounted%thermal_growth(1), 2.0_wp*d%mounted%thermal_growth(2), &
+         2.0_wp*(d%element_diameter - ball%d), d%mounted%mounting%clearance - d0%mounted%mounting%clearance
+      ! closed form: the clearance falls by 2 alpha D per kelvin of ball temperature alone
+      t = ball%temperature
+      t(TEMP_ELEMENT) = t(TEMP_ELEMENT) + 10.0_wp
+      d = thermal_distortion(ball, t)
+      call check(near(d0%clearance - d%clearance, 2.0_wp*ball%material(BODY_ELEMENT)%expansion*10.0_wp*ball%d, &
+                 1.0e-9_wp), "clearance: -2 alpha D per kelvin of the ball (free growth of a sphere)")
       ! step 0: the initial temperatures change nothing (report clearance 1.525e-4)
       d = thermal_distortion(ball, ball%temperature)
       call check(near(d%clearance, 1.525e-4_wp, 0.001_wp), "initial temperatures: report's step-0 clearance 1.525e-4")
