@@ -66,6 +66,11 @@ module adore_bearings_ball
       !> the largest |net force| / |applied load| a geometry update left before the solve
       real(wp) :: hold_initial = 0.0_wp
       integer :: hold_solves = 0
+      !> the printed tribology (no flash) of the last accepted state (ball_accepted), reused
+      !> by the averages and the history row of that state; current until the next
+      !> evaluation, mounting or thermal event
+      type(contact_print_t) :: tribology
+      logical :: tribology_current = .false.
    contains
       procedure :: eval => ball_eval
       procedure :: solve_start => ball_solve_start
@@ -96,6 +101,7 @@ contains
       real(wp), intent(in) :: y(:)
       real(wp), intent(out) :: dydt(:)
       integer, intent(out) :: flag
+      self%tribology_current = .false.
       call self%eom%eval(t, y, dydt, flag)
       call adopt_failure(self, self%eom)
    end subroutine ball_eval
@@ -265,12 +271,18 @@ contains
    subroutine ball_values(self, v)
       class(ball_kind_t), intent(in) :: self
       real(wp), intent(out) :: v(:)
-      call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v, &
-                                self%eom%lubricant_temperature)
+      if (self%tribology_current) then
+         call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v, &
+                                   self%eom%lubricant_temperature, self%tribology)
+      else
+         call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v, &
+                                   self%eom%lubricant_temperature)
+      end if
    end subroutine ball_values
 
    !> Each ball's orbital position unwrapped from step to step (a step moves a ball far
-   !> less than half a revolution).
+   !> less than half a revolution); the accepted state's printed tribology (no flash), which
+   !> its averages and history row share.
    subroutine ball_accepted(self)
       class(ball_kind_t), intent(inout) :: self
       type(thermal_heat_t) :: heat
@@ -286,6 +298,9 @@ contains
             self%last(k) = phi
          end associate
       end do
+      call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, self%tribology, &
+                              flash=.false., lubricant_temperature=self%eom%lubricant_temperature)
+      self%tribology_current = .true.
    end subroutine ball_accepted
 
    !> A printed time step (adore_output_ball_dynamic_report) at the last evaluated state.
@@ -354,8 +369,12 @@ contains
                                mean(AVG_BALL_WEAR:AVG_BALL_WEAR + self%bearing%n_elements - 1), &
                                mean(AVG_RACE_WEAR:AVG_RACE_WEAR + 1), self%clearance)
       if (step == 0) call step0_history_values(self, h)
-      call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
-                              flash=h%printed, lubricant_temperature=self%eom%lubricant_temperature)
+      if (self%tribology_current .and. .not. h%printed) then
+         tribology = self%tribology          ! the same numbers: flash only at printed rows
+      else
+         call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
+                                 flash=h%printed, lubricant_temperature=self%eom%lubricant_temperature)
+      end if
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
       ! the thermal model's exit fluid temperature and the history element's contact
       ! temperatures (the network's contact nodes; NaN / the bulk ones before the first field)
@@ -479,6 +498,7 @@ contains
       class(ball_kind_t), intent(inout) :: self
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
+      self%tribology_current = .false.
       if (.not. allocated(self%eom%state%elements)) then
          call engine_error(error, "ball bearing: mount before the dynamics started")
          return
@@ -513,6 +533,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(operating_condition_t) :: c
       logical :: geometry
+      self%tribology_current = .false.
       if (self%thermal%mode == THERMAL_OFF) return
       call ball_thermal_update(self%thermal, self%bearing, self%eom%state, time, error)
       if (allocated(error)) return
@@ -645,14 +666,16 @@ contains
    !> (dynamic_lives: its average inverted is the Palmgren-Miner life); the cage's Archard
    !> wear (cage material) of each pocket and guide land (cage_wear_sliding) and their sum;
    !> the RE excursion (pocket_excursion).  lubricant_temperature: as the force assembly's.
-   subroutine ball_averaged_values(b, g, s, loads, v, lubricant_temperature)
+   !> tribology, when given: ball_contact_print's result (no flash) at this state.
+   subroutine ball_averaged_values(b, g, s, loads, v, lubricant_temperature, tribology)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(out) :: v(:)
       real(wp), intent(in), optional :: lubricant_temperature(:)
-      type(contact_print_t) :: tribology
+      type(contact_print_t), intent(in), optional :: tribology
+      type(contact_print_t) :: p
       real(wp) :: w_orb(b%n_elements), lives(2), pockets(b%n_elements), lands(max(b%n_lands, 0))
       integer :: k, n
       n = b%n_elements
@@ -668,8 +691,12 @@ contains
                                                       loads%traction(1, k)%sliding + loads%traction(2, k)%sliding)
          w_orb(k) = orbital_speed(s%elements(k))
       end do
-      call ball_contact_print(b, g, s, loads, tribology, flash=.false., lubricant_temperature=lubricant_temperature)
-      lives = dynamic_lives(b, g, loads, tribology, w_orb)
+      if (present(tribology)) then
+         lives = dynamic_lives(b, g, loads, tribology, w_orb)
+      else
+         call ball_contact_print(b, g, s, loads, p, flash=.false., lubricant_temperature=lubricant_temperature)
+         lives = dynamic_lives(b, g, loads, p, w_orb)
+      end if
       v(AVG_DAMAGE) = 0.0_wp
       if (lives(2) > 0.0_wp) v(AVG_DAMAGE) = 1.0_wp/lives(2)      ! an infinite life: no damage
       call cage_wear_sliding(b, loads, pockets, lands)

@@ -95,18 +95,25 @@ contains
    !> The contact of `ball` with the race `race` (body states, adore_state_bearing_state)
    !> for the pair p: geometry, Hertz load and slip (module header).  stiffness, when
    !> given, replaces the contact-angle-dependent K (N/m**1.5; the energy test's frozen K).
-   pure subroutine ball_race_contact(p, ball, race, c, stiffness)
+   !> race_rot, ball_rot, when given: quat_matrix of the race's and the ball's attitude,
+   !> computed once by the caller for all contacts of that body (the same numbers).
+   pure subroutine ball_race_contact(p, ball, race, c, stiffness, race_rot, ball_rot)
       type(ball_race_pair_t), intent(in) :: p
       type(body_state_t), intent(in) :: ball, race
       type(ball_race_geometry_t), intent(out) :: c
       real(wp), intent(in), optional :: stiffness
+      real(wp), intent(in), optional :: race_rot(3, 3), ball_rot(3, 3)
       real(wp) :: rot(3, 3), b_rel(3), e_r(3), e_t(3), a(3), la, n(3), alpha_s, e_m(3), nr, ln
       real(wp) :: w_b(3), w_r(3), dv(3), dw(3), v_ball(3), v_race(3), u(3), side
       type(hertz_geometry_t) :: g
       logical :: ok
 
       side = real(p%side, wp)
-      rot = quat_matrix(race%attitude)
+      if (present(race_rot)) then
+         rot = race_rot
+      else
+         rot = quat_matrix(race%attitude)
+      end if
       b_rel = matmul(transpose(rot), ball%position - race%position)
       ! the ball's azimuth phi' = atan2(-b_2, b_3): e_r = (0, -sin phi', cos phi') and
       ! e_t = (0, -cos phi', -sin phi') from b' itself (no trigonometric call)
@@ -145,7 +152,11 @@ contains
       end if
 
       ! surface velocities (inertial): ball and race angular velocities from body components
-      w_b = matmul(quat_matrix(ball%attitude), ball%omega)
+      if (present(ball_rot)) then
+         w_b = matmul(ball_rot, ball%omega)
+      else
+         w_b = matmul(quat_matrix(ball%attitude), ball%omega)
+      end if
       w_r = matmul(rot, race%omega)
       v_ball = ball%velocity + cross(w_b, c%point - ball%position)
       v_race = race%velocity + cross(w_r, c%point - race%position)

@@ -236,7 +236,7 @@ contains
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: t
       real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6), beta, q_n, rate
-      real(wp) :: t_lub(size(s%temperature))
+      real(wp) :: t_lub(size(s%temperature)), race_rot(3, 3, 2), ball_rot(3, 3)
       integer :: n, k, j
       logical :: with_traction, with_2d, with_reference, with_rolling
 
@@ -265,12 +265,19 @@ contains
       loads%races(RACE_INNER)%force = b%mass(BODY_INNER)*b%gravity + b%force
       loads%races(RACE_INNER)%moment = b%moment
 
+      ! the attitude matrices once per body (every contact of a race or ball uses its own)
+      do j = 1, 2
+         race_rot(:, :, j) = quat_matrix(s%races(j)%attitude)
+      end do
       do k = 1, n
+         ball_rot = quat_matrix(s%elements(k)%attitude)
          do j = 1, 2
             if (present(stiffness)) then
-               call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k), stiffness(j, k))
+               call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k), stiffness(j, k), &
+                                      race_rot(:, :, j), ball_rot)
             else
-               call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k))
+               call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k), &
+                                      race_rot=race_rot(:, :, j), ball_rot=ball_rot)
             end if
             associate (c => loads%contacts(j, k), ball => s%elements(k)%position, race => s%races(j)%position)
                if (.not. (c%load > 0.0_wp)) cycle
@@ -329,7 +336,7 @@ contains
          if (beta <= 0.0_wp .or. .not. (c%delta > 0.0_wp)) return
          associate (race => s%races(j), ball => s%elements(k))
             v_rel = ball%velocity - race%velocity - &
-                    cross(matmul(quat_matrix(race%attitude), race%omega), ball%position - race%position)
+                    cross(matmul(race_rot(:, :, j), race%omega), ball%position - race%position)
          end associate
          rate = dot_product(v_rel, c%normal)
          q_n = max(c%load + beta*1.5_wp*c%load/c%delta*rate, 0.0_wp)
@@ -353,8 +360,7 @@ contains
          if (allocated(error)) return
          if (.not. (f_r > 0.0_wp .and. tk%rx > 0.0_wp)) return
          associate (ball => s%elements(k), race => s%races(j))
-            w = dot_product(matmul(quat_matrix(ball%attitude), ball%omega) - &
-                            matmul(quat_matrix(race%attitude), race%omega), c%transverse)
+            w = dot_product(matmul(ball_rot, ball%omega) - matmul(race_rot(:, :, j), race%omega), c%transverse)
          end associate
          w0 = 1.0e-3_wp*abs(tk%rolling_speed)/tk%rx
          m_r = f_r*tk%rx*w/sqrt(w*w + w0*w0)
