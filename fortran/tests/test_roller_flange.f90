@@ -143,6 +143,8 @@ contains
       type(integrator_t) :: it
       real(wp), allocatable :: y(:), dydt(:), fl(:, :), fax(:, :), slice_m(:), flange_m(:), hgt(:, :)
       real(wp) :: t, t_avg, t_end, dt, t_last, axial_on_race, total, theta, lc, q, m_hand, m_slices, loaded_share
+      real(wp) :: axial_now, axial_prev
+      logical :: have_prev
       real(wp) :: worst_axial, worst_tilt
       integer :: k, n, flag, i, j
 
@@ -164,9 +166,11 @@ contains
       allocate (dydt(size(y)), fl(4, n), fax(4, n), slice_m(n), flange_m(n), hgt(4, n))
       fl = 0.0_wp; fax = 0.0_wp; slice_m = 0.0_wp; flange_m = 0.0_wp; hgt = 0.0_wp
       axial_on_race = 0.0_wp
+      axial_prev = 0.0_wp
+      have_prev = .false.
       t = 0.0_wp
       t_avg = 3.0e-3_wp/sys%time_scale
-      t_end = 6.0e-3_wp/sys%time_scale
+      t_end = 12.0e-3_wp/sys%time_scale
       t_last = 0.0_wp
       total = 0.0_wp
       do while (t < t_end .and. .not. allocated(error))
@@ -179,16 +183,22 @@ contains
          t_last = t
          call sys%eval(t, y, dydt, flag)
          total = total + dt
+         ! the trapezoidal rule over the accepted steps (the end-point sum biased the averages
+         ! of the vibrating loads by about 1 %, differently in release and debug builds)
+         axial_now = sum([(sys%loads(k)%race_force(1, 2), k=1, n)])
+         if (have_prev) axial_on_race = axial_on_race + 0.5_wp*dt*(axial_now + axial_prev)
+         if (.not. have_prev) total = 0.0_wp
          do k = 1, n
             associate (ld => sys%loads(k))
                fl(:, k) = fl(:, k) + dt*ld%flange_load
                fax(:, k) = fax(:, k) + dt*ld%flange_axial
                hgt(:, k) = hgt(:, k) + dt*ld%flange_height
-               axial_on_race = axial_on_race + dt*ld%race_force(1, 2)
             end associate
          end do
+         axial_prev = axial_now
+         have_prev = .true.
       end do
-      call check(.not. allocated(error), "example integrated to 6 ms")
+      call check(.not. allocated(error), "example integrated to 12 ms")
       if (allocated(error)) return
       fax = fax/total
       axial_on_race = axial_on_race/total
