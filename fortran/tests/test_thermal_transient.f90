@@ -127,6 +127,10 @@ contains
       call check(near(f%temperature(TEMP_HOUSING) - t0, (steady%temperature(TEMP_HOUSING) - t0)* &
                       (1.0_wp - exp(-3.0e-3_wp*g(LUMP_HOUSING)/c(LUMP_HOUSING))), 1.0e-9_wp), &
                  "transient: the housing's first step")
+      call check(f%housing(2) == opt%reference_temperature .and. f%housing(3) > f%housing(1) .and. &
+                 f%housing(1) > f%housing(2), "transient: the housing's outer surface stays at the reference")
+      call check(near(f%shaft(2) - f%shaft(3), steady%shaft(2) - steady%shaft(3), 1.0e-9_wp), &
+                 "transient: the shaft's profile is the steady one shifted")
       call check(c(LUMP_HOUSING)/g(LUMP_HOUSING) > 1.0_wp .and. c(LUMP_ELEMENT1)/g(LUMP_ELEMENT1) > 0.1_wp, &
                  "transient: bodies' time constants of seconds")
       call check(abs(f%exit_temperature - steady%exit_temperature) > 1.0e-3_wp, "transient: the coolant lags")

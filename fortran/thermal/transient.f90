@@ -13,7 +13,8 @@
 !>     C dT/dt = G (T_s - T),  T(dt) = T_s + (T(0) - T_s) exp(-dt G / C),
 !> the exact solution for heat held constant over the interval (no step-size limit, no
 !> truncation error; implicit Euler would lag it by O(dt G/C)).  A body's internal profile
-!> (surfaces, contact nodes, mid point) is the steady one shifted with its bulk.  The lumps
+!> (surfaces, contact nodes, mid point) is the steady one shifted with its bulk; the
+!> housing's, anchored at the reference, has its rise above the reference scaled instead.  The lumps
 !> are not coupled to each other: the report's march is not a conductance network (the
 !> shaft bore has no sink temperature, the element's mid point is set from its outer
 !> contact), so capacities cannot be attached to its nodes; a lag toward the steady field
@@ -194,7 +195,8 @@ contains
    !> solved for the interval's averaged heat, which the field's q_generated, W, carries)
    !> becomes the transient one after dt (s): every lump relaxed from its temperature toward
    !> the field's, the field's bulk temperatures replaced and its surface and node
-   !> temperatures shifted with their body's bulk; the energy of the interval (generated,
+   !> temperatures shifted with their body's bulk (the housing's rise above the reference
+   !> scaled); the energy of the interval (generated,
    !> stored, leaving, J) and the worst relative balance kept.  Engine error for dt <= 0 or
    !> lumps of another bearing.
    subroutine thermal_transient_step(tr, b, opt, dt, field, error)
@@ -237,7 +239,14 @@ contains
       ! the field: bulk temperatures the lumps', each body's profile shifted with its bulk
       d = tn - ts
       field%temperature(TEMP_HOUSING) = tn(LUMP_HOUSING)
-      field%housing = field%housing + d(LUMP_HOUSING)
+      ! the housing's rise above the reference scaled (its outer surface is the reference
+      ! node without a film: it stays there), the other bodies' profiles shifted
+      if (abs(ts(LUMP_HOUSING) - opt%reference_temperature) > 0.0_wp) then
+         field%housing = opt%reference_temperature + (field%housing - opt%reference_temperature)* &
+                         ((tn(LUMP_HOUSING) - opt%reference_temperature)/(ts(LUMP_HOUSING) - opt%reference_temperature))
+      else
+         field%housing = field%housing + d(LUMP_HOUSING)
+      end if
       field%temperature(TEMP_OUTER) = tn(LUMP_OUTER)
       field%temperature(TEMP_INNER) = tn(LUMP_INNER)
       if (allocated(field%race_bulk)) then
