@@ -8,15 +8,14 @@ program test_thermal_transient
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type
-   use adore_model_bearing, only: bearing_t, TEMP_HOUSING, TEMP_SHAFT, TEMP_CAGE, TEMP_OUTER, TEMP_INNER
+   use adore_model_bearing, only: bearing_t, TEMP_HOUSING
    use adore_model_from_deck, only: read_bearing
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, default_thermal_options, &
                                     new_thermal_heat
    use adore_thermal_march, only: solve_thermal_field
    use adore_thermal_transient, only: thermal_transient_t, new_thermal_transient, lump_capacities, &
                                       lump_conductances, lump_relaxation, lump_net_inflow, thermal_transient_step, &
-                                      LUMP_HOUSING, LUMP_OUTER, LUMP_INNER, LUMP_SHAFT, LUMP_CAGE, LUMP_COOLANT, &
-                                      LUMP_ELEMENT1
+                                      lump_temperatures, LUMP_HOUSING, LUMP_SHAFT, LUMP_COOLANT, LUMP_ELEMENT1
    implicit none
 
    character(len=:), allocatable :: decks
@@ -177,7 +176,7 @@ contains
          call solve_thermal_field(ball, hk, opt, f, error)
          if (allocated(error)) return
          g = lump_conductances(ball, opt, f%htc)
-         ts = lump_targets(f)
+         ts = lump_temperatures(f)
          q = f%q_generated
          call thermal_transient_step(tr, ball, opt, dt, f, error)
          if (allocated(error)) return
@@ -207,20 +206,6 @@ contains
                  "transient: the worst balance kept")
       write (*, "(a, es9.2)") "thermal transient: worst relative energy balance ", tr%balance
    end subroutine test_energy_balance
-
-   !> The lumps' steady temperatures in a field (the module's order).
-   function lump_targets(f) result(ts)
-      type(thermal_field_t), intent(in) :: f
-      real(wp), allocatable :: ts(:)
-      allocate (ts(LUMP_ELEMENT1 - 1 + size(f%element_bulk)))
-      ts(LUMP_HOUSING) = f%temperature(TEMP_HOUSING)
-      ts(LUMP_OUTER) = f%temperature(TEMP_OUTER)
-      ts(LUMP_INNER) = f%temperature(TEMP_INNER)
-      ts(LUMP_SHAFT) = f%temperature(TEMP_SHAFT)
-      ts(LUMP_CAGE) = f%temperature(TEMP_CAGE)
-      ts(LUMP_COOLANT) = f%exit_temperature
-      ts(LUMP_ELEMENT1:) = f%element_bulk
-   end function lump_targets
 
    !> The largest difference (K) between two fields' temperatures (bulk, surfaces, nodes, exit).
    real(wp) function field_difference(a, b) result(d)

@@ -37,7 +37,7 @@ module adore_thermal_transient
    private
 
    public :: thermal_transient_t, new_thermal_transient, lump_capacities, lump_conductances, lump_relaxation, &
-             lump_net_inflow, thermal_transient_step
+             lump_net_inflow, lump_temperatures, thermal_transient_step
 
    !> The lumps (bodies) in the order of thermal_transient_t's arrays; element k is lump
    !> LUMP_ELEMENT1 - 1 + k.
@@ -219,14 +219,7 @@ contains
          return
       end if
       g = lump_conductances(b, opt, field%htc)
-      allocate (ts(m))
-      ts(LUMP_HOUSING) = field%temperature(TEMP_HOUSING)
-      ts(LUMP_OUTER) = field%temperature(TEMP_OUTER)
-      ts(LUMP_INNER) = field%temperature(TEMP_INNER)
-      ts(LUMP_SHAFT) = field%temperature(TEMP_SHAFT)
-      ts(LUMP_CAGE) = field%temperature(TEMP_CAGE)
-      ts(LUMP_COOLANT) = field%exit_temperature
-      ts(LUMP_ELEMENT1:) = field%element_bulk
+      ts = lump_temperatures(field)
       tn = lump_relaxation(tr%temperature, ts, tr%capacity, g, dt)
       ! energy: stored from the capacities, leaving = the steady outflow less the net inflows
       tr%generated = field%q_generated*dt
@@ -264,6 +257,21 @@ contains
       field%contact_inner = field%contact_inner + d(LUMP_ELEMENT1:)
       field%temperature(TEMP_ELEMENT) = sum(field%element_bulk)/n
    end subroutine thermal_transient_step
+
+   !> The lumps' temperatures (K) in a field, in the lumps' order: the bulk temperatures of
+   !> housing, races, shaft and cage, the exit temperature, each element's bulk.
+   pure function lump_temperatures(field) result(t)
+      type(thermal_field_t), intent(in) :: field
+      real(wp), allocatable :: t(:)
+      allocate (t(LUMP_ELEMENT1 - 1 + size(field%element_bulk)))
+      t(LUMP_HOUSING) = field%temperature(TEMP_HOUSING)
+      t(LUMP_OUTER) = field%temperature(TEMP_OUTER)
+      t(LUMP_INNER) = field%temperature(TEMP_INNER)
+      t(LUMP_SHAFT) = field%temperature(TEMP_SHAFT)
+      t(LUMP_CAGE) = field%temperature(TEMP_CAGE)
+      t(LUMP_COOLANT) = field%exit_temperature
+      t(LUMP_ELEMENT1:) = field%element_bulk
+   end function lump_temperatures
 
    !> Volume (m**3) of a ring of outer diameter d1, inner d2 (m) and width w (m); 0 if d1 <= d2.
    pure real(wp) function ring_volume(d1, d2, w) result(v)
