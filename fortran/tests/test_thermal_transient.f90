@@ -82,8 +82,9 @@ contains
    !> Appendix C's capacities by hand from its dimensions and Rec 8 (7750 kg/m**3, 470
    !> J/(kg K) for every body in its echo).
    subroutine test_capacities()
-      real(wp), allocatable :: c(:)
+      real(wp), allocatable :: c(:), g(:)
       real(wp) :: rc
+      integer :: k
       c = lump_capacities(ball)
       rc = 7750.0_wp*470.0_wp
       call check(size(c) == LUMP_ELEMENT1 - 1 + ball%n_elements, "capacities: one per body and ball")
@@ -93,6 +94,12 @@ contains
       call check(near(c(LUMP_SHAFT), rc*0.25_wp*pi*(ball%shaft_od**2 - ball%shaft_id**2)*ball%width_inner, &
                       1.0e-14_wp), "capacity: the hollow shaft")
       call check(all(c > 0.0_wp), "capacities: every lump holds heat")
+      ! a ball's conductance: eqs 15-16 from its mid point to both contacts, 2 k (pi D^2/6)/D,
+      ! plus h pi D^2 (eqs 18-23)
+      g = lump_conductances(ball, default_thermal_options(ball), [(8.1e3_wp, k = 1, ball%n_elements)])
+      call check(near(g(LUMP_ELEMENT1), 2.0_wp*43.0_wp*pi*ball%d/6.0_wp + 8.1e3_wp*pi*ball%d**2, 1.0e-14_wp), &
+                 "conductance: a ball's two contact paths and its convection")
+      call check(near(g(LUMP_COOLANT), 945.429_wp*1836.10_wp*1.0e-5_wp, 1.0e-5_wp), "conductance: the coolant's rho c_p Q")
       ! the coolant: MIL-L-7808 (945.4 kg/m**3, 1836.1 J/(kg K)) in a free space below the
       ! annulus between the raceways
       call check(c(LUMP_COOLANT) < 945.5_wp*1836.2_wp*0.25_wp*pi*(ball%outer_raceway_dia**2 - &

@@ -30,7 +30,7 @@ module adore_thermal_transient
    use adore_model_bearing, only: bearing_t, ROLLER_BEARING, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE, &
                                   BODY_SHAFT, BODY_HOUSING, TEMP_HOUSING, TEMP_SHAFT, TEMP_ELEMENT, TEMP_CAGE, &
                                   TEMP_OUTER, TEMP_INNER
-   use adore_thermal_conduction, only: cylinder_conductance, element_conductance
+   use adore_thermal_conduction, only: cylinder_conductance, element_conductance, element_surface_area
    use adore_thermal_convection, only: fluid_properties_t, air_properties, lubricant_properties
    use adore_thermal_network, only: thermal_field_t, thermal_options_t, coolant_capacity_rate
    implicit none
@@ -130,11 +130,8 @@ contains
       real(wp) :: area, l_el, film
       allocate (g(LUMP_ELEMENT1 - 1 + b%n_elements), source=0.0_wp)
       l_el = 0.0_wp
-      area = pi*b%d*b%d
-      if (b%bearing_type == ROLLER_BEARING) then
-         l_el = b%roller%roller_length
-         area = pi*b%d*l_el + 0.5_wp*pi*b%d*b%d
-      end if
+      if (b%bearing_type == ROLLER_BEARING) l_el = b%roller%roller_length
+      area = element_surface_area(b%d, l_el)
       g(LUMP_HOUSING) = cylinder_conductance(0.5_wp*b%housing_od, 0.5_wp*b%bearing_od, b%width_outer, &
                                              b%material(BODY_HOUSING)%conductivity, 2.0_wp*pi)
       if (opt%reference_htc > 0.0_wp) then
