@@ -173,6 +173,7 @@ contains
          self%thermal%options%shaft_bulk_as_printed = .false.
       end if
       self%thermal%options%reference_htc = self%options%housing_htc
+      self%thermal%transient_on = self%options%thermal_transient
       if (method /= THERMAL_OFF) then
          self%event_start = self%thermal%interval
          self%event_period = self%thermal%interval
@@ -256,6 +257,7 @@ contains
          else
             text = text//", geometry held"
          end if
+         if (self%thermal%transient_on) text = text//"; transients with lumped heat capacities"
       end if
       if (listing) then
          text = "  "//upper(text)

@@ -35,6 +35,7 @@ module adore_bearings_ball_thermal
    use adore_thermal_march, only: solve_thermal_field
    use adore_thermal_convection, only: fluid_properties_t, lubricant_properties
    use adore_thermal_drag, only: element_fluid_loss_t, element_fluid_loss
+   use adore_thermal_transient, only: thermal_transient_t, new_thermal_transient, thermal_transient_step
    implicit none
    private
 
@@ -71,6 +72,10 @@ module adore_bearings_ball_thermal
       integer :: geometry_updates = 0        !< geometry re-mounted
       !> worst relative heat balance |generated - (coolant + reference + bore)| / generated
       real(wp) :: balance = 0.0_wp
+      !> thermal transients with lumped heat capacities (run option thermal_transient; not
+      !> ADORE 5.0): each update relaxes the bodies toward the steady field (adore_thermal_transient)
+      logical :: transient_on = .false.
+      type(thermal_transient_t) :: transient
    end type ball_thermal_t
 
 contains
@@ -116,6 +121,7 @@ contains
       th%integral = new_thermal_heat(b%n_elements)
       th%last = new_thermal_heat(b%n_elements)
       allocate (th%fluid(b%n_elements), th%update_times(0))
+      th%transient = new_thermal_transient(b)
    end function new_ball_thermal
 
    !> The heat rates (W) of ball bearing b at state s with the force assembly's loads
@@ -286,6 +292,9 @@ contains
          th%field%element_bulk = at_balls(th%field%element_bulk, phi)
          th%field%htc = at_balls(th%field%htc, phi)
       end if
+      ! with transients each ball's (and body's) temperature relaxes toward its place's field
+      if (th%transient_on) call thermal_transient_step(th%transient, b, th%options, th%elapsed, th%field, error)
+      if (allocated(error)) return
       th%have_field = .true.
       th%updates = th%updates + 1
       th%update_times = [th%update_times, time]
