@@ -204,51 +204,50 @@ def fortran(table, err):
 
 
 def _evaluator():
-    """Fortran lines of strip_log_shear: the Lagrange weights as scalar prefix and suffix
-    products (kept in registers), the columns of A combined first, then along L."""
+    """Fortran lines of strip_log_shear: the Lagrange weights as prefix and suffix products,
+    computed for A and L together as pairs (the compiler packs them: the same operations on
+    each, so the same bits as one axis at a time), the columns of A combined first, then
+    along L."""
     n, c, p = DEGREE + 1, (DEGREE - 1) // 2, DEGREE
     inv = []
     for k in range(n):
         den = math.prod(k - m for m in range(n) if m != k)
         inv.append(f"{'-' if den < 0 else ''}1.0_wp/{abs(den)}.0_wp")
-    names = []
-    for ax in "al":
-        names += [f"x{ax}{k}" for k in range(n)] + [f"p{ax}{k}" for k in range(1, p + 1)]
-        names += [f"s{ax}{k}" for k in range(p)] + [f"w{ax}{k}" for k in range(n)]
+    names = [f"x{k}" for k in range(n)] + [f"p{k}" for k in range(2, p + 1)]
+    names += [f"s{k}" for k in range(p - 1)] + [f"w{k}" for k in range(n)]
     lines = [
         "   !> G(A, L) (dimensionless) for A in [0, STRIP_A_MAX] and L in [STRIP_L_MIN, STRIP_L_MAX]",
         f"   !> (the caller keeps to that domain): Lagrange interpolation of degree {DEGREE} of the",
         f"   !> table on the {n} x {n} nodes around (A, L): weight k of the nodes 0..{p} at t in",
-        f"   !> [{c}, {c + 1}) is prod_{{m /= k}} (t - m) / (k - m).",
+        f"   !> [{c}, {c + 1}) is prod_{{m /= k}} (t - m) / (k - m); element 1 of each pair is along A,",
+        "   !> element 2 along L.",
         "   pure function strip_log_shear(a, l) result(g)",
         "      real(wp), intent(in) :: a, l",
         "      real(wp) :: g",
-        "      real(wp) :: ta, tl",
+        "      real(wp) :: t(2)",
     ]
     for k in range(0, len(names), 10):
-        lines.append("      real(wp) :: " + ", ".join(names[k:k + 10]))
+        lines.append("      real(wp), dimension(2) :: " + ", ".join(names[k:k + 10]))
     lines += [
         f"      real(wp) :: v({n})",
-        "      integer :: ia, il",
-        "      ta = (a - A0)*INV_H",
-        "      tl = (l - L0)*INV_H",
-        f"      ia = int(ta) - {c}",
-        f"      il = int(tl) - {c}",
+        "      integer :: i(2)",
+        "      t = [(a - A0)*INV_H, (l - L0)*INV_H]",
+        f"      i = int(t) - {c}",
+        "      x0 = t - i",
     ]
-    for ax, t, i in (("a", "ta", "ia"), ("l", "tl", "il")):
-        lines.append(f"      x{ax}0 = {t} - {i}")
-        lines += [f"      x{ax}{k} = x{ax}0 - {k}.0_wp" for k in range(1, n)]
-        lines.append(f"      p{ax}1 = x{ax}0")
-        lines += [f"      p{ax}{k} = p{ax}{k - 1}*x{ax}{k - 1}" for k in range(2, p + 1)]
-        lines.append(f"      s{ax}{p - 1} = x{ax}{p}")
-        lines += [f"      s{ax}{k} = s{ax}{k + 1}*x{ax}{k + 1}" for k in range(p - 2, -1, -1)]
-        lines.append(f"      w{ax}0 = ({inv[0]})*s{ax}0")
-        lines += [f"      w{ax}{k} = ({inv[k]})*p{ax}{k}*s{ax}{k}" for k in range(1, p)]
-        lines.append(f"      w{ax}{p} = ({inv[p]})*p{ax}{p}")
-    lines.append(f"      v = wa0*TABLE(il + 1:il + {n}, ia + 1) &")
+    lines += [f"      x{k} = x0 - {k}.0_wp" for k in range(1, n)]
+    # prefix products p_k = x_0 ... x_(k-1) (p_1 = x_0), suffix s_k = x_(k+1) ... x_p (s_(p-1) = x_p)
+    pre = lambda k: "x0" if k == 1 else f"p{k}"
+    suf = lambda k: f"x{p}" if k == p - 1 else f"s{k}"
+    lines += [f"      p{k} = {pre(k - 1)}*x{k - 1}" for k in range(2, p + 1)]
+    lines += [f"      s{k} = {suf(k + 1)}*x{k + 1}" for k in range(p - 2, -1, -1)]
+    lines.append(f"      w0 = ({inv[0]})*s0")
+    lines += [f"      w{k} = ({inv[k]})*{pre(k)}*{suf(k)}" for k in range(1, p)]
+    lines.append(f"      w{p} = ({inv[p]})*p{p}")
+    lines.append(f"      v = w0(1)*TABLE(i(2) + 1:i(2) + {n}, i(1) + 1) &")
     for k in range(1, n):
-        lines.append(f"          + wa{k}*TABLE(il + 1:il + {n}, ia + {k + 1})" + (" &" if k < p else ""))
-    terms = [f"wl{k}*v({k + 1})" for k in range(n)]
+        lines.append(f"          + w{k}(1)*TABLE(i(2) + 1:i(2) + {n}, i(1) + {k + 1})" + (" &" if k < p else ""))
+    terms = [f"w{k}(2)*v({k + 1})" for k in range(n)]
     lines.append("      g = " + " + ".join(terms[:4]) + (" &" if n > 4 else ""))
     for k in range(4, n, 4):
         lines.append("          + " + " + ".join(terms[k:k + 4]) + (" &" if k + 4 < n else ""))

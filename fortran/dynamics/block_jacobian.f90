@@ -24,7 +24,7 @@ module adore_dynamics_block_jacobian
       integer, allocatable :: first(:)        !< first unknown of each block
       integer, allocatable :: cols(:)         !< columns (1..m) approximated in every block
       real(wp), allocatable :: j(:, :, :)     !< (m, m, nb) df_block/dy_block (per unit of t)
-      real(wp), allocatable :: lu(:, :, :)    !< (m, m, nb) LU factors of I - hg J (unit lower L)
+      real(wp), allocatable :: lu(:, :, :)    !< (m, m, nb) LU factors of I - hg J (unit lower L), transposed
       integer, allocatable :: piv(:, :)       !< (m, nb) row interchanges of the factorisation
       real(wp) :: hg = -1.0_wp                !< h gamma of the factors (unit of t); < 0: none
    contains
@@ -72,11 +72,11 @@ contains
       real(wp), intent(in) :: hg
       logical, intent(out) :: ok
       integer :: b, i, k, p, m
-      real(wp) :: row(self%m)
+      real(wp) :: row(self%m), a(self%m, self%m)
       m = self%m
       ok = .true.
       do b = 1, size(self%first)
-         associate (a => self%lu(:, :, b), piv => self%piv(:, b))
+         associate (piv => self%piv(:, b))
             a = -hg*self%j(:, :, b)
             do i = 1, m
                a(i, i) = a(i, i) + 1.0_wp
@@ -95,11 +95,13 @@ contains
                   a(p, :) = row
                end if
                a(k + 1:m, k) = a(k + 1:m, k)/a(k, k)
+               ! the update column by column (contiguous): each element sees the same operations
                do i = k + 1, m
-                  a(i, k + 1:m) = a(i, k + 1:m) - a(i, k)*a(k, k + 1:m)
+                  a(k + 1:m, i) = a(k + 1:m, i) - a(k + 1:m, k)*a(k, i)
                end do
             end do
          end associate
+         self%lu(:, :, b) = transpose(a)      ! rows of the factors contiguous for solve
       end do
       self%hg = hg
    end subroutine factor
@@ -115,7 +117,7 @@ contains
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
          x = v(i0 + 1:i0 + m)
-         associate (a => self%lu(:, :, b), piv => self%piv(:, b))
+         associate (at => self%lu(:, :, b), piv => self%piv(:, b))
             do k = 1, m
                if (piv(k) /= k) then
                   s = x(k)
@@ -124,10 +126,10 @@ contains
                end if
             end do
             do k = 2, m
-               x(k) = x(k) - dot_product(a(k, 1:k - 1), x(1:k - 1))
+               x(k) = x(k) - dot_product(at(1:k - 1, k), x(1:k - 1))
             end do
             do k = m, 1, -1
-               x(k) = (x(k) - dot_product(a(k, k + 1:m), x(k + 1:m)))/a(k, k)
+               x(k) = (x(k) - dot_product(at(k + 1:m, k), x(k + 1:m)))/at(k, k)
             end do
          end associate
          v(i0 + 1:i0 + m) = x
@@ -139,12 +141,15 @@ contains
       class(block_jacobian_t), intent(in) :: self
       real(wp), intent(in) :: v(:)
       real(wp), intent(out) :: w(:)
-      integer :: b, i0, m
+      integer :: b, i0, m, k
       m = self%m
       w = 0.0_wp
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
-         w(i0 + 1:i0 + m) = matmul(self%j(:, :, b), v(i0 + 1:i0 + m))
+         ! matmul's sum in its order (from 0, column by column), written out so that it vectorises
+         do k = 1, m
+            w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + self%j(:, k, b)*v(i0 + k)
+         end do
       end do
    end subroutine multiply
 

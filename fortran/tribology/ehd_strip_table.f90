@@ -2590,74 +2590,46 @@ contains
    !> G(A, L) (dimensionless) for A in [0, STRIP_A_MAX] and L in [STRIP_L_MIN, STRIP_L_MAX]
    !> (the caller keeps to that domain): Lagrange interpolation of degree 5 of the
    !> table on the 6 x 6 nodes around (A, L): weight k of the nodes 0..5 at t in
-   !> [2, 3) is prod_{m /= k} (t - m) / (k - m).
+   !> [2, 3) is prod_{m /= k} (t - m) / (k - m); element 1 of each pair is along A,
+   !> element 2 along L.
    pure function strip_log_shear(a, l) result(g)
       real(wp), intent(in) :: a, l
       real(wp) :: g
-      real(wp) :: ta, tl
-      real(wp) :: xa0, xa1, xa2, xa3, xa4, xa5, pa1, pa2, pa3, pa4
-      real(wp) :: pa5, sa0, sa1, sa2, sa3, sa4, wa0, wa1, wa2, wa3
-      real(wp) :: wa4, wa5, xl0, xl1, xl2, xl3, xl4, xl5, pl1, pl2
-      real(wp) :: pl3, pl4, pl5, sl0, sl1, sl2, sl3, sl4, wl0, wl1
-      real(wp) :: wl2, wl3, wl4, wl5
+      real(wp) :: t(2)
+      real(wp), dimension(2) :: x0, x1, x2, x3, x4, x5, p2, p3, p4, p5
+      real(wp), dimension(2) :: s0, s1, s2, s3, w0, w1, w2, w3, w4, w5
       real(wp) :: v(6)
-      integer :: ia, il
-      ta = (a - A0)*INV_H
-      tl = (l - L0)*INV_H
-      ia = int(ta) - 2
-      il = int(tl) - 2
-      xa0 = ta - ia
-      xa1 = xa0 - 1.0_wp
-      xa2 = xa0 - 2.0_wp
-      xa3 = xa0 - 3.0_wp
-      xa4 = xa0 - 4.0_wp
-      xa5 = xa0 - 5.0_wp
-      pa1 = xa0
-      pa2 = pa1*xa1
-      pa3 = pa2*xa2
-      pa4 = pa3*xa3
-      pa5 = pa4*xa4
-      sa4 = xa5
-      sa3 = sa4*xa4
-      sa2 = sa3*xa3
-      sa1 = sa2*xa2
-      sa0 = sa1*xa1
-      wa0 = (-1.0_wp/120.0_wp)*sa0
-      wa1 = (1.0_wp/24.0_wp)*pa1*sa1
-      wa2 = (-1.0_wp/12.0_wp)*pa2*sa2
-      wa3 = (1.0_wp/12.0_wp)*pa3*sa3
-      wa4 = (-1.0_wp/24.0_wp)*pa4*sa4
-      wa5 = (1.0_wp/120.0_wp)*pa5
-      xl0 = tl - il
-      xl1 = xl0 - 1.0_wp
-      xl2 = xl0 - 2.0_wp
-      xl3 = xl0 - 3.0_wp
-      xl4 = xl0 - 4.0_wp
-      xl5 = xl0 - 5.0_wp
-      pl1 = xl0
-      pl2 = pl1*xl1
-      pl3 = pl2*xl2
-      pl4 = pl3*xl3
-      pl5 = pl4*xl4
-      sl4 = xl5
-      sl3 = sl4*xl4
-      sl2 = sl3*xl3
-      sl1 = sl2*xl2
-      sl0 = sl1*xl1
-      wl0 = (-1.0_wp/120.0_wp)*sl0
-      wl1 = (1.0_wp/24.0_wp)*pl1*sl1
-      wl2 = (-1.0_wp/12.0_wp)*pl2*sl2
-      wl3 = (1.0_wp/12.0_wp)*pl3*sl3
-      wl4 = (-1.0_wp/24.0_wp)*pl4*sl4
-      wl5 = (1.0_wp/120.0_wp)*pl5
-      v = wa0*TABLE(il + 1:il + 6, ia + 1) &
-          + wa1*TABLE(il + 1:il + 6, ia + 2) &
-          + wa2*TABLE(il + 1:il + 6, ia + 3) &
-          + wa3*TABLE(il + 1:il + 6, ia + 4) &
-          + wa4*TABLE(il + 1:il + 6, ia + 5) &
-          + wa5*TABLE(il + 1:il + 6, ia + 6)
-      g = wl0*v(1) + wl1*v(2) + wl2*v(3) + wl3*v(4) &
-          + wl4*v(5) + wl5*v(6)
+      integer :: i(2)
+      t = [(a - A0)*INV_H, (l - L0)*INV_H]
+      i = int(t) - 2
+      x0 = t - i
+      x1 = x0 - 1.0_wp
+      x2 = x0 - 2.0_wp
+      x3 = x0 - 3.0_wp
+      x4 = x0 - 4.0_wp
+      x5 = x0 - 5.0_wp
+      p2 = x0*x1
+      p3 = p2*x2
+      p4 = p3*x3
+      p5 = p4*x4
+      s3 = x5*x4
+      s2 = s3*x3
+      s1 = s2*x2
+      s0 = s1*x1
+      w0 = (-1.0_wp/120.0_wp)*s0
+      w1 = (1.0_wp/24.0_wp)*x0*s1
+      w2 = (-1.0_wp/12.0_wp)*p2*s2
+      w3 = (1.0_wp/12.0_wp)*p3*s3
+      w4 = (-1.0_wp/24.0_wp)*p4*x5
+      w5 = (1.0_wp/120.0_wp)*p5
+      v = w0(1)*TABLE(i(2) + 1:i(2) + 6, i(1) + 1) &
+          + w1(1)*TABLE(i(2) + 1:i(2) + 6, i(1) + 2) &
+          + w2(1)*TABLE(i(2) + 1:i(2) + 6, i(1) + 3) &
+          + w3(1)*TABLE(i(2) + 1:i(2) + 6, i(1) + 4) &
+          + w4(1)*TABLE(i(2) + 1:i(2) + 6, i(1) + 5) &
+          + w5(1)*TABLE(i(2) + 1:i(2) + 6, i(1) + 6)
+      g = w0(2)*v(1) + w1(2)*v(2) + w2(2)*v(3) + w3(2)*v(4) &
+          + w4(2)*v(5) + w5(2)*v(6)
    end function strip_log_shear
 
 end module adore_tribology_ehd_strip_table

@@ -179,8 +179,8 @@ contains
       real(wp), parameter :: Z_MIN = exp(STRIP_L_MIN)
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(4, 8), vmax, ev, fac, pe, kp
-      integer :: nm, nh, ns, nq, nz, z, j, nsub, n
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding
+      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, sub_rule(8)
 
       nm = EHD_FAST_MAJOR
       ns = EHD_FAST_STRIP
@@ -241,7 +241,7 @@ contains
       ! the nodes phi(1:n) and weights wn(1:n) (rad) of every sub-zone
       n = 0
       do z = 1, nsub
-         associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => nint(sub(4, z)))
+         associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => sub_rule(z))
             vmax = asinh(kp*abs(pf - pr))
             do j = 1, merge(nm, nh, r == 1)
                n = n + 1
@@ -257,31 +257,41 @@ contains
             end do
          end associate
       end do
-      ! the strips at the nodes (array operations: the compiler vectorises sin, cos)
-      phi(1:n) = sin(phi(1:n))                             ! now sin(phi) = s / a
-      cphi(1:n) = sqrt((1.0_wp - phi(1:n))*(1.0_wp + phi(1:n)))   ! cos(phi) >= 0 on [-pi/2, pi/2]
-      phi(1:n) = c%alpha + c%a*phi(1:n)/c%rho              ! now the angle alpha + s / rho
-      wn(1:n) = wn(1:n)*c%a*cphi(1:n)                      ! ds = a cos(phi) dphi
+      ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, cos, hypot,
+      ! log, exp, one call each, so that sin and cos of one angle are not merged into a scalar
+      ! sincos); every node's arithmetic in the order of the former array statements, the
+      ! sums below in node order (bit-identical results, fewer passes over the nodes)
+      do j = 1, n
+         sp = sin(phi(j))                                     ! sin(phi) = s / a
+         cphi(j) = sqrt((1.0_wp - sp)*(1.0_wp + sp))          ! cos(phi) >= 0 on [-pi/2, pi/2]
+         phi(j) = c%alpha + c%a*sp/c%rho                      ! now the angle alpha + s / rho
+         wn(j) = wn(j)*c%a*cphi(j)                            ! ds = a cos(phi) dphi
+         aa(j) = 0.5_wp*rheo%alpha*p0*cphi(j)
+      end do
       ct(1:n) = cos(phi(1:n))
       st(1:n) = sin(phi(1:n))
-      u(1:n) = c%side*c%rho*(c%omega(1) - rs)*ct(1:n) - c%side*c%rho*c%omega(2)*st(1:n) - rs*c%r_b
       if (present(transverse)) then
          ! the slip vector's length; cos, sin of psi = s / rho = theta - alpha
-         cps(1:n) = ct(1:n)*cos(c%alpha) + st(1:n)*sin(c%alpha)
-         sps(1:n) = st(1:n)*cos(c%alpha) - ct(1:n)*sin(c%alpha)
-         um(1:n) = transverse(1) + transverse(2)*cps(1:n) + transverse(3)*sps(1:n)
-         us(1:n) = hypot(u(1:n), um(1:n))
+         do j = 1, n
+            u(j) = c%side*c%rho*(c%omega(1) - rs)*ct(j) - c%side*c%rho*c%omega(2)*st(j) - rs*c%r_b
+            cps(j) = ct(j)*cos(c%alpha) + st(j)*sin(c%alpha)
+            sps(j) = st(j)*cos(c%alpha) - ct(j)*sin(c%alpha)
+            um(j) = transverse(1) + transverse(2)*cps(j) + transverse(3)*sps(j)
+            us(j) = hypot(u(j), um(j))
+         end do
       else
+         u(1:n) = c%side*c%rho*(c%omega(1) - rs)*ct(1:n) - c%side*c%rho*c%omega(2)*st(1:n) - rs*c%r_b
          us(1:n) = abs(u(1:n))
       end if
       ! the strip traction per unit length f = b cos(phi) x the integral of tau across the
-      ! strip (strip_traction): by the table, S = 2 Z exp(G(A, ln Z)) (array operations: the
-      ! compiler vectorises log and exp), else, or where A is beyond the table, by the rule
-      aa(1:n) = 0.5_wp*rheo%alpha*p0*cphi(1:n)
+      ! strip (strip_traction): by the table, S = 2 Z exp(G(A, ln Z)), else, or where A is
+      ! beyond the table, by the rule
       if (ns == EHD_STRIP_TABLE) then
          if (rheo%beta > 0.0_wp) then
-            zz(1:n) = zeta*us(1:n)
-            lz(1:n) = log(max(zz(1:n), Z_MIN))
+            do j = 1, n
+               zz(j) = zeta*us(j)
+               lz(j) = log(max(zz(j), Z_MIN))
+            end do
             fac = 2.0_wp*amp*b
          else
             ! isothermal: the integral of E**2 across the strip is exp(G) at Z -> 0
@@ -299,7 +309,9 @@ contains
                g(j) = log(2.0_wp*(lz(j) + log(2.0_wp) + 0.25_wp*pi*aa(j))) - 2.0_wp*lz(j)
             end if
          end do
-         f(1:n) = fac*cphi(1:n)*zz(1:n)*exp(g(1:n))
+         do j = 1, n
+            f(j) = fac*cphi(j)*zz(j)*exp(g(j))
+         end do
       end if
       if (nq > 0) then
          do j = 1, n
@@ -310,20 +322,34 @@ contains
       f(1:n) = f(1:n)*wn(1:n)
       if (present(transverse)) then
          ! the traction along the slip vector: its rolling (u / |u|) and transverse parts (no
-         ! division by 0 where the slip vanishes: |u|, |u_m| <= |u| there)
-         zz(1:n) = f(1:n)*u(1:n)/max(us(1:n), tiny(1.0_wp))
-         lz(1:n) = f(1:n)*um(1:n)/max(us(1:n), tiny(1.0_wp))
-         t%force = sum(zz(1:n))
-         t%force_cos = sum(zz(1:n)*cps(1:n))
-         t%force_sin = sum(zz(1:n)*sps(1:n))
-         t%cross_force = [sum(lz(1:n)), sum(lz(1:n)*cps(1:n)), sum(lz(1:n)*sps(1:n))]
+         ! division by 0 where the slip vanishes: |u|, |u_m| <= |u| there); one pass, each
+         ! sum from 0 in node order as the intrinsic sum
+         t%force = 0.0_wp
+         t%force_cos = 0.0_wp
+         t%force_sin = 0.0_wp
+         t%cross_force = 0.0_wp
+         t%power = 0.0_wp
+         sliding = 0.0_wp
+         do j = 1, n
+            fr = f(j)*u(j)/max(us(j), tiny(1.0_wp))
+            fm = f(j)*um(j)/max(us(j), tiny(1.0_wp))
+            t%force = t%force + fr
+            t%force_cos = t%force_cos + fr*cps(j)
+            t%force_sin = t%force_sin + fr*sps(j)
+            t%cross_force(1) = t%cross_force(1) + fm
+            t%cross_force(2) = t%cross_force(2) + fm*cps(j)
+            t%cross_force(3) = t%cross_force(3) + fm*sps(j)
+            t%power = t%power + f(j)*us(j)
+            sliding = sliding + us(j)*cphi(j)**2*wn(j)
+         end do
       else
          t%force = sum(sign(f(1:n), u(1:n)))
          t%force_cos = sum(sign(f(1:n), u(1:n))*(ct(1:n)*cos(c%alpha) + st(1:n)*sin(c%alpha)))
          t%force_sin = sum(sign(f(1:n), u(1:n))*(st(1:n)*cos(c%alpha) - ct(1:n)*sin(c%alpha)))
+         t%power = sum(f(1:n)*us(1:n))
+         sliding = sum(us(1:n)*cphi(1:n)**2*wn(1:n))
       end if
-      t%power = sum(f(1:n)*us(1:n))
-      t%sliding = 0.75_wp*c%load/c%a*sum(us(1:n)*cphi(1:n)**2*wn(1:n))    ! Hertz strip load
+      t%sliding = 0.75_wp*c%load/c%a*sliding    ! Hertz strip load
       t%max_slip = max(t%max_slip, maxval(us(1:n)))
       call interior_extremum(c, t%max_slip)
       t%coefficient = t%force/c%load
@@ -354,12 +380,14 @@ contains
          real(wp), intent(in) :: pf, pr, k
          integer, intent(in) :: rule
          nsub = nsub + 1
-         sub(:, nsub) = [pf, pr, k, real(rule, wp)]
+         sub(:, nsub) = [pf, pr, k]
+         sub_rule(nsub) = rule
          if (k*abs(pf - pr) > 2.0_wp*LAYER) then
             ! the layer graded up to LAYER / K from pr, the rest of the zone plain
             sub(1, nsub) = pr + sign(LAYER/k, pf - pr)
             nsub = nsub + 1
-            sub(:, nsub) = [pf, sub(1, nsub - 1), 0.0_wp, real(rule, wp)]
+            sub(:, nsub) = [pf, sub(1, nsub - 1), 0.0_wp]
+            sub_rule(nsub) = rule
          end if
       end subroutine add_graded
 
