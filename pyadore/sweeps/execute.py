@@ -83,7 +83,12 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                 out["notes"] = list(result.notes)
                 # plain tables of the steps: the worker needs no pandas for a run without time steps
                 out["results"] = key_results(read_print(prt, frames=False, echo=False))
-                out["results"].update(mean_results(result.dataset, guide=_guide(deck_text)))
+                # the averages from the run's arrays: no xarray in the worker; the guide race
+                # (a second parse of the deck) only for a run that has results to average
+                if result.arrays is not None:
+                    out["results"].update(mean_results(result.arrays, guide=_guide(deck_text)))
+                else:
+                    out["results"].update(mean_results(None))
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
                 if result.history_path is not None:
                     out["history_text"] = result.history_path.read_text(encoding="utf-8", errors="replace")
