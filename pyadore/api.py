@@ -65,13 +65,21 @@ class Result:
         """The time history the run recorded (docs/plots.md: index ``time_s``, column
         ``step``, SI columns), the same as its plot-data file :attr:`history_path`; None
         without time steps.  Built on first access (pandas is imported then)."""
-        if self._history is None:
-            return None
         if "time_history" not in self._cache:
+            if self._history is None:
+                return None
             from .timehistory import history_frame
 
             self._cache["time_history"] = history_frame(*self._history)
         return self._cache["time_history"]
+
+    @time_history.setter
+    def time_history(self, value: "pd.DataFrame | None") -> None:
+        self._cache["time_history"] = value
+
+    @time_history.deleter
+    def time_history(self) -> None:  # back to the run's own
+        self._cache.pop("time_history", None)
 
     @property
     def dataset(self) -> "xr.Dataset | None":
@@ -80,16 +88,24 @@ class Result:
         ``time``, ``element``, ``race``; the same as its netCDF file :attr:`results_path`;
         None without time steps (or for a bearing kind without element results).  Built from
         :attr:`arrays` on first access (xarray is imported then, not by the run)."""
-        if self.arrays is None:
-            return None
         if "dataset" not in self._cache:
+            if self.arrays is None:
+                return None
             self._cache["dataset"] = self.arrays.to_dataset()
         return self._cache["dataset"]
+
+    @dataset.setter
+    def dataset(self, value: "xr.Dataset | None") -> None:
+        self._cache["dataset"] = value
+
+    @dataset.deleter
+    def dataset(self) -> None:  # back to the run's own
+        self._cache.pop("dataset", None)
 
     @property
     def results_path(self) -> Path | None:
         """The netCDF file beside the print (``<print stem>.nc``); None without a dataset."""
-        if self.arrays is None:
+        if self.arrays is None and self._cache.get("dataset") is None:
             return None
         from .results import results_path
 
@@ -101,17 +117,19 @@ class Result:
         ``last_revolutions`` shaft revolutions, or over the window [t_start, t_end] (s; by
         default the whole run): :func:`pyadore.results.time_mean`.  Raises AdoreInputError
         for a run without a dataset or a window outside the run."""
-        if self.arrays is None:
+        given = self._cache.get("dataset")  # a dataset set on the Result, else the run's own arrays
+        source = given if given is not None else self.arrays
+        if source is None:
             raise AdoreInputError(f"{self.print_path}: the run has no dataset (no time steps) to average")
         from .results import time_mean
 
-        return time_mean(self.arrays, last_revolutions=last_revolutions, t_start=t_start, t_end=t_end)
+        return time_mean(source, last_revolutions=last_revolutions, t_start=t_start, t_end=t_end)
 
     @property
     def history_path(self) -> Path | None:
         """The plot-data file beside the print (``<print stem>.hist.csv``); None without
         time steps."""
-        if self._history is None:
+        if self._history is None and self._cache.get("time_history") is None:
             return None
         from .timehistory import history_path
 
