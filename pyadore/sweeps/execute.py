@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import json
 import os
-import socket
 import sys
 import time
 from pathlib import Path
@@ -34,6 +33,16 @@ def _guide(deck_text: str) -> str:
         return "outer" if deck.get("7.0", "guide_type[1]") == 1 else "inner"
     except Exception:  # an unreadable deck fails in the run itself, with its own message
         return "inner"
+
+
+def _host() -> str:
+    """This machine's host name (the socket module's gethostname without importing it: a
+    few ms of every worker's start-up; os.uname where there is one)."""
+    if hasattr(os, "uname"):
+        return os.uname().nodename
+    import socket
+
+    return socket.gethostname()
 
 
 def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | None = None) -> dict:
@@ -56,7 +65,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
     start = time.perf_counter()
     out = {"case": case_id, "status": "ok", "error": "", "notes": [], "print_text": None, "results": {},
            "history_text": None, "results_nc": None,
-           "worker": f"{socket.gethostname()}:{os.getpid()}", "tmp_deck": "", "tmp_print": "",
+           "worker": f"{_host()}:{os.getpid()}", "tmp_deck": "", "tmp_print": "",
            "incomplete_text": None, "incomplete_history": None}
     try:
         from ..api import run
