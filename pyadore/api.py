@@ -60,18 +60,23 @@ class Result:
     _history: tuple | None = field(default=None, repr=False)
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
 
+    def _built(self, key: str, source, build):
+        """The value ``key`` set on this Result, else built from ``source`` by ``build`` once
+        (and kept); None when there is no source."""
+        if key not in self._cache:
+            if source is None:
+                return None
+            self._cache[key] = build(source)
+        return self._cache[key]
+
     @property
     def time_history(self) -> "pd.DataFrame | None":
         """The time history the run recorded (docs/plots.md: index ``time_s``, column
         ``step``, SI columns), the same as its plot-data file :attr:`history_path`; None
         without time steps.  Built on first access (pandas is imported then)."""
-        if "time_history" not in self._cache:
-            if self._history is None:
-                return None
-            from .timehistory import history_frame
+        from .timehistory import history_frame
 
-            self._cache["time_history"] = history_frame(*self._history)
-        return self._cache["time_history"]
+        return self._built("time_history", self._history, lambda history: history_frame(*history))
 
     @time_history.setter
     def time_history(self, value: "pd.DataFrame | None") -> None:
@@ -88,11 +93,7 @@ class Result:
         ``time``, ``element``, ``race``; the same as its netCDF file :attr:`results_path`;
         None without time steps (or for a bearing kind without element results).  Built from
         :attr:`arrays` on first access (xarray is imported then, not by the run)."""
-        if "dataset" not in self._cache:
-            if self.arrays is None:
-                return None
-            self._cache["dataset"] = self.arrays.to_dataset()
-        return self._cache["dataset"]
+        return self._built("dataset", self.arrays, lambda arrays: arrays.to_dataset())
 
     @dataset.setter
     def dataset(self, value: "xr.Dataset | None") -> None:
