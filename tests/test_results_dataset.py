@@ -125,6 +125,11 @@ def test_netcdf_writer_matches_xarrays(run400, tmp_path):
             np.testing.assert_array_equal(vb.data, va.data, err_msg=name)  # every value, NaN alike
     with xr.open_dataset(reference, engine="scipy") as a, xr.open_dataset(run400.results_path, engine="scipy") as b:
         xr.testing.assert_identical(b.load(), a.load())
+    # the writer given the xarray.Dataset itself writes the same bytes as from the run's arrays
+    from pyadore.results import write_netcdf
+
+    again = write_netcdf(run400.dataset, tmp_path / "from_dataset.nc")
+    assert again.read_bytes() == run400.results_path.read_bytes() == reference.read_bytes()
 
 
 def test_run_imports_no_xarray(tmp_path, short_ball_deck):
