@@ -59,6 +59,9 @@ $(STAMP): pyproject.toml meson.build meson.options $(CONSTRAINTS) | gfortran
 	@touch $(STAMP)
 
 setup: gfortran $(STAMP)
+	@# bytecode of the package's modules: the editable install's loader never writes it, so without
+	@# this every command compiles them again (30-40 ms of each start-up; docs/sweeps.md, "Start-up")
+	@$(PY) -m compileall -q pyadore
 
 # Standalone executable: same sources, same meson.build, its own build directory.
 exe: setup

@@ -21,7 +21,8 @@ time and of the least CPU time); and once, the run to the report's simulated tim
 (`--duration REPORT_DURATION`, issue #30) with its steps, calls and final tau.  Issue #20's budget: at most 10 s for
 the full run (goal 2 s).  The command's start-up (`startup`, issue #29): `pyadore run DECK --steps 0` in a fresh
 interpreter against `adore DECK --steps 0`, budget STARTUP_BUDGET over the engine, and the heavy modules
-(HEAVY_MODULES) the command imported (none expected).  The roller dynamics (`roller`, issue #26): the full
+(HEAVY_MODULES) the command imported (none expected); a first `pyadore.run` with time steps in a fresh
+interpreter against the engine, and a sweep worker's boot.  The roller dynamics (`roller`, issue #26): the full
 Appendix D run (the deck's 4000 steps; budget ROLLER_BUDGET s wall, goal 1 s) standalone and f2py, as the ball
 dynamics' rows, and once the run to the report's simulated time (`--duration ROLLER_REPORT_DURATION`, the report's
 tau 76.18).  Results are printed, and written to bench/results/latest.json.
@@ -175,33 +176,74 @@ def _dynamic_rows(exe):
 #: Issue #29: `pyadore run --steps 0` at most this much wall time (s) over the standalone engine.
 STARTUP_BUDGET = 0.35
 #: Modules `pyadore run --steps 0` must not import (imported on demand only).
-HEAVY_MODULES = ("pandas", "matplotlib", "xarray", "scipy")
+HEAVY_MODULES = ("pandas", "matplotlib", "xarray", "scipy.io", "scipy.sparse", "dask", "distributed")
+
+
+#: Time steps of the start-up bench's first run with time steps (it writes the netCDF results).
+STARTUP_STEPS = 20
+
+
+def _heavy(trace: str) -> list[str]:
+    """The HEAVY_MODULES a ``python -X importtime`` trace imported (a module or one of its submodules;
+    scipy's netCDF writer module alone, without the package scipy.io, is not one)."""
+    names = {line.split("|")[-1].strip() for line in trace.splitlines() if line.startswith("import time:")}
+    return sorted(h for h in HEAVY_MODULES if any(n == h or n.startswith(h + ".") for n in names))
 
 
 def _startup_rows(exe):
     """The command's start-up: best of REPEAT wall times of `pyadore run DECK --steps 0` (a
     fresh interpreter each time) and of `adore DECK --steps 0`, their difference against
-    STARTUP_BUDGET, and the heavy modules the command imported (python -X importtime)."""
+    STARTUP_BUDGET, and the heavy modules the command imported (python -X importtime); the
+    same for a first run with STARTUP_STEPS time steps in a fresh interpreter (it also writes
+    the time history and the netCDF results: no xarray, pandas or scipy.io expected), and the
+    boot of a sweep worker (`python -m pyadore.sweeps.worker` with no job: interpreter,
+    numpy, the engine, the deck checker and print reader; docs/sweeps.md "Scaling").  The
+    commands alternate, so that a drift of the machine's speed does not favour one."""
     deck = DECKS[0]
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "startup.prt"
         py = [sys.executable, "-m", "pyadore", "run", str(deck), "--steps", "0", "-o", str(out)]
         engine = [exe, str(deck), str(out), "--steps", "0"]
-        best_py, med_py = _time(lambda: subprocess.run(py, check=True, capture_output=True))
-        best_exe, med_exe = _time(lambda: subprocess.run(engine, check=True, capture_output=True))
-        trace = subprocess.run([sys.executable, "-X", "importtime"] + py[1:], check=True, capture_output=True,
-                               text=True).stderr
-    imported = sorted({line.split("|")[-1].strip().split(".")[0] for line in trace.splitlines()
-                       if line.startswith("import time:")} & set(HEAVY_MODULES))
-    over = best_py - best_exe
+        first = [sys.executable, "-c", "import sys, pyadore; pyadore.run(sys.argv[1], steps=int(sys.argv[3]), "
+                 "out=sys.argv[2], progress=False)", str(deck), str(Path(tmp) / "first.prt"), str(STARTUP_STEPS)]
+        engine_steps = [exe, str(deck), str(Path(tmp) / "first_exe.prt"), "--steps", str(STARTUP_STEPS)]
+        worker = [sys.executable, "-m", "pyadore.sweeps.worker"]
+        commands = {"cli": py, "exe": engine, "first": first, "exe_steps": engine_steps, "worker": worker}
+        times: dict[str, list[float]] = {k: [] for k in commands}
+        cpu: dict[str, list[float]] = {k: [] for k in commands}
+        for _ in range(REPEAT):
+            for key, cmd in commands.items():
+                start, start_cpu = time.perf_counter(), _cpu_time()
+                subprocess.run(cmd, check=True, capture_output=True, stdin=subprocess.DEVNULL)
+                times[key].append(time.perf_counter() - start)
+                cpu[key].append(_cpu_time() - start_cpu)
+        traces = {key: subprocess.run([sys.executable, "-X", "importtime"] + commands[key][1:], check=True,
+                                      capture_output=True, text=True, stdin=subprocess.DEVNULL).stderr
+                  for key in ("cli", "first", "worker")}
+    best = {k: min(v) for k, v in times.items()}
+    med = {k: statistics.median(v) for k, v in times.items()}
+    least = {k: min(v) for k, v in cpu.items()}  # CPU (user + sys): less inflated by the machine's load
+    over = best["cli"] - best["exe"]
     verdict = "met" if over <= STARTUP_BUDGET else "NOT met"
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
-    print(f"start-up: pyadore run --steps 0 {best_py:.3f} s best, adore --steps 0 {best_exe:.3f} s best: "
-          f"{over:.3f} s over the engine (budget {STARTUP_BUDGET} s: {verdict}; load average {load:.1f}); heavy "
-          f"modules imported: {', '.join(imported) or 'none'}")
-    return [{"deck": deck.name, "case": "pyadore run --steps 0 (CLI)", "best_s": best_py, "median_s": med_py},
-            {"deck": deck.name, "case": "adore --steps 0", "best_s": best_exe, "median_s": med_exe},
-            {"deck": deck.name, "case": "CLI start-up over the engine", "best_s": over, "median_s": med_py - med_exe}]
+    print(f"start-up: pyadore run --steps 0 {best['cli']:.3f} s best, adore --steps 0 {best['exe']:.3f} s best: "
+          f"{over:.3f} s over the engine (budget {STARTUP_BUDGET} s: {verdict}; load average {load:.1f}; CPU "
+          f"{least['cli']:.3f} s against {least['exe']:.3f} s); heavy modules imported: "
+          f"{', '.join(_heavy(traces['cli'])) or 'none'}")
+    print(f"start-up: first pyadore.run of {STARTUP_STEPS} steps in a fresh interpreter {best['first']:.3f} s best, "
+          f"adore {best['exe_steps']:.3f} s: {best['first'] - best['exe_steps']:.3f} s over the engine (CPU "
+          f"{least['first']:.3f} s against {least['exe_steps']:.3f} s); heavy modules imported: "
+          f"{', '.join(_heavy(traces['first'])) or 'none'}")
+    print(f"start-up: sweep worker boot {best['worker']:.3f} s best ({med['worker']:.3f} s median, CPU "
+          f"{least['worker']:.3f} s); heavy modules imported: {', '.join(_heavy(traces['worker'])) or 'none'}")
+    rows = [("cli", "pyadore run --steps 0 (CLI)"), ("exe", "adore --steps 0"),
+            ("first", f"first pyadore.run, {STARTUP_STEPS} steps"), ("exe_steps", f"adore --steps {STARTUP_STEPS}"),
+            ("worker", "sweep worker boot")]
+    out = [{"deck": deck.name, "case": case, "best_s": best[k], "median_s": med[k], "least_cpu_s": least[k]}
+           for k, case in rows]
+    out.insert(2, {"deck": deck.name, "case": "CLI start-up over the engine", "best_s": over,
+                   "median_s": med["cli"] - med["exe"], "least_cpu_s": least["cli"] - least["exe"]})
+    return out
 
 
 def main() -> int:

@@ -15,6 +15,8 @@ if TYPE_CHECKING:
     import pandas as pd
     import xarray as xr
 
+    from .results import ResultArrays
+
 __all__ = ["Result", "run", "read_traction_table", "STEPS_FROM_DECK", "BALL_STARTS"]
 
 #: ``steps`` value the engine reads as "as many time steps as the deck asks for".
@@ -50,19 +52,61 @@ class Result:
     #: ``closure`` ((drive - dissipation - energy change) / max(|drive|, dissipation, 1 uW));
     #: None without time steps or for a run that stopped early
     balance: dict | None = None
-    #: the time history the run recorded (docs/plots.md: index ``time_s``, column ``step``,
-    #: SI columns), the same as its plot-data file :attr:`history_path`; None without time steps
-    time_history: "pd.DataFrame | None" = field(default=None, repr=False)
-    #: the run's full results (docs/results.md): every element's race contacts, speeds and
-    #: positions, the cage and the races at every recorded step, full precision, dimensions
-    #: ``time``, ``element``, ``race``; the same as its netCDF file :attr:`results_path`;
-    #: None without time steps (or for a bearing kind without element results)
-    dataset: "xr.Dataset | None" = field(default=None, repr=False)
+    #: the run's full results as numpy arrays (:class:`pyadore.results.ResultArrays`: the
+    #: variables of :attr:`dataset`, without xarray); None without time steps
+    arrays: "ResultArrays | None" = field(default=None, repr=False)
+    #: the time history's values and column names (the plot-data file's), from which
+    #: :attr:`time_history` is built when first asked for
+    _history: tuple | None = field(default=None, repr=False)
+    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+
+    def _built(self, key: str, source, build):
+        """The value ``key`` set on this Result, else built from ``source`` by ``build`` once
+        (and kept); None when there is no source."""
+        if key not in self._cache:
+            if source is None:
+                return None
+            self._cache[key] = build(source)
+        return self._cache[key]
+
+    @property
+    def time_history(self) -> "pd.DataFrame | None":
+        """The time history the run recorded (docs/plots.md: index ``time_s``, column
+        ``step``, SI columns), the same as its plot-data file :attr:`history_path`; None
+        without time steps.  Built on first access (pandas is imported then)."""
+        from .timehistory import history_frame
+
+        return self._built("time_history", self._history, lambda history: history_frame(*history))
+
+    @time_history.setter
+    def time_history(self, value: "pd.DataFrame | None") -> None:
+        self._cache["time_history"] = value
+
+    @time_history.deleter
+    def time_history(self) -> None:  # back to the run's own
+        self._cache.pop("time_history", None)
+
+    @property
+    def dataset(self) -> "xr.Dataset | None":
+        """The run's full results (docs/results.md): every element's race contacts, speeds and
+        positions, the cage and the races at every recorded step, full precision, dimensions
+        ``time``, ``element``, ``race``; the same as its netCDF file :attr:`results_path`;
+        None without time steps (or for a bearing kind without element results).  Built from
+        :attr:`arrays` on first access (xarray is imported then, not by the run)."""
+        return self._built("dataset", self.arrays, lambda arrays: arrays.to_dataset())
+
+    @dataset.setter
+    def dataset(self, value: "xr.Dataset | None") -> None:
+        self._cache["dataset"] = value
+
+    @dataset.deleter
+    def dataset(self) -> None:  # back to the run's own
+        self._cache.pop("dataset", None)
 
     @property
     def results_path(self) -> Path | None:
         """The netCDF file beside the print (``<print stem>.nc``); None without a dataset."""
-        if self.dataset is None:
+        if self.arrays is None and self._cache.get("dataset") is None:
             return None
         from .results import results_path
 
@@ -74,17 +118,19 @@ class Result:
         ``last_revolutions`` shaft revolutions, or over the window [t_start, t_end] (s; by
         default the whole run): :func:`pyadore.results.time_mean`.  Raises AdoreInputError
         for a run without a dataset or a window outside the run."""
-        if self.dataset is None:
+        given = self._cache.get("dataset")  # a dataset set on the Result, else the run's own arrays
+        source = given if given is not None else self.arrays
+        if source is None:
             raise AdoreInputError(f"{self.print_path}: the run has no dataset (no time steps) to average")
         from .results import time_mean
 
-        return time_mean(self.dataset, last_revolutions=last_revolutions, t_start=t_start, t_end=t_end)
+        return time_mean(source, last_revolutions=last_revolutions, t_start=t_start, t_end=t_end)
 
     @property
     def history_path(self) -> Path | None:
         """The plot-data file beside the print (``<print stem>.hist.csv``); None without
         time steps."""
-        if self.time_history is None:
+        if self._history is None and self._cache.get("time_history") is None:
             return None
         from .timehistory import history_path
 
@@ -197,15 +243,23 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
         except AdoreEngineError as exc:
             done = getattr(exc, "output", None)
             exc.print_path = out_path if out_path.exists() else None
-            exc.time_history = _written_history(out_path, done)
-            exc.dataset = _written_dataset(deck, out_path, done)
+            history = _written_history(out_path, done)
+            exc.time_history = None if history is None else _history_frame(history)
+            arrays = _written_results(deck, out_path, done, history)
+            exc.dataset = None if arrays is None else arrays.to_dataset()
             raise
         text = out_path.read_text(encoding="utf-8", errors="replace")
         history = _written_history(out_path, output)
-        dataset = _written_dataset(deck, out_path, output)
+        arrays = _written_results(deck, out_path, output, history)
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
                   notes=[output.note] if output.note else [], steps_integrated=output.integrated,
-                  time_history=history, dataset=dataset, balance=parse_balance(output.note))
+                  _history=history, arrays=arrays, balance=parse_balance(output.note))
+
+
+def _history_frame(history: tuple) -> "pd.DataFrame":
+    from .timehistory import history_frame
+
+    return history_frame(*history)
 
 
 _NUM = r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)"
@@ -257,19 +311,20 @@ def run_title(deck_path: Path) -> str:
     return m.group(1) if m else ""
 
 
-def _written_dataset(deck_path: Path, print_path: Path, output) -> "xr.Dataset | None":
-    """The dataset of the element file the engine wrote beside the print (when it wrote
-    one), written to its netCDF file (``run_complete`` 0 for a run that stopped early);
-    None otherwise."""
+def _written_results(deck_path: Path, print_path: Path, output, history: tuple | None) -> "ResultArrays | None":
+    """The results of the element file the engine wrote beside the print (when it wrote
+    one) as numpy arrays, written to its netCDF file (``run_complete`` 0 for a run that
+    stopped early); None otherwise.  ``history``: the plot-data file's (values, column
+    names), already read.  Neither xarray nor pandas is imported."""
     if output is None or output.history_rows <= 0:
         return None
-    from .results import element_path, results_dataset, results_path, write_netcdf
+    from .results import element_path, results_arrays, results_path, write_netcdf
 
     if not element_path(print_path).is_file():
         return None
-    ds = results_dataset(print_path, title=run_title(deck_path))
-    write_netcdf(ds, results_path(print_path))
-    return ds
+    arrays = results_arrays(print_path, title=run_title(deck_path), history=history)
+    write_netcdf(arrays, results_path(print_path))
+    return arrays
 
 
 def _deck_file(deck, overrides, tmp: Path) -> tuple[Path, Path]:
@@ -317,15 +372,16 @@ def _deck_file(deck, overrides, tmp: Path) -> tuple[Path, Path]:
     return target, shown
 
 
-def _written_history(print_path: Path, output) -> "pd.DataFrame | None":
+def _written_history(print_path: Path, output) -> tuple | None:
     """The time history the engine wrote beside the print (every value to its last digit,
-    ES24.16E3), when the run wrote one; None otherwise."""
+    ES24.16E3), when the run wrote one, as (values, column names) without pandas; None
+    otherwise."""
     if output is None or output.history_rows <= 0:
         return None
-    from .timehistory import history_path, read_history_csv
+    from .timehistory import history_path, read_history_values
 
     path = history_path(print_path)
     if not path.exists():
         return None
-    frame, _incomplete = read_history_csv(path)
-    return frame
+    values, columns, _incomplete = read_history_values(path)
+    return values, columns

@@ -17,12 +17,17 @@ import math
 import os
 from pathlib import Path
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from .errors import AdoreInputError
 
-__all__ = ["history_frame", "history_path", "read_history_csv", "history_beside", "INCOMPLETE_PREFIX"]
+if TYPE_CHECKING:
+    import pandas as pd
+
+__all__ = ["history_frame", "history_path", "read_history_csv", "read_history_values", "history_beside",
+           "INCOMPLETE_PREFIX"]
 
 #: First words of the last line of a plot-data file whose run stopped early (the print's
 #: last line starts with ``*** RUN INCOMPLETE``).
@@ -32,6 +37,8 @@ INCOMPLETE_PREFIX = "# RUN INCOMPLETE"
 def history_frame(values, columns) -> pd.DataFrame:
     """The time-history table of an engine history array ``values`` (rows x columns) with
     column names ``columns`` (the first two ``time_s``, ``step``)."""
+    import pandas as pd
+
     values = np.asarray(values, dtype=float)
     columns = list(columns)
     if values.ndim != 2 or values.shape[1] != len(columns) or columns[:2] != ["time_s", "step"]:
@@ -53,6 +60,14 @@ def read_history_csv(path) -> tuple[pd.DataFrame, str]:
     """The plot-data file at ``path``: (time-history table, "" or the reason the run stopped
     early, from its last line ``# RUN INCOMPLETE ...``).  Raises AdoreInputError naming the
     file (and line) when it is missing or is not a plot-data file."""
+    values, columns, incomplete = read_history_values(path)
+    return history_frame(values, columns), incomplete
+
+
+def read_history_values(path) -> tuple[np.ndarray, list[str], str]:
+    """The plot-data file at ``path`` as plain values, without pandas: (array rows x
+    columns, column names, "" or the reason the run stopped early); errors as
+    :func:`read_history_csv`."""
     p = Path(os.fspath(path))
     try:
         lines = p.read_text(encoding="ascii").splitlines()
@@ -75,7 +90,7 @@ def read_history_csv(path) -> tuple[pd.DataFrame, str]:
         except ValueError:
             raise AdoreInputError(f"{p}: line {number}: a value is not a number") from None
     values = np.array(rows, dtype=float).reshape(len(rows), len(columns))
-    return history_frame(values, columns), incomplete
+    return values, columns, incomplete
 
 
 def history_beside(run) -> tuple[pd.DataFrame | None, str]:

@@ -104,6 +104,52 @@ def test_netcdf_reopens(run400):
     np.testing.assert_array_equal(back["time"].values, run400.dataset["time"].values)
 
 
+def test_netcdf_writer_matches_xarrays(run400, tmp_path):
+    """The run's netCDF file, written by scipy's netCDF writer without xarray (issue #29's
+    start-up), against the file xarray's writer gives for the same dataset (the writer
+    before): the same dimensions, global attributes and variables, each with the same
+    dimensions, type, attributes and values; and the same dataset when xarray reopens them."""
+    import xarray as xr
+    from scipy.io import netcdf_file
+
+    reference = tmp_path / "by_xarray.nc"
+    run400.dataset.to_netcdf(reference, engine="scipy", format="NETCDF3_64BIT")
+    with netcdf_file(reference, mmap=False) as a, netcdf_file(run400.results_path, mmap=False) as b:
+        assert b.version_byte == a.version_byte == 2            # netCDF 3, 64-bit offsets
+        assert b.dimensions == a.dimensions and b._attributes == a._attributes
+        assert set(b.variables) == set(a.variables) and len(a.variables) > 50
+        for name, va in a.variables.items():
+            vb = b.variables[name]
+            assert (vb.dimensions, vb.typecode()) == (va.dimensions, va.typecode()), name
+            assert repr(vb._attributes) == repr(va._attributes), name      # the NaN fill value as text
+            np.testing.assert_array_equal(vb.data, va.data, err_msg=name)  # every value, NaN alike
+    with xr.open_dataset(reference, engine="scipy") as a, xr.open_dataset(run400.results_path, engine="scipy") as b:
+        xr.testing.assert_identical(b.load(), a.load())
+    # the writer given the xarray.Dataset itself writes the same bytes as from the run's arrays
+    from pyadore.results import write_netcdf
+
+    again = write_netcdf(run400.dataset, tmp_path / "from_dataset.nc")
+    assert again.read_bytes() == run400.results_path.read_bytes() == reference.read_bytes()
+
+
+def test_run_imports_no_xarray(tmp_path, short_ball_deck):
+    """A run with time steps writes its netCDF file without importing xarray, pandas or dask (issue #29: their first import cost about 2 s); its dataset and time
+    history are built when first asked for."""
+    import subprocess
+    import sys
+
+    code = ("import sys, pyadore\n"
+            "r = pyadore.run(sys.argv[1], out=sys.argv[2], progress=False)\n"
+            "assert r.results_path.is_file() and r.history_path.is_file() and r.arrays.sizes['element'] == 18\n"
+            "heavy = ('xarray', 'pandas', 'dask', 'scipy.io', 'scipy.sparse')\n"
+            "print(' '.join(h for h in heavy if h in sys.modules) or '-')\n"
+            "print(r.dataset.sizes['time'] == len(r.time_history), 'xarray' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code, str(short_ball_deck), str(tmp_path / "s.prt")],
+                         capture_output=True, text=True, check=True).stdout.split("\n")
+    assert out[0] == "-", out
+    assert out[1] == "True True"
+
+
 def test_mean_last_revolution(run400):
     ds = run400.dataset
     mean = run400.mean(last_revolutions=1)

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import json
 import os
-import socket
 import sys
 import time
 from pathlib import Path
@@ -34,6 +33,16 @@ def _guide(deck_text: str) -> str:
         return "outer" if deck.get("7.0", "guide_type[1]") == 1 else "inner"
     except Exception:  # an unreadable deck fails in the run itself, with its own message
         return "inner"
+
+
+def _host() -> str:
+    """This machine's host name (the socket module's gethostname without importing it: a
+    few ms of every worker's start-up; os.uname where there is one)."""
+    if hasattr(os, "uname"):
+        return os.uname().nodename
+    import socket
+
+    return socket.gethostname()
 
 
 def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | None = None) -> dict:
@@ -56,7 +65,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
     start = time.perf_counter()
     out = {"case": case_id, "status": "ok", "error": "", "notes": [], "print_text": None, "results": {},
            "history_text": None, "results_nc": None,
-           "worker": f"{socket.gethostname()}:{os.getpid()}", "tmp_deck": "", "tmp_print": "",
+           "worker": f"{_host()}:{os.getpid()}", "tmp_deck": "", "tmp_print": "",
            "incomplete_text": None, "incomplete_history": None}
     try:
         from ..api import run
@@ -83,7 +92,12 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                 out["notes"] = list(result.notes)
                 # plain tables of the steps: the worker needs no pandas for a run without time steps
                 out["results"] = key_results(read_print(prt, frames=False, echo=False))
-                out["results"].update(mean_results(result.dataset, guide=_guide(deck_text)))
+                # the averages from the run's arrays: no xarray in the worker; the guide race
+                # (a second parse of the deck) only for a run that has results to average
+                if result.arrays is not None:
+                    out["results"].update(mean_results(result.arrays, guide=_guide(deck_text)))
+                else:
+                    out["results"].update(mean_results(None))
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
                 if result.history_path is not None:
                     out["history_text"] = result.history_path.read_text(encoding="utf-8", errors="replace")

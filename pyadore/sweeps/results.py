@@ -33,6 +33,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from ..cage_stability import STABILITY_COLUMNS, cage_stability
 
 __all__ = ["RESULT_COLUMNS", "MEAN_COLUMNS", "key_results", "mean_results"]
@@ -90,27 +92,33 @@ def key_results(print_run) -> dict:
 
 
 def mean_results(dataset, revolutions: float = 1.0, guide: str = "inner") -> dict:
-    """The :data:`MEAN_COLUMNS` of a run's dataset (:attr:`pyadore.Result.dataset`):
-    the cage's stability measures over the second half of the run (cage_stability, about
-    the ``guide`` race: "inner" or "outer", Rec 7.0's first guide type) and
-    time-weighted averages over its last ``revolutions`` shaft revolutions
-    (:func:`pyadore.results.time_mean`); NaN for a run without a dataset or one shorter
-    than that."""
+    """The :data:`MEAN_COLUMNS` of a run's results (:attr:`pyadore.Result.arrays`, or
+    :attr:`pyadore.Result.dataset`): the cage's stability measures over the second half of
+    the run (cage_stability, about the ``guide`` race: "inner" or "outer", Rec 7.0's first
+    guide type) and time-weighted averages over its last ``revolutions`` shaft revolutions
+    (:func:`pyadore.results.time_means`; no xarray imported for arrays); NaN for a run
+    without results or one shorter than that."""
     out = {c: math.nan for c in MEAN_COLUMNS}
     if dataset is None:
         return out
     out.update(cage_stability(dataset, guide=guide))
     from ..errors import AdoreInputError
-    from ..results import time_mean
+    from ..results import time_means
 
     try:
-        m = time_mean(dataset, last_revolutions=revolutions)
+        m = time_means(dataset, last_revolutions=revolutions)
     except AdoreInputError:
         return out
-    out["mean_total_power_loss_W"] = float(m["total_power_loss_W"])
-    out["mean_max_contact_load_N"] = float(m["contact_load_N"].max())
-    shaft = float(m["inner_race_angular_velocity_x_rad_s"] - m["outer_race_angular_velocity_x_rad_s"])
-    cage = float(m["cage_angular_velocity_x_rad_s"] - m["outer_race_angular_velocity_x_rad_s"])
+
+    def value(name):
+        return m[name].to_numpy()
+
+    out["mean_total_power_loss_W"] = float(value("total_power_loss_W"))
+    loads = value("contact_load_N")
+    # the largest average load, NaN ones (contacts never loaded in the window) left out
+    out["mean_max_contact_load_N"] = float(np.nanmax(loads)) if np.isfinite(loads).any() else math.nan
+    shaft = float(value("inner_race_angular_velocity_x_rad_s") - value("outer_race_angular_velocity_x_rad_s"))
+    cage = float(value("cage_angular_velocity_x_rad_s") - value("outer_race_angular_velocity_x_rad_s"))
     out["mean_cage_speed_ratio"] = cage / shaft if shaft != 0.0 else math.nan
     out["mean_revolutions"] = float(m.attrs["revolutions"])
     return out

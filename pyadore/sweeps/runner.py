@@ -227,8 +227,7 @@ class _Sweep:
         counts: dict[str, int] = {}
         for e in rows:
             counts[e["status"]] = counts.get(e["status"], 0) + 1
-        doc = {"sweep": self.definition, "updated_at": _now(), "counts": counts, "cases": rows}
-        store.write_atomic(self.root / store.MANIFEST, json.dumps(doc, indent=1))
+        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, rows))
         if self._events:
             store.append_event(self.root, "\n".join(self._events))
             self._events = []
@@ -273,6 +272,16 @@ class _Sweep:
         # rewritten from the sweep's definition whenever the case runs: no fsync needed
         store.write_atomic(deck_file, text, durable=False)
         return text
+
+
+def _manifest_text(definition: dict, updated_at: str, counts: dict, rows: list[dict]) -> str:
+    """manifest.json's text: the sweep's definition, when, the counts by status, then the
+    cases one a line.  Each line is encoded by json's C encoder (an indented dump takes the
+    pure-Python one, five times slower: the manifest is rewritten while the cases run, by
+    the client that shares the cores with the workers; docs/sweeps.md, "Scaling")."""
+    head = json.dumps({"sweep": definition, "updated_at": updated_at, "counts": counts}, indent=1)
+    cases = ",\n  ".join(json.dumps(row) for row in rows)
+    return f'{head[:-2]},\n "cases": [\n  {cases}\n ]\n}}' if rows else f'{head[:-2]},\n "cases": []\n}}'
 
 
 def _progress(total: int, enabled: bool | None):

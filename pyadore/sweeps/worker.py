@@ -19,15 +19,17 @@ import sys
 
 
 def warm() -> None:
-    """Import now what every case needs - the engine extension, numpy, the print reader -
-    so that the worker's first case costs what the others do: the worker boots while the
-    client prepares the cases, and stays warm for the whole sweep.  Not pandas: a case
-    reads its print's key results into plain tables (read_print(frames=False)), and only a
-    run with time steps builds its dataset (xarray, pandas), imported by its first case.
-    pandas was 60 % of the boot (about 0.6 s of CPU), a serial cost that does not shrink
+    """Import now what every case needs - the engine extension, numpy, the deck checker,
+    the print reader - so that the worker's first case costs what the others do: the
+    worker boots while the client prepares the cases, and stays warm for the whole sweep.
+    Neither pandas nor xarray: a case reads its print's key results into plain tables
+    (read_print(frames=False)), and a run with time steps writes its netCDF file and takes
+    its averages from numpy arrays (:attr:`pyadore.Result.arrays`).  pandas was 60 % of the
+    boot (about 0.6 s of CPU), xarray with dask about 2 s: serial costs that do not shrink
     with more workers (docs/sweeps.md, "Scaling")."""
     from .. import _core
     from ..api import run  # noqa: F401
+    from ..deck import check_deck  # noqa: F401
     from ..printout import read_print  # noqa: F401
     from .results import key_results  # noqa: F401
 
