@@ -145,7 +145,10 @@ class _Worker:
     restarted after a crash; :meth:`serve` feeds it one sweep's jobs in a thread."""
 
     def __init__(self) -> None:
+        import threading
+
         self.proc = None
+        self.interrupted = threading.Event()  # set by kill(): serve() ends without a report
 
     def start(self) -> None:
         """Start the process unless it runs (it boots while the client prepares cases)."""
@@ -153,20 +156,25 @@ class _Worker:
             self.proc = _start_process()
 
     def serve(self, jobs, results) -> None:
-        """Run jobs from the queue ``jobs`` until a None; each result, then a None, to ``results``."""
+        """Run jobs from the queue ``jobs`` until a None; each result, then a None, to ``results``.
+        After :meth:`kill` (the sweep was interrupted) it ends quietly: the process it was
+        waiting on is gone on purpose, not a crash to report, and none is started again."""
         while True:
             job = jobs.get()
-            if job is None:
+            if job is None or self.interrupted.is_set():
                 break
             self.start()
+            proc = self.proc  # kill() may set self.proc to None from the client's thread
             try:
-                self.proc.stdin.write(json.dumps(list(job)) + "\n")
-                self.proc.stdin.flush()
-                line = self.proc.stdout.readline()
-            except (OSError, ValueError):
+                proc.stdin.write(json.dumps(list(job)) + "\n")
+                proc.stdin.flush()
+                line = proc.stdout.readline()
+            except (OSError, ValueError, AttributeError):
                 line = ""
+            if self.interrupted.is_set():
+                break
             if not line:  # the process died on this job: report it, go on with a fresh one
-                code = self.proc.poll()
+                code = proc.poll()
                 results.put(_died(job[0], f"the worker process died while running this case (exit status "
                                           f"{code}): a crash of the engine"))
                 self.stop()
@@ -190,14 +198,15 @@ class _Worker:
 
     def kill(self) -> None:
         """End the worker now (the sweep was interrupted)."""
-        if self.proc is None:
+        self.interrupted.set()
+        proc, self.proc = self.proc, None
+        if proc is None:
             return
-        self.proc.kill()
+        proc.kill()
         try:
-            self.proc.wait(timeout=5)
+            proc.wait(timeout=5)
         except Exception:
             pass
-        self.proc = None
 
 
 class WorkerPool:
@@ -250,6 +259,7 @@ def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None],
             if not used:
                 used = pool._workers[:max(1, min(pool.size, count))]
                 for w in used:
+                    w.interrupted.clear()  # a pool's worker serves again after an interrupted sweep
                     w.start()
                     threading.Thread(target=w.serve, args=(pending, results), daemon=True).start()
             pending.put(job)
