@@ -11,7 +11,7 @@ module adore_bearings_ball
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error
-   use adore_core_strings, only: itoa, upper
+   use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, cage_option_free, &
                                     dof_constraints_t
@@ -19,10 +19,10 @@ module adore_bearings_ball
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
    use adore_thermal_distortion, only: distorted_bearing
    use adore_thermal_network, only: thermal_heat_t, FIELD_NETWORK
-   use adore_core_linalg, only: solve_dense
    use adore_bearings_ball_thermal, only: ball_thermal_t, new_ball_thermal, thermal_mode_of, ball_heat_rates, &
                                           ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF, THERMAL_GEOMETRY
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
+   use adore_bearings_thermal_run, only: hold_race_load, thermal_run_text
    use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
                                       BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE
    use adore_tribology_wear, only: archard_wear_rate
@@ -238,28 +238,13 @@ contains
       end associate
    end subroutine ball_run_note
 
-   !> The thermal model of the run in one line: the print listing's (listing: indented,
-   !> upper case) or the run note's.
+   !> The thermal model of the run in one line (thermal_run_text): the print listing's
+   !> (listing: indented, upper case) or the run note's.
    subroutine thermal_text(self, listing, text)
       class(ball_kind_t), intent(in) :: self
       logical, intent(in) :: listing
       character(len=:), allocatable, intent(out) :: text
-      character(len=12) :: dt, t0
-      if (self%thermal%mode == THERMAL_OFF) then
-         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
-      else
-         write (dt, "(es10.3)") self%thermal%interval
-         write (t0, "(es10.3)") self%thermal%geometry_start
-         text = "thermal model on: heat averaged over "//trim(adjustl(dt))//" s, temperatures updated (Rec 2.5)"
-         if (self%thermal%mode == THERMAL_GEOMETRY) then
-            text = text//", geometry updated from "//trim(adjustl(t0))//" s with the applied load held"
-         else
-            text = text//", geometry held"
-         end if
-      end if
-      if (listing) then
-         text = "  "//upper(text)
-      end if
+      text = thermal_run_text(self%thermal, listing)
    end subroutine thermal_text
 
    integer function ball_n_values(self)
@@ -553,106 +538,39 @@ contains
       end if
    end subroutine ball_on_event
 
-   !> The load-holding constraint of a geometry update (report 2.10 step 11, 5.3 "an
-   !> equilibrium constraint is applied to move the races and maintain the thrust and radial
-   !> loads", 5.5 "a quasi-static constraint"): the inner race's free translations in y (state
-   !> at tau = t) moved, the balls and every velocity held, until the net force on the race
-   !> (its contacts and the applied load) is below 1e-6 of the applied load.  Newton with a
-   !> forward-difference Jacobian (step 1e-9 m) and step halving until the net force
-   !> decreases (a barely touching Hertz contact is nearly without stiffness: a full step
-   !> would overshoot; a state outside the contact models counts as no decrease); a race
-   !> clear of every ball (no stiffness) moves along the net force - then the applied load -
-   !> by 1 um, doubled at each such step.  The outer race is fixed in the housing.
-   !> self%hold_residual: the worst final |net force| / |applied load|.  Engine error when the
-   !> evaluation at the start fails or the iteration does not converge in 100 steps.
+   !> The load-holding constraint of a geometry update (hold_race_load): the inner race's
+   !> free translations in y (state at tau = t) moved, the balls and every velocity held,
+   !> until the net force on the race (its contacts and the applied load) is below 1e-6 of
+   !> the applied load.  The outer race is fixed in the housing.  self%hold_residual: the
+   !> worst final |net force| / |applied load|.
    subroutine hold_applied_load(self, t, y, error)
       class(ball_kind_t), intent(inout) :: self
       real(wp), intent(in) :: t
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      real(wp), parameter :: h = 1.0e-9_wp
-      real(wp) :: dydt(size(y)), f(3), f1(3), jac(3, 3), dx(3), scale, y0, clear, lambda, x0(3)
-      logical :: free(3), ok, stiff
-      integer :: i0, iter, j, m, idx(3), k
-      i0 = BODY_SIZE*(self%bearing%n_elements + 2)          ! the inner race's block
-      free = self%condition%constraints%inner%translation
-      m = count(free)
-      if (m == 0) return
-      idx(1:m) = pack([1, 2, 3], free)
-      scale = max(norm2(self%condition%force), tiny(1.0_wp))
-      clear = 1.0e-6_wp
-      call net_force(f, ok)
-      if (.not. ok) then
-         call engine_error(error, "load-holding constraint: the equations of motion failed: "// &
-                           self%eom%failure_reason)
-         return
+      real(wp) :: dydt(size(y))
+      call hold_race_load(net_force, y, BODY_SIZE*(self%bearing%n_elements + 2), &
+                          self%condition%constraints%inner%translation, &
+                          max(norm2(self%condition%force), tiny(1.0_wp)), self%hold_initial, self%hold_residual, &
+                          self%hold_solves, error)
+      if (allocated(error) .and. allocated(self%eom%failure_reason)) then
+         if (index(error%message, "equations of motion failed") > 0) &
+            error%message = error%message//": "//self%eom%failure_reason
       end if
-      self%hold_initial = max(self%hold_initial, norm2(f(idx(1:m)))/scale)
-      do iter = 1, 100
-         if (norm2(f(idx(1:m))) <= 1.0e-6_wp*scale) exit
-         if (iter == 100) then
-            call engine_error(error, "load-holding constraint: no equilibrium of the inner race after 100 Newton "// &
-                              "steps (net force "//show(norm2(f))//" N)")
-            return
-         end if
-         stiff = .true.
-         do j = 1, m
-            y0 = y(i0 + idx(j))
-            y(i0 + idx(j)) = y0 + h
-            call net_force(f1, ok)
-            y(i0 + idx(j)) = y0
-            stiff = stiff .and. ok
-            if (ok) jac(1:m, j) = (f1(idx(1:m)) - f(idx(1:m)))/h
-         end do
-         if (stiff) call solve_dense(m, jac(1:m, 1:m), -f(idx(1:m)), dx(1:m), stiff)
-         x0(1:m) = y(i0 + idx(1:m))
-         if (.not. stiff) then          ! clear of every ball: along the net force
-            y(i0 + idx(1:m)) = x0(1:m) + clear*f(idx(1:m))/norm2(f(idx(1:m)))
-            clear = 2.0_wp*clear
-            call net_force(f1, ok)
-            if (ok) f = f1
-            if (.not. ok) y(i0 + idx(1:m)) = x0(1:m)
-            cycle
-         end if
-         clear = 1.0e-6_wp
-         lambda = 1.0_wp
-         do k = 1, 40                   ! halve the step until the net force decreases
-            y(i0 + idx(1:m)) = x0(1:m) + lambda*dx(1:m)
-            call net_force(f1, ok)
-            if (ok) then
-               if (norm2(f1(idx(1:m))) < norm2(f(idx(1:m)))) exit
-            end if
-            lambda = 0.5_wp*lambda
-         end do
-         if (.not. ok) then
-            y(i0 + idx(1:m)) = x0(1:m)
-            call engine_error(error, "load-holding constraint: no state of the inner race along the Newton step "// &
-                              "is within the contact models (net force "//show(norm2(f))//" N)")
-            return
-         end if
-         f = f1
-      end do
-      self%hold_solves = self%hold_solves + 1
-      self%hold_residual = max(self%hold_residual, norm2(f(idx(1:m)))/scale)
    contains
 
-      !> The net force (N) on the inner race at (t, y): its mass times its acceleration;
+      !> The net force (N) on the inner race at (t, yy): its mass times its acceleration;
       !> ok false when the equations of motion fail there.
-      subroutine net_force(force, ok)
+      subroutine net_force(yy, force, ok)
+         real(wp), intent(in) :: yy(:)
          real(wp), intent(out) :: force(3)
          logical, intent(out) :: ok
          integer :: flag
-         call self%eom%eval(t, y, dydt, flag)
+         call self%eom%eval(t, yy, dydt, flag)
          ok = flag == DERIV_OK
          force = 0.0_wp
          if (ok) force = self%bearing%mass(BODY_INNER)*self%eom%rates%races(RACE_INNER)%velocity
       end subroutine net_force
-
-      function show(x) result(text)
-         real(wp), intent(in) :: x
-         character(len=16) :: text
-         write (text, "(es10.3)") x
-      end function show
 
    end subroutine hold_applied_load
 

@@ -16,6 +16,8 @@ module adore_output_step_report
    use adore_output_print_tables, only: write_step
    use adore_start_ball_step0, only: ball_step0_t
    use adore_start_roller_step0, only: roller_step0_t
+   use adore_thermal_network, only: thermal_field_t
+   use adore_thermal_drag, only: element_fluid_loss_t
    use adore_cage_step0, only: cage_step0_t
    implicit none
    private
@@ -141,13 +143,20 @@ contains
    !> loads per unit length in N/m for both races (the report's outer column appears to be
    !> scaled by the length scale D/2; pyadore prints N/m as the heading says - a known
    !> difference, see tests/test_run_golden.py).
-   subroutine write_roller_step0(unit, step, header, b, s)
+   !> With the thermal model on (a roller run's printed steps; docs/thermal.md, "Roller runs"):
+   !> fluid(n), each roller's drag, churning moment and their loss (added to the total power
+   !> loss, their share of it the Churning Loss Fraction), and field, the last solved
+   !> temperature field (each roller's contact node, bulk temperature and HTC, the exit fluid,
+   !> housing and shaft temperatures, the races' and cage's bulk temperatures).
+   subroutine write_roller_step0(unit, step, header, b, s, fluid, field)
       integer, intent(in) :: unit
       integer, intent(in) :: step           !< step number (0: the quasi-static start)
       !> step header: tau, time (s), outer and inner race rotations (rev); all 0 at step 0
       real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
       type(roller_step0_t), intent(in) :: s
+      type(element_fluid_loss_t), intent(in), optional :: fluid(:)
+      type(thermal_field_t), intent(in), optional :: field
 
       real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
@@ -240,6 +249,26 @@ contains
       perf(4) = s%mounting%inner_fit
       perf(5) = s%mounting%clearance
       perf(6) = s%power_loss             ! energy balance; NaN while a cage contact is not modelled
+      if (present(fluid)) then                        ! the thermal model's drag and churning
+         traction(:, 9) = fluid%drag
+         traction(:, 10) = fluid%moment
+         traction(:, 11) = fluid%loss
+         perf(6) = perf(6) + sum(fluid%loss)
+         perf(7) = 0.0_wp
+         if (perf(6) > 0.0_wp) perf(7) = sum(fluid%loss)/perf(6)
+      end if
+      if (present(field)) then                        ! the thermal model's last field
+         thermal(:, 8) = field%contact_outer
+         thermal(:, 9) = field%contact_inner
+         thermal(:, 10) = field%element_bulk
+         thermal(:, 11) = field%htc
+         acc(1, 7) = field%temperature(TEMP_CAGE)
+         acc(2, 7) = field%temperature(TEMP_OUTER)
+         acc(3, 7) = field%temperature(TEMP_INNER)
+         perf(8) = field%exit_temperature
+         perf(9:11) = field%housing
+         perf(12:14) = field%shaft
+      end if
       summary = nan
       summary(1, 1:3) = header(2:4)                   ! time, race rotations
       summary(1, 5) = s%power_loss
