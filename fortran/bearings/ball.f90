@@ -18,11 +18,11 @@ module adore_bearings_ball
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
    use adore_thermal_distortion, only: distorted_bearing
-   use adore_thermal_network, only: thermal_heat_t, FIELD_NETWORK
-   use adore_bearings_ball_thermal, only: ball_thermal_t, new_ball_thermal, thermal_mode_of, ball_heat_rates, &
+   use adore_thermal_network, only: thermal_heat_t
+   use adore_bearings_ball_thermal, only: ball_thermal_t, ball_heat_rates, &
                                           ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF, THERMAL_GEOMETRY
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
-   use adore_bearings_thermal_run, only: hold_race_load, thermal_run_text
+   use adore_bearings_thermal_run, only: hold_race_load, thermal_run_text, thermal_run_for
    use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
                                       BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE
    use adore_tribology_wear, only: archard_wear_rate
@@ -163,17 +163,9 @@ contains
       self%clearance = guide_clearance(self%bearing, self%step0%geometry, self%eom%state%temperature)
       ! the thermal model (docs/thermal.md, "The wiring"): an event at the end of every
       ! averaging interval
-      call thermal_mode_of(self%options%thermal, self%bearing, method, error)
+      self%thermal%thermal_run_t = thermal_run_for(self%bearing, self%options, error)
       if (allocated(error)) return
-      self%thermal = new_ball_thermal(self%bearing, method)
-      ! the march is ADORE 5.0's: its shaft bulk temperature as ADORE prints it (docs/thermal.md)
-      self%thermal%options%shaft_bulk_as_printed = .true.
-      if (self%options%thermal_field == "network") then
-         self%thermal%options%field_model = FIELD_NETWORK
-         self%thermal%options%shaft_bulk_as_printed = .false.
-      end if
-      self%thermal%options%reference_htc = self%options%housing_htc
-      if (method /= THERMAL_OFF) then
+      if (self%thermal%mode /= THERMAL_OFF) then
          self%event_start = self%thermal%interval
          self%event_period = self%thermal%interval
          ! ADORE 5.0's traction does not follow the computed temperatures (report 5.3: "the

@@ -15,7 +15,7 @@ module adore_bearings_roller
                                     body_dof_t, cage_option_free
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_thermal_distortion, only: distortion_t, distorted_bearing, thermal_distortion
-   use adore_thermal_network, only: thermal_heat_t, FIELD_NETWORK
+   use adore_thermal_network, only: thermal_heat_t
    use adore_quasistatic_models, only: roller_qs_model
    use adore_forces_ball_bearing, only: guide_land_pairs
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
@@ -23,8 +23,8 @@ module adore_bearings_roller
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, R_PHI, &
                                            R_PHIDOT, CAGE_OFFSET, RACE_OFFSET
    use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
-   use adore_bearings_thermal_run, only: thermal_run_t, new_thermal_run, thermal_mode_of, thermal_accumulate, &
-                                         thermal_run_text, hold_race_load, THERMAL_OFF, THERMAL_GEOMETRY
+   use adore_bearings_thermal_run, only: thermal_run_t, thermal_run_for, thermal_accumulate, thermal_run_text, &
+                                         hold_race_load, THERMAL_OFF, THERMAL_GEOMETRY
    use adore_bearings_roller_thermal, only: roller_heat_rates, roller_thermal_update
    use adore_output_step_report, only: write_roller_step0
    use adore_output_run_history, only: run_history_t, add_history_column, set_history_value
@@ -210,16 +210,9 @@ contains
       ! averaging interval; the field model and the housing film as for the ball; the roller's
       ! traction law (the deck's curve or table) has no temperature in it, so the run option
       ! thermal_traction changes nothing here
-      call thermal_mode_of(self%options%thermal, self%bearing, method, error)
+      self%thermal = thermal_run_for(self%bearing, self%options, error)
       if (allocated(error)) return
-      self%thermal = new_thermal_run(self%bearing, method)
-      self%thermal%options%shaft_bulk_as_printed = .true.
-      if (self%options%thermal_field == "network") then
-         self%thermal%options%field_model = FIELD_NETWORK
-         self%thermal%options%shaft_bulk_as_printed = .false.
-      end if
-      self%thermal%options%reference_htc = self%options%housing_htc
-      if (method /= THERMAL_OFF) then
+      if (self%thermal%mode /= THERMAL_OFF) then
          self%event_start = self%thermal%interval
          self%event_period = self%thermal%interval
       end if

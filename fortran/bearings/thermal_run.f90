@@ -22,14 +22,15 @@ module adore_bearings_thermal_run
    use adore_core_strings, only: upper
    use adore_core_linalg, only: solve_dense
    use adore_model_bearing, only: bearing_t
+   use adore_model_run_options, only: run_options_t
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, default_thermal_options, &
-                                    new_thermal_heat
+                                    new_thermal_heat, FIELD_NETWORK
    use adore_thermal_march, only: solve_thermal_field
    use adore_thermal_drag, only: element_fluid_loss_t
    implicit none
    private
 
-   public :: thermal_run_t, new_thermal_run, thermal_mode_of, thermal_accumulate, thermal_update, heat_total
+   public :: thermal_run_t, new_thermal_run, thermal_run_for, thermal_mode_of, thermal_accumulate, thermal_update, heat_total
    public :: location_weights, heat_by_location, at_locations, hold_race_load, net_force_i, thermal_run_text
 
    !> The thermal modes of a run: off (bulk temperatures fixed at Rec 2.7's), temperatures
@@ -119,6 +120,28 @@ contains
       th%last = new_thermal_heat(b%n_elements)
       allocate (th%fluid(b%n_elements), th%update_times(0))
    end function new_thermal_run
+
+   !> The thermal model of a run of bearing b with run options opts (docs/thermal.md, "The
+   !> wiring"): the mode of option thermal (thermal_mode_of), the field model of option
+   !> thermal_field (the march, ADORE 5.0's, with its shaft bulk temperature as ADORE prints
+   !> it; or the network) and the housing film of option housing_htc.  Input error as
+   !> thermal_mode_of.
+   function thermal_run_for(b, opts, error) result(th)
+      type(bearing_t), intent(in) :: b
+      type(run_options_t), intent(in) :: opts
+      type(error_type), allocatable, intent(out) :: error
+      type(thermal_run_t) :: th
+      integer :: mode
+      call thermal_mode_of(opts%thermal, b, mode, error)
+      if (allocated(error)) return
+      th = new_thermal_run(b, mode)
+      th%options%shaft_bulk_as_printed = .true.
+      if (opts%thermal_field == "network") then
+         th%options%field_model = FIELD_NETWORK
+         th%options%shaft_bulk_as_printed = .false.
+      end if
+      th%options%reference_htc = opts%housing_htc
+   end function thermal_run_for
 
    !> The two space-fixed locations either side of azimuth phi (rad) among n, location j at
    !> 2 pi (j - 1) / n, and the linear weights w (sum 1; all on j(1) at its own azimuth).

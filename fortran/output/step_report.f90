@@ -22,7 +22,7 @@ module adore_output_step_report
    implicit none
    private
 
-   public :: write_ball_step0, write_roller_step0, cage_tables, race_rows, speed_ratios
+   public :: thermal_columns, write_ball_step0, write_roller_step0, cage_tables, race_rows, speed_ratios
 
 
 contains
@@ -249,6 +249,33 @@ contains
       perf(4) = s%mounting%inner_fit
       perf(5) = s%mounting%clearance
       perf(6) = s%power_loss             ! energy balance; NaN while a cage contact is not modelled
+      call thermal_columns(traction, thermal, perf, fluid, field)
+      if (present(field)) then                        ! the races' and cage's bulk temperatures
+         acc(1, 7) = field%temperature(TEMP_CAGE)
+         acc(2, 7) = field%temperature(TEMP_OUTER)
+         acc(3, 7) = field%temperature(TEMP_INNER)
+      end if
+      summary = nan
+      summary(1, 1:3) = header(2:4)                   ! time, race rotations
+      summary(1, 5) = s%power_loss
+      summary(1, 4) = s%basic_life_hours   ! no modified life for line contacts: the basic one, as printed
+      summary(1, 6:8) = speed_ratios(b, sum(s%equilibrium%orbital_speed)/n, s%cage)
+      summary(1, 9) = bodies(1, 11)      ! cage wear: NaN while a cage contact is not modelled
+      call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
+                      thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
+                      land_no, land_code, race_cage, bodies, loads, acc, perf, [step], summary)
+   end subroutine write_roller_step0
+
+   !> The thermal model's columns of a printed step (docs/thermal.md, "The wiring"), where
+   !> given: fluid(n), each rolling element's drag, churning moment and their loss in
+   !> section 1 (traction columns 9-11), added to the total power loss perf(6), their share of
+   !> it the Churning Loss Fraction perf(7); field, the last solved temperature field: each
+   !> element's contact node temperatures, bulk temperature and HTC (thermal columns 8-11),
+   !> the exit fluid perf(8), housing perf(9:11) and shaft perf(12:14) temperatures (K).
+   subroutine thermal_columns(traction, thermal, perf, fluid, field)
+      real(wp), intent(inout) :: traction(:, :), thermal(:, :), perf(:)
+      type(element_fluid_loss_t), intent(in), optional :: fluid(:)
+      type(thermal_field_t), intent(in), optional :: field
       if (present(fluid)) then                        ! the thermal model's drag and churning
          traction(:, 9) = fluid%drag
          traction(:, 10) = fluid%moment
@@ -262,23 +289,11 @@ contains
          thermal(:, 9) = field%contact_inner
          thermal(:, 10) = field%element_bulk
          thermal(:, 11) = field%htc
-         acc(1, 7) = field%temperature(TEMP_CAGE)
-         acc(2, 7) = field%temperature(TEMP_OUTER)
-         acc(3, 7) = field%temperature(TEMP_INNER)
          perf(8) = field%exit_temperature
          perf(9:11) = field%housing
          perf(12:14) = field%shaft
       end if
-      summary = nan
-      summary(1, 1:3) = header(2:4)                   ! time, race rotations
-      summary(1, 5) = s%power_loss
-      summary(1, 4) = s%basic_life_hours   ! no modified life for line contacts: the basic one, as printed
-      summary(1, 6:8) = speed_ratios(b, sum(s%equilibrium%orbital_speed)/n, s%cage)
-      summary(1, 9) = bodies(1, 11)      ! cage wear: NaN while a cage contact is not modelled
-      call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
-                      thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
-                      land_no, land_code, race_cage, bodies, loads, acc, perf, [step], summary)
-   end subroutine write_roller_step0
+   end subroutine thermal_columns
 
    !> Section 2 cage rows from the step-0 cage c: RE/cage rows (one per ball, or end 1 and
    !> end 2 of each roller, in that order), race/cage rows (one per guide land; rows beyond
