@@ -20,9 +20,9 @@ module adore_bearings_ball
    use adore_thermal_distortion, only: distorted_bearing
    use adore_thermal_network, only: thermal_heat_t
    use adore_bearings_ball_thermal, only: ball_thermal_t, ball_heat_rates, &
-                                          ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF, THERMAL_GEOMETRY
+                                          ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
-   use adore_bearings_thermal_run, only: hold_race_load, thermal_run_text, thermal_run_for
+   use adore_bearings_thermal_run, only: hold_race_load, thermal_run_text, thermal_run_for, thermal_condition
    use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
                                       BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE
    use adore_tribology_wear, only: archard_wear_rate
@@ -514,12 +514,7 @@ contains
       if (self%thermal%mode == THERMAL_OFF) return
       call ball_thermal_update(self%thermal, self%bearing, self%eom%state, time, error)
       if (allocated(error)) return
-      c = self%condition
-      c%temperature = self%thermal%field%temperature
-      ! the start time with a relative allowance for the event times' round-off
-      geometry = self%thermal%mode == THERMAL_GEOMETRY .and. &
-                 time >= self%thermal%geometry_start*(1.0_wp - 1.0e-9_wp)
-      if (geometry) c%geometry_temperature = self%thermal%field%temperature
+      c = thermal_condition(self%thermal, self%condition, time, geometry)
       call self%set_condition(c, it, y, error)
       if (allocated(error)) return
       if (geometry) then

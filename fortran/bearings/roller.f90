@@ -24,7 +24,7 @@ module adore_bearings_roller
                                            R_PHIDOT, CAGE_OFFSET, RACE_OFFSET
    use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
    use adore_bearings_thermal_run, only: thermal_run_t, thermal_run_for, thermal_accumulate, thermal_run_text, &
-                                         hold_race_load, THERMAL_OFF, THERMAL_GEOMETRY
+                                         thermal_condition, hold_race_load, THERMAL_OFF
    use adore_bearings_roller_thermal, only: roller_heat_rates, roller_thermal_update
    use adore_output_step_report, only: write_roller_step0
    use adore_output_run_history, only: run_history_t, add_history_column, set_history_value
@@ -412,12 +412,7 @@ contains
       if (self%thermal%mode == THERMAL_OFF) return
       call roller_thermal_update(self%thermal, self%bearing, self%eom, y, time, error)
       if (allocated(error)) return
-      c = self%condition
-      c%temperature = self%thermal%field%temperature
-      ! the start time with a relative allowance for the event times' round-off
-      geometry = self%thermal%mode == THERMAL_GEOMETRY .and. &
-                 time >= self%thermal%geometry_start*(1.0_wp - 1.0e-9_wp)
-      if (geometry) c%geometry_temperature = self%thermal%field%temperature
+      c = thermal_condition(self%thermal, self%condition, time, geometry)
       if (geometry) self%thermal%geometry_updates = self%thermal%geometry_updates + 1
       call self%set_condition(c, it, y, error)
       if (allocated(error)) return

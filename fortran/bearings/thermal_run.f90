@@ -23,6 +23,7 @@ module adore_bearings_thermal_run
    use adore_core_linalg, only: solve_dense
    use adore_model_bearing, only: bearing_t
    use adore_model_run_options, only: run_options_t
+   use adore_model_condition, only: operating_condition_t
    use adore_thermal_network, only: thermal_heat_t, thermal_options_t, thermal_field_t, default_thermal_options, &
                                     new_thermal_heat, FIELD_NETWORK
    use adore_thermal_march, only: solve_thermal_field
@@ -30,7 +31,8 @@ module adore_bearings_thermal_run
    implicit none
    private
 
-   public :: thermal_run_t, new_thermal_run, thermal_run_for, thermal_mode_of, thermal_accumulate, thermal_update, heat_total
+   public :: thermal_run_t, new_thermal_run, thermal_run_for, thermal_condition, thermal_mode_of, thermal_accumulate
+   public :: thermal_update, heat_total
    public :: location_weights, heat_by_location, at_locations, hold_race_load, net_force_i, thermal_run_text
 
    !> The thermal modes of a run: off (bulk temperatures fixed at Rec 2.7's), temperatures
@@ -281,6 +283,22 @@ contains
       th%integral = new_thermal_heat(b%n_elements)
       th%elapsed = 0.0_wp
    end subroutine thermal_update
+
+   !> The operating condition after an update at time `time` (s) of the run whose condition
+   !> was c0: the bulk temperatures the last field's and, in THERMAL_GEOMETRY mode from the
+   !> geometry start time on (a relative allowance of 1e-9 for the event times' round-off),
+   !> the geometry's too (geometry: whether it is).
+   function thermal_condition(th, c0, time, geometry) result(c)
+      class(thermal_run_t), intent(in) :: th
+      type(operating_condition_t), intent(in) :: c0
+      real(wp), intent(in) :: time
+      logical, intent(out) :: geometry
+      type(operating_condition_t) :: c
+      c = c0
+      c%temperature = th%field%temperature
+      geometry = th%mode == THERMAL_GEOMETRY .and. time >= th%geometry_start*(1.0_wp - 1.0e-9_wp)
+      if (geometry) c%geometry_temperature = th%field%temperature
+   end function thermal_condition
 
    !> The thermal model of a run in one line: the print listing's (listing: indented, upper
    !> case) or the run note's.
