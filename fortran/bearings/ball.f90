@@ -236,7 +236,7 @@ contains
       class(ball_kind_t), intent(in) :: self
       logical, intent(in) :: listing
       character(len=:), allocatable, intent(out) :: text
-      text = thermal_run_text(self%thermal, listing)
+      call thermal_run_text(self%thermal, listing, text)
    end subroutine thermal_text
 
    integer function ball_n_values(self)

@@ -106,7 +106,7 @@ contains
       character(len=:), allocatable, intent(out) :: text
       text = ""
       if (n_steps < 1) return
-      text = thermal_run_text(self%thermal, .false.)
+      call thermal_run_text(self%thermal, .false., text)
       if (self%thermal%mode /= THERMAL_OFF) text = text//" (roller runs: docs/thermal.md, Roller runs)"
       if (self%eom%cage_free) then
          text = text//"; cage free in the radial plane and about its axis (axial motion and tilt suppressed, "// &
@@ -137,7 +137,8 @@ contains
       character(len=*), parameter :: lf = new_line("a")
       text = ""
       if (n_steps < 1) return
-      text = thermal_run_text(self%thermal, .true.)//lf
+      call thermal_run_text(self%thermal, .true., text)
+      text = text//lf
       if (self%eom%cage_free) then
          text = text//"  CAGE FREE IN THE RADIAL PLANE AND ABOUT ITS AXIS, ON ITS POCKETS AND GUIDE LANDS "// &
                 "(AXIAL MOTION AND TILT SUPPRESSED, REPORT 4.4.6)"//lf

@@ -301,11 +301,12 @@ contains
    end function thermal_condition
 
    !> The thermal model of a run in one line: the print listing's (listing: indented, upper
-   !> case) or the run note's.
-   function thermal_run_text(th, listing) result(text)
+   !> case) or the run note's (a subroutine: a deferred-length function result would be
+   !> static storage, fortran/core/strings.f90).
+   subroutine thermal_run_text(th, listing, text)
       class(thermal_run_t), intent(in) :: th
       logical, intent(in) :: listing
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       character(len=12) :: dt, t0
       if (th%mode == THERMAL_OFF) then
          text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
@@ -322,7 +323,7 @@ contains
       if (listing) then
          text = "  "//upper(text)
       end if
-   end function thermal_run_text
+   end subroutine thermal_run_text
 
    !> The load-holding constraint of a geometry update (report 2.10 step 11, 5.3 "an
    !> equilibrium constraint is applied to move the races and maintain the thrust and radial
