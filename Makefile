@@ -20,7 +20,7 @@ VPATH_ENV := PATH="$(CURDIR)/$(VENV)/bin:$$PATH"
 # the run loop's bookkeeping (time averages, time history rows; issue #20)
 ENGINE_TESTS += test_run_loop
 # the thermal model's physics modules (issue #27)
-ENGINE_TESTS += test_thermal
+ENGINE_TESTS += test_thermal test_thermal_transient
 # the roller bearing's dynamics (issue #26)
 ENGINE_TESTS += test_roller_dynamics
 

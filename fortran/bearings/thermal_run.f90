@@ -28,6 +28,7 @@ module adore_bearings_thermal_run
                                     new_thermal_heat, FIELD_NETWORK
    use adore_thermal_march, only: solve_thermal_field
    use adore_thermal_drag, only: element_fluid_loss_t
+   use adore_thermal_transient, only: thermal_transient_t, new_thermal_transient, thermal_transient_step
    implicit none
    private
 
@@ -65,6 +66,10 @@ module adore_bearings_thermal_run
       integer :: geometry_updates = 0        !< geometry re-mounted
       !> worst relative heat balance |generated - (coolant + reference + bore)| / generated
       real(wp) :: balance = 0.0_wp
+      !> thermal transients with lumped heat capacities (run option thermal_transient; not
+      !> ADORE 5.0): each update relaxes the bodies toward the steady field (adore_thermal_transient)
+      logical :: transient_on = .false.
+      type(thermal_transient_t) :: transient
    end type thermal_run_t
 
    abstract interface
@@ -121,12 +126,14 @@ contains
       th%integral = new_thermal_heat(b%n_elements)
       th%last = new_thermal_heat(b%n_elements)
       allocate (th%fluid(b%n_elements), th%update_times(0))
+      th%transient = new_thermal_transient(b)
    end function new_thermal_run
 
    !> The thermal model of a run of bearing b with run options opts (docs/thermal.md, "The
    !> wiring"): the mode of option thermal (thermal_mode_of), the field model of option
    !> thermal_field (the march, ADORE 5.0's, with its shaft bulk temperature as ADORE prints
-   !> it; or the network) and the housing film of option housing_htc.  Input error as
+   !> it; or the network), the housing film of option housing_htc and the transients of
+   !> option thermal_transient.  Input error as
    !> thermal_mode_of.
    function thermal_run_for(b, opts, error) result(th)
       type(bearing_t), intent(in) :: b
@@ -143,6 +150,7 @@ contains
          th%options%shaft_bulk_as_printed = .false.
       end if
       th%options%reference_htc = opts%housing_htc
+      th%transient_on = opts%thermal_transient
    end function thermal_run_for
 
    !> The two space-fixed locations either side of azimuth phi (rad) among n, location j at
@@ -228,7 +236,8 @@ contains
    !> averaged over the interval, the field (th%options%field_model: the report's march or the
    !> network) solved for it - by location, each location's velocity the weighted mean of the
    !> elements there (else the mean of all) and each element given its place's field - the
-   !> heat balance checked (th%balance, the worst so far), the integral restarted; time (s)
+   !> heat balance checked (th%balance, the worst so far), with transients (th%transient_on)
+   !> the bodies relaxed toward the field over the interval, the integral restarted; time (s)
    !> recorded in th%update_times.  Engine error for an empty interval.
    subroutine thermal_update(th, b, phi, velocity, time, error)
       class(thermal_run_t), intent(inout) :: th
@@ -275,6 +284,9 @@ contains
          th%field%element_bulk = at_locations(th%field%element_bulk, phi)
          th%field%htc = at_locations(th%field%htc, phi)
       end if
+      ! with transients each element's (and body's) temperature relaxes toward its place's field
+      if (th%transient_on) call thermal_transient_step(th%transient, b, th%options, th%elapsed, th%field, error)
+      if (allocated(error)) return
       th%have_field = .true.
       th%updates = th%updates + 1
       th%update_times = [th%update_times, time]
@@ -319,6 +331,7 @@ contains
          else
             text = text//", geometry held"
          end if
+         if (th%transient_on) text = text//"; transients with lumped heat capacities"
       end if
       if (listing) then
          text = "  "//upper(text)

@@ -90,6 +90,10 @@ module adore_model_run_options
       !> film coefficient (W/(m**2 K)) from the housing's outer surface to the reference
       !> temperature; 0 (default): the surface at the reference (report 2.10's text)
       real(wp) :: housing_htc = 0.0_wp
+      !> with the thermal model on, thermal transients with lumped heat capacities (report 7
+      !> rec. 4; not ADORE 5.0, whose field has no thermal inertia; docs/thermal.md, "Thermal
+      !> transients"): each body's bulk temperature relaxes toward the steady field
+      logical :: thermal_transient = .false.
    end type run_options_t
 
    !> One row of the option table.
@@ -104,7 +108,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 18
+   integer, parameter :: N_OPTIONS = 19
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -159,7 +163,10 @@ module adore_model_run_options
                     "conduction/convection network"), &
       option_spec_t("housing_htc", OPTION_REAL, "0", 0, "", "W/M2K", "", &
                     "thermal model: film coefficient from the housing's outer surface to the reference "// &
-                    "temperature (0: the surface at it, report 2.10)") &
+                    "temperature (0: the surface at it, report 2.10)"), &
+      option_spec_t("thermal_transient", OPTION_FLAG, "false", 0, "", "", "", &
+                    "thermal model on: transients with lumped heat capacities, the bodies relaxing toward the "// &
+                    "steady field (report 7 rec. 4; not ADORE 5.0)") &
       ]
 
 contains
@@ -278,6 +285,8 @@ contains
          if (len_trim(value) > 0) opts%thermal_field = trim(adjustl(value))
       case ("housing_htc")
          opts%housing_htc = x
+      case ("thermal_transient")
+         opts%thermal_transient = flag
       case ("duration")
          opts%duration = x
       case ("revolutions")

@@ -18,7 +18,7 @@ module adore_thermal_conduction
    private
 
    public :: cylinder_temperature, cylinder_bulk, cylinder_conductance, cylinder_bulk_weight, cylinder_bulk_mirrored
-   public :: element_core_area, element_conductance, element_bulk
+   public :: element_core_area, element_conductance, element_bulk, element_surface_area
 
 contains
 
@@ -85,6 +85,18 @@ contains
       real(wp) :: g
       g = k*element_core_area(d, length)/d
    end function element_conductance
+
+   !> Surface (m**2) through which a rolling element convects (eqs 18-23): ball (length <= 0)
+   !> pi d**2; roller of length `length` its side and both ends, pi d length + pi d**2/2.
+   elemental function element_surface_area(d, length) result(a)
+      real(wp), intent(in) :: d, length
+      real(wp) :: a
+      if (length > 0.0_wp) then
+         a = pi*d*length + 0.5_wp*pi*d*d
+      else
+         a = pi*d*d
+      end if
+   end function element_surface_area
 
    !> Bulk temperature (K) of a rolling element from its mid-point temperature t0 and its
    !> contact temperatures t1, t2 (K): eq 17.
