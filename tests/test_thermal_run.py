@@ -14,7 +14,6 @@ import numpy as np
 import pytest
 
 import pyadore
-from pyadore import AdoreInputError
 from pyadore.printout import read_print
 
 #: Rec 2.5 of Appendix C: heat averaged every 3 ms (field 4), geometry from 30 ms (field 5).
@@ -147,10 +146,3 @@ def test_thermal_run_history_steps_at_the_updates(geometry_run):
     contact = h["re1_contact_temp_outer_K"].to_numpy()
     assert np.ptp(contact[second]) == 0.0 and contact[second][0] != contact[before][0]
 
-
-def test_roller_run_refuses_the_thermal_model(tmp_path, roller_deck):
-    """The thermal model is wired into the ball kind only: a roller run asked for it (here
-    Appendix D's own Rec 2.5 interval, --thermal deck) stops with an input error that says
-    so instead of running with the model off."""
-    with pytest.raises(AdoreInputError, match="not available for roller bearings"):
-        pyadore.run(roller_deck, out=tmp_path / "d.prt", progress=False, thermal="deck", steps=2)

@@ -11,18 +11,18 @@ module adore_bearings_ball
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error
-   use adore_core_strings, only: itoa, upper
+   use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, cage_option_free, &
                                     dof_constraints_t
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
    use adore_thermal_distortion, only: distorted_bearing
-   use adore_thermal_network, only: thermal_heat_t, FIELD_NETWORK
-   use adore_core_linalg, only: solve_dense
-   use adore_bearings_ball_thermal, only: ball_thermal_t, new_ball_thermal, thermal_mode_of, ball_heat_rates, &
-                                          ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF, THERMAL_GEOMETRY
+   use adore_thermal_network, only: thermal_heat_t
+   use adore_bearings_ball_thermal, only: ball_thermal_t, ball_heat_rates, &
+                                          ball_thermal_accumulate, ball_thermal_update, THERMAL_OFF
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
+   use adore_bearings_thermal_run, only: hold_race_load, thermal_run_text, thermal_run_for, thermal_condition
    use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
                                       BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE
    use adore_tribology_wear, only: archard_wear_rate
@@ -163,18 +163,9 @@ contains
       self%clearance = guide_clearance(self%bearing, self%step0%geometry, self%eom%state%temperature)
       ! the thermal model (docs/thermal.md, "The wiring"): an event at the end of every
       ! averaging interval
-      call thermal_mode_of(self%options%thermal, self%bearing, method, error)
+      self%thermal%thermal_run_t = thermal_run_for(self%bearing, self%options, error)
       if (allocated(error)) return
-      self%thermal = new_ball_thermal(self%bearing, method)
-      ! the march is ADORE 5.0's: its shaft bulk temperature as ADORE prints it (docs/thermal.md)
-      self%thermal%options%shaft_bulk_as_printed = .true.
-      if (self%options%thermal_field == "network") then
-         self%thermal%options%field_model = FIELD_NETWORK
-         self%thermal%options%shaft_bulk_as_printed = .false.
-      end if
-      self%thermal%options%reference_htc = self%options%housing_htc
-      self%thermal%transient_on = self%options%thermal_transient
-      if (method /= THERMAL_OFF) then
+      if (self%thermal%mode /= THERMAL_OFF) then
          self%event_start = self%thermal%interval
          self%event_period = self%thermal%interval
          ! ADORE 5.0's traction does not follow the computed temperatures (report 5.3: "the
@@ -239,29 +230,13 @@ contains
       end associate
    end subroutine ball_run_note
 
-   !> The thermal model of the run in one line: the print listing's (listing: indented,
-   !> upper case) or the run note's.
+   !> The thermal model of the run in one line (thermal_run_text): the print listing's
+   !> (listing: indented, upper case) or the run note's.
    subroutine thermal_text(self, listing, text)
       class(ball_kind_t), intent(in) :: self
       logical, intent(in) :: listing
       character(len=:), allocatable, intent(out) :: text
-      character(len=12) :: dt, t0
-      if (self%thermal%mode == THERMAL_OFF) then
-         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7)"
-      else
-         write (dt, "(es10.3)") self%thermal%interval
-         write (t0, "(es10.3)") self%thermal%geometry_start
-         text = "thermal model on: heat averaged over "//trim(adjustl(dt))//" s, temperatures updated (Rec 2.5)"
-         if (self%thermal%mode == THERMAL_GEOMETRY) then
-            text = text//", geometry updated from "//trim(adjustl(t0))//" s with the applied load held"
-         else
-            text = text//", geometry held"
-         end if
-         if (self%thermal%transient_on) text = text//"; transients with lumped heat capacities"
-      end if
-      if (listing) then
-         text = "  "//upper(text)
-      end if
+      call thermal_run_text(self%thermal, listing, text)
    end subroutine thermal_text
 
    integer function ball_n_values(self)
@@ -539,12 +514,7 @@ contains
       if (self%thermal%mode == THERMAL_OFF) return
       call ball_thermal_update(self%thermal, self%bearing, self%eom%state, time, error)
       if (allocated(error)) return
-      c = self%condition
-      c%temperature = self%thermal%field%temperature
-      ! the start time with a relative allowance for the event times' round-off
-      geometry = self%thermal%mode == THERMAL_GEOMETRY .and. &
-                 time >= self%thermal%geometry_start*(1.0_wp - 1.0e-9_wp)
-      if (geometry) c%geometry_temperature = self%thermal%field%temperature
+      c = thermal_condition(self%thermal, self%condition, time, geometry)
       call self%set_condition(c, it, y, error)
       if (allocated(error)) return
       if (geometry) then
@@ -555,106 +525,39 @@ contains
       end if
    end subroutine ball_on_event
 
-   !> The load-holding constraint of a geometry update (report 2.10 step 11, 5.3 "an
-   !> equilibrium constraint is applied to move the races and maintain the thrust and radial
-   !> loads", 5.5 "a quasi-static constraint"): the inner race's free translations in y (state
-   !> at tau = t) moved, the balls and every velocity held, until the net force on the race
-   !> (its contacts and the applied load) is below 1e-6 of the applied load.  Newton with a
-   !> forward-difference Jacobian (step 1e-9 m) and step halving until the net force
-   !> decreases (a barely touching Hertz contact is nearly without stiffness: a full step
-   !> would overshoot; a state outside the contact models counts as no decrease); a race
-   !> clear of every ball (no stiffness) moves along the net force - then the applied load -
-   !> by 1 um, doubled at each such step.  The outer race is fixed in the housing.
-   !> self%hold_residual: the worst final |net force| / |applied load|.  Engine error when the
-   !> evaluation at the start fails or the iteration does not converge in 100 steps.
+   !> The load-holding constraint of a geometry update (hold_race_load): the inner race's
+   !> free translations in y (state at tau = t) moved, the balls and every velocity held,
+   !> until the net force on the race (its contacts and the applied load) is below 1e-6 of
+   !> the applied load.  The outer race is fixed in the housing.  self%hold_residual: the
+   !> worst final |net force| / |applied load|.
    subroutine hold_applied_load(self, t, y, error)
       class(ball_kind_t), intent(inout) :: self
       real(wp), intent(in) :: t
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
-      real(wp), parameter :: h = 1.0e-9_wp
-      real(wp) :: dydt(size(y)), f(3), f1(3), jac(3, 3), dx(3), scale, y0, clear, lambda, x0(3)
-      logical :: free(3), ok, stiff
-      integer :: i0, iter, j, m, idx(3), k
-      i0 = BODY_SIZE*(self%bearing%n_elements + 2)          ! the inner race's block
-      free = self%condition%constraints%inner%translation
-      m = count(free)
-      if (m == 0) return
-      idx(1:m) = pack([1, 2, 3], free)
-      scale = max(norm2(self%condition%force), tiny(1.0_wp))
-      clear = 1.0e-6_wp
-      call net_force(f, ok)
-      if (.not. ok) then
-         call engine_error(error, "load-holding constraint: the equations of motion failed: "// &
-                           self%eom%failure_reason)
-         return
+      real(wp) :: dydt(size(y))
+      call hold_race_load(net_force, y, BODY_SIZE*(self%bearing%n_elements + 2), &
+                          self%condition%constraints%inner%translation, &
+                          max(norm2(self%condition%force), tiny(1.0_wp)), self%hold_initial, self%hold_residual, &
+                          self%hold_solves, error)
+      if (allocated(error) .and. allocated(self%eom%failure_reason)) then
+         if (index(error%message, "equations of motion failed") > 0) &
+            error%message = error%message//": "//self%eom%failure_reason
       end if
-      self%hold_initial = max(self%hold_initial, norm2(f(idx(1:m)))/scale)
-      do iter = 1, 100
-         if (norm2(f(idx(1:m))) <= 1.0e-6_wp*scale) exit
-         if (iter == 100) then
-            call engine_error(error, "load-holding constraint: no equilibrium of the inner race after 100 Newton "// &
-                              "steps (net force "//show(norm2(f))//" N)")
-            return
-         end if
-         stiff = .true.
-         do j = 1, m
-            y0 = y(i0 + idx(j))
-            y(i0 + idx(j)) = y0 + h
-            call net_force(f1, ok)
-            y(i0 + idx(j)) = y0
-            stiff = stiff .and. ok
-            if (ok) jac(1:m, j) = (f1(idx(1:m)) - f(idx(1:m)))/h
-         end do
-         if (stiff) call solve_dense(m, jac(1:m, 1:m), -f(idx(1:m)), dx(1:m), stiff)
-         x0(1:m) = y(i0 + idx(1:m))
-         if (.not. stiff) then          ! clear of every ball: along the net force
-            y(i0 + idx(1:m)) = x0(1:m) + clear*f(idx(1:m))/norm2(f(idx(1:m)))
-            clear = 2.0_wp*clear
-            call net_force(f1, ok)
-            if (ok) f = f1
-            if (.not. ok) y(i0 + idx(1:m)) = x0(1:m)
-            cycle
-         end if
-         clear = 1.0e-6_wp
-         lambda = 1.0_wp
-         do k = 1, 40                   ! halve the step until the net force decreases
-            y(i0 + idx(1:m)) = x0(1:m) + lambda*dx(1:m)
-            call net_force(f1, ok)
-            if (ok) then
-               if (norm2(f1(idx(1:m))) < norm2(f(idx(1:m)))) exit
-            end if
-            lambda = 0.5_wp*lambda
-         end do
-         if (.not. ok) then
-            y(i0 + idx(1:m)) = x0(1:m)
-            call engine_error(error, "load-holding constraint: no state of the inner race along the Newton step "// &
-                              "is within the contact models (net force "//show(norm2(f))//" N)")
-            return
-         end if
-         f = f1
-      end do
-      self%hold_solves = self%hold_solves + 1
-      self%hold_residual = max(self%hold_residual, norm2(f(idx(1:m)))/scale)
    contains
 
-      !> The net force (N) on the inner race at (t, y): its mass times its acceleration;
+      !> The net force (N) on the inner race at (t, yy): its mass times its acceleration;
       !> ok false when the equations of motion fail there.
-      subroutine net_force(force, ok)
+      subroutine net_force(yy, force, ok)
+         real(wp), intent(in) :: yy(:)
          real(wp), intent(out) :: force(3)
          logical, intent(out) :: ok
          integer :: flag
-         call self%eom%eval(t, y, dydt, flag)
+         call self%eom%eval(t, yy, dydt, flag)
          ok = flag == DERIV_OK
          force = 0.0_wp
          if (ok) force = self%bearing%mass(BODY_INNER)*self%eom%rates%races(RACE_INNER)%velocity
       end subroutine net_force
-
-      function show(x) result(text)
-         real(wp), intent(in) :: x
-         character(len=16) :: text
-         write (text, "(es10.3)") x
-      end function show
 
    end subroutine hold_applied_load
 

@@ -4,21 +4,30 @@
 !> the dynamic state, adore_output_roller_dynamic_report) and its time history.  No module
 !> state.
 module adore_bearings_roller
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
-   use adore_model_bearing, only: bearing_t
-   use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, body_dof_t, &
-                                    cage_option_free
-   use adore_geometry_mounted, only: mount_geometry
+   use adore_core_strings, only: itoa
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_INNER, BODY_OUTER, TEMP_ELEMENT, TEMP_OUTER, &
+                                  TEMP_INNER
+   use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, dof_constraints_t, &
+                                    body_dof_t, cage_option_free
+   use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
+   use adore_thermal_distortion, only: distortion_t, distorted_bearing, thermal_distortion
+   use adore_thermal_network, only: thermal_heat_t
+   use adore_quasistatic_models, only: roller_qs_model
+   use adore_forces_ball_bearing, only: guide_land_pairs
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
-   use adore_dynamics_integrator, only: integrator_t
-   use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, ROLLER_SIZE, R_PHI, R_PHIDOT, &
-                                           CAGE_OFFSET
+   use adore_dynamics_integrator, only: integrator_t, DERIV_OK
+   use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, R_PHI, &
+                                           R_PHIDOT, CAGE_OFFSET, RACE_OFFSET
    use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
-   use adore_bearings_ball_thermal, only: thermal_mode_of, THERMAL_OFF
+   use adore_bearings_thermal_run, only: thermal_run_t, thermal_run_for, thermal_accumulate, thermal_run_text, &
+                                         thermal_condition, hold_race_load, THERMAL_OFF
+   use adore_bearings_roller_thermal, only: roller_heat_rates, roller_thermal_update
    use adore_output_step_report, only: write_roller_step0
-   use adore_output_run_history, only: run_history_t
+   use adore_output_run_history, only: run_history_t, add_history_column, set_history_value
    use adore_output_roller_dynamic_report, only: roller_step_view, new_roller_history, record_roller_history, &
                                                  roller_total_power
    implicit none
@@ -35,8 +44,17 @@ module adore_bearings_roller
       type(roller_step0_t) :: step0         !< the quasi-static start
       type(roller_system_t) :: eom          !< the equations of motion
       real(wp), allocatable :: y(:)         !< the state of the last accepted step
+      real(wp) :: tau = 0.0_wp              !< its dimensionless time
       real(wp), allocatable :: azimuth(:)   !< each roller's orbital position, unwrapped (rad)
       real(wp), allocatable :: last(:)      !< at the last step (rad)
+      type(thermal_run_t) :: thermal        !< the thermal model (adore_bearings_thermal_run)
+      !> the mounted geometry the equations of motion run in (step 0's until a geometry update)
+      type(mounted_geometry_t) :: geometry
+      !> the load-holding constraint of the geometry updates: the largest |net force| /
+      !> |applied load| an update left before it, the worst after it, the solves done
+      real(wp) :: hold_initial = 0.0_wp
+      real(wp) :: hold_residual = 0.0_wp
+      integer :: hold_solves = 0
    contains
       procedure :: eval => roller_eval
       procedure :: solve_start => roller_solve_start
@@ -52,6 +70,7 @@ module adore_bearings_roller
       procedure :: new_history => roller_new_history
       procedure :: record_row => roller_record_row
       procedure :: mount => roller_mount
+      procedure :: on_event => roller_on_event
    end type roller_kind_t
 
 contains
@@ -87,13 +106,14 @@ contains
       character(len=:), allocatable, intent(out) :: text
       text = ""
       if (n_steps < 1) return
+      call thermal_run_text(self%thermal, .false., text)
+      if (self%thermal%mode /= THERMAL_OFF) text = text//" (roller runs: docs/thermal.md, Roller runs)"
       if (self%eom%cage_free) then
-         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage free in the "// &
-                "radial plane and about its axis (axial motion and tilt suppressed, report 4.4.6), on its "// &
-                "pockets and guide lands; "
+         text = text//"; cage free in the radial plane and about its axis (axial motion and tilt suppressed, "// &
+                "report 4.4.6), on its pockets and guide lands; "
       else
-         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage centred, turning "// &
-                "about its axis only (translation and tilt constrained, report 4.4.6); "
+         text = text//"; cage centred, turning about its axis only (translation and tilt constrained, report "// &
+                "4.4.6); "
       end if
       if (self%bearing%roller%pocket_type == -1) then
          text = text//"cylindrical pockets (kPocType -1, Rec 5B.2)"
@@ -117,7 +137,8 @@ contains
       character(len=*), parameter :: lf = new_line("a")
       text = ""
       if (n_steps < 1) return
-      text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf
+      call thermal_run_text(self%thermal, .true., text)
+      text = text//lf
       if (self%eom%cage_free) then
          text = text//"  CAGE FREE IN THE RADIAL PLANE AND ABOUT ITS AXIS, ON ITS POCKETS AND GUIDE LANDS "// &
                 "(AXIAL MOTION AND TILT SUPPRESSED, REPORT 4.4.6)"//lf
@@ -143,6 +164,7 @@ contains
       call self%eom%eval(t, y, dydt, flag)
       call adopt_failure(self, self%eom)
       self%y = y
+      self%tau = t
    end subroutine roller_eval
 
    !> The options' steps: Rec 1 n_steps for STEPS_FROM_DECK.
@@ -167,16 +189,6 @@ contains
       logical :: cage_free
       call cage_option_free(self%options%cage, self%bearing%dof_flags, cage_free, error)
       if (allocated(error)) return
-      ! the thermal model is wired into the ball kind only (docs/thermal.md, "Open"): a roller
-      ! run asked for it stops here rather than run without it
-      call thermal_mode_of(self%options%thermal, self%bearing, method, error)
-      if (allocated(error)) return
-      if (method /= THERMAL_OFF) then
-         call input_error(error, "thermal model '"//trim(self%options%thermal)//"': not available for roller "// &
-                          "bearings yet (the roller kind has no thermal update; docs/thermal.md); run with "// &
-                          "--thermal off")
-         return
-      end if
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       associate (s => self%step0, e => self%step0%equilibrium)
          call start_roller_dynamics(self%bearing, mount_geometry(self%bearing, self%bearing%temperature, 2), &
@@ -194,6 +206,17 @@ contains
       self%condition%constraints = roller_constraints(self%bearing, cage_free)
       self%eom%constraints = self%condition%constraints
       self%y = y
+      self%geometry = mount_geometry(self%bearing, self%bearing%temperature, 2)
+      ! the thermal model (docs/thermal.md, "Roller runs"): an event at the end of every
+      ! averaging interval; the field model and the housing film as for the ball; the roller's
+      ! traction law (the deck's curve or table) has no temperature in it, so the run option
+      ! thermal_traction changes nothing here
+      self%thermal = thermal_run_for(self%bearing, self%options, error)
+      if (allocated(error)) return
+      if (self%thermal%mode /= THERMAL_OFF) then
+         self%event_start = self%thermal%interval
+         self%event_period = self%thermal%interval
+      end if
    end subroutine roller_start_dynamics
 
    !> The run's degrees of freedom until Rec 3.3's flags are read (issue #25): the cage turning
@@ -231,34 +254,59 @@ contains
       v(RAVG_CAGE) = self%y(ROLLER_SIZE*n + CAGE_OFFSET + 2)
    end subroutine roller_values
 
-   !> Each roller's orbital position unwrapped (the state carries it unwrapped already).
+   !> Each roller's orbital position unwrapped (the state carries it unwrapped already); with
+   !> the thermal model on, the heat rates of the accepted state integrated.
    subroutine roller_accepted(self)
       class(roller_kind_t), intent(inout) :: self
       integer :: n
+      type(thermal_heat_t) :: heat
       n = self%eom%n
       self%azimuth = self%y(R_PHI:ROLLER_SIZE*n:ROLLER_SIZE)
       self%last = self%azimuth
+      ! the thermal model's heat of this accepted state (its time, s)
+      if (self%thermal%mode /= THERMAL_OFF) then
+         call roller_heat_rates(self%thermal, self%bearing, self%eom, self%y, heat)
+         call thermal_accumulate(self%thermal, self%tau*self%time_scale, heat)
+      end if
    end subroutine roller_accepted
 
-   !> A printed time step: the step-0 layout at the last evaluated state.
+   !> A printed time step: the step-0 layout at the last evaluated state, in the geometry the
+   !> equations of motion run in (fits and clearance of a geometry update); with the thermal
+   !> model on, the rollers' drag and churning and, from the first update on, the last field
+   !> (contact and bulk temperatures, HTC, exit fluid, housing, shaft, races and cage).
    subroutine roller_write_step(self, unit, step, t, mean)
       class(roller_kind_t), intent(in) :: self
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: t, mean(:)
-      type(roller_step0_t) :: s
+      type(roller_step0_t) :: s, s0
       type(error_type), allocatable :: error
-      real(wp) :: time
+      real(wp) :: time, header(4)
       time = t*self%time_scale
-      call roller_step_view(self%bearing, self%eom, self%y, self%azimuth, self%step0, s, error)
+      if (self%thermal%geometry_updates > 0) then
+         s0 = self%step0
+         s0%model = self%eom%model%qs
+         s0%mounting = self%geometry%mounting
+         call roller_step_view(self%bearing, self%eom, self%y, self%azimuth, s0, s, error)
+      else
+         call roller_step_view(self%bearing, self%eom, self%y, self%azimuth, self%step0, s, error)
+      end if
       ! a flash-temperature error leaves those columns at their step-0 values; the rest prints
       if (allocated(error)) deallocate (error)
       if (size(mean) < RAVG_CAGE) return
-      associate (b => self%bearing)
-         call write_roller_step0(unit, step, [t, time, b%speed_outer*time/(2.0_wp*pi), &
-                                              b%speed_inner*time/(2.0_wp*pi)], b, s)
+      associate (b => self%bearing, th => self%thermal)
+         header = [t, time, b%speed_outer*time/(2.0_wp*pi), b%speed_inner*time/(2.0_wp*pi)]
+         if (th%mode == THERMAL_OFF) then
+            call write_roller_step0(unit, step, header, b, s)
+         else if (.not. th%have_field) then      ! before the first update: no field yet
+            call write_roller_step0(unit, step, header, b, s, th%fluid)
+         else
+            call write_roller_step0(unit, step, header, b, s, th%fluid, th%field)
+         end if
       end associate
    end subroutine roller_write_step
 
+   !> The roller history (new_roller_history) with the options' element and stride; with the
+   !> thermal model on, a column exit_fluid_temp_K.
    subroutine roller_new_history(self, h, n_steps, error)
       class(roller_kind_t), intent(in) :: self
       type(run_history_t), intent(out) :: h
@@ -266,30 +314,44 @@ contains
       type(error_type), allocatable, intent(out) :: error
       call new_roller_history(h, self%bearing, n_steps, self%options%history_element, error, &
                               self%options%history_stride)
+      if (allocated(error)) return
+      if (self%thermal%mode /= THERMAL_OFF) call add_history_column(h, "exit_fluid_temp_K")
    end subroutine roller_new_history
 
+   !> A history row at the last evaluated state (record_roller_history, at the condition's
+   !> bulk temperatures); with the thermal model on, its exit fluid temperature and the
+   !> history element's contact temperatures from the last field (NaN / the bulk ones before
+   !> the first field).
    subroutine roller_record_row(self, h, step, t, mean)
       class(roller_kind_t), intent(in) :: self
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
       real(wp), intent(in) :: t, mean(:)
-      call record_roller_history(h, step, t*self%time_scale, self%bearing, self%eom, self%y)
+      character(len=:), allocatable :: e
+      call record_roller_history(h, step, t*self%time_scale, self%bearing, self%eom, self%y, self%condition%temperature)
       if (size(mean) < 0) return
+      if (self%thermal%mode == THERMAL_OFF) return
+      call set_history_value(h, "exit_fluid_temp_K", ieee_value(1.0_wp, ieee_quiet_nan))
+      if (.not. self%thermal%have_field) return
+      e = itoa(h%element)
+      associate (f => self%thermal%field, ld => self%eom%loads(h%element))
+         call set_history_value(h, "exit_fluid_temp_K", f%exit_temperature)
+         if (ld%load(1) > 0.0_wp) call set_history_value(h, "re"//e//"_contact_temp_outer_K", &
+                                                         f%contact_outer(h%element))
+         if (ld%load(2) > 0.0_wp) call set_history_value(h, "re"//e//"_contact_temp_inner_K", &
+                                                         f%contact_inner(h%element))
+      end associate
    end subroutine roller_record_row
 
-   !> The condition's load on the inner race and its degrees of freedom (the geometry stays
-   !> the step-0 mounting: the thermal re-mounting of a roller run is not done; an input error
-   !> when the condition's temperatures differ from the initial ones or the cage is freed).
+   !> The equations of motion in self%condition: its load on the inner race and its degrees
+   !> of freedom; the geometry mounted at its geometry temperatures (roller_geometry) once
+   !> they differ from the initial ones.  Input error when the cage is freed or constrained
+   !> beyond what the roller model has.
    subroutine roller_mount(self, y, error)
       class(roller_kind_t), intent(inout) :: self
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       associate (c => self%condition)
-         if (any(c%temperature /= self%bearing%temperature)) then
-            call input_error(error, "roller bearing: a change of the bulk temperatures during the run is not "// &
-                             "modelled (thermal re-mounting of roller bearings)")
-            return
-         end if
          if (c%constraints%cage%translation(1) .or. any(c%constraints%cage%rotation(2:3)) .or. &
              (any(c%constraints%cage%translation(2:3)) .neqv. self%eom%cage_free)) then
             call input_error(error, "roller bearing: the cage turns about its axis and, run option cage=free, "// &
@@ -298,8 +360,91 @@ contains
          end if
          self%eom%force = c%force
          self%eom%constraints = c%constraints
+         if (any(c%geometry_temperature /= self%bearing%temperature) .or. self%thermal%geometry_updates > 0) &
+            call roller_geometry(self, c%geometry_temperature)
       end associate
       if (size(y) < 0) call engine_error(error, "roller bearing: empty state")
    end subroutine roller_mount
+
+   !> The roller bearing's geometry at bulk temperatures temperature(7) (K; ADRC2, report 2.9,
+   !> 4.3; docs/thermal.md "Roller runs"): the fits changed by the differential expansion
+   !> (distorted_bearing), the races mounted with them (Lame, spin; raceways moved by twice
+   !> the mounting as at step 0) and grown freely, the roller grown freely in diameter and
+   !> length (every length of its profile by alpha dT, Timoshenko & Goodier ch. 13), the
+   !> pocket clearance by the cage's and the roller's growth (thermal_distortion), the guide
+   !> lands in the mounted raceways; the slice contact model rebuilt on them.
+   subroutine roller_geometry(self, temperature)
+      class(roller_kind_t), intent(inout) :: self
+      real(wp), intent(in) :: temperature(:)
+      type(bearing_t) :: bt
+      type(distortion_t) :: dist
+      real(wp) :: e
+      bt = distorted_bearing(self%bearing, temperature)
+      self%geometry = mount_geometry(bt, temperature, 2)
+      e = self%bearing%material(BODY_ELEMENT)%expansion*(temperature(TEMP_ELEMENT) - &
+                                                        self%bearing%temperature(TEMP_ELEMENT))
+      bt%d = self%geometry%element_diameter
+      bt%roller%roller_length = bt%roller%roller_length*(1.0_wp + e)
+      bt%roller%roller_land = bt%roller%roller_land*(1.0_wp + e)
+      bt%roller%crown_radius = bt%roller%crown_radius*(1.0_wp + e)
+      bt%roller%corner_radius = bt%roller%corner_radius*(1.0_wp + e)
+      self%eom%model%qs = roller_qs_model(bt, self%geometry, self%step0%model%n_sub)
+      dist = thermal_distortion(self%bearing, temperature)
+      self%eom%model%pocket_clearance = dist%pocket_clearance
+      self%eom%model%pocket_length = bt%roller%roller_length - sum(bt%roller%corner_radius)
+      self%eom%lands = guide_land_pairs(bt, self%geometry, temperature)
+   end subroutine roller_geometry
+
+   !> The thermal update at the end of an averaging interval (time s, state y at tau = time /
+   !> T; report 2.10 steps 2-12, 5.5): the field solved with the heat averaged over the
+   !> interval (roller_thermal_update), the bulk temperatures set; in THERMAL_GEOMETRY mode
+   !> from the geometry start time on, the geometry mounted at them (roller_geometry) and the
+   !> inner race moved so that its rollers carry the applied load (hold_race_load).  Nothing
+   !> without a thermal model.
+   subroutine roller_on_event(self, time, it, y, error)
+      class(roller_kind_t), intent(inout) :: self
+      real(wp), intent(in) :: time
+      type(integrator_t), intent(inout) :: it
+      real(wp), intent(inout) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(operating_condition_t) :: c
+      real(wp) :: dydt(size(y)), t, f(3)
+      logical :: geometry, free(3)
+      if (self%thermal%mode == THERMAL_OFF) return
+      call roller_thermal_update(self%thermal, self%bearing, self%eom, y, time, error)
+      if (allocated(error)) return
+      c = thermal_condition(self%thermal, self%condition, time, geometry)
+      if (geometry) self%thermal%geometry_updates = self%thermal%geometry_updates + 1
+      call self%set_condition(c, it, y, error)
+      if (allocated(error)) return
+      if (.not. geometry) return
+      t = time/self%time_scale
+      ! the race moves where its rollers hold it: radially, and axially only on flanges (without
+      ! them nothing but the applied load acts along the axis)
+      free = self%condition%constraints%inner%translation .and. [any(self%bearing%roller%flange), .true., .true.]
+      call hold_race_load(net_force, y, ROLLER_SIZE*self%eom%n + RACE_OFFSET, free, &
+                          max(norm2(self%condition%force), tiny(1.0_wp)), self%hold_initial, self%hold_residual, &
+                          self%hold_solves, error)
+      if (allocated(error)) return
+      ! the equations of motion's loads and self%y at the state the run goes on from
+      call net_force(y, f, geometry)
+      call it%restart(it%h_next)
+   contains
+
+      !> The net force (N) on the inner race at (t, yy): its mass times its acceleration
+      !> (adore_dynamics_roller_system); ok false when the equations of motion fail there.
+      subroutine net_force(yy, force, ok)
+         real(wp), intent(in) :: yy(:)
+         real(wp), intent(out) :: force(3)
+         logical, intent(out) :: ok
+         integer :: flag, r0
+         call self%eval(t, yy, dydt, flag)
+         ok = flag == DERIV_OK
+         force = 0.0_wp
+         r0 = ROLLER_SIZE*self%eom%n + RACE_OFFSET
+         if (ok) force = self%bearing%mass(BODY_INNER)*dydt(r0 + 4:r0 + 6)/self%time_scale
+      end subroutine net_force
+
+   end subroutine roller_on_event
 
 end module adore_bearings_roller

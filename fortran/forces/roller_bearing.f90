@@ -111,6 +111,7 @@ module adore_forces_roller_bearing
       real(wp) :: flange_axial(MAX_FLANGES) = 0.0_wp  !< its axial component on the roller (N)
       real(wp) :: flange_height(MAX_FLANGES) = 0.0_wp !< its contact height from the raceway (m)
       real(wp) :: flange_power = 0.0_wp          !< flange contacts' traction loss (W)
+      real(wp) :: flange_race_power(2) = 0.0_wp  !< its part at the outer, inner race's flanges (W)
       logical :: flange_off_face = .false.       !< a loaded contact point off the face or the end's cap
       real(wp) :: force(3) = 0.0_wp              !< on the roller, (x, r, t) (N)
       real(wp) :: moment(3) = 0.0_wp             !< on the roller about its centre, (x, r, t) (N m)
@@ -384,6 +385,7 @@ contains
             kap = law_kappa(m%law, um)
             f = f - kap*q*c%slip/um
             ld%flange_power = ld%flange_power + kap*q*um
+            ld%flange_race_power(j) = ld%flange_race_power(j) + kap*q*um
          end if
          ld%flange_axial(i) = f(1)
          ld%force = ld%force + f

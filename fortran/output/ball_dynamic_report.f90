@@ -22,7 +22,7 @@ module adore_output_ball_dynamic_report
    use adore_cage_step0, only: cage_step0_t
    use adore_output_layout, only: INT_NOT_COMPUTED, N_PERFORMANCE
    use adore_output_print_tables, only: write_step
-   use adore_output_step_report, only: race_rows, speed_ratios
+   use adore_output_step_report, only: race_rows, speed_ratios, thermal_columns
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_ball_life, only: ball_basic_life
    use adore_life_lundberg_palmgren, only: bearing_life, life_hours
@@ -186,23 +186,7 @@ contains
       perf(6) = total_power_loss(loads)              ! race contacts and cage contacts
       perf(9:11) = s%temperature(TEMP_HOUSING)
       perf(12:14) = s%temperature(TEMP_SHAFT)
-      if (present(fluid)) then                        ! the thermal model's drag and churning
-         traction(:, 9) = fluid%drag
-         traction(:, 10) = fluid%moment
-         traction(:, 11) = fluid%loss
-         perf(6) = perf(6) + sum(fluid%loss)
-         perf(7) = 0.0_wp
-         if (perf(6) > 0.0_wp) perf(7) = sum(fluid%loss)/perf(6)
-      end if
-      if (present(field)) then                        ! the thermal model's last field
-         thermal(:, 8) = field%contact_outer
-         thermal(:, 9) = field%contact_inner
-         thermal(:, 10) = field%element_bulk
-         thermal(:, 11) = field%htc
-         perf(8) = field%exit_temperature
-         perf(9:11) = field%housing
-         perf(12:14) = field%shaft
-      end if
+      call thermal_columns(traction, thermal, perf, fluid, field)   ! the thermal model's, where given
 
       summary(1, 1:3) = header(2:4)
       summary(1, 4) = cage_avg(1)                    ! time averages since the start

@@ -14,7 +14,7 @@ module adore_output_roller_dynamic_report
    use adore_tribology_traction_law, only: law_kappa
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_bearing_lp_life
-   use adore_forces_race_contact, only: line_flash
+   use adore_forces_race_contact, only: line_flash, wall_temperature
    use adore_tribology_roller_traction, only: line_traction_t
    use adore_forces_roller_bearing, only: roller_loads_t
    use adore_dynamics_roller_system, only: roller_system_t, roller_pose, ROLLER_SIZE, RACE_OFFSET, CAGE_OFFSET, &
@@ -27,7 +27,7 @@ module adore_output_roller_dynamic_report
    public :: roller_step_view, new_roller_history, record_roller_history, roller_total_power
 
    !> columns before the guide lands' forces, and after them
-   integer, parameter :: N_FIRST = 30, N_LAST = 0
+   integer, parameter :: N_FIRST = 30, N_LAST = 4
 
 contains
 
@@ -68,8 +68,8 @@ contains
             e%c_o(k) = ld%c(1)
             e%c_i(k) = ld%c(2)
             s%roller_spin(k) = p%spin
-            call fill_traction(ld, 1, s%tr_o(k))
-            call fill_traction(ld, 2, s%tr_i(k))
+            call fill_traction(b, ld, 1, s%tr_o(k))
+            call fill_traction(b, ld, 2, s%tr_i(k))
             do j = 1, 2
                s%cage%pocket(j, k)%geo_int = ld%pocket_gap(j)
                s%cage%pocket(j, k)%in_contact = ld%pocket_load(j) > 0.0_wp
@@ -117,32 +117,33 @@ contains
       call roller_bearing_lp_life(lp, s%equilibrium%c_o, s%equilibrium%c_i, s%equilibrium%orbital_speed, &
                                   b%speed_outer, b%speed_inner, b%d, b%dm, s%life)
       s%basic_life_hours = s%life%bearing_hours
-   contains
-      !> The printed traction of race j from the loads' slices: the slip magnitude, the
-      !> traction along e_t (N/m on the race), its force, loss and largest slip.
-      subroutine fill_traction(ld, j, t)
-         type(roller_loads_t), intent(in) :: ld
-         integer, intent(in) :: j
-         type(line_traction_t), intent(inout) :: t
-         integer :: m
-         m = size(ld%c(j)%x)
-         if (allocated(t%slip)) deallocate (t%slip, t%kappa, t%traction)
-         allocate (t%slip(m), t%kappa(m), t%traction(m))
-         t%slip = hypot(ld%slip(:, 1, j), ld%slip(:, 2, j))
-         t%kappa = law_kappa(b%race_traction, t%slip)
-         t%traction = ld%traction(:, 1, j)
-         t%force = sum(ld%c(j)%weight*t%traction)
-         t%power = ld%power(j)
-         t%sliding = ld%sliding(j)
-         t%max_slip = ld%max_slip(j)
-         t%max_slip_kappa = 0.0_wp
-         t%net_coefficient = 0.0_wp
-         if (ld%load(j) > 0.0_wp) then
-            t%max_slip_kappa = law_kappa(b%race_traction, t%max_slip)
-            t%net_coefficient = abs(t%force)/ld%load(j)
-         end if
-      end subroutine fill_traction
    end subroutine roller_step_view
+
+   !> The printed traction of race j of bearing b from the loads' slices: the slip magnitude, the
+   !> traction along e_t (N/m on the race), its force, loss and largest slip.
+   subroutine fill_traction(b, ld, j, t)
+      type(bearing_t), intent(in) :: b
+      type(roller_loads_t), intent(in) :: ld
+      integer, intent(in) :: j
+      type(line_traction_t), intent(inout) :: t
+      integer :: m
+      m = size(ld%c(j)%x)
+      if (allocated(t%slip)) deallocate (t%slip, t%kappa, t%traction)
+      allocate (t%slip(m), t%kappa(m), t%traction(m))
+      t%slip = hypot(ld%slip(:, 1, j), ld%slip(:, 2, j))
+      t%kappa = law_kappa(b%race_traction, t%slip)
+      t%traction = ld%traction(:, 1, j)
+      t%force = sum(ld%c(j)%weight*t%traction)
+      t%power = ld%power(j)
+      t%sliding = ld%sliding(j)
+      t%max_slip = ld%max_slip(j)
+      t%max_slip_kappa = 0.0_wp
+      t%net_coefficient = 0.0_wp
+      if (ld%load(j) > 0.0_wp) then
+         t%max_slip_kappa = law_kappa(b%race_traction, t%max_slip)
+         t%net_coefficient = abs(t%force)/ld%load(j)
+      end if
+   end subroutine fill_traction
 
    !> The cage centre c (m) and its velocity v (m/s), inertial, at state y (0 for a centred cage).
    pure subroutine cage_motion(sys, y, c, v)
@@ -166,10 +167,11 @@ contains
    !> row, history_shape): time, step, total power loss, roller `element`'s race loads,
    !> losses, orbital speed and pocket force, the cage speed, the inner race's y, z, the
    !> total loss split into race contacts, pockets and guide lands, the bulk temperatures
-   !> (fixed: the roller run's thermal model is off), the cage centre's y, z, its whirl
-   !> (tangential) and radial velocity, the diametral guide clearance, the whirl rate, the
-   !> centre's velocity y, z and each guide land's
-   !> normal force (film + metal; the figure types 33-44 of the report's roller run).
+   !> (the run's condition's), the cage centre's y, z, its whirl (tangential) and radial
+   !> velocity, the diametral guide clearance, the whirl rate, the centre's velocity y, z,
+   !> each guide land's normal force (film + metal), and roller `element`'s contact
+   !> temperature rise (flash, eqs 34-36) and contact temperature at both races (the figure
+   !> types 33-44 of the report's roller run).
    subroutine new_roller_history(h, b, n_steps, element, error, stride)
       type(run_history_t), intent(out) :: h
       type(bearing_t), intent(in) :: b
@@ -199,18 +201,26 @@ contains
       do k = 1, b%n_lands
          h%names(N_FIRST + k) = "land"//itoa(k)//"_force_N"
       end do
+      h%names(N_FIRST + b%n_lands + 1:) = [character(len=len(h%names)) :: "re"//e//"_contact_temp_rise_outer_K", &
+                                           "re"//e//"_contact_temp_rise_inner_K", "re"//e//"_contact_temp_outer_K", &
+                                           "re"//e//"_contact_temp_inner_K"]
    end subroutine new_roller_history
 
-   !> Record step `step` at time `time` (s): the last evaluation of sys (bearing b) at state y.
-   subroutine record_roller_history(h, step, time, b, sys, y)
+   !> Record step `step` at time `time` (s): the last evaluation of sys (bearing b) at state y,
+   !> the bearing's bulk temperatures `temperature` (K, TEMP_* order).  The history roller's
+   !> contact temperature rise: the flash temperature of its slices (line_flash, as the
+   !> print's); its contact temperature: the wall temperature, the mean of the roller's and
+   !> the race's bulk temperatures (as step 0's; the thermal model's field replaces it:
+   !> adore_bearings_roller); both NaN where the contact is unloaded.
+   subroutine record_roller_history(h, step, time, b, sys, y, temperature)
       type(run_history_t), intent(inout) :: h
       integer, intent(in) :: step
       real(wp), intent(in) :: time
       type(bearing_t), intent(in) :: b
       type(roller_system_t), intent(in) :: sys
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in) :: y(:), temperature(:)
       real(wp), allocatable :: values(:, :)
-      real(wp) :: race_loss, c(3), v(3), rad, e_c(3), clearance, land(h%n_lands)
+      real(wp) :: race_loss, c(3), v(3), rad, e_c(3), clearance, land(h%n_lands), rise(2), wall(2)
       integer :: r0, k
       if (h%rows >= size(h%values, 1)) then
          allocate (values(max(2*size(h%values, 1), 16), size(h%values, 2)))
@@ -238,17 +248,52 @@ contains
             land(k) = norm2(sys%land(k)%hydro_force) + sys%land(k)%metallic_load
          end do
       end if
+      call contact_temperatures(b, sys, y, h%element, temperature, rise, wall)
       associate (ld => sys%loads(h%element))
          h%values(h%rows, :) = [time, real(step, wp), roller_total_power(sys), ld%load, ld%power, &
                                 y(ROLLER_SIZE*(h%element - 1) + 6), sum(ld%pocket_load), &
                                 y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 2), y(r0 + 2), y(r0 + 3), race_loss, &
                                 sum([(sys%loads(k)%pocket_power, k=1, sys%n)]), sys%land_power, &
                                 sum([(sys%loads(k)%flange_power, k=1, sys%n)]), &
-                                b%temperature(TEMP_ELEMENT), b%temperature(TEMP_CAGE), b%temperature(TEMP_OUTER), &
-                                b%temperature(TEMP_INNER), b%temperature(TEMP_HOUSING), b%temperature(TEMP_SHAFT), &
+                                temperature(TEMP_ELEMENT), temperature(TEMP_CAGE), temperature(TEMP_OUTER), &
+                                temperature(TEMP_INNER), temperature(TEMP_HOUSING), temperature(TEMP_SHAFT), &
                                 c(2), c(3), -e_c(3)*v(2) + e_c(2)*v(3), dot_product(e_c, v), clearance, &
-                                whirl_rate(c, v), v(2), v(3), land]
+                                whirl_rate(c, v), v(2), v(3), land, rise, wall]
       end associate
    end subroutine record_roller_history
+
+   !> Roller k's contact temperature rise (K; flash, line_flash as the print's) and wall
+   !> temperature (K; wall_temperature: the mean of its bulk temperature and the race's,
+   !> temperature in TEMP_* order) at the outer (1) and inner (2) race, at state y of sys's last evaluation; NaN
+   !> where the contact is unloaded (and the rise where the flash model fails).
+   subroutine contact_temperatures(b, sys, y, k, temperature, rise, wall)
+      type(bearing_t), intent(in) :: b
+      type(roller_system_t), intent(in) :: sys
+      real(wp), intent(in) :: y(:)
+      integer, intent(in) :: k
+      real(wp), intent(in) :: temperature(:)
+      real(wp), intent(out) :: rise(2), wall(2)
+      type(line_traction_t) :: tr
+      type(error_type), allocatable :: error
+      real(wp) :: r_race(2), speed(2)
+      integer :: j, body(2)
+      body = [BODY_OUTER, BODY_INNER]
+      r_race = [sys%model%qs%r_o, sys%model%qs%r_i]
+      speed = [b%speed_outer, b%speed_inner]
+      rise = ieee_value(0.0_wp, ieee_quiet_nan)
+      wall = rise
+      associate (p => roller_pose(y, k), ld => sys%loads(k))
+         do j = 1, 2
+            if (.not. (ld%load(j) > 0.0_wp)) cycle
+            wall(j) = wall_temperature(temperature, body(j))
+            call fill_traction(b, ld, j, tr)
+            call line_flash(b, ld%c(j), tr, body(j), r_race(j), speed(j) - p%phidot, p%spin, rise(j), error)
+            if (allocated(error)) then
+               rise(j) = ieee_value(0.0_wp, ieee_quiet_nan)
+               deallocate (error)
+            end if
+         end do
+      end associate
+   end subroutine contact_temperatures
 
 end module adore_output_roller_dynamic_report

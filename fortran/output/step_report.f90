@@ -16,11 +16,13 @@ module adore_output_step_report
    use adore_output_print_tables, only: write_step
    use adore_start_ball_step0, only: ball_step0_t
    use adore_start_roller_step0, only: roller_step0_t
+   use adore_thermal_network, only: thermal_field_t
+   use adore_thermal_drag, only: element_fluid_loss_t
    use adore_cage_step0, only: cage_step0_t
    implicit none
    private
 
-   public :: write_ball_step0, write_roller_step0, cage_tables, race_rows, speed_ratios
+   public :: thermal_columns, write_ball_step0, write_roller_step0, cage_tables, race_rows, speed_ratios
 
 
 contains
@@ -141,13 +143,20 @@ contains
    !> loads per unit length in N/m for both races (the report's outer column appears to be
    !> scaled by the length scale D/2; pyadore prints N/m as the heading says - a known
    !> difference, see tests/test_run_golden.py).
-   subroutine write_roller_step0(unit, step, header, b, s)
+   !> With the thermal model on (a roller run's printed steps; docs/thermal.md, "Roller runs"):
+   !> fluid(n), each roller's drag, churning moment and their loss (added to the total power
+   !> loss, their share of it the Churning Loss Fraction), and field, the last solved
+   !> temperature field (each roller's contact node, bulk temperature and HTC, the exit fluid,
+   !> housing and shaft temperatures, the races' and cage's bulk temperatures).
+   subroutine write_roller_step0(unit, step, header, b, s, fluid, field)
       integer, intent(in) :: unit
       integer, intent(in) :: step           !< step number (0: the quasi-static start)
       !> step header: tau, time (s), outer and inner race rotations (rev); all 0 at step 0
       real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
       type(roller_step0_t), intent(in) :: s
+      type(element_fluid_loss_t), intent(in), optional :: fluid(:)
+      type(thermal_field_t), intent(in), optional :: field
 
       real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
@@ -240,6 +249,12 @@ contains
       perf(4) = s%mounting%inner_fit
       perf(5) = s%mounting%clearance
       perf(6) = s%power_loss             ! energy balance; NaN while a cage contact is not modelled
+      call thermal_columns(traction, thermal, perf, fluid, field)
+      if (present(field)) then                        ! the races' and cage's bulk temperatures
+         acc(1, 7) = field%temperature(TEMP_CAGE)
+         acc(2, 7) = field%temperature(TEMP_OUTER)
+         acc(3, 7) = field%temperature(TEMP_INNER)
+      end if
       summary = nan
       summary(1, 1:3) = header(2:4)                   ! time, race rotations
       summary(1, 5) = s%power_loss
@@ -250,6 +265,35 @@ contains
                       thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, loads, acc, perf, [step], summary)
    end subroutine write_roller_step0
+
+   !> The thermal model's columns of a printed step (docs/thermal.md, "The wiring"), where
+   !> given: fluid(n), each rolling element's drag, churning moment and their loss in
+   !> section 1 (traction columns 9-11), added to the total power loss perf(6), their share of
+   !> it the Churning Loss Fraction perf(7); field, the last solved temperature field: each
+   !> element's contact node temperatures, bulk temperature and HTC (thermal columns 8-11),
+   !> the exit fluid perf(8), housing perf(9:11) and shaft perf(12:14) temperatures (K).
+   subroutine thermal_columns(traction, thermal, perf, fluid, field)
+      real(wp), intent(inout) :: traction(:, :), thermal(:, :), perf(:)
+      type(element_fluid_loss_t), intent(in), optional :: fluid(:)
+      type(thermal_field_t), intent(in), optional :: field
+      if (present(fluid)) then                        ! the thermal model's drag and churning
+         traction(:, 9) = fluid%drag
+         traction(:, 10) = fluid%moment
+         traction(:, 11) = fluid%loss
+         perf(6) = perf(6) + sum(fluid%loss)
+         perf(7) = 0.0_wp
+         if (perf(6) > 0.0_wp) perf(7) = sum(fluid%loss)/perf(6)
+      end if
+      if (present(field)) then                        ! the thermal model's last field
+         thermal(:, 8) = field%contact_outer
+         thermal(:, 9) = field%contact_inner
+         thermal(:, 10) = field%element_bulk
+         thermal(:, 11) = field%htc
+         perf(8) = field%exit_temperature
+         perf(9:11) = field%housing
+         perf(12:14) = field%shaft
+      end if
+   end subroutine thermal_columns
 
    !> Section 2 cage rows from the step-0 cage c: RE/cage rows (one per ball, or end 1 and
    !> end 2 of each roller, in that order), race/cage rows (one per guide land; rows beyond
