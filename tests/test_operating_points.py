@@ -81,6 +81,26 @@ def test_light_loads_inside_the_clearance_find_their_equilibrium(tmp_path, speed
     assert weights[0] == pytest.approx(weights[1], rel=1e-6)
 
 
+
+def test_light_axial_load_at_high_speed_keeps_its_balls(tmp_path):
+    """ISO example 4 (axial, with clearance), 1 N at 60 000 rpm, -20 um fit: the centrifugal
+    forces (about 700 N a ball) press the balls on the outer race and leave 0.5 N each on
+    the inner one.  The start's second pass (higher orbital speeds) lifted the balls off the
+    inner race in the race Newton's first step, whose Jacobian then had no stiffness: the
+    step came out infinite, the equilibrium returned a NaN race position as converged and
+    the start stopped ("no loaded race contact").  Now the race is bracketed along the load
+    again (fortran/quasistatic/ball_equilibrium.f90).  Checked: every ball carries load at
+    both races, the outer loads (centrifugal) far above the inner ones, and the balls' force
+    on the inner race balances the applied 1 N along the axis; the run writes its print."""
+    path, force = _variant(tmp_path, EXAMPLES / "iso16281_ex4_axial_clearance.inp", "fast",
+                           speed=60000.0, load=1.0, fit=-20e-6)
+    balls, summary = _core.ball_step0_from_deck(path)
+    assert np.all(balls["q_i"] > 0.0) and np.all(balls["q_o"] > 100.0 * balls["q_i"])
+    race = np.array([summary["inner_force_x"], summary["inner_force_y"], summary["inner_force_z"]])
+    assert abs(race[0] + force[0]) <= 1e-6
+    result = pyadore.run(path, steps=0, out=tmp_path / "fast.prt")
+    assert (tmp_path / "fast.prt").exists() and result.steps_integrated == 0
+
 def test_no_ehd_film_takes_the_decks_curve(tmp_path):
     """Appendix C at 60 000 rpm: Gupta's thermal reduction takes the outer films to 0 (a
     traction model 3 contact with nothing to shear; the start used to stop).  Those contacts
