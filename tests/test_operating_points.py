@@ -81,6 +81,26 @@ def test_light_loads_inside_the_clearance_find_their_equilibrium(tmp_path, speed
     assert weights[0] == pytest.approx(weights[1], rel=1e-6)
 
 
+
+def test_light_axial_load_at_high_speed_keeps_its_balls(tmp_path):
+    """ISO example 4 (axial, with clearance), 1 N at 60 000 rpm, -20 um fit: the centrifugal
+    forces (about 700 N a ball) press the balls on the outer race and leave 0.5 N each on
+    the inner one.  The start's second pass (higher orbital speeds) lifted the balls off the
+    inner race in the race Newton's first step, whose Jacobian then had no stiffness: the
+    step came out infinite, the equilibrium returned a NaN race position as converged and
+    the start stopped ("no loaded race contact").  Now the race is bracketed along the load
+    again (fortran/quasistatic/ball_equilibrium.f90).  Checked: every ball carries load at
+    both races, the outer loads (centrifugal) far above the inner ones, and the balls' force
+    on the inner race balances the applied 1 N along the axis; the run writes its print."""
+    path, force = _variant(tmp_path, EXAMPLES / "iso16281_ex4_axial_clearance.inp", "fast",
+                           speed=60000.0, load=1.0, fit=-20e-6)
+    balls, summary = _core.ball_step0_from_deck(path)
+    assert np.all(balls["q_i"] > 0.0) and np.all(balls["q_o"] > 100.0 * balls["q_i"])
+    race = np.array([summary["inner_force_x"], summary["inner_force_y"], summary["inner_force_z"]])
+    assert abs(race[0] + force[0]) <= 1e-6
+    result = pyadore.run(path, steps=0, out=tmp_path / "fast.prt")
+    assert (tmp_path / "fast.prt").exists() and result.steps_integrated == 0
+
 def test_no_ehd_film_takes_the_decks_curve(tmp_path):
     """Appendix C at 60 000 rpm: Gupta's thermal reduction takes the outer films to 0 (a
     traction model 3 contact with nothing to shear; the start used to stop).  Those contacts
@@ -151,3 +171,30 @@ def test_grid_subset_runs_and_carries_its_load(tmp_path, deck, speed, load, fit)
     carried = np.linalg.norm(bal["inner_carried_N"])
     assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)   # the load and the race weight
     assert bal["inner_residual_N"] <= 0.01 * carried
+
+
+def test_thin_films_take_the_boundary_curve(tmp_path):
+    """Thin films (docs/tribology.md, "Thin films"): a model-3 race contact whose film
+    parameter h / sigma is below boundary_lambda (default 1, sigma = 0.1 um) takes the
+    deck's traction curve, the others keep the EHD traction.  The deep-groove deck at its
+    own 1 000 rpm has thermally reduced films of 0.066-0.115 um at step 0: a threshold just
+    below the thinnest (no contact below it) leaves the print of boundary_lambda = 0 as it
+    is; the default (some contacts below 1) changes it.  Appendix C's films (film parameter
+    4.5-5.3) keep the EHD traction: its step-0 print is the same with boundary_lambda 0 and
+    the default.  A negative threshold is refused naming the option."""
+    balls, _ = _core.ball_step0_from_deck(DEEP_GROOVE)
+    lam = np.concatenate([balls[f"film_{j}"][balls[f"q_{j}"] > 0.0] * balls[f"thermal_factor_{j}"][balls[f"q_{j}"] > 0.0]
+                          for j in "oi"]) / 1e-7
+    assert lam.min() < 1.0 < lam.max()
+    def text(name, **options):
+        return pyadore.run(DEEP_GROOVE, steps=0, out=tmp_path / f"{name}.prt", **options).text.replace(f"{name}.prt", "")
+    ehd = text("ehd", boundary_lambda=0)
+    assert text("below", boundary_lambda=0.999 * lam.min()) == ehd
+    assert text("default") != ehd
+    films, _ = _core.ball_step0_from_deck(BALL)
+    assert np.nanmin(films["film_i"] * films["thermal_factor_i"]) > 4e-7
+    off = pyadore.run(BALL, steps=0, out=tmp_path / "off.prt", boundary_lambda=0).text
+    on = pyadore.run(BALL, steps=0, out=tmp_path / "on.prt").text
+    assert off.replace("off.prt", "") == on.replace("on.prt", "")
+    with pytest.raises(Exception, match="boundary_lambda"):
+        pyadore.run(BALL, steps=0, out=tmp_path / "bad.prt", boundary_lambda=-1)

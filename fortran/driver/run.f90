@@ -22,6 +22,7 @@ module adore_driver_run
    use adore_model_from_deck, only: build_bearing
    use adore_model_checks, only: check_warnings
    use adore_model_run_options, only: run_options_t, STEPS_FROM_DECK
+   use adore_life_lundberg_palmgren, only: life_params_t
    use adore_output_banner, only: write_listing, write_banner
    use adore_output_echo_data, only: echo_data_t
    use adore_output_print_echo, only: write_echo
@@ -66,6 +67,7 @@ contains
       type(deck_text_t) :: text
       type(deck_t) :: deck
       type(bearing_t) :: bearing
+      type(life_params_t) :: roughness
       type(echo_data_t) :: echo
       class(bearing_system_t), allocatable :: sys
       type(integrator_t) :: it
@@ -118,6 +120,9 @@ contains
       call build_bearing(deck, bearing, error)
       if (allocated(error)) return
       call check_warnings(deck, deck_warnings)
+      ! thin films on the deck's curve (run option; sigma: the composite RMS roughness of the
+      ! film parameter the print and the life model use, docs/tribology.md "Thin films")
+      bearing%boundary_film = opts%boundary_lambda*roughness%sigma_rms
       table = len_trim(opts%traction_table) > 0
       if (table) then
          call read_traction_table(trim(opts%traction_table), bearing%race_traction, error)

@@ -429,7 +429,7 @@ contains
             call lubricant_film(b, t_lub, tk, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
             if (allocated(error)) return
          end if
-         if (.not. ehd_film_present(h, phi)) then
+         if (.not. ehd_film_present(b, h, phi)) then
             ! the deck's traction curve: traction model 1, or model 3's contacts without an EHD
             ! film (no entraining speed, or Gupta's thermal reduction at 0; docs/tribology.md)
             if (with_2d) then

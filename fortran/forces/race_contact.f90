@@ -162,15 +162,18 @@ contains
                                 (1.0_wp - b%material(race)%poisson**2)/b%material(race)%modulus)
    end function reduced_modulus
 
-   !> True when a race contact has an EHD film to shear: the isothermal film h (m) times
-   !> the thermal reduction factor phi is at least MIN_EHD_FILM and finite.  Without one (no
-   !> or almost no entraining speed: a shaft at rest, a ball's micro-motion at rest; or
-   !> Gupta's fit at 0 beyond its range of thermal loading, a lubricant far too viscous for
-   !> the speed) traction model 3 takes the deck's traction curve for that contact
-   !> (docs/tribology.md, "No EHD film").
-   pure logical function ehd_film_present(h, phi)
+   !> True when a race contact of b has an EHD film to shear: the isothermal film h (m) times
+   !> the thermal reduction factor phi is at least MIN_EHD_FILM and b%boundary_film (the
+   !> run's boundary-lubrication film, Lambda_b sigma; 0 unless the run option
+   !> boundary_lambda sets it) and finite.  Without one (no or almost no entraining
+   !> speed: a shaft at rest, a ball's micro-motion at rest; Gupta's fit at 0 beyond its
+   !> range of thermal loading, a lubricant far too viscous for the speed; or a film
+   !> parameter below Lambda_b: boundary lubrication) traction model 3 takes the deck's
+   !> traction curve for that contact (docs/tribology.md, "No EHD film", "Thin films").
+   pure logical function ehd_film_present(b, h, phi)
+      type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: h, phi
-      ehd_film_present = h*phi >= MIN_EHD_FILM .and. h*phi < huge(1.0_wp)
+      ehd_film_present = h*phi >= max(MIN_EHD_FILM, b%boundary_film) .and. h*phi < huge(1.0_wp)
    end function ehd_film_present
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):

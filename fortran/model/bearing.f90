@@ -127,6 +127,10 @@ module adore_model_bearing
       type(traction_law_t) :: race_traction
       !> lubricant of the library (Rec 10.0 lubricant_code; 0: none, lubricant unset)
       integer :: lubricant_code = 0
+      !> boundary-lubrication film (m): traction model 3's contacts whose thermally reduced film
+      !> is thinner take the deck's curve (run option boundary_lambda times the
+      !> composite RMS roughness; docs/tribology.md, "Thin films"); 0: off (the 1 nm floor only)
+      real(wp) :: boundary_film = 0.0_wp
       type(lubricant_t) :: lubricant
       !> the coolant and the thermal times (Rec 2.4, 2.5)
       type(coolant_data_t) :: coolant

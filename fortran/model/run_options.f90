@@ -55,6 +55,12 @@ module adore_model_run_options
       !> the race contacts' EHD rolling resistance in the time integration (docs/tribology.md,
       !> "Rolling resistance"; not in ADORE 5.0)
       logical :: rolling_resistance = .false.
+      !> film parameter Lambda_b: traction model 3's race contacts whose film parameter
+      !> Lambda = h / sigma (thermally reduced central film over the composite RMS roughness)
+      !> is below it take the deck's traction curve - boundary lubrication (docs/tribology.md,
+      !> "Thin films"); default 1 (Tallian's boundary of boundary lubrication); 0: off (films
+      !> down to 1 nm are sheared as EHD films)
+      real(wp) :: boundary_lambda = 1.0_wp
       !> the coordinates of the balls in the integrated state: "orbit" (the report's eq 54:
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
@@ -108,7 +114,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 19
+   integer, parameter :: N_OPTIONS = 20
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -137,6 +143,9 @@ module adore_model_run_options
       option_spec_t("rolling_resistance", OPTION_FLAG, "false", 0, "", "", "", &
                     "the race contacts' EHD rolling resistance (Houpert) in the time steps, not in "// &
                     "ADORE 5.0 (ball decks)"), &
+      option_spec_t("boundary_lambda", OPTION_REAL, "1", 0, "", "L", "", &
+                    "film parameter h/sigma below which an EHD (model 3) race contact takes the deck's "// &
+                    "traction curve (boundary lubrication); 0: off (1 nm films sheared)"), &
       option_spec_t("duration", OPTION_REAL, "0", 0, "", "SECONDS", "", &
                     "simulated time to integrate (s): the run ends exactly there, its last step printed "// &
                     "(instead of a step count)"), &
@@ -287,6 +296,8 @@ contains
          opts%housing_htc = x
       case ("thermal_transient")
          opts%thermal_transient = flag
+      case ("boundary_lambda")
+         opts%boundary_lambda = x
       case ("duration")
          opts%duration = x
       case ("revolutions")

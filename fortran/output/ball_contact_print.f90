@@ -92,7 +92,7 @@ contains
                   end if
                end if
                ! as step 0: the EHD flash with a film, the law's flash without one
-               if (ehd .and. ehd_film_present(p%film(j, k), p%thermal_factor(j, k))) then
+               if (ehd .and. ehd_film_present(b, p%film(j, k), p%thermal_factor(j, k))) then
                   h = p%film(j, k)*p%thermal_factor(j, k)
                   if (with_flash) call ehd_flash(b, t_lub, cj, b_minor, race, h, abs(tk%rolling_speed), &
                                                  p%temp_rise(j, k), error)

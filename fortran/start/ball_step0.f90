@@ -265,7 +265,7 @@ contains
                                    h, phi, error)
                if (allocated(error)) return
                ! no film: 0, and the search takes the deck's curve for that contact
-               films(k)%h(j) = merge(h*phi, 0.0_wp, ehd_film_present(h, phi))
+               films(k)%h(j) = merge(h*phi, 0.0_wp, ehd_film_present(b, h, phi))
             end do
          end do
       end subroutine current_films
@@ -334,7 +334,7 @@ contains
                                       s%thermal_factor(j, k), error)
                   if (allocated(error)) return
                end if
-               if (ehd .and. ehd_film_present(s%film(j, k), s%thermal_factor(j, k))) then
+               if (ehd .and. ehd_film_present(b, s%film(j, k), s%thermal_factor(j, k))) then
                   h = s%film(j, k)*s%thermal_factor(j, k)
                   ! the print's losses and tractions by the reference quadrature
                   call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error, reference=.true.)
