@@ -8,8 +8,8 @@ module adore_bearings_roller
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_model_bearing, only: bearing_t
-   use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, body_dof_t, &
-                                    cage_option_free
+   use adore_model_condition, only: condition_of, default_constraints, dof_constraints_t, &
+                                    cage_option_free, deck_constraints
    use adore_geometry_mounted, only: mount_geometry
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_dynamics_integrator, only: integrator_t
@@ -88,9 +88,8 @@ contains
       text = ""
       if (n_steps < 1) return
       if (self%eom%cage_free) then
-         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage free in the "// &
-                "radial plane and about its axis (axial motion and tilt suppressed, report 4.4.6), on its "// &
-                "pockets and guide lands; "
+         text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage free in all six "// &
+                "degrees of freedom (report 4.4.6), on its pockets and guide lands; "
       else
          text = "thermal model off: bulk temperatures fixed at the initial ones (Rec 2.7); cage centred, turning "// &
                 "about its axis only (translation and tilt constrained, report 4.4.6); "
@@ -119,8 +118,8 @@ contains
       if (n_steps < 1) return
       text = "  THERMAL MODEL OFF: BULK TEMPERATURES FIXED AT THE INITIAL ONES (REC 2.7)"//lf
       if (self%eom%cage_free) then
-         text = text//"  CAGE FREE IN THE RADIAL PLANE AND ABOUT ITS AXIS, ON ITS POCKETS AND GUIDE LANDS "// &
-                "(AXIAL MOTION AND TILT SUPPRESSED, REPORT 4.4.6)"//lf
+         text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED, ON ITS POCKETS AND GUIDE LANDS "// &
+                "(REPORT 4.4.6)"//lf
       else
          text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
       end if
@@ -156,7 +155,7 @@ contains
    !> as step 0; adore_forces_roller_bearing's slip), the inner race at its equilibrium, the cage at its step-0
    !> angle and speed; the pockets centred on the rollers at the start.  The cage by the run
    !> option cage (report 4.4.6): centred (default) turning about its axis only; free (or deck
-   !> with Rec 3.3 all zero) also translating in the radial plane from the deck's Rec 9.5.1
+   !> with Rec 3.3 all zero or Appendix D's) free in all six DOFs from the deck's Rec 9.5.1
    !> start whirl (adore_cage_step0's centre and velocity).
    subroutine roller_start_dynamics(self, it, y, error)
       class(roller_kind_t), intent(inout) :: self
@@ -191,28 +190,31 @@ contains
          self%last = e%azimuth
       end associate
       self%time_scale = self%eom%time_scale
-      self%condition%constraints = roller_constraints(self%bearing, cage_free)
+      call roller_constraints(self%bearing, cage_free, self%condition%constraints, error)
+      if (allocated(error)) return
       self%eom%constraints = self%condition%constraints
       self%y = y
    end subroutine roller_start_dynamics
 
-   !> The run's degrees of freedom until Rec 3.3's flags are read (issue #25): the cage turning
-   !> about its axis (cage_free: and translating in y, z); the rollers free - in all six DOFs
-   !> when flanges hold both roller ends (Rec 5B.2) - except for report 4.4.6's own example -
-   !> "a perfectly aligned cylindrical roller bearing with purely radial load": no axial
-   !> force, no moment, no flange - whose rollers' axial motion, tilt and skew are constrained
-   !> (Appendix D is that case).  Free, a flangeless roller's skew grows from round-off
-   !> (docs/dynamics.md, Roller dynamics).
-   pure function roller_constraints(b, cage_free) result(c)
+   !> The run's degrees of freedom (report 4.4.6): the rollers' as the deck's Rec 3.3 says
+   !> (adore_model_condition's deck_constraints: all zero nothing held, Appendix D's
+   !> 1 1 1 1 0 0 0 0 0 0 1 the rollers' axial motion, tilt and skew held; any other pattern an
+   !> input error naming the field) whatever the run option cage; the cage by that option:
+   !> turning about its axis, and when cage_free free in all six DOFs (both readings of
+   !> Rec 3.3 leave the cage free).  Free, a
+   !> flangeless roller's skew grows from round-off (docs/dynamics.md, Roller dynamics).
+   subroutine roller_constraints(b, cage_free, c, error)
       type(bearing_t), intent(in) :: b
       logical, intent(in) :: cage_free
-      type(dof_constraints_t) :: c
+      type(dof_constraints_t), intent(out) :: c
+      type(error_type), allocatable, intent(out) :: error
+      type(dof_constraints_t) :: deck
+      call deck_constraints(b%dof_flags, deck, error)
+      if (allocated(error)) return
       c = default_constraints(.true.)
-      if (cage_free) c%cage%translation(2:3) = .true.
-      if (any(b%roller%flange(1, :)) .and. any(b%roller%flange(2, :))) return
-      if (b%force(1) == 0.0_wp .and. all(b%moment == 0.0_wp)) &
-         c%elements = body_dof_t([.false., .true., .true.], [.true., .false., .false.])
-   end function roller_constraints
+      if (cage_free) c%cage = deck%cage
+      c%elements = deck%elements
+   end subroutine roller_constraints
 
    integer function roller_n_values(self)
       class(roller_kind_t), intent(in) :: self
@@ -290,10 +292,10 @@ contains
                              "modelled (thermal re-mounting of roller bearings)")
             return
          end if
-         if (c%constraints%cage%translation(1) .or. any(c%constraints%cage%rotation(2:3)) .or. &
-             (any(c%constraints%cage%translation(2:3)) .neqv. self%eom%cage_free)) then
+         if (.not. c%constraints%cage%rotation(1) .or. &
+             any([c%constraints%cage%translation, c%constraints%cage%rotation(2:3)] .neqv. self%eom%cage_free)) then
             call input_error(error, "roller bearing: the cage turns about its axis and, run option cage=free, "// &
-                             "translates in the radial plane; its axial motion and tilt are not modelled")
+                             "is free in all six degrees of freedom; other cage constraints are not modelled")
             return
          end if
          self%eom%force = c%force

@@ -18,7 +18,7 @@ module adore_output_roller_dynamic_report
    use adore_tribology_roller_traction, only: line_traction_t
    use adore_forces_roller_bearing, only: roller_loads_t
    use adore_dynamics_roller_system, only: roller_system_t, roller_pose, ROLLER_SIZE, RACE_OFFSET, CAGE_OFFSET, &
-                                           CAGE_POS_OFFSET
+                                           CAGE_POS_OFFSET, CAGE_TILT_OFFSET
    use adore_start_roller_step0, only: roller_step0_t, roller_wear
    use adore_output_run_history, only: run_history_t, history_shape, check_history_element
    implicit none
@@ -103,6 +103,8 @@ contains
       s%cage%state%angular_speed = y(ROLLER_SIZE*n + CAGE_OFFSET + 2)
       call cage_motion(sys, y, c, v)
       s%cage%state%centre(2:3) = c(2:3)
+      ! the free cage's axial position (Mass Center Position Axial; 0 for a centred cage)
+      s%cage%state%centre(1) = y(ROLLER_SIZE*n + CAGE_TILT_OFFSET + 1)
       s%cage%state%velocity = v
       s%cage%state%whirl_speed = whirl_rate(c, v)
       s%cage%state%orbital_angle = 0.0_wp
