@@ -101,11 +101,10 @@ contains
       end if
       if (any(self%bearing%roller%flange)) then
          text = text//"; roller ends on the flanges of Rec 5B.2 (spherical ends, Hertz)"
-         if (any(self%bearing%roller%flange(1, :)) .and. any(self%bearing%roller%flange(2, :))) &
-            text = text//", rollers free in all six degrees of freedom"
       else
          text = text//"; no flanges"
       end if
+      text = text//roller_dof_note(self%condition%constraints)
    end subroutine roller_run_note
 
    !> The print listing's lines on the physics of the time integration.
@@ -215,6 +214,17 @@ contains
       if (cage_free) c%cage = deck%cage
       c%elements = deck%elements
    end subroutine roller_constraints
+
+   !> The run note's words on the rollers' degrees of freedom (Rec 3.3, roller_constraints).
+   pure function roller_dof_note(c) result(text)
+      type(dof_constraints_t), intent(in) :: c
+      character(len=:), allocatable :: text
+      if (all(c%elements%translation) .and. all(c%elements%rotation)) then
+         text = "; rollers free in all six degrees of freedom (Rec 3.3 all zero)"
+      else
+         text = "; rollers' axial motion, tilt and skew held (Rec 3.3 1 1 1 1 0 0 0 0 0 0 1, report 4.4.6)"
+      end if
+   end function roller_dof_note
 
    integer function roller_n_values(self)
       class(roller_kind_t), intent(in) :: self

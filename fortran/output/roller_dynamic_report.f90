@@ -27,7 +27,7 @@ module adore_output_roller_dynamic_report
    public :: roller_step_view, new_roller_history, record_roller_history, roller_total_power
 
    !> columns before the guide lands' forces, and after them
-   integer, parameter :: N_FIRST = 30, N_LAST = 0
+   integer, parameter :: N_FIRST = 32, N_LAST = 0
 
 contains
 
@@ -170,7 +170,8 @@ contains
    !> total loss split into race contacts, pockets and guide lands, the bulk temperatures
    !> (fixed: the roller run's thermal model is off), the cage centre's y, z, its whirl
    !> (tangential) and radial velocity, the diametral guide clearance, the whirl rate, the
-   !> centre's velocity y, z and each guide land's
+   !> centre's velocity y, z, its axial position and tilt (rad, the angle of its axis from the
+   !> bearing axis) and each guide land's
    !> normal force (film + metal; the figure types 33-44 of the report's roller run).
    subroutine new_roller_history(h, b, n_steps, element, error, stride)
       type(run_history_t), intent(out) :: h
@@ -197,7 +198,7 @@ contains
                            "bulk_temp_inner_race_K", "bulk_temp_housing_K", "bulk_temp_shaft_K", &
                            "cage_y_m", "cage_z_m", "cage_whirl_velocity_m_s", "cage_radial_velocity_m_s", &
                            "guide_clearance_m", "cage_whirl_speed_rad_s", "cage_velocity_y_m_s", &
-                           "cage_velocity_z_m_s"]
+                           "cage_velocity_z_m_s", "cage_x_m", "cage_tilt_rad"]
       do k = 1, b%n_lands
          h%names(N_FIRST + k) = "land"//itoa(k)//"_force_N"
       end do
@@ -213,7 +214,8 @@ contains
       real(wp), intent(in) :: y(:)
       real(wp), allocatable :: values(:, :)
       real(wp) :: race_loss, c(3), v(3), rad, e_c(3), clearance, land(h%n_lands)
-      integer :: r0, k
+      integer :: r0, k, t0
+      t0 = ROLLER_SIZE*sys%n + CAGE_TILT_OFFSET
       if (h%rows >= size(h%values, 1)) then
          allocate (values(max(2*size(h%values, 1), 16), size(h%values, 2)))
          values(1:h%rows, :) = h%values(1:h%rows, :)
@@ -249,7 +251,7 @@ contains
                                 b%temperature(TEMP_ELEMENT), b%temperature(TEMP_CAGE), b%temperature(TEMP_OUTER), &
                                 b%temperature(TEMP_INNER), b%temperature(TEMP_HOUSING), b%temperature(TEMP_SHAFT), &
                                 c(2), c(3), -e_c(3)*v(2) + e_c(2)*v(3), dot_product(e_c, v), clearance, &
-                                whirl_rate(c, v), v(2), v(3), land]
+                                whirl_rate(c, v), v(2), v(3), y(t0 + 1), norm2(y(t0 + 2:t0 + 3)), land]
       end associate
    end subroutine record_roller_history
 
