@@ -103,14 +103,15 @@ contains
    !>   skew) held, the cage free in all six DOFs (the report's step 4000 prints the rollers'
    !>   axial position, tilt and skew exactly 0 and its cage moved axially, -5.457e-8 m, with
    !>   a transverse angular acceleration under zero moment, i.e. tilting).
-   !> Any other pattern is an input error naming the first field that departs from both:
-   !> which position constrains which DOF alone is not identified.
+   !> Any other pattern is an input error naming its first nonzero field that Appendix D's
+   !> pattern lacks (else its first nonzero field): which position constrains which DOF
+   !> alone is not identified.
    subroutine deck_constraints(flags, c, error)
       integer, intent(in) :: flags(:)
       type(dof_constraints_t), intent(out) :: c
       type(error_type), allocatable, intent(out) :: error
       character(len=16) :: num
-      integer :: k
+      integer :: k, i
       c = default_constraints(.false.)
       if (all(flags == 0)) return
       if (size(flags) == size(REC3_3_ROLLERS_PLANAR)) then
@@ -119,18 +120,21 @@ contains
             return
          end if
       end if
-      ! the first field that is nonzero where Appendix D's is 0 (or differs from it), else the
-      ! first of Appendix D's ones that is missing
+      ! the first nonzero field that Appendix D's pattern does not have, else the first nonzero
+      ! field (the deck departs from all zeros there and is not Appendix D's pattern)
       k = 0
-      do k = 1, size(flags)
-         if (flags(k) /= 0) then
-            if (k > size(REC3_3_ROLLERS_PLANAR)) exit
-            if (flags(k) /= REC3_3_ROLLERS_PLANAR(k)) exit
+      do i = 1, size(flags)
+         if (flags(i) == 0) cycle
+         if (k == 0) k = i
+         if (i > size(REC3_3_ROLLERS_PLANAR)) then
+            k = i
+            exit
+         end if
+         if (flags(i) /= REC3_3_ROLLERS_PLANAR(i)) then
+            k = i
+            exit
          end if
       end do
-      if (k > size(flags)) k = findloc(flags(:min(size(flags), 11)) /= REC3_3_ROLLERS_PLANAR(:min(size(flags), 11)), &
-                                       .true., dim=1)
-      k = max(k, 1)
       write (num, "(i0,a,i0)") k, " = ", flags(k)
       call input_error(error, "Rec 3.3 field "//trim(num)//": of the DOF constraint flags (report 4.4.6) only "// &
                        "all zeros (nothing constrained) and Appendix D's 1 1 1 1 0 0 0 0 0 0 1 (the rolling "// &

@@ -318,7 +318,8 @@ RECORDS: tuple[RecordSpec, ...] = (
         F("cage_whirl_radius", "real", "m", "not used (formerly read as the radius of the start whirl, "
           "section 4.4.4): ball 6.636E-04, roller 2.5E-04 m, while the centres printed at the start lie at "
           "5.900E-04 and 5.0E-05 m and the roller's land radial clearance is 5.0E-05 m; the start whirl "
-          "turns about the axis at the centre's own radius (docs/dynamics.md)", "", "unknown",
+          "turns about the axis at the centre's own radius (docs/dynamics.md); its meaning is not "
+          "identified", "", "inference",
           default=0.0, lo=0.0),
         _real("cage_whirl_ratio", "-", "cage whirl to angular velocity ratio (echo)", default=1.0),
         _real("cage_epicyclic_ratio", "-", "cage angular velocity to epicyclic velocity ratio (echo)",
