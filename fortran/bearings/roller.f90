@@ -85,6 +85,7 @@ contains
       class(roller_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
       character(len=:), allocatable, intent(out) :: text
+      character(len=:), allocatable :: dof
       text = ""
       if (n_steps < 1) return
       if (self%eom%cage_free) then
@@ -104,7 +105,8 @@ contains
       else
          text = text//"; no flanges"
       end if
-      text = text//roller_dof_note(self%condition%constraints)
+      call roller_dof_note(self%condition%constraints, dof)
+      text = text//dof
    end subroutine roller_run_note
 
    !> The print listing's lines on the physics of the time integration.
@@ -215,16 +217,17 @@ contains
       c%elements = deck%elements
    end subroutine roller_constraints
 
-   !> The run note's words on the rollers' degrees of freedom (Rec 3.3, roller_constraints).
-   pure function roller_dof_note(c) result(text)
+   !> The run note's words on the rollers' degrees of freedom (Rec 3.3, roller_constraints); a
+   !> subroutine: no deferred-length function result (adore_core_strings).
+   pure subroutine roller_dof_note(c, text)
       type(dof_constraints_t), intent(in) :: c
-      character(len=:), allocatable :: text
+      character(len=:), allocatable, intent(out) :: text
       if (all(c%elements%translation) .and. all(c%elements%rotation)) then
          text = "; rollers free in all six degrees of freedom (Rec 3.3 all zero)"
       else
          text = "; rollers' axial motion, tilt and skew held (Rec 3.3 1 1 1 1 0 0 0 0 0 0 1, report 4.4.6)"
       end if
-   end function roller_dof_note
+   end subroutine roller_dof_note
 
    integer function roller_n_values(self)
       class(roller_kind_t), intent(in) :: self

@@ -315,11 +315,11 @@ RECORDS: tuple[RecordSpec, ...] = (
           "RACE; Tables 5/6)", "", "echo; table"),
     ), section="echo: ANGULAR VELOCITY"),
     RecordSpec("9.5.1", "Cage initial conditions", (
-        F("cage_whirl_radius", "real", "m", "not used (formerly read as the radius of the start whirl, "
-          "section 4.4.4): ball 6.636E-04, roller 2.5E-04 m, while the centres printed at the start lie at "
-          "5.900E-04 and 5.0E-05 m and the roller's land radial clearance is 5.0E-05 m; the start whirl "
-          "turns about the axis at the centre's own radius (docs/dynamics.md); its meaning is not "
-          "identified", "", "inference",
+        F("cage_whirl_radius", "real", "m", "meaning not identified, not used; formerly read as the start "
+          "whirl's radius (section 4.4.4), but ball 6.636E-04 and roller 2.5E-04 m against the centres "
+          "printed at the start, 5.900E-04 and 5.0E-05 m, the roller's beyond its land radial clearance "
+          "5.0E-05 m: the start whirl turns about the axis at the centre's own radius (docs/dynamics.md)",
+          "", "inference",
           default=0.0, lo=0.0),
         _real("cage_whirl_ratio", "-", "cage whirl to angular velocity ratio (echo)", default=1.0),
         _real("cage_epicyclic_ratio", "-", "cage angular velocity to epicyclic velocity ratio (echo)",
