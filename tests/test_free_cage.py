@@ -99,10 +99,24 @@ def test_cage_deck_refuses_an_unidentified_rec_3_3_flag(tmp_path, ball_deck):
     lines[k] = "Rec 3.3     " + "".join(f"{v:6d}" for v in [0, 0, 1] + [0] * 8)
     deck = tmp_path / "flag.inp"
     deck.write_text("\n".join(lines) + "\n")
-    with pytest.raises(pyadore.AdoreInputError, match="Rec 3.3 field 3 is nonzero"):
+    with pytest.raises(pyadore.AdoreInputError, match="Rec 3.3 field 3 = 1: .* only all zeros"):
         pyadore.run(deck, out=tmp_path / "flag.prt", cage="deck", steps=2)
-    # the other choices do not read the flags
-    pyadore.run(deck, out=tmp_path / "ok.prt", cage="centred", steps=2)
+    # the flags also say what the rolling elements may do, so every cage choice reads them
+    with pytest.raises(pyadore.AdoreInputError, match="Rec 3.3 field 3 = 1"):
+        pyadore.run(deck, out=tmp_path / "centred.prt", cage="centred", steps=2)
+
+
+def test_a_ball_deck_with_the_roller_constraints_is_refused(tmp_path, ball_deck):
+    """Appendix D's Rec 3.3 holds the rolling elements' axial motion, tilt and skew (report
+    4.4.6): the ball kind integrates every ball DOF, so a ball deck asking for it is an input
+    error rather than a silently free ball."""
+    lines = ball_deck.read_text().splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("Rec 3.3"))
+    lines[k] = "Rec 3.3     " + "".join(f"{v:6d}" for v in [1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1])
+    deck = tmp_path / "held.inp"
+    deck.write_text("\n".join(lines) + "\n")
+    with pytest.raises(pyadore.AdoreInputError, match="hold rolling-element degrees of freedom"):
+        pyadore.run(deck, out=tmp_path / "held.prt", steps=2)
 
 
 def test_plot_sweep_map_marks_stable_and_erratic_cases(tmp_path):

@@ -171,7 +171,7 @@ def test_free_roller_cage_starts_on_the_deck_whirl_and_rides_its_dry_lands(free_
     inside it."""
     text = free_cage_run.read_text()
     assert "Normal termination: Last Step Number =     300" in text
-    assert "CAGE FREE IN THE RADIAL PLANE AND ABOUT ITS AXIS" in text
+    assert "CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED" in text
     h = pd.read_csv(free_cage_run.with_suffix(".hist.csv"))
     assert h["cage_y_m"].iloc[0] == 0.0 and h["cage_z_m"].iloc[0] == pytest.approx(5.0e-5, rel=1e-12)
     assert np.ptp(h["cage_y_m"]) > 1.0e-5
@@ -209,3 +209,31 @@ def test_roller_run_draws_the_report_roller_figure_types(free_cage_run, adore_ex
     assert {6, 7, 8} <= {t.number for t, _f in made.figures}
     texts = [t.get_text() for t_, f in made.figures if t_.number in (6, 7, 8) for ax in f.get_axes() for t in ax.texts]
     assert any("the cage is centred in this run" in s for s in texts)
+
+
+def _with_rec_3_3(tmp_path, flags, name):
+    lines = DECK.read_text().splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("Rec 3.3"))
+    lines[k] = "Rec 3.3     " + "".join(f"{v:6d}" for v in flags)
+    deck = tmp_path / name
+    deck.write_text("\n".join(lines) + "\n")
+    return deck
+
+
+def test_rec_3_3_sets_the_rollers_and_the_cage_degrees_of_freedom(tmp_path, adore_exe):
+    """Rec 3.3 (report 4.4.6, docs/deck-format.md): Appendix D's 1 1 1 1 0 0 0 0 0 0 1 holds the
+    rollers' axial motion, tilt and skew and leaves the cage free - `--cage deck` is then the
+    free cage, the same run as `--cage free`; all zeros free the rollers too; a pattern that is
+    neither is an input error naming a field."""
+    def run(deck, out, *opts):
+        return subprocess.run([str(adore_exe), str(deck), str(tmp_path / out), "--steps", "20", *opts],
+                              capture_output=True, text=True, timeout=600)
+    free, deck = run(DECK, "f.prt", "--cage", "free"), run(DECK, "d.prt", "--cage", "deck")
+    assert free.returncode == 0 and deck.returncode == 0, deck.stderr
+    assert "rollers' axial motion, tilt and skew held (Rec 3.3" in deck.stderr
+    assert (tmp_path / "f.hist.csv").read_text() == (tmp_path / "d.hist.csv").read_text()
+    zeros = run(_with_rec_3_3(tmp_path, [0] * 11, "zeros.inp"), "z.prt")
+    assert zeros.returncode == 0, zeros.stderr
+    assert "rollers free in all six degrees of freedom (Rec 3.3 all zero)" in zeros.stderr
+    bad = run(_with_rec_3_3(tmp_path, [1] + [0] * 10, "bad.inp"), "b.prt")
+    assert bad.returncode != 0 and "Rec 3.3 field 1 = 1: " in bad.stderr

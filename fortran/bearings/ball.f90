@@ -10,11 +10,11 @@ module adore_bearings_ball
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
-   use adore_core_error, only: error_type, engine_error
-   use adore_core_strings, only: itoa
+   use adore_core_error, only: error_type, engine_error, input_error
+   use adore_core_strings, only: itoa, upper
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, cage_option_free, &
-                                    dof_constraints_t
+                                    dof_constraints_t, deck_constraints
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
    use adore_thermal_distortion, only: distorted_bearing
@@ -144,6 +144,8 @@ contains
       integer :: method
       logical :: cage_free
       call cage_option_free(self%options%cage, self%bearing%dof_flags, cage_free, error)
+      if (allocated(error)) return
+      call ball_deck_dof_check(self%bearing%dof_flags, error)
       if (allocated(error)) return
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
@@ -628,5 +630,20 @@ contains
          c = 2.0_wp*minval(pairs%clearance)
       end associate
    end function guide_clearance
+
+   !> Rec 3.3 read for the balls whatever the run option cage (report 4.4.6; adore_model_condition's
+   !> deck_constraints): an unidentified pattern is an input error naming its field, and a
+   !> pattern that holds rolling-element DOFs (Appendix D's, for rollers) too - the ball kind
+   !> integrates every DOF of its balls.
+   subroutine ball_deck_dof_check(flags, error)
+      integer, intent(in) :: flags(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(dof_constraints_t) :: deck
+      call deck_constraints(flags, deck, error)
+      if (allocated(error)) return
+      if (.not. (all(deck%elements%translation) .and. all(deck%elements%rotation))) &
+         call input_error(error, "Rec 3.3: the flags hold rolling-element degrees of freedom (report 4.4.6), "// &
+                          "which the ball kind does not model (every ball DOF is integrated)")
+   end subroutine ball_deck_dof_check
 
 end module adore_bearings_ball

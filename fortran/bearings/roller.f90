@@ -12,7 +12,7 @@ module adore_bearings_roller
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_INNER, BODY_OUTER, TEMP_ELEMENT, TEMP_OUTER, &
                                   TEMP_INNER
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, dof_constraints_t, &
-                                    body_dof_t, cage_option_free
+                                    cage_option_free, deck_constraints
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_thermal_distortion, only: distortion_t, distorted_bearing, thermal_distortion
    use adore_thermal_network, only: thermal_heat_t
@@ -104,13 +104,13 @@ contains
       class(roller_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
       character(len=:), allocatable, intent(out) :: text
+      character(len=:), allocatable :: dof
       text = ""
       if (n_steps < 1) return
       call thermal_run_text(self%thermal, .false., text)
       if (self%thermal%mode /= THERMAL_OFF) text = text//" (roller runs: docs/thermal.md, Roller runs)"
       if (self%eom%cage_free) then
-         text = text//"; cage free in the radial plane and about its axis (axial motion and tilt suppressed, "// &
-                "report 4.4.6), on its pockets and guide lands; "
+         text = text//"; cage free in all six degrees of freedom (report 4.4.6), on its pockets and guide lands; "
       else
          text = text//"; cage centred, turning about its axis only (translation and tilt constrained, report "// &
                 "4.4.6); "
@@ -122,11 +122,11 @@ contains
       end if
       if (any(self%bearing%roller%flange)) then
          text = text//"; roller ends on the flanges of Rec 5B.2 (spherical ends, Hertz)"
-         if (any(self%bearing%roller%flange(1, :)) .and. any(self%bearing%roller%flange(2, :))) &
-            text = text//", rollers free in all six degrees of freedom"
       else
          text = text//"; no flanges"
       end if
+      call roller_dof_note(self%condition%constraints, dof)
+      text = text//dof
    end subroutine roller_run_note
 
    !> The print listing's lines on the physics of the time integration.
@@ -140,8 +140,8 @@ contains
       call thermal_run_text(self%thermal, .true., text)
       text = text//lf
       if (self%eom%cage_free) then
-         text = text//"  CAGE FREE IN THE RADIAL PLANE AND ABOUT ITS AXIS, ON ITS POCKETS AND GUIDE LANDS "// &
-                "(AXIAL MOTION AND TILT SUPPRESSED, REPORT 4.4.6)"//lf
+         text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED, ON ITS POCKETS AND GUIDE LANDS "// &
+                "(REPORT 4.4.6)"//lf
       else
          text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
       end if
@@ -178,7 +178,7 @@ contains
    !> as step 0; adore_forces_roller_bearing's slip), the inner race at its equilibrium, the cage at its step-0
    !> angle and speed; the pockets centred on the rollers at the start.  The cage by the run
    !> option cage (report 4.4.6): centred (default) turning about its axis only; free (or deck
-   !> with Rec 3.3 all zero) also translating in the radial plane from the deck's Rec 9.5.1
+   !> with Rec 3.3 all zero or Appendix D's) free in all six DOFs from the deck's Rec 9.5.1
    !> start whirl (adore_cage_step0's centre and velocity).
    subroutine roller_start_dynamics(self, it, y, error)
       class(roller_kind_t), intent(inout) :: self
@@ -203,7 +203,8 @@ contains
          self%last = e%azimuth
       end associate
       self%time_scale = self%eom%time_scale
-      self%condition%constraints = roller_constraints(self%bearing, cage_free)
+      call roller_constraints(self%bearing, cage_free, self%condition%constraints, error)
+      if (allocated(error)) return
       self%eom%constraints = self%condition%constraints
       self%y = y
       self%geometry = mount_geometry(self%bearing, self%bearing%temperature, 2)
@@ -219,23 +220,37 @@ contains
       end if
    end subroutine roller_start_dynamics
 
-   !> The run's degrees of freedom until Rec 3.3's flags are read (issue #25): the cage turning
-   !> about its axis (cage_free: and translating in y, z); the rollers free - in all six DOFs
-   !> when flanges hold both roller ends (Rec 5B.2) - except for report 4.4.6's own example -
-   !> "a perfectly aligned cylindrical roller bearing with purely radial load": no axial
-   !> force, no moment, no flange - whose rollers' axial motion, tilt and skew are constrained
-   !> (Appendix D is that case).  Free, a flangeless roller's skew grows from round-off
-   !> (docs/dynamics.md, Roller dynamics).
-   pure function roller_constraints(b, cage_free) result(c)
+   !> The run's degrees of freedom (report 4.4.6): the rollers' as the deck's Rec 3.3 says
+   !> (adore_model_condition's deck_constraints: all zero nothing held, Appendix D's
+   !> 1 1 1 1 0 0 0 0 0 0 1 the rollers' axial motion, tilt and skew held; any other pattern an
+   !> input error naming the field) whatever the run option cage; the cage by that option:
+   !> turning about its axis, and when cage_free free in all six DOFs (both readings of
+   !> Rec 3.3 leave the cage free).  Free, a
+   !> flangeless roller's skew grows from round-off (docs/dynamics.md, Roller dynamics).
+   subroutine roller_constraints(b, cage_free, c, error)
       type(bearing_t), intent(in) :: b
       logical, intent(in) :: cage_free
-      type(dof_constraints_t) :: c
+      type(dof_constraints_t), intent(out) :: c
+      type(error_type), allocatable, intent(out) :: error
+      type(dof_constraints_t) :: deck
+      call deck_constraints(b%dof_flags, deck, error)
+      if (allocated(error)) return
       c = default_constraints(.true.)
-      if (cage_free) c%cage%translation(2:3) = .true.
-      if (any(b%roller%flange(1, :)) .and. any(b%roller%flange(2, :))) return
-      if (b%force(1) == 0.0_wp .and. all(b%moment == 0.0_wp)) &
-         c%elements = body_dof_t([.false., .true., .true.], [.true., .false., .false.])
-   end function roller_constraints
+      if (cage_free) c%cage = deck%cage
+      c%elements = deck%elements
+   end subroutine roller_constraints
+
+   !> The run note's words on the rollers' degrees of freedom (Rec 3.3, roller_constraints); a
+   !> subroutine: no deferred-length function result (adore_core_strings).
+   pure subroutine roller_dof_note(c, text)
+      type(dof_constraints_t), intent(in) :: c
+      character(len=:), allocatable, intent(out) :: text
+      if (all(c%elements%translation) .and. all(c%elements%rotation)) then
+         text = "; rollers free in all six degrees of freedom (Rec 3.3 all zero)"
+      else
+         text = "; rollers' axial motion, tilt and skew held (Rec 3.3 1 1 1 1 0 0 0 0 0 0 1, report 4.4.6)"
+      end if
+   end subroutine roller_dof_note
 
    integer function roller_n_values(self)
       class(roller_kind_t), intent(in) :: self
@@ -352,10 +367,10 @@ contains
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       associate (c => self%condition)
-         if (c%constraints%cage%translation(1) .or. any(c%constraints%cage%rotation(2:3)) .or. &
-             (any(c%constraints%cage%translation(2:3)) .neqv. self%eom%cage_free)) then
+         if (.not. c%constraints%cage%rotation(1) .or. &
+             any([c%constraints%cage%translation, c%constraints%cage%rotation(2:3)] .neqv. self%eom%cage_free)) then
             call input_error(error, "roller bearing: the cage turns about its axis and, run option cage=free, "// &
-                             "translates in the radial plane; its axial motion and tilt are not modelled")
+                             "is free in all six degrees of freedom; other cage constraints are not modelled")
             return
          end if
          self%eom%force = c%force

@@ -17,10 +17,13 @@
 !>   velocity is the mean RE orbital speed of the quasi-static start (ball: golden mean of
 !>   the printed ball speeds 9139.7 rpm, printed 9.140e3; the epicyclic formula at alpha0
 !>   gives 8767); cage angular velocity = Rec 9.5.1 ratio 3 x epicyclic, about +x; whirl
-!>   (mass centre orbital) velocity = ratio 2 x angular velocity.  The whirl radius only
-!>   sets the mass-centre speed (whirl velocity x radius, tangential); the start position is
-!>   the Rec 9.5.1 centre, not a point on the whirl circle (ball: radius 6.636e-4, printed
-!>   position 5.900e-4).
+!>   (mass centre orbital) velocity = ratio 2 x angular velocity: the centre starts on the
+!>   circle through its Rec 9.5.1 position about the bearing axis, moving tangentially at
+!>   whirl velocity x that radius (report 4.4.4: "mass center whirl velocity ... equal to its
+!>   angular velocity").  Rec 9.5.1 field 1 ("cage_whirl_radius") is not that radius and
+!>   is not used: ball 6.636e-4 m against the printed position 5.900e-4 m, roller 2.5e-4 m
+!>   against 5.0e-5 m and a land radial clearance of 5.0e-5 m (taken as the radius it
+!>   launched Appendix D's cage at 5x its whirl rate; docs/dynamics.md).
 !> * Pocket frame of pocket k at azimuth psi (the RE's azimuth plus the cage rotation about
 !>   x): origin on the cage at radius R_c = (cage OD + cage ID)/4 along the radial line psi
 !>   through the cage centre; x_p axial, z_p radial outward, y_p = z_p x x_p (at psi = 0 the
@@ -148,7 +151,7 @@ contains
       st%whirl_speed = inp%whirl_ratio*st%angular_speed
       ! x x radial(a): the centre moves in the sense of the rotation about +x
       a = st%orbital_angle
-      st%velocity = st%whirl_speed*inp%whirl_radius*[0.0_wp, -cos(a), -sin(a)]
+      st%velocity = st%whirl_speed*hypot(st%centre(2), st%centre(3))*[0.0_wp, -cos(a), -sin(a)]
    end function cage_initial_state
 
    !> Coordinates in the pocket frame at azimuth psi (rad) of the inertial point p, for a

@@ -523,10 +523,31 @@ module adore_deck_schema
       "unknown", &
       "pyadore extension, not ADORE's: 1 = Rec 5B.2 (roller ends, f" // &
       "langes, pocket type) follows a roller deck's Rec 5B.1", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
+      "DOF constraint flag (report 4.4.6), read as one pattern with" // &
+      " the other ten: all eleven 0 = nothing constrained", &
       "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", &
-      "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", &
-      "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", &
-      "shaft OD = bearing bore (echo SHAFT OD)", "bearing outer diameter (echo BEARING OD)", &
+      "unknown", "unknown", "unknown", "unknown", "shaft OD = bearing bore (echo SHAFT OD)", &
+      "bearing outer diameter (echo BEARING OD)", &
       "shaft inner diameter, 0 = solid (echo SHAFT ID)", &
       "housing outer diameter (echo HOUSING OD)", "outer race width (echo WIDTH I)", &
       "inner race width (echo WIDTH II)", "ball diameter (echo BALL DIA)", &
@@ -596,8 +617,7 @@ module adore_deck_schema
       "applied moment x (echo APPLIED MOMENT VECTOR)", "applied moment y", "applied moment z", &
       "unknown", "unknown", "unknown", "unknown", "unknown", "unknown", &
       "inner race (shaft) speed (echo ANGULAR VELOCITY, INNER RACE", &
-      "radius of the prescribed initial cage whirl orbit", &
-      "cage whirl to angular velocity ratio (echo)", &
+      "meaning not identified, not used", "cage whirl to angular velocity ratio (echo)", &
       "cage angular velocity to epicyclic velocity ratio (echo)", &
       "cage geometric centre x (echo CAGE GEOM CEN POSITION)", "cage geometric centre y", &
       "cage geometric centre z", "cage angular position x (echo CAGE ANGULAR POSITION)", &

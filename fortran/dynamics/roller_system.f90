@@ -7,7 +7,9 @@
 !> transverse angular velocity omega_t, omega_r (absolute, orbit-frame components) and the
 !> spin W_abs about the roller axis (absolute); then the cage angle about x and its rate;
 !> then the inner race centre (x, y, z) and velocity; then the cage centre's y, z and their
-!> rates (held at zero unless the cage is free).  The outer race is fixed.
+!> rates (held at zero unless the cage is free); then the cage's axial position x_c, its
+!> axis's transverse components (1, a_y, a_z) (its tilt), x_c' and its transverse angular
+!> velocity (w_y, w_z) (held at zero unless the cage is free).  The outer race is fixed.
 !>
 !> Roller (polar coordinates in the orbiting frame, m the roller mass):
 !>     m (rddot - r phidot**2) = F_r,   m (r phiddot + 2 rdot phidot) = F_t,   m xddot = F_x.
@@ -28,8 +30,15 @@
 !> when free (cage_free, run option cage=free), translating in the plane normal to the
 !> bearing axis: m_c C'' = pocket forces + guide-land forces (adore_contact_cage_land: the
 !> short-bearing film when the deck has a lubricant, metallic line contact with friction
-!> when the clearance closes) + gravity.  Its axial motion and tilt stay suppressed (report
-!> 4.4.6's own example: an aligned cylindrical roller bearing under radial load).  Centred
+!> when the clearance closes) + gravity, also axially (m_c x_c'' = F_x + m_c g_x), and tilting
+!> as a symmetric body spinning at W_c about its axis (I_a, I_t its axial and transverse
+!> moments of inertia; small tilt; the moments M about its centre, inertial):
+!>     a_y' = w_z,   a_z' = -w_y,
+!>     I_t w_y' = M_y - I_a W_c w_z,   I_t w_z' = M_z + I_a W_c w_y
+!> (free of moments it nutates at I_a W_c / I_t, its transverse kinetic energy conserved;
+!> tested).  The moments: the pocket reactions' (their axial lever arms included,
+!> adore_forces_roller_bearing's cage_moment) and the lands' (their friction's axial part at
+!> the land radius; the film is taken untilted, adore_contact_cage_land).  Centred
 !> (the default), the cage stays on the bearing axis and the lands give their torque at zero
 !> eccentricity (Petroff's Couette torque).  Inner race: its translation under the
 !> applied load, gravity and the roller reactions, each direction as the condition's
@@ -63,7 +72,8 @@ module adore_dynamics_roller_system
                                  R_SKEW = 8, R_WT = 9, R_WR = 10, R_SPIN = 11
    !> offsets after the rollers: cage angle and rate, inner race position and velocity, cage
    !> centre y, z and velocity y, z
-   integer, parameter, public :: CAGE_OFFSET = 0, RACE_OFFSET = 2, CAGE_POS_OFFSET = 8, TAIL_SIZE = 12
+   integer, parameter, public :: CAGE_OFFSET = 0, RACE_OFFSET = 2, CAGE_POS_OFFSET = 8, CAGE_TILT_OFFSET = 12, &
+                                 TAIL_SIZE = 18
 
    !> The roller bearing's equations of motion.
    type, extends(derivative_t) :: roller_system_t
@@ -74,6 +84,7 @@ module adore_dynamics_roller_system
       real(wp) :: inertia(2) = 0.0_wp              !< roller I_a, I_t (kg m**2)
       real(wp) :: cage_inertia = 0.0_wp            !< about x (kg m**2)
       real(wp) :: cage_mass = 0.0_wp               !< (kg)
+      real(wp) :: cage_inertia_t = 0.0_wp          !< about a transverse axis (kg m**2)
       logical :: cage_free = .false.               !< cage centre integrated in y, z (module header)
       real(wp) :: race_mass = 0.0_wp               !< inner race (kg)
       real(wp) :: force(3) = 0.0_wp                !< applied to the inner race (N)
@@ -84,6 +95,7 @@ module adore_dynamics_roller_system
       real(wp) :: land_power = 0.0_wp              !< guide-land loss (W)
       type(cage_land_geometry_t), allocatable :: land(:)   !< each guide land of the last evaluation
       real(wp) :: cage_force(3) = 0.0_wp           !< pocket + land force on the cage, last evaluation (N)
+      real(wp) :: cage_moment(3) = 0.0_wp          !< pocket + land moment on the cage about its centre (N m)
       integer :: calls = 0
    contains
       procedure :: eval => roller_system_eval
@@ -120,8 +132,8 @@ contains
       type(race_pose_t) :: a
       type(body_state_t) :: cage, outer
       type(cage_land_geometry_t) :: lc
-      real(wp) :: race_force(3), cage_torque, cage_force(3), m, ia, it, h
-      integer :: k, i0, c0, r0, g0
+      real(wp) :: race_force(3), cage_torque, cage_force(3), m, ia, it, h, cage_moment(3)
+      integer :: k, i0, c0, r0, g0, t0
 
       self%calls = self%calls + 1
       if (allocated(self%failure_reason)) deallocate (self%failure_reason)
@@ -129,17 +141,23 @@ contains
       c0 = ROLLER_SIZE*self%n + CAGE_OFFSET
       r0 = ROLLER_SIZE*self%n + RACE_OFFSET
       g0 = ROLLER_SIZE*self%n + CAGE_POS_OFFSET
+      t0 = ROLLER_SIZE*self%n + CAGE_TILT_OFFSET
       a%position = y(r0 + 1:r0 + 3)
       a%velocity = y(r0 + 4:r0 + 6)
       a%cage_speed = y(c0 + 2)
       a%cage_position = [0.0_wp, y(g0 + 1), y(g0 + 2)]
       a%cage_velocity = [0.0_wp, y(g0 + 3), y(g0 + 4)]
+      a%cage_position(1) = y(t0 + 1)
+      a%cage_velocity(1) = y(t0 + 4)
+      a%cage_tilt = y(t0 + 2:t0 + 3)
+      a%cage_omega_t = [0.0_wp, y(t0 + 5), y(t0 + 6)]
       m = self%model%mass
       ia = self%inertia(1)
       it = self%inertia(2)
       race_force = 0.0_wp
       cage_torque = 0.0_wp
       cage_force = 0.0_wp
+      cage_moment = 0.0_wp
       do k = 1, self%n
          i0 = ROLLER_SIZE*(k - 1)
          p = roller_pose(y, k)
@@ -170,6 +188,7 @@ contains
          race_force = race_force + self%loads(k)%race_force(:, 2)
          cage_torque = cage_torque + self%loads(k)%cage_torque
          cage_force = cage_force + self%loads(k)%cage_force
+         cage_moment = cage_moment + self%loads(k)%cage_moment
       end do
       ! guide lands: the cage on its land film (at zero eccentricity when centred: the Couette
       ! torque) or metal; the outer race fixed, the inner race's land at its centre
@@ -179,7 +198,8 @@ contains
          if (.not. allocated(self%land)) allocate (self%land(size(self%lands)))
          cage%position = a%cage_position
          cage%velocity = a%cage_velocity
-         cage%omega = [y(c0 + 2), 0.0_wp, 0.0_wp]
+         ! small tilt: the attitude taken as the identity, the angular velocity inertial
+         cage%omega = [y(c0 + 2), y(t0 + 5), y(t0 + 6)]
          do k = 1, size(self%lands)
             if (self%lands(k)%race_is_journal) then
                outer%position = a%position
@@ -194,10 +214,12 @@ contains
             self%land_torque = self%land_torque + lc%moment_cage(1)
             self%land_power = self%land_power + lc%power - lc%moment_cage(1)*(y(c0 + 2) - outer%omega(1))
             if (self%cage_free) cage_force = cage_force + lc%force_cage
+            if (self%cage_free) cage_moment = cage_moment + lc%moment_cage
             if (self%lands(k)%race_is_journal) race_force = race_force + lc%force_race
          end do
       end if
       self%cage_force = cage_force
+      self%cage_moment = cage_moment
       dydt(c0 + 1) = y(c0 + 2)
       dydt(c0 + 2) = 0.0_wp
       if (self%constraints%cage%rotation(1)) dydt(c0 + 2) = (cage_torque + self%land_torque)/self%cage_inertia
@@ -206,6 +228,9 @@ contains
          dydt(g0 + 1:g0 + 2) = y(g0 + 3:g0 + 4)
          dydt(g0 + 3:g0 + 4) = cage_force(2:3)/self%cage_mass + self%model%gravity(2:3)
       end if
+      dydt(t0 + 1:t0 + 6) = 0.0_wp
+      if (self%cage_free) call cage_axial_tilt_rates(self, y(c0 + 2), y(t0 + 1:t0 + 6), cage_force(1), &
+                                                     cage_moment, dydt(t0 + 1:t0 + 6))
       dydt(r0 + 1:r0 + 3) = a%velocity
       dydt(r0 + 4:r0 + 6) = merge((self%force + race_force)/self%race_mass + self%model%gravity, 0.0_wp, &
                                   self%constraints%inner%translation)
@@ -217,6 +242,23 @@ contains
          flag = DERIV_FAIL
       end if
    end subroutine roller_system_eval
+
+   !> The free cage's axial motion and tilt (module header): the rates of (x_c, a_y, a_z, x_c',
+   !> w_y, w_z) = v (m, rad, m/s, rad/s) at spin w_c (rad/s) under the axial force f_x (N)
+   !> and the moments m (N m, about the cage centre, inertial), per second.
+   pure subroutine cage_axial_tilt_rates(self, w_c, v, f_x, m, d)
+      class(roller_system_t), intent(in) :: self
+      real(wp), intent(in) :: w_c, v(6), f_x, m(3)
+      real(wp), intent(out) :: d(6)
+      real(wp) :: h
+      h = self%cage_inertia*w_c
+      d(1) = v(4)
+      d(2) = v(6)
+      d(3) = -v(5)
+      d(4) = f_x/self%cage_mass + self%model%gravity(1)
+      d(5) = (m(2) - h*v(6))/self%cage_inertia_t
+      d(6) = (m(3) + h*v(5))/self%cage_inertia_t
+   end subroutine cage_axial_tilt_rates
 
    !> The integrator's error scale of each unknown (report 4.4.5: ADORE's dimensionless
    !> variables): positions l (m), velocities l/tt, orbital angle and its rate as the arc
@@ -232,7 +274,8 @@ contains
                                                          l/half_length, l/half_length, 1.0_wp/tt, 1.0_wp/tt, &
                                                          1.0_wp/tt]
       end do
-      scale(ROLLER_SIZE*n + 1:) = [1.0_wp, 1.0_wp/tt, l, l, l, l/tt, l/tt, l/tt, l, l, l/tt, l/tt]
+      scale(ROLLER_SIZE*n + 1:) = [1.0_wp, 1.0_wp/tt, l, l, l, l/tt, l/tt, l/tt, l, l, l/tt, l/tt, &
+                                   l, l/pitch_radius, l/pitch_radius, l/tt, 1.0_wp/tt, 1.0_wp/tt]
    end function roller_error_scale
 
    !> The dynamics of roller bearing b (mounted geometry g, slice model qs) from its step-0
@@ -276,9 +319,10 @@ contains
       sys%inertia = [b%moments(1, BODY_ELEMENT), b%moments(2, BODY_ELEMENT)]
       sys%cage_inertia = b%moments(1, BODY_CAGE)
       sys%cage_mass = b%mass(BODY_CAGE)
+      sys%cage_inertia_t = b%moments(2, BODY_CAGE)
       if (present(cage_free)) sys%cage_free = cage_free
-      if (sys%cage_free .and. .not. sys%cage_mass > 0.0_wp) then
-         call input_error(error, "roller dynamics: a free cage needs a mass")
+      if (sys%cage_free .and. .not. (sys%cage_mass > 0.0_wp .and. sys%cage_inertia_t > 0.0_wp)) then
+         call input_error(error, "roller dynamics: a free cage needs a mass and a transverse moment of inertia")
          return
       end if
       sys%race_mass = b%mass(BODY_INNER)

@@ -91,6 +91,10 @@ module adore_forces_roller_bearing
       real(wp) :: cage_speed = 0.0_wp                            !< cage angular speed about x (rad/s)
       real(wp) :: cage_position(3) = 0.0_wp                      !< cage centre, inertial (m; 0 for a centred cage)
       real(wp) :: cage_velocity(3) = 0.0_wp                      !< cage centre velocity, inertial (m/s)
+      !> the cage's axis (1, a_y, a_z): its small tilt, inertial transverse components (rad)
+      real(wp) :: cage_tilt(2) = 0.0_wp
+      !> the cage's angular velocity normal to its axis, inertial (0, w_y, w_z) (rad/s)
+      real(wp) :: cage_omega_t(3) = 0.0_wp
    end type race_pose_t
 
    !> The loads of one roller.  Forces and moments on the roller in orbit-frame components
@@ -119,6 +123,9 @@ module adore_forces_roller_bearing
       real(wp) :: race_torque(2) = 0.0_wp        !< about the bearing axis on outer, inner race (N m)
       real(wp) :: cage_torque = 0.0_wp           !< pocket contact torque on the cage about its centre's x axis (N m)
       real(wp) :: cage_force(3) = 0.0_wp         !< pocket contact force on the cage, inertial (N)
+      !> the pocket reactions' moment on the cage about its centre, inertial (N m; its x
+      !> component is cage_torque)
+      real(wp) :: cage_moment(3) = 0.0_wp
    end type roller_loads_t
 
 contains
@@ -225,7 +232,7 @@ contains
       end do
       ! gravity
       ld%force = ld%force + m%mass*[m%gravity(1), dot_product(m%gravity, e_r), dot_product(m%gravity, e_t)]
-      if (m%pocket .and. m%pocket_type == 0) call pocket_loads(m, p, a, e_r, e_t, ld)
+      if (m%pocket .and. m%pocket_type == 0) call pocket_with_cage_moment(m, p, a, e_r, e_t, ld)
       if (m%pocket .and. m%pocket_type == -1) call cylindrical_pocket_loads(m, p, a, ld)
       if (allocated(m%flanges%flange)) call flange_loads(m, p, a, e_r, e_t, ld)
    contains
@@ -244,12 +251,21 @@ contains
       type(race_pose_t), intent(in) :: a
       real(wp), intent(in) :: e_r(3), e_t(3)
       type(roller_loads_t), intent(inout) :: ld
-      real(wp) :: d_t, xs, w, delta, q, v(2), vmag, fr(2), fn, mom_r, pt(3), fc(3)
+      real(wp) :: d_t, xs, w, delta, q, v(2), vmag, fr(2), fn, mom_r, pt(3), fc(3), beta_r, skew, wall(3)
       integer :: end, i
       real(wp) :: sgn
 
       d_t = p%r*sin(p%phi - a%pocket_azimuth) + a%cage_position(2)*cos(a%pocket_azimuth) + &
             a%cage_position(3)*sin(a%pocket_azimuth)
+      ! a tilted cage (axis (1, a_y, a_z), rotation vector (0, -a_z, a_y)) turns its walls about
+      ! the pocket's radial axis by beta_r: the wall at axial distance X from the cage centre
+      ! moves by -X beta_r along e_t, the roller's offset from it grows by X beta_r
+      beta_r = a%cage_tilt(1)*cos(a%pocket_azimuth) + a%cage_tilt(2)*sin(a%pocket_azimuth)
+      skew = p%skew
+      if (beta_r /= 0.0_wp) then
+         d_t = d_t + (p%x - a%cage_position(1))*beta_r
+         skew = p%skew - beta_r
+      end if
       w = m%pocket_length/POCKET_SLICES
       ! end 1: the wall on the -e_t side, end 2: on the +e_t side (adore_cage_step0)
       ld%pocket_gap = [0.5_wp*m%pocket_clearance + d_t, 0.5_wp*m%pocket_clearance - d_t]
@@ -259,7 +275,7 @@ contains
          mom_r = 0.0_wp
          do i = 1, POCKET_SLICES
             xs = -0.5_wp*m%pocket_length + (real(i, wp) - 0.5_wp)*w
-            delta = sgn*(d_t - p%skew*xs) - 0.5_wp*m%pocket_clearance
+            delta = sgn*(d_t - skew*xs) - 0.5_wp*m%pocket_clearance
             if (delta <= 0.0_wp) cycle
             q = m%pocket_k*delta**(10.0_wp/9.0_wp)*w
             fn = fn + q
@@ -270,10 +286,21 @@ contains
          if (fn <= 0.0_wp) cycle
          ld%force(3) = ld%force(3) - sgn*fn
          ld%moment(2) = ld%moment(2) + mom_r
+         if (beta_r /= 0.0_wp) then
+            ! the tilted wall's normal e_t + beta_r e_x: its axial part, at sgn D/2 e_t
+            ld%force(1) = ld%force(1) - sgn*fn*beta_r
+            ld%moment(2) = ld%moment(2) - 0.5_wp*m%qs%d*fn*beta_r
+         end if
          ! sliding of the roller surface at sgn D/2 e_t over the wall: radial rdot - sgn (W_abs -
          ! w_cage) D/2, axial xdot
          v = [p%xdot - a%cage_velocity(1), p%rdot - dot_product(a%cage_velocity, e_r) - &
               sgn*(p%spin + p%phidot - a%cage_speed)*0.5_wp*m%qs%d]
+         if (any(a%cage_omega_t /= 0.0_wp)) then
+            ! the wall point's velocity from the cage's transverse rotation
+            wall = cross(a%cage_omega_t, [p%x - a%cage_position(1), 0.0_wp, 0.0_wp] + p%r*e_r + &
+                         sgn*0.5_wp*m%qs%d*e_t - [0.0_wp, a%cage_position(2), a%cage_position(3)])
+            v = v - [wall(1), dot_product(wall, e_r)]
+         end if
          vmag = hypot(v(1), v(2))
          fr = -m%pocket_friction*fn*v/sqrt(vmag**2 + SLIP_REG**2)
          ld%pocket_power = ld%pocket_power + m%pocket_friction*fn*vmag**2/sqrt(vmag**2 + SLIP_REG**2)
@@ -285,10 +312,33 @@ contains
          ! reaction on the cage at the contact point (torque about the cage centre's x axis)
          pt = p%r*e_r + sgn*0.5_wp*m%qs%d*e_t - a%cage_position
          fc = sgn*fn*e_t - fr(2)*e_r - fr(1)*[1.0_wp, 0.0_wp, 0.0_wp]
+         if (beta_r /= 0.0_wp) fc(1) = fc(1) + sgn*fn*beta_r
          ld%cage_torque = ld%cage_torque + dot_product(cross(pt, fc), [1.0_wp, 0.0_wp, 0.0_wp])
          ld%cage_force = ld%cage_force + fc
       end do
    end subroutine pocket_loads
+
+   !> The rectangular pocket's loads (pocket_loads) and the moment of their reactions on the
+   !> cage about its centre C (ld%cage_moment, inertial, N m): minus the pocket's force F and
+   !> moment M on the roller moved from the roller centre R to C, -(M + (R - C) x F) - the
+   !> normal loads' axial lever arms on a tilted or axially displaced cage included.
+   pure subroutine pocket_with_cage_moment(m, p, a, e_r, e_t, ld)
+      type(roller_force_model_t), intent(in) :: m
+      type(roller_pose_t), intent(in) :: p
+      type(race_pose_t), intent(in) :: a
+      real(wp), intent(in) :: e_r(3), e_t(3)
+      type(roller_loads_t), intent(inout) :: ld
+      real(wp) :: f0(3), m0(3), df(3), dm(3), rc(3)
+      f0 = ld%force
+      m0 = ld%moment
+      call pocket_loads(m, p, a, e_r, e_t, ld)
+      df = ld%force - f0
+      dm = ld%moment - m0
+      df = df(1)*[1.0_wp, 0.0_wp, 0.0_wp] + df(2)*e_r + df(3)*e_t
+      dm = dm(1)*[1.0_wp, 0.0_wp, 0.0_wp] + dm(2)*e_r + dm(3)*e_t
+      rc = [p%x, 0.0_wp, 0.0_wp] + p%r*e_r - a%cage_position
+      ld%cage_moment = -(dm + cross(rc, df))
+   end subroutine pocket_with_cage_moment
 
    !> The roller in its cylindrical pocket (kPocType -1, report 4.4.11: a roller guided cage):
    !> the pocket a cylinder of diameter D + c (c the pocket clearance, Rec 7.1) whose axis is

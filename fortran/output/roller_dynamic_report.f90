@@ -18,7 +18,7 @@ module adore_output_roller_dynamic_report
    use adore_tribology_roller_traction, only: line_traction_t
    use adore_forces_roller_bearing, only: roller_loads_t
    use adore_dynamics_roller_system, only: roller_system_t, roller_pose, ROLLER_SIZE, RACE_OFFSET, CAGE_OFFSET, &
-                                           CAGE_POS_OFFSET
+                                           CAGE_POS_OFFSET, CAGE_TILT_OFFSET
    use adore_start_roller_step0, only: roller_step0_t, roller_wear
    use adore_output_run_history, only: run_history_t, history_shape, check_history_element
    implicit none
@@ -27,7 +27,7 @@ module adore_output_roller_dynamic_report
    public :: roller_step_view, new_roller_history, record_roller_history, roller_total_power
 
    !> columns before the guide lands' forces, and after them
-   integer, parameter :: N_FIRST = 30, N_LAST = 4
+   integer, parameter :: N_FIRST = 32, N_LAST = 4
 
 contains
 
@@ -103,6 +103,8 @@ contains
       s%cage%state%angular_speed = y(ROLLER_SIZE*n + CAGE_OFFSET + 2)
       call cage_motion(sys, y, c, v)
       s%cage%state%centre(2:3) = c(2:3)
+      ! the free cage's axial position (Mass Center Position Axial; 0 for a centred cage)
+      s%cage%state%centre(1) = y(ROLLER_SIZE*n + CAGE_TILT_OFFSET + 1)
       s%cage%state%velocity = v
       s%cage%state%whirl_speed = whirl_rate(c, v)
       s%cage%state%orbital_angle = 0.0_wp
@@ -168,10 +170,11 @@ contains
    !> losses, orbital speed and pocket force, the cage speed, the inner race's y, z, the
    !> total loss split into race contacts, pockets and guide lands, the bulk temperatures
    !> (the run's condition's), the cage centre's y, z, its whirl (tangential) and radial
-   !> velocity, the diametral guide clearance, the whirl rate, the centre's velocity y, z,
-   !> each guide land's normal force (film + metal), and roller `element`'s contact
-   !> temperature rise (flash, eqs 34-36) and contact temperature at both races (the figure
-   !> types 33-44 of the report's roller run).
+   !> velocity, the diametral guide clearance, the whirl rate, the centre's velocity y, z, its
+   !> axial position and tilt (rad, the angle of its axis from the bearing axis), each guide
+   !> land's normal force (film + metal), and roller `element`'s contact temperature rise
+   !> (flash, eqs 34-36) and contact temperature at both races (the figure types 33-44 of the
+   !> report's roller run).
    subroutine new_roller_history(h, b, n_steps, element, error, stride)
       type(run_history_t), intent(out) :: h
       type(bearing_t), intent(in) :: b
@@ -197,7 +200,7 @@ contains
                            "bulk_temp_inner_race_K", "bulk_temp_housing_K", "bulk_temp_shaft_K", &
                            "cage_y_m", "cage_z_m", "cage_whirl_velocity_m_s", "cage_radial_velocity_m_s", &
                            "guide_clearance_m", "cage_whirl_speed_rad_s", "cage_velocity_y_m_s", &
-                           "cage_velocity_z_m_s"]
+                           "cage_velocity_z_m_s", "cage_x_m", "cage_tilt_rad"]
       do k = 1, b%n_lands
          h%names(N_FIRST + k) = "land"//itoa(k)//"_force_N"
       end do
@@ -221,7 +224,8 @@ contains
       real(wp), intent(in) :: y(:), temperature(:)
       real(wp), allocatable :: values(:, :)
       real(wp) :: race_loss, c(3), v(3), rad, e_c(3), clearance, land(h%n_lands), rise(2), wall(2)
-      integer :: r0, k
+      integer :: r0, k, t0
+      t0 = ROLLER_SIZE*sys%n + CAGE_TILT_OFFSET
       if (h%rows >= size(h%values, 1)) then
          allocate (values(max(2*size(h%values, 1), 16), size(h%values, 2)))
          values(1:h%rows, :) = h%values(1:h%rows, :)
@@ -258,7 +262,8 @@ contains
                                 temperature(TEMP_ELEMENT), temperature(TEMP_CAGE), temperature(TEMP_OUTER), &
                                 temperature(TEMP_INNER), temperature(TEMP_HOUSING), temperature(TEMP_SHAFT), &
                                 c(2), c(3), -e_c(3)*v(2) + e_c(2)*v(3), dot_product(e_c, v), clearance, &
-                                whirl_rate(c, v), v(2), v(3), land, rise, wall]
+                                whirl_rate(c, v), v(2), v(3), y(t0 + 1), norm2(y(t0 + 2:t0 + 3)), land, rise, &
+                                wall]
       end associate
    end subroutine record_roller_history
 

@@ -154,7 +154,9 @@ contains
    subroutine test_initial_speeds()
       type(cage_input_t) :: inp
       type(cage_state_t) :: st
-      inp%whirl_radius = 1.0e-4_wp
+      ! Rec 9.5.1 field 1 is not the whirl's radius (Appendix D: 2.5e-4 m against a 5e-5 m
+      ! land clearance): the centre whirls about the axis on the circle through its position
+      inp%whirl_radius = 3.0e-4_wp
       inp%whirl_ratio = 0.5_wp
       inp%epicyclic_ratio = 2.0_wp
       inp%centre = [0.0_wp, -1.0e-4_wp, 0.0_wp]      ! on +90 deg
@@ -163,7 +165,8 @@ contains
       call check(abs(st%whirl_speed - 100.0_wp) < 1.0e-12_wp, "whirl = ratio x angular")
       call check(abs(st%orbital_angle - 0.5_wp*pi) < 1.0e-12_wp, "orbital angle from +z towards -y")
       ! at 90 deg the tangent of a +x rotation is -z
-      call check(maxval(abs(st%velocity - [0.0_wp, 0.0_wp, -1.0e-2_wp])) < 1.0e-15_wp, "whirl velocity")
+      call check(maxval(abs(st%velocity - [0.0_wp, 0.0_wp, -1.0e-2_wp])) < 1.0e-15_wp, &
+                 "whirl velocity = whirl speed x the centre's radius (1e-4 m), whirl rate = 0.5 x angular")
    end subroutine test_initial_speeds
 
    subroutine test_bad_input_is_an_input_error()

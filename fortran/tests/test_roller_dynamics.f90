@@ -18,7 +18,9 @@ program test_roller_dynamics
    use adore_forces_roller_bearing, only: roller_pose_t, race_pose_t, roller_loads_t, roller_loads
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, &
-                                           R_TILT, R_SKEW, R_PHI, RACE_OFFSET, CAGE_POS_OFFSET, CAGE_OFFSET
+                                           R_TILT, R_SKEW, R_PHI, RACE_OFFSET, CAGE_POS_OFFSET, CAGE_OFFSET, &
+                                           CAGE_TILT_OFFSET
+   use adore_model_condition, only: body_dof_t
    implicit none
 
    character(len=:), allocatable :: decks
@@ -40,6 +42,8 @@ program test_roller_dynamics
    call test_averaged_loads_match_quasistatic()
    call test_held_cage_land_film()
    call test_free_cage_pockets()
+   call test_free_cage_nutation()
+   call test_tilted_cage_pocket_moment()
 
    call finish("roller dynamics")
 
@@ -343,5 +347,114 @@ contains
       call check(abs(dot_product(sys%loads(1)%cage_force, e_t) + sys%loads(1)%pocket_load(1)) <= &
                  1.0e-12_wp*sys%loads(1)%pocket_load(1), "pocket force on the cage = -(force on the roller)")
    end subroutine test_free_cage_pockets
+
+   !> The free cage's axial motion and tilt with nothing touching it (pockets off, the cage
+   !> centred inside its dry lands, gravity off), started with a transverse angular velocity
+   !> w0 about y and an axial velocity v0: the closed form of the torque-free symmetric top at
+   !> small tilt - its transverse angular velocity turns at nu = I_a W_c / I_t,
+   !> w = w0 (cos nu t, sin nu t), the axis a_y = (w0/nu)(1 - cos nu t), a_z = -(w0/nu) sin nu t,
+   !> the transverse kinetic energy I_t |w|**2 / 2 and the spin W_c constant - and the centre
+   !> moving axially at v0.  Over 2 ms (about 1.8 nutation periods).
+   subroutine test_free_cage_nutation()
+      real(wp), parameter :: w0 = 2.0_wp, v0 = 1.0e-3_wp
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:)
+      real(wp) :: t, t_end, nu, wc, ts, amp, err_a, err_w, ke0, ke
+      integer :: g0, t0, c0
+
+      call start(sys, it, y, .false., cage_free=.true.)
+      ! the rollers as Appendix D's Rec 3.3 holds them (no effect on the untouched cage)
+      sys%constraints%elements = body_dof_t([.false., .true., .true.], [.true., .false., .false.])
+      sys%model%gravity = 0.0_wp
+      g0 = ROLLER_SIZE*sys%n + CAGE_POS_OFFSET
+      t0 = ROLLER_SIZE*sys%n + CAGE_TILT_OFFSET
+      c0 = ROLLER_SIZE*sys%n + CAGE_OFFSET
+      y(g0 + 1:g0 + 4) = 0.0_wp
+      y(t0 + 1:t0 + 6) = [0.0_wp, 0.0_wp, 0.0_wp, v0, w0, 0.0_wp]
+      wc = y(c0 + 2)
+      nu = sys%cage_inertia*wc/sys%cage_inertia_t
+      amp = w0/nu
+      ke0 = 0.5_wp*sys%cage_inertia_t*w0**2
+      t = 0.0_wp
+      t_end = 2.0e-3_wp/sys%time_scale
+      do while (t < t_end .and. .not. allocated(error))
+         call it%step(sys, t, y, error, t_limit=t_end)
+      end do
+      call check(.not. allocated(error), "free cage nutation integrated")
+      ts = t*sys%time_scale
+      err_a = maxval(abs(y(t0 + 2:t0 + 3) - amp*[1.0_wp - cos(nu*ts), -sin(nu*ts)]))/amp
+      err_w = maxval(abs(y(t0 + 5:t0 + 6) - w0*[cos(nu*ts), sin(nu*ts)]))/w0
+      ke = 0.5_wp*sys%cage_inertia_t*sum(y(t0 + 5:t0 + 6)**2)
+      print "(a,f9.1,a,es9.2,a,es9.2,a,es9.2,a,es9.2)", "  free cage nutation: nu ", nu, " rad/s, tilt error ", &
+         err_a, ", rate error ", err_w, ", energy drift ", abs(ke - ke0)/ke0, ", spin drift ", abs(y(c0 + 2) - wc)/wc
+      call check(err_a < 1.0e-5_wp .and. err_w < 1.0e-5_wp, "free cage: nutation at I_a W_c / I_t (closed form)")
+      call check(abs(ke - ke0) < 1.0e-6_wp*ke0, "free cage: transverse kinetic energy conserved")
+      call check(abs(y(c0 + 2) - wc) <= 1.0e-12_wp*wc, "free cage: spin unchanged without torque")
+      call check(abs(y(t0 + 1) - v0*ts) < 1.0e-9_wp*v0*ts .and. abs(y(t0 + 4) - v0) < 1.0e-12_wp, &
+                 "free cage: axial motion at its start velocity")
+   end subroutine test_free_cage_nutation
+
+   !> A cage held tilted (axis (1, a_y, 0): a rotation a_y about z) in Appendix D's pockets,
+   !> pocket friction off: roller 1's pocket (azimuth 0, e_r = +z) has its walls turned by
+   !> beta_r = a_y about e_r, so both walls press the roller's ends over |x| > c/(2 a_y).  The
+   !> moment on the cage about its centre along e_r is, by hand, the slice loads' axial lever
+   !> arms plus the tilted walls' axial force at the pocket's half width,
+   !> M_r = -sum |x_s| q_s + a_y (D/2) sum q_s, q_s = K (a_y |x_s| - c/2)**(10/9) w (Palmgren);
+   !> it opposes the tilt; its axial component about the axis equals the cage torque; the
+   !> cage's tilt rates take the sum of the pockets' moments.
+   subroutine test_tilted_cage_pocket_moment()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), dydt(:)
+      real(wp) :: a_y, c, w, xs, delta, q, hand_m, hand_q, e_r(3), mom_sum(3), wy_rate
+      integer :: flag, g0, t0, c0, i, k
+
+      call start(sys, it, y, .true., cage_free=.true.)
+      sys%model%pocket_friction = 0.0_wp
+      allocate (dydt(size(y)))
+      g0 = ROLLER_SIZE*sys%n + CAGE_POS_OFFSET
+      t0 = ROLLER_SIZE*sys%n + CAGE_TILT_OFFSET
+      c0 = ROLLER_SIZE*sys%n + CAGE_OFFSET
+      y(g0 + 1:g0 + 4) = 0.0_wp
+      y(c0 + 1) = 0.0_wp
+      c = sys%model%pocket_clearance
+      a_y = 2.0_wp*c/sys%model%pocket_length
+      y(t0 + 1:t0 + 6) = [0.0_wp, a_y, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]
+      call check(abs(sys%pocket_azimuth(1)) < 1.0e-15_wp .and. abs(y(R_PHI)) < 1.0e-15_wp, "roller 1 at azimuth 0")
+      call sys%eval(0.0_wp, y, dydt, flag)
+      call check(flag == 0, "tilted cage evaluated")
+      w = sys%model%pocket_length/8.0_wp
+      hand_m = 0.0_wp
+      hand_q = 0.0_wp
+      do i = 1, 8
+         xs = -0.5_wp*sys%model%pocket_length + (real(i, wp) - 0.5_wp)*w
+         delta = a_y*abs(xs) - 0.5_wp*c
+         if (delta <= 0.0_wp) cycle
+         q = sys%model%pocket_k*delta**(10.0_wp/9.0_wp)*w
+         hand_q = hand_q + q
+         hand_m = hand_m - abs(xs)*q + a_y*0.5_wp*sys%model%qs%d*q
+      end do
+      e_r = [0.0_wp, 0.0_wp, 1.0_wp]
+      associate (ld => sys%loads(1))
+         print "(a,es11.4,a,es11.4,a,es11.4,a)", "  cage tilted ", a_y, " rad: roller 1's pocket moment on the cage ", &
+            dot_product(ld%cage_moment, e_r), " N m (hand ", hand_m, " N m)"
+         call check(abs(sum(ld%pocket_load) - hand_q) <= 1.0e-12_wp*hand_q .and. &
+                    abs(ld%pocket_load(1) - ld%pocket_load(2)) <= 1.0e-12_wp*hand_q, &
+                    "tilted cage: both walls press roller 1 with the hand slice loads")
+         call check(abs(dot_product(ld%cage_moment, e_r) - hand_m) <= 1.0e-10_wp*abs(hand_m) .and. hand_m < 0.0_wp, &
+                    "tilted cage: pocket moment on the cage = the slice loads' lever arms (hand), against the tilt")
+         call check(abs(ld%cage_moment(1) - ld%cage_torque) <= 1.0e-12_wp*(abs(ld%cage_torque) + abs(hand_m)), &
+                    "tilted cage: the pocket moment's axial part is the cage torque")
+      end associate
+      mom_sum = 0.0_wp
+      do k = 1, sys%n
+         mom_sum = mom_sum + sys%loads(k)%cage_moment
+      end do
+      ! no land contact (centred cage, dry): w_z' = M_z / I_t (w = 0), against the tilt
+      wy_rate = dydt(t0 + 6)/sys%time_scale
+      call check(abs(wy_rate - mom_sum(3)/sys%cage_inertia_t) <= 1.0e-12_wp*abs(mom_sum(3)/sys%cage_inertia_t) &
+                 .and. mom_sum(3) < 0.0_wp, "tilted cage: transverse angular acceleration = pocket moments / I_t")
+   end subroutine test_tilted_cage_pocket_moment
 
 end program test_roller_dynamics

@@ -148,11 +148,26 @@ RECORDS: tuple[RecordSpec, ...] = (
         notes="Field count (10) from the roller listing line `1 2 8 1 0 0 0 0 0 1`; field 11 is "
               "pyadore's (the report gives no record layout for flanges or the pocket code: "
               "docs/dynamics.md, \"Flanges\")."),
-    RecordSpec("3.3", "Program options (flags)", _unknown_ints(
-        "3.3", 1, 11, "roller deck 1 1 1 1 0 0 0 0 0 0 1; the ball line is lost. The echo prints "
-        "QUASI-STATIC CONSTRAINTS, TRANSLATIONAL and ROTATIONAL CONSTRAINTS (section 4.4.6) that "
-        "probably come from Rec 3.3/3.4 but cannot be matched to positions"),
-        section="4.4.6, 4.4.7", notes="Field count (11) from the roller listing line."),
+    RecordSpec("3.3", "Program options (flags)", tuple(
+        F(f"rec3_3_flag_{k}", "int", "-", "DOF constraint flag (report 4.4.6), read as one pattern with "
+          "the other ten: all eleven 0 = nothing constrained; 1 1 1 1 0 0 0 0 0 0 1 (Appendix D, the "
+          "report's own 4.4.6 example) = every rolling element's axial motion, tilt and skew held, the "
+          "cage free; any other pattern is refused at the run (an input error naming the field): what "
+          "this field alone holds is not identified", "", "inference", default=0)
+        for k in range(1, 12)),
+        section="4.4.6; Appendix D step 4000",
+        notes="Field count (11) from the roller listing line.  Evidence for the pattern reading: report "
+              "4.4.6 names the example of an aligned cylindrical roller bearing under pure radial load "
+              "whose rollers' and cage's axial and transverse-rotation DOFs may be suppressed - "
+              "Appendix D is that bearing, and its Rec 3.3 has four ones in fields 1-4 (four DOF groups "
+              "in that sentence) and one in field 11.  Appendix D's step 4000 (after 5.45 ms of "
+              "dynamics) prints every roller's Rel Axial Pos and Ang Position Theta/Phi exactly "
+              "0.000E+00 (held), while its cage is at axial -5.457E-08 m and has a transverse angular "
+              "acceleration (-6.448, 1.225 rpm/s) under zero applied moment, i.e. it turns about a "
+              "transverse axis (free); so Appendix D holds the rollers only.  The ball deck's listing "
+              "line is lost (its zeros are the transcription's).  The echo's TRANSLATIONAL / ROTATIONAL "
+              "CONSTRAINTS rows (1 1 1 1 1 1 each in Appendix D) do not follow Rec 3.3's order and are "
+              "not read (docs/dynamics.md, \"The cage's degrees of freedom\")."),
     RecordSpec("3.4", "Program options (flags, incl. kRotFrames)", _unknown_ints(
         "3.4", 1, 12, "ball deck 0 0 0 0 0 2 1 19 0 0 0 0, roller 1 1 1 1 0 0 0 0 0 0 0 0; one of the "
         "twelve is kRotFrames (section 4.4.10), which one is not recoverable"),
@@ -300,8 +315,12 @@ RECORDS: tuple[RecordSpec, ...] = (
           "RACE; Tables 5/6)", "", "echo; table"),
     ), section="echo: ANGULAR VELOCITY"),
     RecordSpec("9.5.1", "Cage initial conditions", (
-        F("cage_whirl_radius", "real", "m", "radius of the prescribed initial cage whirl orbit",
-          "", "section 4.4.4", default=0.0, lo=0.0),
+        F("cage_whirl_radius", "real", "m", "meaning not identified, not used; formerly read as the start "
+          "whirl's radius (section 4.4.4), but ball 6.636E-04 and roller 2.5E-04 m against the centres "
+          "printed at the start, 5.900E-04 and 5.0E-05 m, the roller's beyond its land radial clearance "
+          "5.0E-05 m: the start whirl turns about the axis at the centre's own radius (docs/dynamics.md)",
+          "", "inference",
+          default=0.0, lo=0.0),
         _real("cage_whirl_ratio", "-", "cage whirl to angular velocity ratio (echo)", default=1.0),
         _real("cage_epicyclic_ratio", "-", "cage angular velocity to epicyclic velocity ratio (echo)",
               default=1.0),
