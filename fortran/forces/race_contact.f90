@@ -164,8 +164,8 @@ contains
 
    !> True when a race contact of b has an EHD film to shear: the isothermal film h (m) times
    !> the thermal reduction factor phi is at least MIN_EHD_FILM and b%boundary_film (the
-   !> run's boundary-lubrication film, Lambda_b sigma; 0 unless the run option
-   !> boundary_lambda sets it) and finite.  Without one (no or almost no entraining
+   !> run's boundary-lubrication film, Lambda_b sigma: the run option boundary_lambda,
+   !> default 1, times the composite roughness; 0 turns it off) and finite.  Without one (no or almost no entraining
    !> speed: a shaft at rest, a ball's micro-motion at rest; Gupta's fit at 0 beyond its
    !> range of thermal loading, a lubricant far too viscous for the speed; or a film
    !> parameter below Lambda_b: boundary lubrication) traction model 3 takes the deck's
