@@ -244,9 +244,7 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
             done = getattr(exc, "output", None)
             exc.print_path = out_path if out_path.exists() else None
             history = _written_history(out_path, done)
-            exc.time_history = None if history is None else _history_frame(history)
-            arrays = _written_results(deck, out_path, done, history)
-            exc.dataset = None if arrays is None else arrays.to_dataset()
+            exc.keep_partial(history, _written_results(deck, out_path, done, history))
             raise
         text = out_path.read_text(encoding="utf-8", errors="replace")
         history = _written_history(out_path, output)
@@ -254,12 +252,6 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
                   notes=[output.note] if output.note else [], steps_integrated=output.integrated,
                   _history=history, arrays=arrays, balance=parse_balance(output.note))
-
-
-def _history_frame(history: tuple) -> "pd.DataFrame":
-    from .timehistory import history_frame
-
-    return history_frame(*history)
 
 
 _NUM = r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)"
@@ -270,6 +262,8 @@ def parse_balance(note: str) -> dict | None:
     """The balance line of a run note (the engine's ``balance over the last half of the
     run ...``; fortran/bearings/ball.f90) as numbers (:attr:`Result.balance`); None when
     the note has none."""
+    if "balance over the last half" not in (note or ""):
+        return None  # no pattern to compile (tens of ms): a step-0 run has no balance
     import re
 
     m = re.search(

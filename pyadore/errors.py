@@ -30,9 +30,46 @@ class AdoreInputError(AdoreError):
 
 
 class AdoreEngineError(AdoreError):
-    """The engine failed on an input it accepted (no convergence, numerical breakdown)."""
+    """The engine failed on an input it accepted (no convergence, numerical breakdown).
+    ``print_path``, ``time_history`` and ``dataset``: what the failed run kept (each None
+    when nothing); the last two are built on first access from :meth:`keep_partial`'s data,
+    so a failing run imports neither pandas nor xarray unless they are asked for."""
 
     status = STATUS_ENGINE
+
+    def keep_partial(self, history, arrays) -> None:
+        """The failed run's plot-data rows ``history`` ((values, column names) or None)
+        and element arrays ``arrays`` (:class:`pyadore.results.ResultArrays` or None)."""
+        self._partial = (history, arrays)
+
+    @property
+    def time_history(self):
+        """The steps of the kept plot-data file as a pandas DataFrame, or None."""
+        if "_time_history" not in self.__dict__:
+            history = getattr(self, "_partial", (None, None))[0]
+            if history is None:
+                self._time_history = None
+            else:
+                from .timehistory import history_frame
+
+                self._time_history = history_frame(*history)
+        return self._time_history
+
+    @time_history.setter
+    def time_history(self, value) -> None:
+        self._time_history = value
+
+    @property
+    def dataset(self):
+        """The kept steps' results as an xarray Dataset (``run_complete`` 0), or None."""
+        if "_dataset" not in self.__dict__:
+            arrays = getattr(self, "_partial", (None, None))[1]
+            self._dataset = None if arrays is None else arrays.to_dataset()
+        return self._dataset
+
+    @dataset.setter
+    def dataset(self, value) -> None:
+        self._dataset = value
 
 
 class AdoreInterrupted(AdoreEngineError):
@@ -48,7 +85,8 @@ class AdoreInterrupted(AdoreEngineError):
         self.signal = int(signal)
         self.status = 128 + int(signal)
         self.print_path = print_path
-        self.time_history = time_history
+        if time_history is not None:
+            self.time_history = time_history
 
 
 class MissingSeriesError(AdoreInputError):

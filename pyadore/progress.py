@@ -156,17 +156,17 @@ class RunProgress:
             where = f" ({out})" if out is not None else ""
             return AdoreInterrupted(f"stopped by {name} before the first time step ended: no print file "
                                     f"written{where}{failed}", self.signum)
-        history = getattr(exc, "time_history", None)
+        partial = getattr(exc, "_partial", None)  # the kept steps, built on access (errors.py)
         if self.stopped and isinstance(exc, AdoreError):
-            return AdoreInterrupted(f"stopped by {name}: {exc}", self.signum, print_path=out, time_history=history)
+            return _keeping(AdoreInterrupted(f"stopped by {name}: {exc}", self.signum, print_path=out), partial)
         if exc is None:
             from .timehistory import history_path
 
             return AdoreInterrupted(f"{name} came after the last time step: the print file {out} and its "
                                     f"plot-data file {history_path(out)} are complete", self.signum,
                                     print_path=out)
-        return AdoreInterrupted(f"stopped by {name}{failed}", self.signum,
-                                print_path=getattr(exc, "print_path", None), time_history=history)
+        return _keeping(AdoreInterrupted(f"stopped by {name}{failed}", self.signum,
+                                         print_path=getattr(exc, "print_path", None)), partial)
 
     def _on_signal(self, signum, frame):
         if self.signum is None:
@@ -207,3 +207,11 @@ class RunProgress:
             self._bar.update(step - self._bar.n)
         except Exception:  # noqa: BLE001 - no bar rather than a failed run
             self.bar_wanted = False
+
+
+def _keeping(err, partial):
+    """``err`` with a failed run's kept steps (``partial``: errors.AdoreEngineError's
+    (history, arrays), or None)."""
+    if partial is not None:
+        err.keep_partial(*partial)
+    return err

@@ -251,6 +251,7 @@ def test_failed_run_dataset_is_marked_incomplete(tmp_path, ball_deck):
         pyadore.run(deck, steps=5, out=out, progress=False)
     ds = info.value.dataset
     assert ds.attrs["run_complete"] == 0 and ds.attrs["incomplete"].startswith("RUN INCOMPLETE after step 0")
+    assert info.value.time_history["step"].tolist() == [0]
     back = read_results(results_path(out))
     assert back.attrs["run_complete"] == 0 and back["step"].values.tolist() == [0]
 
@@ -282,3 +283,27 @@ def test_sweep_time_averages_case_files_and_title(tmp_path, ball_deck):
     assert 0.3 < fast["mean_cage_speed_ratio"] < 0.6 and fast["mean_max_contact_load_N"] > 0
     assert math.isnan(slow["mean_total_power_loss_W"]) and math.isnan(slow["mean_revolutions"])
     assert not math.isnan(slow["total_power_loss_W"])      # the last-step value stays
+
+
+def test_failed_run_imports_no_xarray(tmp_path, ball_deck):
+    """A run that fails builds neither its kept time history nor its dataset until asked
+    (pandas and xarray stay unimported, as for a run that succeeds); asked, they hold the
+    steps done."""
+    import subprocess
+    import sys
+
+    deck = tmp_path / "step5.inp"
+    deck.write_text(ball_deck.read_text().replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01",
+                                                  "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1))
+    code = ("import sys, pyadore\n"
+            "from pyadore.errors import AdoreEngineError\n"
+            "try:\n"
+            "    pyadore.run(sys.argv[1], steps=5, out=sys.argv[2], progress=False)\n"
+            "except AdoreEngineError as exc:\n"
+            "    print(' '.join(h for h in ('xarray', 'pandas') if h in sys.modules) or '-')\n"
+            "    print(exc.dataset.attrs['run_complete'], len(exc.time_history), 'xarray' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code, str(deck), str(tmp_path / "f.prt")],
+                         capture_output=True, text=True, check=True).stdout.split("\n")
+    assert out[0] == "-", out
+    assert out[1] == "0 1 True", out
+
