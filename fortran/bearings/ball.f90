@@ -150,7 +150,8 @@ contains
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &
-                               int_method=method, cage_free=cage_free)
+                               int_method=method, cage_free=cage_free, &
+                               adore_whirl=self%options%cage_whirl == "adore")
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
       self%eom%rolling_resistance = self%options%rolling_resistance
@@ -195,6 +196,8 @@ contains
             "ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
          if (s%cage .and. .not. s%cage_spin_only) text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM "// &
             "INTEGRATED (REPORT 4.4.6)"//lf
+         if (s%cage .and. .not. s%cage_spin_only .and. s%adore_whirl) text = text//"  CAGE MASS CENTRE IN "// &
+            "ADORE'S WHIRL COORDINATES (REPORT 4.4.4; NO CENTRIPETAL OR CORIOLIS TERMS, docs/dynamics.md)"//lf
          if (s%cage .and. .not. s%land_film) text = text//"  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT "// &
             "ONLY (docs/dynamics.md, Cage dynamics)"//lf
          if (s%gyro_restraint) text = text//"  BALL GYROSCOPIC MOMENTS CARRIED BY THE RACES WITHOUT SLIP "// &
@@ -225,6 +228,14 @@ contains
                                                    "(translation and tilt constrained, report 4.4.6)"
          if (s%cage .and. .not. s%cage_spin_only) text = text//"; cage free in all six degrees of freedom "// &
                                                    "(report 4.4.6)"
+         if (s%cage .and. .not. s%cage_spin_only) then
+            if (s%adore_whirl) then
+               text = text//"; its mass centre in ADORE's whirl coordinates (r'' = F_r/m, r psi'' = F_t/m: "// &
+                      "no centripetal or Coriolis acceleration, report 4.4.4; cage_whirl=inertial for Newton's)"
+            else
+               text = text//"; its mass centre by Newton's inertial equations (cage_whirl=inertial)"
+            end if
+         end if
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"

@@ -28,6 +28,7 @@ module adore_dynamics_ball_motion
    use adore_model_condition, only: dof_constraints_t, body_dof_t, default_constraints
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, new_bearing_state, RACE_OUTER, RACE_INNER
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, body_load_t, ball_bearing_loads, add_gyroscopic_restraint
+   use adore_dynamics_cage_whirl, only: whirl_frame_acceleration
    implicit none
    private
 
@@ -44,10 +45,12 @@ contains
    !> (add_gyroscopic_restraint); damping, land_film as ball_bearing_loads; cage_spin_only:
    !> the cage's translation and tilt constrained (report 4.4.6); constraints: the bodies'
    !> degrees of freedom (replaces cage_spin_only; absent: default_constraints);
-   !> lubricant_temperature as ball_bearing_loads'.  Input errors of the traction model come
-   !> back in error.
+   !> lubricant_temperature as ball_bearing_loads'; adore_whirl (default .false.): a free
+   !> cage's mass centre in ADORE's whirl coordinates (adore_dynamics_cage_whirl) instead of
+   !> Newton's.  Input errors of the traction model come back in error.
    subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
-                                 damping, land_film, cage_spin_only, constraints, rolling, lubricant_temperature)
+                                 damping, land_film, cage_spin_only, constraints, rolling, lubricant_temperature, &
+                                 adore_whirl)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -66,6 +69,7 @@ contains
       !> the race contacts' EHD rolling resistance (ball_bearing_loads' rolling)
       logical, intent(in), optional :: rolling
       real(wp), intent(in), optional :: lubricant_temperature(:)
+      logical, intent(in), optional :: adore_whirl
       type(dof_constraints_t) :: dof
       integer :: k
 
@@ -89,6 +93,10 @@ contains
          rates%elements(k) = body_rates(s%elements(k), loads%elements(k), b%mass(BODY_ELEMENT), b%moments(:, BODY_ELEMENT))
       end do
       rates%cage = body_rates(s%cage, loads%cage, b%mass(BODY_CAGE), b%moments(:, BODY_CAGE))
+      if (present(adore_whirl)) then
+         if (adore_whirl) rates%cage%velocity(2:3) = rates%cage%velocity(2:3) + &
+                                                     whirl_frame_acceleration(s%cage%position(2:3), s%cage%velocity(2:3))
+      end if
       call constrain(rates%cage, dof%cage)
       rates%races(RACE_OUTER) = body_rates(s%races(RACE_OUTER), loads%races(RACE_OUTER), b%mass(BODY_OUTER), &
                                            b%moments(:, BODY_OUTER))

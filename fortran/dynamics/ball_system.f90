@@ -65,6 +65,9 @@ module adore_dynamics_ball_system
       !> axis, driven by its pockets; .false. frees all six (docs/dynamics.md, "Cage dynamics":
       !> the free cage of Appendix C either whips on its land films or rides its lands)
       logical :: cage_spin_only = .true.
+      !> a free cage's mass centre in ADORE's whirl coordinates (adore_dynamics_cage_whirl;
+      !> run option cage_whirl=adore, the default) instead of Newton's inertial equations
+      logical :: adore_whirl = .false.
       !> the bodies' degrees of freedom (adore_model_condition; the bearing kind sets them
       !> from its operating condition); not allocated: those of cage_spin_only
       type(dof_constraints_t), allocatable :: constraints
@@ -134,19 +137,22 @@ contains
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
                                  self%contact_damping, self%land_film, self%cage_spin_only, &
-                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
+                                 adore_whirl=self%adore_whirl)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, constraints=self%constraints, &
-                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
+                                 adore_whirl=self%adore_whirl)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, cage_spin_only=self%cage_spin_only, &
-                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
+                                 adore_whirl=self%adore_whirl)
       end if
       if (allocated(self%failure)) then
          ! a state outside the contact models' range (e.g. a stage of a too long step that
@@ -296,7 +302,7 @@ contains
    !> show: docs/dynamics.md), the packed initial state y at tau = 0.  traction: race
    !> traction on (default); two_d: the two-dimensional race traction (default .true.).
    subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d, orbit_frame, int_method, &
-                                  cage_free)
+                                  cage_free, adore_whirl)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_start_t), intent(in) :: start
@@ -314,6 +320,8 @@ contains
       !> the cage free in all six DOFs with its guide lands' film (report 4.4.6; run option
       !> cage=free): cage_spin_only = .false., land_film = .true.; absent or .false.: the defaults
       logical, intent(in), optional :: cage_free
+      !> a free cage in ADORE's whirl coordinates (ball_system_t%adore_whirl; default .false.)
+      logical, intent(in), optional :: adore_whirl
       real(wp) :: scales(3), l, tt
       integer :: k
       type(bearing_state_t) :: st
@@ -326,6 +334,7 @@ contains
       sys = new_ball_system(b, g, tt, traction)
       if (present(two_d)) sys%traction_2d = two_d
       if (present(orbit_frame)) sys%orbit_frame = orbit_frame
+      if (present(adore_whirl)) sys%adore_whirl = adore_whirl
       if (present(cage_free)) then
          if (cage_free) then
             sys%cage_spin_only = .false.

@@ -79,6 +79,12 @@ module adore_model_run_options
       !> "free" (all six integrated, the guide lands' film on) or "deck" (the deck's own
       !> constraints: Rec 3.3 all zero constrains nothing, a free cage)
       character(len=16) :: cage = "centred"
+      !> the equations of a free cage's mass centre in its whirl plane (docs/dynamics.md, "The
+      !> cage's whirl frame"): "adore" (ADORE's, as report 4.4.4 and its prints show them: the
+      !> whirl radius and angle integrated as r'' = F_r/m, r psi'' = F_t/m, so a cage free of
+      !> interactions keeps its whirl circle) or "inertial" (Newton's: the centripetal and
+      !> Coriolis accelerations of the whirl included)
+      character(len=16) :: cage_whirl = "adore"
       !> the thermal model (docs/thermal.md, "The wiring"): "off" (the default: bulk
       !> temperatures fixed at Rec 2.7's; with the boundaries the report states, the model
       !> moves Appendix C's final step further from the report, docs/thermal.md), "deck" (on,
@@ -114,7 +120,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 20
+   integer, parameter :: N_OPTIONS = 21
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -161,6 +167,9 @@ module adore_model_run_options
       option_spec_t("cage", OPTION_CHOICE, "centred", 0, "", "NAME", "centred,free,deck", &
                     "cage degrees of freedom (report 4.4.6): centred (translation and tilt constrained), "// &
                     "free (all six, land films on) or as the deck's Rec 3.3 says (ball decks)"), &
+      option_spec_t("cage_whirl", OPTION_CHOICE, "adore", 0, "", "NAME", "adore,inertial", &
+                    "a free cage's mass centre: ADORE's whirl coordinates (report 4.4.4: a cage free of "// &
+                    "interactions keeps its whirl circle) or Newton's inertial equations"), &
       option_spec_t("thermal", OPTION_CHOICE, "off", 0, "", "MODE", "off,deck,temperatures,geometry", &
                     "thermal model (report 2.10, 5.3): off, the deck's (geometry updated when Rec 2.5 gives an "// &
                     "averaging interval), temperatures only, or temperatures and geometry"), &
@@ -311,6 +320,9 @@ contains
       case ("cage")
          opts%cage = "centred"
          if (len_trim(value) > 0) opts%cage = trim(adjustl(value))
+      case ("cage_whirl")
+         opts%cage_whirl = "adore"
+         if (len_trim(value) > 0) opts%cage_whirl = trim(adjustl(value))
       case ("thermal")
          opts%thermal = "off"
          if (len_trim(value) > 0) opts%thermal = trim(adjustl(value))
