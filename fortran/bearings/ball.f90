@@ -154,13 +154,6 @@ contains
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
       self%eom%rolling_resistance = self%options%rolling_resistance
-      if (self%options%cage_contact == "dry") then
-         ! metallic pocket and land contacts only (docs/dynamics.md, "The dry cage contacts")
-         self%eom%land_film = .false.
-         self%eom%pocket_film = .false.
-      end if
-      if (self%options%cage_contact == "pocketsdry") self%eom%pocket_film = .false.
-      if (self%options%cage_contact == "landsdry") self%eom%land_film = .false.
       ! the run's degrees of freedom are the condition's from now on (report 4.4.6)
       self%condition%constraints = default_constraints(self%eom%cage_spin_only)
       self%eom%constraints = self%condition%constraints
@@ -204,8 +197,6 @@ contains
             "INTEGRATED (REPORT 4.4.6)"//lf
          if (s%cage .and. .not. s%land_film) text = text//"  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT "// &
             "ONLY (docs/dynamics.md, Cage dynamics)"//lf
-         if (s%cage .and. .not. s%pocket_film) text = text//"  POCKET FILM OFF: METALLIC POCKET CONTACT "// &
-            "ONLY (docs/dynamics.md, The dry cage contacts)"//lf
          if (s%gyro_restraint) text = text//"  BALL GYROSCOPIC MOMENTS CARRIED BY THE RACES WITHOUT SLIP "// &
             "(docs/dynamics.md)"//lf
          if (s%contact_damping > 0.0_wp) then
@@ -235,7 +226,6 @@ contains
          if (s%cage .and. .not. s%cage_spin_only) text = text//"; cage free in all six degrees of freedom "// &
                                                    "(report 4.4.6)"
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
-         if (s%cage .and. .not. s%pocket_film) text = text//"; pocket film off (metallic pocket contact only)"
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
          if (s%rolling_resistance) text = text//"; EHD rolling resistance of the race contacts"

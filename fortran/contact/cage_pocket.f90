@@ -30,11 +30,6 @@
 !> only (a full film carries its load without Coulomb friction; its viscous drag is not
 !> modelled), opposite to the slip u of the ball surface over the cage at P, regularised
 !> below slip_reg: F = -mu Q u/sqrt(u**2 + slip_reg**2).
-!> Contact damping (damping = beta, s; default 0): the metallic load becomes
-!> max(Q + beta (1.5 Q/delta) d(delta)/dt, 0), the stiffness-proportional damping of the
-!> ball/race contacts (Kraemer 1993; adore_forces_ball_bearing's damping) with the pocket's
-!> tangent stiffness 1.5 Q/delta; an impact then loses energy as hysteresis damping does
-!> (Hunt & Crossley 1975; docs/dynamics.md, "Pocket impacts and their damping").
 !> Abnormal contact (report 4.4.12): delta beyond abnormal_fraction of the radial clearance
 !> c/2 - a step whose stage lands there is rejected by the integrator.  Units SI.
 module adore_contact_cage_pocket
@@ -62,7 +57,6 @@ module adore_contact_cage_pocket
       real(wp) :: critical_film = 1.0e-6_wp  !< h_crit (m): the hydrodynamic force is taken at max(gap, h_crit)
       real(wp) :: slip_reg = 1.0e-3_wp       !< friction regularisation speed (m/s)
       real(wp) :: ir_constant = 0.0_wp       !< Hhat of the isoviscous-rigid solution (-)
-      real(wp) :: damping = 0.0_wp           !< beta (s): stiffness-proportional contact damping (0: none)
    end type cage_pocket_pair_t
 
    !> The pocket contact of one ball at one state.  Vectors inertial.
@@ -146,11 +140,7 @@ contains
       c%slip = u - un*c%normal
 
       delta = -c%gap
-      if (delta > 0.0_wp) then
-         c%metallic_load = p%stiffness*delta**1.5_wp
-         ! d(delta)/dt = un: the ball's approach to the wall along n
-         if (p%damping > 0.0_wp) c%metallic_load = max(c%metallic_load*(1.0_wp + p%damping*1.5_wp*un/delta), 0.0_wp)
-      end if
+      if (delta > 0.0_wp) c%metallic_load = p%stiffness*delta**1.5_wp
       c%abnormal = delta > ABNORMAL_FRACTION*0.5_wp*p%clearance
       if (p%viscosity > 0.0_wp .and. p%ir_constant > 0.0_wp) then
          p_far = ball%position - 0.5_wp*p%d*c%normal

@@ -44,11 +44,10 @@ contains
    !> (add_gyroscopic_restraint); damping, land_film as ball_bearing_loads; cage_spin_only:
    !> the cage's translation and tilt constrained (report 4.4.6); constraints: the bodies'
    !> degrees of freedom (replaces cage_spin_only; absent: default_constraints);
-   !> lubricant_temperature and pocket_film as ball_bearing_loads'.  Input errors of the traction model come
+   !> lubricant_temperature as ball_bearing_loads'.  Input errors of the traction model come
    !> back in error.
    subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
-                                 damping, land_film, cage_spin_only, constraints, rolling, lubricant_temperature, &
-                                 pocket_film)
+                                 damping, land_film, cage_spin_only, constraints, rolling, lubricant_temperature)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -67,7 +66,6 @@ contains
       !> the race contacts' EHD rolling resistance (ball_bearing_loads' rolling)
       logical, intent(in), optional :: rolling
       real(wp), intent(in), optional :: lubricant_temperature(:)
-      logical, intent(in), optional :: pocket_film
       type(dof_constraints_t) :: dof
       integer :: k
 
@@ -79,8 +77,7 @@ contains
       end if
 
       call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
-                              land_film=land_film, rolling=rolling, lubricant_temperature=lubricant_temperature, &
-                              pocket_film=pocket_film)
+                              land_film=land_film, rolling=rolling, lubricant_temperature=lubricant_temperature)
       if (allocated(error)) return
       if (present(gyro_restraint)) then
          if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, BODY_ELEMENT), loads)

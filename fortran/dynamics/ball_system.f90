@@ -56,10 +56,6 @@ module adore_dynamics_ball_system
       !> inner race), which the report's figures 21-22 and step-2500 print do not show
       !> (docs/dynamics.md, "Cage dynamics")
       logical :: land_film = .false.
-      !> the pockets' hydrodynamic (isoviscous entrainment) film; .false. with land_film
-      !> .false.: the dry cage contacts (run option cage_contact=dry; docs/dynamics.md, "The
-      !> dry cage contacts")
-      logical :: pocket_film = .true.
       !> normal damping of the ball/race contacts, beta (s) of ball_bearing_loads' damping:
       !> Kraemer's stiffness-proportional rolling-bearing damping at its lower end (docs/
       !> dynamics.md, "Contact damping"); 0 for a conservative model (energy tests)
@@ -138,22 +134,19 @@ contains
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
                                  self%contact_damping, self%land_film, self%cage_spin_only, &
-                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 pocket_film=self%pocket_film)
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, constraints=self%constraints, &
-                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 pocket_film=self%pocket_film)
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, cage_spin_only=self%cage_spin_only, &
-                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 pocket_film=self%pocket_film)
+                                 rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature)
       end if
       if (allocated(self%failure)) then
          ! a state outside the contact models' range (e.g. a stage of a too long step that

@@ -212,9 +212,6 @@ contains
    !> docs/dynamics.md, "Contact damping".
    !> land_film (default .true.): the guide lands' short-bearing film (adore_contact_cage_land);
    !> .false. keeps only their metallic contact (docs/dynamics.md, "Cage dynamics").
-   !> pocket_film (default .true.): the pockets' isoviscous entrainment film
-   !> (adore_contact_cage_pocket); .false. keeps only their metallic contact and its Coulomb
-   !> friction (docs/dynamics.md, "The dry cage contacts").
    !> rolling (default .false.): the race contacts' EHD rolling resistance (rolling_couple).
    !> lubricant_temperature (K, the TEMP_* order; default: s%temperature): the bulk
    !> temperatures the race contacts' lubricant (film, EHD traction, rolling resistance) is
@@ -222,7 +219,7 @@ contains
    !> (report 5.3, 7 rec. 1; docs/thermal.md, "Traction and the temperatures").
    !> Input errors of the traction model (e.g. no EHD film) come back in error.
    subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference, damping, &
-                                 land_film, rolling, lubricant_temperature, pocket_film)
+                                 land_film, rolling, lubricant_temperature)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -235,7 +232,6 @@ contains
       logical, intent(in), optional :: land_film
       logical, intent(in), optional :: rolling
       real(wp), intent(in), optional :: lubricant_temperature(:)
-      logical, intent(in), optional :: pocket_film
       type(ball_race_pair_t) :: pairs(2)
       type(ball_race_contact_t) :: cj
       type(contact_traction_t) :: t
@@ -380,10 +376,6 @@ contains
          integer :: k, j
 
          pp = ball_pocket_pair(b, g, s%temperature)
-         if (present(pocket_film)) then
-            if (.not. pocket_film) pp%viscosity = 0.0_wp      ! metallic contact only
-         end if
-         pp%damping = beta     ! the race contacts' stiffness-proportional damping (docs/dynamics.md)
          allocate (loads%pockets(n))
          do k = 1, n
             call cage_pocket_contact(pp, 2.0_wp*pi*(k - 1)/n, s%elements(k), s%cage, loads%pockets(k))

@@ -79,11 +79,6 @@ module adore_model_run_options
       !> "free" (all six integrated, the guide lands' film on) or "deck" (the deck's own
       !> constraints: Rec 3.3 all zero constrains nothing, a free cage)
       character(len=16) :: cage = "centred"
-      !> the cage's pocket and guide-land contacts (ball decks; docs/dynamics.md, "The dry cage
-      !> contacts"): "film" (the pockets' entrainment film, and with a free cage the lands'
-      !> short-bearing film, with metallic contact below them) or "dry" (metallic contact
-      !> and the deck's Coulomb friction only: no force across an open gap)
-      character(len=16) :: cage_contact = "film"
       !> the thermal model (docs/thermal.md, "The wiring"): "off" (the default: bulk
       !> temperatures fixed at Rec 2.7's; with the boundaries the report states, the model
       !> moves Appendix C's final step further from the report, docs/thermal.md), "deck" (on,
@@ -119,7 +114,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 21
+   integer, parameter :: N_OPTIONS = 20
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -166,9 +161,6 @@ module adore_model_run_options
       option_spec_t("cage", OPTION_CHOICE, "centred", 0, "", "NAME", "centred,free,deck", &
                     "cage degrees of freedom (report 4.4.6): centred (translation and tilt constrained), "// &
                     "free (all six, land films on) or as the deck's Rec 3.3 says (ball decks)"), &
-      option_spec_t("cage_contact", OPTION_CHOICE, "film", 0, "", "NAME", "film,dry,pocketsdry,landsdry", &
-                    "ball cage's pocket and land contacts: film (hydrodynamic films, metallic below) or dry "// &
-                    "(metallic contact and the deck's friction only: no force across a gap)"), &
       option_spec_t("thermal", OPTION_CHOICE, "off", 0, "", "MODE", "off,deck,temperatures,geometry", &
                     "thermal model (report 2.10, 5.3): off, the deck's (geometry updated when Rec 2.5 gives an "// &
                     "averaging interval), temperatures only, or temperatures and geometry"), &
@@ -319,9 +311,6 @@ contains
       case ("cage")
          opts%cage = "centred"
          if (len_trim(value) > 0) opts%cage = trim(adjustl(value))
-      case ("cage_contact")
-         opts%cage_contact = "film"
-         if (len_trim(value) > 0) opts%cage_contact = trim(adjustl(value))
       case ("thermal")
          opts%thermal = "off"
          if (len_trim(value) > 0) opts%thermal = trim(adjustl(value))
