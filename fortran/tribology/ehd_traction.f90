@@ -176,10 +176,17 @@ contains
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
       integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
+      !> the Taylor series of cos and sin in Horner form: 1 / ((2k - 1) 2k) and 1 / (2k (2k + 1))
+      real(wp), parameter :: SERIES_C1 = 1.0_wp/2.0_wp, SERIES_C2 = 1.0_wp/12.0_wp, SERIES_C3 = 1.0_wp/30.0_wp, &
+                             SERIES_C4 = 1.0_wp/56.0_wp, SERIES_C5 = 1.0_wp/90.0_wp, SERIES_C6 = 1.0_wp/132.0_wp, &
+                             SERIES_C7 = 1.0_wp/182.0_wp, SERIES_C8 = 1.0_wp/240.0_wp, SERIES_C9 = 1.0_wp/306.0_wp
+      real(wp), parameter :: SERIES_S1 = 1.0_wp/6.0_wp, SERIES_S2 = 1.0_wp/20.0_wp, SERIES_S3 = 1.0_wp/42.0_wp, &
+                             SERIES_S4 = 1.0_wp/72.0_wp, SERIES_S5 = 1.0_wp/110.0_wp, SERIES_S6 = 1.0_wp/156.0_wp, &
+                             SERIES_S7 = 1.0_wp/210.0_wp, SERIES_S8 = 1.0_wp/272.0_wp
       real(wp), parameter :: Z_MIN = exp(STRIP_L_MIN)
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, sub_rule(8)
 
       nm = EHD_FAST_MAJOR
@@ -257,27 +264,35 @@ contains
             end do
          end associate
       end do
-      ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, cos, hypot,
-      ! log, exp, one call each, so that sin and cos of one angle are not merged into a scalar
-      ! sincos); every node's arithmetic in the order of the former array statements, the
-      ! sums below in node order (bit-identical results, fewer passes over the nodes)
+      ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, log, exp, one
+      ! call each; cos and sin of s / rho by their series), the sums below in node order
+      phi(1:n) = sin(phi(1:n))                                ! sin(phi) = s / a
+      ca = cos(c%alpha)
+      sa = sin(c%alpha)
       do j = 1, n
-         sp = sin(phi(j))                                     ! sin(phi) = s / a
+         sp = phi(j)
          cphi(j) = sqrt((1.0_wp - sp)*(1.0_wp + sp))          ! cos(phi) >= 0 on [-pi/2, pi/2]
-         phi(j) = c%alpha + c%a*sp/c%rho                      ! now the angle alpha + s / rho
          wn(j) = wn(j)*c%a*cphi(j)                            ! ds = a cos(phi) dphi
          aa(j) = 0.5_wp*rheo%alpha*p0*cphi(j)
+         ! cos, sin of psi = s / rho (|psi| < a / rho < 1) by their Taylor series (Horner in
+         ! psi**2 to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1), and of the angle
+         ! theta = alpha + psi by angle addition: multiply-adds a node, no sin/cos calls
+         x = c%a*sp/c%rho
+         x2 = x*x
+         cps(j) = 1.0_wp - x2*SERIES_C1*(1.0_wp - x2*SERIES_C2*(1.0_wp - x2*SERIES_C3*(1.0_wp - x2*SERIES_C4* &
+                  (1.0_wp - x2*SERIES_C5*(1.0_wp - x2*SERIES_C6*(1.0_wp - x2*SERIES_C7*(1.0_wp - x2*SERIES_C8* &
+                  (1.0_wp - x2*SERIES_C9))))))))
+         sps(j) = x*(1.0_wp - x2*SERIES_S1*(1.0_wp - x2*SERIES_S2*(1.0_wp - x2*SERIES_S3*(1.0_wp - x2*SERIES_S4* &
+                  (1.0_wp - x2*SERIES_S5*(1.0_wp - x2*SERIES_S6*(1.0_wp - x2*SERIES_S7*(1.0_wp - x2*SERIES_S8))))))))
+         ct(j) = ca*cps(j) - sa*sps(j)
+         st(j) = sa*cps(j) + ca*sps(j)
       end do
-      ct(1:n) = cos(phi(1:n))
-      st(1:n) = sin(phi(1:n))
       if (present(transverse)) then
-         ! the slip vector's length; cos, sin of psi = s / rho = theta - alpha
+         ! the slip vector's length (sqrt: slips in m/s, far from over- or underflow)
          do j = 1, n
             u(j) = c%side*c%rho*(c%omega(1) - rs)*ct(j) - c%side*c%rho*c%omega(2)*st(j) - rs*c%r_b
-            cps(j) = ct(j)*cos(c%alpha) + st(j)*sin(c%alpha)
-            sps(j) = st(j)*cos(c%alpha) - ct(j)*sin(c%alpha)
             um(j) = transverse(1) + transverse(2)*cps(j) + transverse(3)*sps(j)
-            us(j) = hypot(u(j), um(j))
+            us(j) = sqrt(u(j)*u(j) + um(j)*um(j))
          end do
       else
          u(1:n) = c%side*c%rho*(c%omega(1) - rs)*ct(1:n) - c%side*c%rho*c%omega(2)*st(1:n) - rs*c%r_b
@@ -344,8 +359,8 @@ contains
          end do
       else
          t%force = sum(sign(f(1:n), u(1:n)))
-         t%force_cos = sum(sign(f(1:n), u(1:n))*(ct(1:n)*cos(c%alpha) + st(1:n)*sin(c%alpha)))
-         t%force_sin = sum(sign(f(1:n), u(1:n))*(st(1:n)*cos(c%alpha) - ct(1:n)*sin(c%alpha)))
+         t%force_cos = sum(sign(f(1:n), u(1:n))*cps(1:n))
+         t%force_sin = sum(sign(f(1:n), u(1:n))*sps(1:n))
          t%power = sum(f(1:n)*us(1:n))
          sliding = sum(us(1:n)*cphi(1:n)**2*wn(1:n))
       end if
