@@ -266,18 +266,20 @@ contains
       end do
       ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, log, exp, one
       ! call each; cos and sin of s / rho by their series), the sums below in node order
-      phi(1:n) = sin(phi(1:n))                                ! sin(phi) = s / a
+      do j = 1, n
+         sp = sin(phi(j))                                     ! sin(phi) = s / a
+         cphi(j) = sqrt((1.0_wp - sp)*(1.0_wp + sp))          ! cos(phi) >= 0 on [-pi/2, pi/2]
+         phi(j) = c%a*sp/c%rho                                ! now the angle psi = s / rho
+         wn(j) = wn(j)*c%a*cphi(j)                            ! ds = a cos(phi) dphi
+         aa(j) = 0.5_wp*rheo%alpha*p0*cphi(j)
+      end do
+      ! cos, sin of psi = s / rho (|psi| < a / rho < 1) by their Taylor series (Horner in psi**2
+      ! to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1),
+      ! and of the angle theta = alpha + psi by angle addition: multiply-adds, no sin/cos calls
       ca = cos(c%alpha)
       sa = sin(c%alpha)
       do j = 1, n
-         sp = phi(j)
-         cphi(j) = sqrt((1.0_wp - sp)*(1.0_wp + sp))          ! cos(phi) >= 0 on [-pi/2, pi/2]
-         wn(j) = wn(j)*c%a*cphi(j)                            ! ds = a cos(phi) dphi
-         aa(j) = 0.5_wp*rheo%alpha*p0*cphi(j)
-         ! cos, sin of psi = s / rho (|psi| < a / rho < 1) by their Taylor series (Horner in
-         ! psi**2 to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1), and of the angle
-         ! theta = alpha + psi by angle addition: multiply-adds a node, no sin/cos calls
-         x = c%a*sp/c%rho
+         x = phi(j)
          x2 = x*x
          cps(j) = 1.0_wp - x2*SERIES_C1*(1.0_wp - x2*SERIES_C2*(1.0_wp - x2*SERIES_C3*(1.0_wp - x2*SERIES_C4* &
                   (1.0_wp - x2*SERIES_C5*(1.0_wp - x2*SERIES_C6*(1.0_wp - x2*SERIES_C7*(1.0_wp - x2*SERIES_C8* &
