@@ -176,18 +176,15 @@ contains
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
       integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
-      !> the Taylor series of cos and sin in Horner form: 1 / ((2k - 1) 2k) and 1 / (2k (2k + 1))
-      real(wp), parameter :: SERIES_C1 = 1.0_wp/2.0_wp, SERIES_C2 = 1.0_wp/12.0_wp, SERIES_C3 = 1.0_wp/30.0_wp, &
-                             SERIES_C4 = 1.0_wp/56.0_wp, SERIES_C5 = 1.0_wp/90.0_wp, SERIES_C6 = 1.0_wp/132.0_wp, &
-                             SERIES_C7 = 1.0_wp/182.0_wp, SERIES_C8 = 1.0_wp/240.0_wp, SERIES_C9 = 1.0_wp/306.0_wp
-      real(wp), parameter :: SERIES_S1 = 1.0_wp/6.0_wp, SERIES_S2 = 1.0_wp/20.0_wp, SERIES_S3 = 1.0_wp/42.0_wp, &
-                             SERIES_S4 = 1.0_wp/72.0_wp, SERIES_S5 = 1.0_wp/110.0_wp, SERIES_S6 = 1.0_wp/156.0_wp, &
-                             SERIES_S7 = 1.0_wp/210.0_wp, SERIES_S8 = 1.0_wp/272.0_wp
+      integer :: q_
+      !> the Taylor coefficients of cos and sin in psi**2: (-1)**k / (2k)! and (-1)**k / (2k + 1)!
+      real(wp), parameter :: COS_C(9) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 1.0_wp), q_ = 1, 9)]
+      real(wp), parameter :: SIN_C(8) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 2.0_wp), q_ = 1, 8)]
       real(wp), parameter :: Z_MIN = exp(STRIP_L_MIN)
-      real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST)
+      real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
       real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2
-      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, sub_rule(8)
+      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
 
       nm = EHD_FAST_MAJOR
       ns = EHD_FAST_STRIP
@@ -250,18 +247,29 @@ contains
       do z = 1, nsub
          associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => sub_rule(z))
             vmax = asinh(kp*abs(pf - pr))
-            do j = 1, merge(nm, nh, r == 1)
-               n = n + 1
-               if (kp > 0.0_wp .and. vmax > 1.0_wp) then
-                  ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2
-                  ev = exp(0.5_wp*vmax*(1.0_wp + xq(j, r)))
-                  phi(n) = pr + sign(1.0_wp, pf - pr)*0.5_wp*(ev - 1.0_wp/ev)/kp
-                  wn(n) = 0.25_wp*vmax*wq(j, r)*(ev + 1.0_wp/ev)/kp
-               else
-                  phi(n) = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xq(j, r)
-                  wn(n) = 0.5_wp*abs(pf - pr)*wq(j, r)
-               end if
-            end do
+            m = merge(nm, nh, r == 1)
+            if (kp > 0.0_wp .and. vmax > 1.0_wp) then
+               ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2;
+               ! the Gauss nodes pair up (x_(m+1-j) = -x_j), so e**v of the upper half is
+               ! e**vmax / e**v of the lower: one exp for two nodes
+               do j = 1, (m + 1)/2
+                  evs(j) = exp(0.5_wp*vmax*(1.0_wp + xq(j, r)))
+               end do
+               ev = exp(vmax)
+               do j = (m + 1)/2 + 1, m
+                  evs(j) = ev/evs(m + 1 - j)
+               end do
+               do j = 1, m
+                  phi(n + j) = pr + sign(1.0_wp, pf - pr)*0.5_wp*(evs(j) - 1.0_wp/evs(j))/kp
+                  wn(n + j) = 0.25_wp*vmax*wq(j, r)*(evs(j) + 1.0_wp/evs(j))/kp
+               end do
+            else
+               do j = 1, m
+                  phi(n + j) = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xq(j, r)
+                  wn(n + j) = 0.5_wp*abs(pf - pr)*wq(j, r)
+               end do
+            end if
+            n = n + m
          end associate
       end do
       ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, log, exp, one
@@ -281,11 +289,10 @@ contains
       do j = 1, n
          x = phi(j)
          x2 = x*x
-         cps(j) = 1.0_wp - x2*SERIES_C1*(1.0_wp - x2*SERIES_C2*(1.0_wp - x2*SERIES_C3*(1.0_wp - x2*SERIES_C4* &
-                  (1.0_wp - x2*SERIES_C5*(1.0_wp - x2*SERIES_C6*(1.0_wp - x2*SERIES_C7*(1.0_wp - x2*SERIES_C8* &
-                  (1.0_wp - x2*SERIES_C9))))))))
-         sps(j) = x*(1.0_wp - x2*SERIES_S1*(1.0_wp - x2*SERIES_S2*(1.0_wp - x2*SERIES_S3*(1.0_wp - x2*SERIES_S4* &
-                  (1.0_wp - x2*SERIES_S5*(1.0_wp - x2*SERIES_S6*(1.0_wp - x2*SERIES_S7*(1.0_wp - x2*SERIES_S8))))))))
+         cps(j) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
+                  + x2*(COS_C(6) + x2*(COS_C(7) + x2*(COS_C(8) + x2*COS_C(9)))))))))
+         sps(j) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
+                  + x2*(SIN_C(6) + x2*(SIN_C(7) + x2*SIN_C(8))))))))
          ct(j) = ca*cps(j) - sa*sps(j)
          st(j) = sa*cps(j) + ca*sps(j)
       end do
