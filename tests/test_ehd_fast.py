@@ -133,8 +133,8 @@ def test_strip_table_is_the_gauss_rule_across_the_strip():
     """The fast traction's default (the strip integral from the table) against the same
     major-axis nodes with 48 Gauss points across each strip, over slips x 0.1 .. x 10 and
     loads x 0.1 .. x 3: the loss (a sum of positive strip integrals) within the table's
-    error bound STRIP_ERROR (4.4e-6; measured 1.8e-6), force and moments within 1e-5
-    (measured 6.3e-6; the moment's error is relative to a tenth of a lower bound of the
+    error bound STRIP_ERROR (2.1e-6; measured 1.25e-6), force and moments within 1e-5
+    (measured 2.9e-6; the moment's error is relative to a tenth of a lower bound of the
     gross traction).  Also beyond the table: the isothermal film (its integral of E**2 is
     the table at Z -> 0), the pressure coefficient x 3 (A = alpha p / 2 up to 17, past the
     table's 12: Gauss on psi) and the viscosity x 1e8 (zeta |u| past the table: the large-Z

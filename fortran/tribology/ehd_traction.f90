@@ -176,11 +176,15 @@ contains
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
       integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
+      integer :: q_
+      !> the Taylor coefficients of cos and sin in psi**2: (-1)**k / (2k)! and (-1)**k / (2k + 1)!
+      real(wp), parameter :: COS_C(9) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 1.0_wp), q_ = 1, 9)]
+      real(wp), parameter :: SIN_C(8) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 2.0_wp), q_ = 1, 8)]
       real(wp), parameter :: Z_MIN = exp(STRIP_L_MIN)
-      real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST)
+      real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding
-      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, sub_rule(8)
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2
+      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
 
       nm = EHD_FAST_MAJOR
       ns = EHD_FAST_STRIP
@@ -243,41 +247,61 @@ contains
       do z = 1, nsub
          associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => sub_rule(z))
             vmax = asinh(kp*abs(pf - pr))
-            do j = 1, merge(nm, nh, r == 1)
-               n = n + 1
-               if (kp > 0.0_wp .and. vmax > 1.0_wp) then
-                  ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2
-                  ev = exp(0.5_wp*vmax*(1.0_wp + xq(j, r)))
-                  phi(n) = pr + sign(1.0_wp, pf - pr)*0.5_wp*(ev - 1.0_wp/ev)/kp
-                  wn(n) = 0.25_wp*vmax*wq(j, r)*(ev + 1.0_wp/ev)/kp
-               else
-                  phi(n) = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xq(j, r)
-                  wn(n) = 0.5_wp*abs(pf - pr)*wq(j, r)
-               end if
-            end do
+            m = merge(nm, nh, r == 1)
+            if (kp > 0.0_wp .and. vmax > 1.0_wp) then
+               ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2;
+               ! the Gauss nodes pair up (x_(m+1-j) = -x_j), so e**v of the upper half is
+               ! e**vmax / e**v of the lower: one exp for two nodes
+               do j = 1, (m + 1)/2
+                  evs(j) = exp(0.5_wp*vmax*(1.0_wp + xq(j, r)))
+               end do
+               ev = exp(vmax)
+               do j = (m + 1)/2 + 1, m
+                  evs(j) = ev/evs(m + 1 - j)
+               end do
+               do j = 1, m
+                  phi(n + j) = pr + sign(1.0_wp, pf - pr)*0.5_wp*(evs(j) - 1.0_wp/evs(j))/kp
+                  wn(n + j) = 0.25_wp*vmax*wq(j, r)*(evs(j) + 1.0_wp/evs(j))/kp
+               end do
+            else
+               do j = 1, m
+                  phi(n + j) = 0.5_wp*(pf + pr) + 0.5_wp*(pf - pr)*xq(j, r)
+                  wn(n + j) = 0.5_wp*abs(pf - pr)*wq(j, r)
+               end do
+            end if
+            n = n + m
          end associate
       end do
-      ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, cos, hypot,
-      ! log, exp, one call each, so that sin and cos of one angle are not merged into a scalar
-      ! sincos); every node's arithmetic in the order of the former array statements, the
-      ! sums below in node order (bit-identical results, fewer passes over the nodes)
+      ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, log, exp, one
+      ! call each; cos and sin of s / rho by their series), the sums below in node order
       do j = 1, n
          sp = sin(phi(j))                                     ! sin(phi) = s / a
          cphi(j) = sqrt((1.0_wp - sp)*(1.0_wp + sp))          ! cos(phi) >= 0 on [-pi/2, pi/2]
-         phi(j) = c%alpha + c%a*sp/c%rho                      ! now the angle alpha + s / rho
+         phi(j) = c%a*sp/c%rho                                ! now the angle psi = s / rho
          wn(j) = wn(j)*c%a*cphi(j)                            ! ds = a cos(phi) dphi
          aa(j) = 0.5_wp*rheo%alpha*p0*cphi(j)
       end do
-      ct(1:n) = cos(phi(1:n))
-      st(1:n) = sin(phi(1:n))
+      ! cos, sin of psi = s / rho (|psi| < a / rho < 1) by their Taylor series (Horner in psi**2
+      ! to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1),
+      ! and of the angle theta = alpha + psi by angle addition: multiply-adds, no sin/cos calls
+      ca = cos(c%alpha)
+      sa = sin(c%alpha)
+      do j = 1, n
+         x = phi(j)
+         x2 = x*x
+         cps(j) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
+                  + x2*(COS_C(6) + x2*(COS_C(7) + x2*(COS_C(8) + x2*COS_C(9)))))))))
+         sps(j) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
+                  + x2*(SIN_C(6) + x2*(SIN_C(7) + x2*SIN_C(8))))))))
+         ct(j) = ca*cps(j) - sa*sps(j)
+         st(j) = sa*cps(j) + ca*sps(j)
+      end do
       if (present(transverse)) then
-         ! the slip vector's length; cos, sin of psi = s / rho = theta - alpha
+         ! the slip vector's length (sqrt: slips in m/s, far from over- or underflow)
          do j = 1, n
             u(j) = c%side*c%rho*(c%omega(1) - rs)*ct(j) - c%side*c%rho*c%omega(2)*st(j) - rs*c%r_b
-            cps(j) = ct(j)*cos(c%alpha) + st(j)*sin(c%alpha)
-            sps(j) = st(j)*cos(c%alpha) - ct(j)*sin(c%alpha)
             um(j) = transverse(1) + transverse(2)*cps(j) + transverse(3)*sps(j)
-            us(j) = hypot(u(j), um(j))
+            us(j) = sqrt(u(j)*u(j) + um(j)*um(j))
          end do
       else
          u(1:n) = c%side*c%rho*(c%omega(1) - rs)*ct(1:n) - c%side*c%rho*c%omega(2)*st(1:n) - rs*c%r_b
@@ -344,8 +368,8 @@ contains
          end do
       else
          t%force = sum(sign(f(1:n), u(1:n)))
-         t%force_cos = sum(sign(f(1:n), u(1:n))*(ct(1:n)*cos(c%alpha) + st(1:n)*sin(c%alpha)))
-         t%force_sin = sum(sign(f(1:n), u(1:n))*(st(1:n)*cos(c%alpha) - ct(1:n)*sin(c%alpha)))
+         t%force_cos = sum(sign(f(1:n), u(1:n))*cps(1:n))
+         t%force_sin = sum(sign(f(1:n), u(1:n))*sps(1:n))
          t%power = sum(f(1:n)*us(1:n))
          sliding = sum(us(1:n)*cphi(1:n)**2*wn(1:n))
       end if
