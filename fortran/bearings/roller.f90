@@ -110,7 +110,13 @@ contains
       call thermal_run_text(self%thermal, .false., text)
       if (self%thermal%mode /= THERMAL_OFF) text = text//" (roller runs: docs/thermal.md, Roller runs)"
       if (self%eom%cage_free) then
-         text = text//"; cage free in all six degrees of freedom (report 4.4.6), on its pockets and guide lands; "
+         text = text//"; cage free in all six degrees of freedom (report 4.4.6), on its pockets and guide lands"
+         if (self%eom%adore_whirl) then
+            text = text//", its centre in ADORE's whirl coordinates (r'' = F_r/m, r psi'' = F_t/m: no centripetal "// &
+                   "or Coriolis acceleration, report 4.4.4; cage_whirl=inertial for Newton's); "
+         else
+            text = text//", its centre by Newton's inertial equations (cage_whirl=inertial); "
+         end if
       else
          text = text//"; cage centred, turning about its axis only (translation and tilt constrained, report "// &
                 "4.4.6); "
@@ -142,6 +148,8 @@ contains
       if (self%eom%cage_free) then
          text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED, ON ITS POCKETS AND GUIDE LANDS "// &
                 "(REPORT 4.4.6)"//lf
+         if (self%eom%adore_whirl) text = text//"  CAGE MASS CENTRE IN ADORE'S WHIRL COORDINATES (REPORT 4.4.4; "// &
+                "NO CENTRIPETAL OR CORIOLIS TERMS, docs/dynamics.md)"//lf
       else
          text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
       end if
@@ -199,6 +207,7 @@ contains
                                     int_method=method, cage_free=cage_free, &
                                     cage_start=[s%cage%state%centre(2:3), s%cage%state%velocity(2:3)])
          if (allocated(error)) return
+         self%eom%adore_whirl = self%options%cage_whirl == "adore"   ! sys is intent(out) there
          self%azimuth = e%azimuth
          self%last = e%azimuth
       end associate

@@ -25,9 +25,13 @@ contains
    !> ADORE's whirl coordinates add to F/m at the mass-centre position p (m, from the bearing
    !> axis) and velocity v (m/s): -(v_t**2 / r) e_r + (2 v_r v_t / r) e_t with e_r = p/r,
    !> e_t = e_x x e_r, v_r = v.e_r, v_t = v.e_t; so r'' = F_r/m and r psi'' = F_t/m (module
-   !> header).  Zero on the axis (r below 1e-12 m), where the whirl angle is undefined.
-   pure function whirl_frame_acceleration(p, v) result(a)
+   !> header).  The whirl angle is undefined on the axis, where these terms grow without
+   !> bound (v_t**2 / r for a cage passing near it): within r_blend (m; default 0) of the axis
+   !> they are scaled by r / r_blend, so the cage crosses the axis by Newton's equations
+   !> (docs/dynamics.md, "The cage's whirl frame"); zero below r = 1e-12 m.
+   pure function whirl_frame_acceleration(p, v, r_blend) result(a)
       real(wp), intent(in) :: p(2), v(2)
+      real(wp), intent(in), optional :: r_blend
       real(wp) :: a(2)
       real(wp) :: r, er(2), et(2), vr, vt
       r = norm2(p)
@@ -38,6 +42,9 @@ contains
       vr = dot_product(v, er)
       vt = dot_product(v, et)
       a = (-vt**2*er + 2.0_wp*vr*vt*et)/r
+      if (present(r_blend)) then
+         if (r < r_blend) a = a*(r/r_blend)
+      end if
    end function whirl_frame_acceleration
 
 end module adore_dynamics_cage_whirl

@@ -62,6 +62,7 @@ module adore_dynamics_roller_system
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
                                         INT_METHOD_ARK436
    use adore_dynamics_ball_system, only: ball_int_method
+   use adore_dynamics_cage_whirl, only: whirl_frame_acceleration
    implicit none
    private
 
@@ -86,6 +87,12 @@ module adore_dynamics_roller_system
       real(wp) :: cage_mass = 0.0_wp               !< (kg)
       real(wp) :: cage_inertia_t = 0.0_wp          !< about a transverse axis (kg m**2)
       logical :: cage_free = .false.               !< cage centre integrated in y, z (module header)
+      !> the free cage's centre in ADORE's whirl coordinates (adore_dynamics_cage_whirl; run option
+      !> cage_whirl=adore) instead of Newton's inertial equations
+      logical :: adore_whirl = .false.
+      !> (m) within it of the axis the whirl terms fade to Newton's (whirl_frame_acceleration's
+      !> r_blend): a tenth of the smallest guide-land clearance
+      real(wp) :: whirl_blend = 0.0_wp
       real(wp) :: race_mass = 0.0_wp               !< inner race (kg)
       real(wp) :: force(3) = 0.0_wp                !< applied to the inner race (N)
       real(wp), allocatable :: pocket_azimuth(:)   !< each pocket's azimuth at cage angle 0 (rad)
@@ -227,6 +234,9 @@ contains
       if (self%cage_free) then
          dydt(g0 + 1:g0 + 2) = y(g0 + 3:g0 + 4)
          dydt(g0 + 3:g0 + 4) = cage_force(2:3)/self%cage_mass + self%model%gravity(2:3)
+         if (self%adore_whirl) dydt(g0 + 3:g0 + 4) = dydt(g0 + 3:g0 + 4) + &
+                                                     whirl_frame_acceleration(y(g0 + 1:g0 + 2), y(g0 + 3:g0 + 4), &
+                                                                              self%whirl_blend)
       end if
       dydt(t0 + 1:t0 + 6) = 0.0_wp
       if (self%cage_free) call cage_axial_tilt_rates(self, y(c0 + 2), y(t0 + 1:t0 + 6), cage_force(1), &
@@ -357,6 +367,7 @@ contains
          end associate
       end if
       sys%lands = guide_land_pairs(b, g, b%temperature)
+      if (size(sys%lands) > 0) sys%whirl_blend = 0.1_wp*minval(sys%lands%clearance)
       allocate (y(roller_state_size(n)))
       y = 0.0_wp
       do k = 1, n
