@@ -76,6 +76,13 @@ module adore_quasistatic_roller_equilibrium
       real(wp) :: inner_moment(3) = 0.0_wp   !< their moment about the race centre (N m)
       real(wp) :: outer_force(3) = 0.0_wp    !< force of the rollers on the outer race (N)
       real(wp) :: outer_moment(3) = 0.0_wp
+      !> roller end / flange contacts (flanged bearings, adore_quasistatic_roller_flange_equilibrium;
+      !> unallocated without flanges): each roller's axial position (m), the inner race's axial
+      !> position (m), per flange of the set and roller its Hertz load (N), axial force on the
+      !> roller (N) and contact height above (inner) / below (outer) the raceway (m)
+      real(wp), allocatable :: x(:)
+      real(wp) :: u_axial = 0.0_wp
+      real(wp), allocatable :: flange_load(:, :), flange_axial(:, :), flange_height(:, :)
       real(wp) :: race_residual(2) = 0.0_wp  !< inner race y, z force balance (N)
       real(wp) :: max_roller_residual = 0.0_wp   !< largest roller force imbalance (N)
       integer :: iterations = 0

@@ -19,9 +19,12 @@
 !>   1.816e5).
 !> * Slices: the report's grid (3 zones x 4 Gauss points), slice reference length the
 !>   length scale D/2 (adore_contact_line_slices).
-!> * Flanges: none.  Rec 5B/5B.1 carry no flange geometry (the flag records 3.3/3.4 are not
-!>   decoded), the rollers carry no axial load at step 0 (zero thrust, no misalignment,
-!>   symmetric profile) and the report prints no flange loads at step 0.  Roller skew is
+!> * Flanges: a deck without Rec 5B.2 flanges (both appendix decks) has none: the rollers
+!>   carry no axial load at step 0 (zero thrust, no misalignment, symmetric profile) and the
+!>   report prints no flange loads at step 0.  With Rec 5B.2 flanges (a spherical roller end,
+!>   R_e >= L/2) the start is adore_quasistatic_roller_flange_equilibrium: each roller's axial
+!>   position and tilt with its flange contacts, the inner race's axial position, so that the
+!>   flanges carry the axial load (docs/dynamics.md, "Flanges at step 0").  Roller skew is
 !>   prescribed 0; roller tilt is solved.
 !> * Race and roller weights are left out of the start (see solve_roller_step0).
 !> * Tribology (roller_tribology): slice slips, tractions and contact losses of both races
@@ -43,6 +46,8 @@ module adore_start_roller_step0
    use adore_quasistatic_models, only: roller_qs_model
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
+   use adore_quasistatic_roller_flange_equilibrium, only: solve_flanged_equilibrium
+   use adore_contact_roller_flange, only: roller_flange_set_t, roller_flanges
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
@@ -64,6 +69,8 @@ module adore_start_roller_step0
       type(mounting_t) :: mounting
       type(roller_qs_bearing_t) :: model       !< the contact model actually solved
       type(roller_qs_solution_t) :: equilibrium
+      !> the roller end / flange contacts solved at step 0 (none allocated: no flanges)
+      type(roller_flange_set_t) :: flanges
       real(wp) :: orbital_speed = 0.0_wp       !< w_m (rad/s)
       real(wp) :: spin_speed = 0.0_wp          !< roller spin about its axis, w_R (rad/s, <0: -x)
       real(wp) :: contact_clearance = 0.0_wp   !< 2 (R_o - R_i - D) of the contact geometry (m)
@@ -151,7 +158,18 @@ contains
       ld%skew = 0.0_wp
       allocate (w(b%n_elements))
       w = s%orbital_speed
-      call solve_roller_equilibrium(s%model, ld, w, s%equilibrium, error)
+      associate (r => b%roller)
+         ! flanges at step 0 (docs/dynamics.md, "Flanges at step 0"); a flange set the contact
+         ! model cannot honour (flat or short end) is left to the dynamics' input error
+         if (any(r%flange) .and. r%end_radius > 0.0_wp .and. r%end_radius >= 0.5_wp*r%roller_length) then
+            s%flanges = roller_flanges(b%d, r%roller_length, r%corner_radius, r%end_radius, r%flange, &
+                                       r%flange_height, r%flange_angle, r%flange_clearance, [s%model%r_o, s%model%r_i], &
+                                       [s%model%e_o, s%model%e_i])
+            call solve_flanged_equilibrium(s%model, s%flanges, ld, w, s%equilibrium, error)
+         else
+            call solve_roller_equilibrium(s%model, ld, w, s%equilibrium, error)
+         end if
+      end associate
       if (allocated(error)) return
 
       ! basic life from the slice contacts (eqs 73, 75, 76, 102); default constants
