@@ -16,7 +16,7 @@ program test_roller_flange
    use adore_contact_roller_flange, only: roller_flange_set_t, flange_contact_t, roller_flanges, flange_contact
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_forces_roller_bearing, only: roller_pose_t, race_pose_t, roller_loads_t, roller_loads, &
-                                          roller_force_model_t, cylindrical_pocket_loads, POCKET_SLICES
+                                          roller_force_model_t, cylindrical_pocket_loads, POCKET_SLICES, orbit_axes
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, &
                                            R_TILT, R_SKEW, R_X, RACE_OFFSET
@@ -132,7 +132,79 @@ contains
       call check(abs(ld%force(2) + fn) < 1.0e-12_wp*fn .and. abs(ld%force(3)) < 1.0e-12_wp*fn .and. &
                  ld%pocket_power == 0.0_wp, "radial push: load K delta0**(10/9) L_p inwards, no sliding, no friction")
       call check(size(ld%pocket_load) == 2 .and. POCKET_SLICES > 0, "pocket halves")
+      call test_cylindrical_pocket_free_cage(m)
    end subroutine test_cylindrical_pocket
+
+   !> The cylindrical pocket of a free cage by hand (docs/dynamics.md, "The cylindrical pocket"):
+   !> (1) the cage displaced by c/2 + delta0 along e_t(psi), the roller centred on the centred
+   !> cage's pocket axis: every slice has delta0, the load K delta0**(10/9) L_p pushes the
+   !> roller along +e_t, the cage takes -N e_t and the torque -R_p N about its centre's axis,
+   !> the friction mu N against the sliding (W - w_c) D/2 - w_c (c/2 + delta0) (the cage
+   !> centre's offset turning at w_c); (2) the cage tilted by beta about e_r(psi)
+   !> (axis (1, beta cos psi, beta sin psi)), the roller centred: the slices at |x| >
+   !> c/(2 beta) touch, q = K (beta |x| - c/2)**(10/9) w, and the cage's moment about e_r is
+   !> sum (-|x| q + beta (D/2) q) (the slice loads' lever arms and the tilted normal's axial
+   !> part), against the tilt, as the rectangular pocket's.
+   subroutine test_cylindrical_pocket_free_cage(m0)
+      type(roller_force_model_t), intent(in) :: m0
+      type(roller_force_model_t) :: m
+      type(roller_pose_t) :: p
+      type(race_pose_t) :: a
+      type(roller_loads_t) :: ld
+      real(wp), parameter :: d0 = 5.0e-6_wp, w_rel = 100.0_wp, wc = 150.0_wp
+      real(wp) :: e_r(3), e_t(3), fn, v, ff, beta, w, xs, delta, q, hand_q, hand_m
+      integer :: i
+      m = m0
+      a = race_pose_t()
+      a%pocket_azimuth = 0.3_wp
+      a%cage_speed = wc
+      call orbit_axes(a%pocket_azimuth, e_r, e_t)
+      ! (1) displaced cage
+      a%cage_position = (0.5_wp*m%pocket_clearance + d0)*e_t
+      p = roller_pose_t(x=0.0_wp, r=m%pocket_radius, phi=a%pocket_azimuth, phidot=wc, spin=w_rel)
+      call cylindrical_pocket_loads(m, p, a, ld)
+      fn = m%pocket_k*d0**(10.0_wp/9.0_wp)*m%pocket_length
+      v = w_rel*0.5_wp*m%qs%d - wc*(0.5_wp*m%pocket_clearance + d0)
+      ff = m%pocket_friction*fn*v/sqrt(v**2 + 1.0e-6_wp)
+      print "(a,2es13.5,a,2es13.5,a)", "  cylindrical pocket, cage displaced: load ", sum(ld%pocket_load), fn, &
+         " N (run, hand); friction ", -ld%force(2), ff, " N"
+      call check(abs(sum(ld%pocket_load) - fn) < 1.0e-9_wp*fn .and. abs(ld%force(3) - fn) < 1.0e-9_wp*fn, &
+                 "displaced cage: the pocket pushes the roller along +e_t with K delta0**(10/9) L_p")
+      call check(all(abs(ld%cage_force + fn*e_t - ff*e_r) < 1.0e-9_wp*fn), &
+                 "displaced cage: the cage takes the reaction (normal and friction)")
+      call check(abs(ld%force(2) + ff) < 1.0e-9_wp*fn, "displaced cage: friction mu N against the sliding "// &
+                 "(W - w_c) D/2 - w_c (c/2 + delta0) by hand")
+      call check(abs(ld%cage_torque - ld%cage_moment(1)) < 1.0e-12_wp*fn*m%pocket_radius .and. &
+                 abs(ld%cage_torque - (-m%pocket_radius*fn + ff*(0.5_wp*m%qs%d + 0.5_wp*m%pocket_clearance + d0))) < &
+                 1.0e-9_wp*fn*m%pocket_radius, "displaced cage: torque about the cage centre's axis by hand")
+      ! (2) tilted cage, no friction
+      m%pocket_friction = 0.0_wp
+      a%cage_position = 0.0_wp
+      beta = 2.0_wp*m%pocket_clearance/m%pocket_length
+      a%cage_tilt = beta*[cos(a%pocket_azimuth), sin(a%pocket_azimuth)]
+      p%spin = 0.0_wp
+      ld = roller_loads_t()
+      call cylindrical_pocket_loads(m, p, a, ld)
+      w = m%pocket_length/POCKET_SLICES
+      hand_q = 0.0_wp
+      hand_m = 0.0_wp
+      do i = 1, POCKET_SLICES
+         xs = -0.5_wp*m%pocket_length + (real(i, wp) - 0.5_wp)*w
+         delta = beta*abs(xs) - 0.5_wp*m%pocket_clearance
+         if (delta <= 0.0_wp) cycle
+         q = m%pocket_k*delta**(10.0_wp/9.0_wp)*w
+         hand_q = hand_q + q
+         hand_m = hand_m - abs(xs)*q + beta*0.5_wp*m%qs%d*q
+      end do
+      print "(a,es11.4,a,es12.5,a,es12.5,a)", "  cylindrical pocket, cage tilted ", beta, " rad: moment on the cage ", &
+         dot_product(ld%cage_moment, e_r), " N m (hand ", hand_m, ")"
+      call check(abs(sum(ld%pocket_load) - hand_q) < 1.0e-12_wp*hand_q .and. &
+                 abs(ld%pocket_load(1) - ld%pocket_load(2)) < 1.0e-12_wp*hand_q, &
+                 "tilted cage: both halves press the roller with the hand slice loads")
+      call check(abs(dot_product(ld%cage_moment, e_r) - hand_m) < 1.0e-10_wp*abs(hand_m) .and. hand_m < 0.0_wp, &
+                 "tilted cage: the pocket moment on the cage = the slice loads' lever arms by hand, against the tilt")
+      call check(all(abs(ld%cage_force) < 1.0e-12_wp*hand_q), "tilted cage, centred roller: no net force")
+   end subroutine test_cylindrical_pocket_free_cage
 
    !> The flanged example deck (NUP type, 5 kN radial + 0.5 kN axial, 3000 rpm) integrated
    !> past its start transient, then averaged (docs/dynamics.md, "Flanges").
