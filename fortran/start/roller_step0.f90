@@ -47,12 +47,12 @@ module adore_start_roller_step0
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
    use adore_quasistatic_roller_flange_equilibrium, only: solve_flanged_equilibrium
-   use adore_contact_roller_flange, only: roller_flange_set_t, roller_flanges
+   use adore_contact_roller_flange, only: roller_flange_set_t, roller_flanges, flange_contact_t, flange_contact
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    use adore_tribology_wear, only: archard_wear_rate
-   use adore_tribology_traction_law, only: law_slip_scale
+   use adore_tribology_traction_law, only: law_slip_scale, law_kappa
    use adore_forces_race_contact, only: line_flash, wall_temperature
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
                                               roller_equilibrium_spin, RACE_OUTER, RACE_INNER
@@ -100,7 +100,10 @@ module adore_start_roller_step0
       !> moment x, y, z about the race centre (N m)], the normal slice loads of the
       !> equilibrium plus the slice tractions along the orbit direction (section 3 of the print)
       real(wp) :: race_loads(6, 2) = 0.0_wp
-      !> total power loss (W): contact_power + cage contact losses; NaN while a cage contact
+      !> the flange contacts' traction loss (W): kappa(|u|) Q |u| of each loaded flange contact at
+      !> the start's kinematics (flange_power; 0 without flanges)
+      real(wp) :: flange_power = 0.0_wp
+      !> total power loss (W): contact_power + flange_power + cage contact losses; NaN while a cage contact
       !> (pocket or land) touches, since the cage contact forces are not modelled
       real(wp) :: power_loss = 0.0_wp
    end type roller_step0_t
@@ -257,7 +260,8 @@ contains
       end associate
       s%contact_temp(1, :) = wall_temperature(b%temperature, BODY_OUTER)
       s%contact_temp(2, :) = wall_temperature(b%temperature, BODY_INNER)
-      s%power_loss = s%contact_power
+      if (allocated(s%flanges%flange)) s%flange_power = flange_power(b, s)
+      s%power_loss = s%contact_power + s%flange_power
       if (any(s%cage%pocket%in_contact) .or. any(s%cage%land%in_contact)) &
          s%power_loss = ieee_value(1.0_wp, ieee_quiet_nan)
 
@@ -276,5 +280,42 @@ contains
       s%race_wear(2) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
                                          sum(s%tr_i%sliding))
    end subroutine roller_wear
+
+   !> The flange contacts' traction loss (W) at the start (docs/dynamics.md, "Flanges at step
+   !> 0"): each loaded contact of the flanged equilibrium with the start's kinematics - roller
+   !> centre orbiting at w_m, its absolute spin w_m + W about its axis, the races turning -
+   !> the sliding u of the roller end over the flange (adore_contact_roller_flange) and the
+   !> run's law, kappa(|u|) Q |u| (as the dynamics' flange_loads, without damping: no approach rate).
+   real(wp) function flange_power(b, s) result(p)
+      type(bearing_t), intent(in) :: b
+      type(roller_step0_t), intent(in) :: s
+      type(flange_contact_t) :: c
+      real(wp) :: centre(3), axis(3), omega(3), o(3), e_r(3), e_t(3), um, w_o
+      integer :: k, i
+      p = 0.0_wp
+      associate (e => s%equilibrium, f => s%flanges)
+         do k = 1, size(e%x)
+            e_r = [0.0_wp, -sin(e%azimuth(k)), cos(e%azimuth(k))]
+            e_t = [0.0_wp, -cos(e%azimuth(k)), -sin(e%azimuth(k))]
+            centre = [e%x(k), e%r(k), 0.0_wp]
+            axis = [1.0_wp, e%tilt(k), 0.0_wp]
+            axis = axis/norm2(axis)
+            omega = [e%orbital_speed(k) + s%roller_spin(k), s%roller_spin(k)*e%tilt(k), 0.0_wp]
+            do i = 1, size(f%flange)
+               if (.not. (e%flange_load(i, k) > 0.0_wp)) cycle
+               o = 0.0_wp
+               w_o = b%speed_outer
+               if (f%flange(i)%race == 2) then
+                  o = [e%u_axial, dot_product([0.0_wp, e%u], e_r), dot_product([0.0_wp, e%u], e_t)]
+                  w_o = b%speed_inner
+               end if
+               call flange_contact(f, f%flange(i), centre, axis, [0.0_wp, 0.0_wp, e%r(k)*e%orbital_speed(k)], omega, &
+                                   o, [0.0_wp, 0.0_wp, 0.0_wp], w_o, c)
+               um = norm2(c%slip)
+               if (um > 0.0_wp) p = p + law_kappa(b%race_traction, um)*c%load*um
+            end do
+         end do
+      end associate
+   end function flange_power
 
 end module adore_start_roller_step0
