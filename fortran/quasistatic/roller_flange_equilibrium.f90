@@ -35,7 +35,7 @@ module adore_quasistatic_roller_flange_equilibrium
    use adore_contact_line_slices, only: line_contact_t
    use adore_contact_roller_flange, only: roller_flange_set_t, flange_contact_t, flange_contact
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, roller_qs_solution_t, &
-                                                   roller_contacts
+                                                   roller_contacts, clear_reactions, add_slice_reactions
    implicit none
    private
 
@@ -342,11 +342,7 @@ contains
          type(flange_contact_t) :: fl(nf)
          real(wp) :: sp, cp, uo(3), t_r, z(3), fsum(3), msum(3), e_r(3), e_t(3), fr(3), arm(3)
          integer :: k, i, j
-         s%inner_force = 0.0_wp
-         s%inner_moment = 0.0_wp
-         s%outer_force = 0.0_wp
-         s%outer_moment = 0.0_wp
-         s%max_roller_residual = 0.0_wp
+         call clear_reactions(s)
          do k = 1, n
             sp = sin(s%azimuth(k))
             cp = cos(s%azimuth(k))
@@ -366,11 +362,7 @@ contains
             s%centrifugal(k) = b%mass*w(k)**2*z(1)
             s%max_roller_residual = max(s%max_roller_residual, abs(s%c_i(k)%load - s%c_o(k)%load + &
                                                                    s%centrifugal(k) + fsum(2)), abs(fsum(1)))
-            ! slices: as solve_roller_equilibrium
-            s%inner_force(2:3) = s%inner_force(2:3) + s%c_i(k)%load*[sp, -cp]
-            s%inner_moment(2:3) = s%inner_moment(2:3) + s%c_i(k)%moment*[cp, sp]
-            s%outer_force(2:3) = s%outer_force(2:3) + s%c_o(k)%load*[-sp, cp]
-            s%outer_moment(2:3) = s%outer_moment(2:3) - s%c_o(k)%moment*[cp, sp]
+            call add_slice_reactions(s, k, sp, cp)
             ! flanges: the reaction -Q n at the contact point, moment about the race centre
             do i = 1, nf
                s%flange_load(i, k) = fl(i)%load
