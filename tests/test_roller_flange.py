@@ -16,6 +16,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from pyadore.printout import read_print
+
 ROOT = Path(__file__).resolve().parents[1]
 DECK = ROOT / "decks" / "examples" / "cylindrical_roller_nup_combined.inp"
 
@@ -99,3 +101,10 @@ def test_flanged_deck_step0_carries_the_axial_load(tmp_path, adore_exe):
     # the load zone (+z, rollers 1, 2, 14, 13, 3) carries it; the rollers out of it tilt free
     assert inner_minus_x[[0, 1, 13]].min() > 100.0 and inner_minus_x[4:11].max() < 1.0
     assert "flanges' axial force on it  -5.0000E+02" in lines[start + 16]
+    # the print reader takes the block as the step's flange tables
+    step0 = read_print(out).step(0)
+    fl = step0.tables["flanges"]
+    assert list(fl.columns) == ["axial_pos_m", "tilt_rad", "outer_minus_x_N", "outer_plus_x_N",
+                                "inner_minus_x_N", "inner_plus_x_N"]
+    np.testing.assert_allclose(fl["inner_minus_x_N"].to_numpy(), inner_minus_x)
+    assert float(step0.tables["flanges_race"]["flange_axial_force_on_inner_race_N"].iloc[0]) == -500.0
