@@ -14,6 +14,9 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import pytest
+
+from pyadore.printout import read_print
 
 ROOT = Path(__file__).resolve().parents[1]
 DECK = ROOT / "decks" / "examples" / "cylindrical_roller_nup_combined.inp"
@@ -73,3 +76,35 @@ def test_roller_extension_record_on_a_ball_deck_is_an_input_error(tmp_path, ador
     proc = _run(adore_exe, deck, tmp_path / "ball.prt", 0)
     assert proc.returncode == 1
     assert "applies to cylindrical roller bearings" in proc.stderr
+
+
+def test_flanged_deck_step0_carries_the_axial_load(tmp_path, adore_exe):
+    """Step 0 of the flanged deck (docs/dynamics.md, "Flanges at step 0"): the quasi-static
+    start puts the flange contacts into the equilibrium, so section 3's roller force on the
+    inner race has the axial component -500 N against the applied 500 N (it printed 0 before),
+    and the block after step 0 lists each roller's flange loads, whose axial components
+    Q cos(2.5 deg) on the inner race's -x flange add up to the 500 N by hand."""
+    out = tmp_path / "nup0.prt"
+    proc = _run(adore_exe, DECK, out, 0)
+    assert proc.returncode == 0, proc.stderr
+    lines = out.read_text().splitlines()
+    race = next(ln for ln in lines if ln.startswith("Int IRace"))
+    assert float(race.split()[2]) == pytest.approx(-500.0, abs=0.05)
+    start = next(i for i, ln in enumerate(lines) if "FLANGE CONTACTS AT STEP 0" in ln)
+    assert lines[start + 1].split()[-8:] == ["Outer", "-x", "Outer", "+x", "Inner", "-x", "Inner", "+x"]
+    rows = [ln.split() for ln in lines[start + 2:start + 16]]
+    assert [int(r[0]) for r in rows] == list(range(1, 15))
+    inner_minus_x = np.array([float(r[5]) for r in rows])   # columns: no, x, tilt, O-x, O+x, I-x, I+x
+    outer_plus_x = np.array([float(r[4]) for r in rows])
+    assert np.sum(inner_minus_x) * np.cos(np.radians(2.5)) == pytest.approx(500.0, rel=2e-4)  # 5-digit print
+    np.testing.assert_allclose(inner_minus_x, outer_plus_x, rtol=1e-4)
+    # the load zone (+z, rollers 1, 2, 14, 13, 3) carries it; the rollers out of it tilt free
+    assert inner_minus_x[[0, 1, 13]].min() > 100.0 and inner_minus_x[4:11].max() < 1.0
+    assert "flanges' axial force on it  -5.0000E+02" in lines[start + 16]
+    # the print reader takes the block as the step's flange tables
+    step0 = read_print(out).step(0)
+    fl = step0.tables["flanges"]
+    assert list(fl.columns) == ["axial_pos_m", "tilt_rad", "outer_minus_x_N", "outer_plus_x_N",
+                                "inner_minus_x_N", "inner_plus_x_N"]
+    np.testing.assert_allclose(fl["inner_minus_x_N"].to_numpy(), inner_minus_x)
+    assert float(step0.tables["flanges_race"]["flange_axial_force_on_inner_race_N"].iloc[0]) == -500.0

@@ -205,7 +205,8 @@ contains
                                     self%bearing%d, e%u, &
                                     s%cage%state%angle(1), s%cage%state%angular_speed, self%eom, it, y, error, &
                                     int_method=method, cage_free=cage_free, &
-                                    cage_start=[s%cage%state%centre(2:3), s%cage%state%velocity(2:3)])
+                                    cage_start=[s%cage%state%centre(2:3), s%cage%state%velocity(2:3)], &
+                                    axial=e%x, race_axial=e%u_axial)
          if (allocated(error)) return
          self%eom%adore_whirl = self%options%cage_whirl == "adore"   ! sys is intent(out) there
          self%azimuth = e%azimuth

@@ -300,7 +300,7 @@ contains
    !> constant ~0.6 us, 0.009 tau) and Dormand-Prince 5(4) at the deck's error limit holds it
    !> off its traction balance (docs/dynamics.md, Roller dynamics).
    subroutine start_roller_dynamics(b, g, qs, azimuth, r, tilt, orbital_speed, spin, u, cage_angle, cage_speed, &
-                                    sys, it, y, error, int_method, damping, cage_free, cage_start)
+                                    sys, it, y, error, int_method, damping, cage_free, cage_start, axial, race_axial)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(roller_qs_bearing_t), intent(in) :: qs
@@ -313,6 +313,8 @@ contains
       real(wp), intent(in), optional :: damping
       logical, intent(in), optional :: cage_free
       real(wp), intent(in), optional :: cage_start(4)
+      !> the flanged start's roller axial positions and inner race axial position (m; default 0)
+      real(wp), intent(in), optional :: axial(:), race_axial
       real(wp) :: scales(3)
       type(integrator_settings_t) :: settings
       integer :: k, n
@@ -376,6 +378,7 @@ contains
             v(R_PHI) = azimuth(k)
             v(R_PHIDOT) = orbital_speed(k)
             v(R_TILT) = tilt(k)
+            if (present(axial)) v(R_X) = axial(k)
             ! a roller orbiting with a steady tilt turns about e_r at -phidot gamma
             v(R_WR) = -orbital_speed(k)*tilt(k)
             v(R_SPIN) = spin(k) + orbital_speed(k)
@@ -383,6 +386,7 @@ contains
       end do
       y(ROLLER_SIZE*n + CAGE_OFFSET + 1:ROLLER_SIZE*n + CAGE_OFFSET + 2) = [cage_angle, cage_speed]
       y(ROLLER_SIZE*n + RACE_OFFSET + 2:ROLLER_SIZE*n + RACE_OFFSET + 3) = u
+      if (present(race_axial)) y(ROLLER_SIZE*n + RACE_OFFSET + 1) = race_axial
       if (sys%cage_free .and. present(cage_start)) &
          y(ROLLER_SIZE*n + CAGE_POS_OFFSET + 1:ROLLER_SIZE*n + CAGE_POS_OFFSET + 4) = cage_start
       associate (c => b%controls)

@@ -342,24 +342,41 @@ contains
 
    !> The roller in its cylindrical pocket (kPocType -1, report 4.4.11: a roller guided cage):
    !> the pocket a cylinder of diameter D + c (c the pocket clearance, Rec 7.1) whose axis is
-   !> parallel to the bearing axis at the pocket radius and azimuth psi of the centred cage.
-   !> In the roller's orbit frame the pocket axis is at (r, t) = (R_p cos(phi - psi),
-   !> -R_p sin(phi - psi)); on POCKET_SLICES slices over the roller length less its corner
-   !> radii the roller axis is offset from it by e(x) = (r - R_p cos(phi - psi) + gamma x,
-   !> R_p sin(phi - psi) - zeta x) and the slice interference is |e| - c/2 along n = e/|e|
-   !> (the conformal internal line contact: the same Palmgren slice law in the roller/cage
-   !> contact modulus as the rectangular pocket's walls).  Friction: Coulomb mu (Rec 10.5.1B
-   !> A) against the sliding of the roller surface over the pocket, axially xdot and around
-   !> the pocket tau = e_x x n: (rdot, r (phidot - w_c)) . tau + (W_abs - w_c) D/2,
-   !> regularised below SLIP_REG.  pocket_load and pocket_gap: end 1 the slices at x < 0,
-   !> end 2 those at x > 0 (load, N) and the least gap of each half (m).
+   !> the cage's pocket axis: through P0 = C + R_p e_r(psi) (C the cage centre, R_p the pocket
+   !> radius, psi the pocket's azimuth; P0 shifted axially by the tilt, R_p (a_y sin psi -
+   !> a_z cos psi)), along the cage's axis (1, a_y, a_z) (small tilt; for the centred cage the
+   !> bearing axis).  In the roller's orbit frame, on POCKET_SLICES slices over the roller
+   !> length less its corner radii, the roller axis is offset from the pocket axis by
+   !> e(x) = (r - R_p cos(phi - psi) + gamma x - C_r - d_x a_r, R_p sin(phi - psi) - zeta x -
+   !> C_t - d_x a_t), with C_r, C_t the cage centre's and a_r, a_t the cage axis' orbit-frame
+   !> components and d_x the slice's axial distance from P0; the slice interference is
+   !> |e| - c/2 along n = e/|e| made normal to the pocket axis (its axial part -(n_r a_r +
+   !> n_t a_t)) (the conformal internal line contact: the same Palmgren slice law in the
+   !> roller/cage contact modulus as the rectangular pocket's walls).  Friction: Coulomb mu
+   !> (Rec 10.5.1B A) against the sliding of the roller surface over the pocket, axially xdot
+   !> and around the pocket tau = e_x x n: (rdot, r (phidot - w_c)) . tau + (W_abs - w_c) D/2,
+   !> less the cage's own motion at the contact point (its centre's velocity, its transverse
+   !> rotation, and w_c e_x x (-C)), regularised below SLIP_REG.  The reactions on the cage:
+   !> force, moment about C (inertial), torque about C's x axis.  pocket_load and pocket_gap:
+   !> end 1 the slices at x < 0, end 2 those at x > 0 (load, N) and the least gap of each half (m).
    pure subroutine cylindrical_pocket_loads(m, p, a, ld)
       type(roller_force_model_t), intent(in) :: m
       type(roller_pose_t), intent(in) :: p
       type(race_pose_t), intent(in) :: a
       type(roller_loads_t), intent(inout) :: ld
       real(wp) :: w, xs, e(2), emag, n(3), tau(3), delta, q, v(2), vmag, fx, ft, f(3), pt(3), mom(3)
+      real(wp) :: e_r(3), e_t(3), c_r, c_t, a_r, a_t, p0x, f_in(3), pt_in(3), u_c(3), tau_in(3)
+      logical :: moving_cage
       integer :: i, h
+      call orbit_axes(p%phi, e_r, e_t)
+      c_r = dot_product(a%cage_position, e_r)
+      c_t = dot_product(a%cage_position, e_t)
+      a_r = dot_product([0.0_wp, a%cage_tilt], e_r)
+      a_t = dot_product([0.0_wp, a%cage_tilt], e_t)
+      p0x = a%cage_position(1) + m%pocket_radius*(a%cage_tilt(1)*sin(a%pocket_azimuth) - &
+                                                  a%cage_tilt(2)*cos(a%pocket_azimuth))
+      moving_cage = any(a%cage_position /= 0.0_wp) .or. any(a%cage_velocity /= 0.0_wp) .or. &
+                    any(a%cage_omega_t /= 0.0_wp)
       w = m%pocket_length/POCKET_SLICES
       ld%pocket_gap = huge(1.0_wp)
       do i = 1, POCKET_SLICES
@@ -367,17 +384,26 @@ contains
          h = merge(1, 2, xs < 0.0_wp)
          e = [p%r - m%pocket_radius*cos(p%phi - a%pocket_azimuth) + p%tilt*xs, &
               m%pocket_radius*sin(p%phi - a%pocket_azimuth) - p%skew*xs]
+         e = e - [c_r, c_t] - (p%x + xs - p0x)*[a_r, a_t]
          emag = norm2(e)
          ld%pocket_gap(h) = min(ld%pocket_gap(h), 0.5_wp*m%pocket_clearance - emag)
          delta = emag - 0.5_wp*m%pocket_clearance
          if (delta <= 0.0_wp .or. emag <= 0.0_wp) cycle
          q = m%pocket_k*delta**(10.0_wp/9.0_wp)*w
-         n = [0.0_wp, e(1)/emag, e(2)/emag]
+         n = [-(e(1)*a_r + e(2)*a_t)/emag, e(1)/emag, e(2)/emag]
          tau = [0.0_wp, -n(3), n(2)]
          ld%pocket_load(h) = ld%pocket_load(h) + q
          ! sliding of the roller surface over the pocket: axial, around the pocket
          v = [p%xdot, p%rdot*tau(2) + p%r*(p%phidot - a%cage_speed)*tau(3) + &
               (p%spin + p%phidot - a%cage_speed)*0.5_wp*m%qs%d]
+         pt_in = (p%x + xs)*[1.0_wp, 0.0_wp, 0.0_wp] + (p%r + 0.5_wp*m%qs%d*n(2))*e_r + 0.5_wp*m%qs%d*n(3)*e_t
+         if (moving_cage) then
+            ! the cage's own motion at the contact point beyond its turning about the bearing axis
+            u_c = a%cage_velocity + cross(a%cage_omega_t, pt_in - a%cage_position) - &
+                  cross([a%cage_speed, 0.0_wp, 0.0_wp], a%cage_position)
+            tau_in = tau(2)*e_r + tau(3)*e_t
+            v = v - [u_c(1), dot_product(u_c, tau_in)]
+         end if
          vmag = hypot(v(1), v(2))
          fx = -m%pocket_friction*q*v(1)/sqrt(vmag**2 + SLIP_REG**2)
          ft = -m%pocket_friction*q*v(2)/sqrt(vmag**2 + SLIP_REG**2)
@@ -387,9 +413,18 @@ contains
          ! moment about the roller centre of f at x e_x + (D/2) n
          mom = cross([xs, 0.5_wp*m%qs%d*n(2), 0.5_wp*m%qs%d*n(3)], f)
          ld%moment = ld%moment + mom
-         ! the reaction -f on the cage at the contact point: its torque about the bearing axis
-         pt = [xs, p%r + 0.5_wp*m%qs%d*n(2), 0.5_wp*m%qs%d*n(3)]
-         ld%cage_torque = ld%cage_torque - (pt(2)*f(3) - pt(3)*f(2))
+         ! the reaction -f on the cage at the contact point: force, moment about the cage
+         ! centre (inertial), its x part the torque about the cage centre's x axis
+         f_in = f(1)*[1.0_wp, 0.0_wp, 0.0_wp] + f(2)*e_r + f(3)*e_t
+         ld%cage_force = ld%cage_force - f_in
+         mom = cross(pt_in - a%cage_position, -f_in)
+         ld%cage_moment = ld%cage_moment + mom
+         if (moving_cage) then
+            ld%cage_torque = ld%cage_torque + mom(1)
+         else
+            pt = [xs, p%r + 0.5_wp*m%qs%d*n(2), 0.5_wp*m%qs%d*n(3)]
+            ld%cage_torque = ld%cage_torque - (pt(2)*f(3) - pt(3)*f(2))
+         end if
       end do
    end subroutine cylindrical_pocket_loads
 

@@ -183,7 +183,8 @@ contains
             contact(k, :) = [e%azimuth(k)*deg, 0.0_wp, 0.0_wp, e%c_o(k)%load, e%c_i(k)%load, &
                              e%c_o(k)%stress, e%c_i(k)%stress, e%c_o(k)%half_length, e%c_i(k)%half_length, &
                              e%c_o(k)%mean_half_width, e%c_i(k)%mean_half_width]
-            thermal(k, 1) = 0.0_wp                    ! rollers stay axially centred at step 0
+            thermal(k, 1) = 0.0_wp                    ! rollers axially centred at step 0 without flanges
+            if (allocated(e%x)) thermal(k, 1) = e%x(k)  ! the flanged start's axial position
             thermal(k, 2) = e%c_o(k)%max_deflection
             thermal(k, 3) = e%c_i(k)%max_deflection
             thermal(k, 4:5) = 0.0_wp                  ! rigid races: no race flexing
@@ -222,7 +223,7 @@ contains
          slices(:, 5, 1) = s%tr_o(1)%traction
          slices(:, 10, 1) = s%tr_i(1)%traction
          call race_rows(bodies, e%u, b%speed_outer, b%speed_inner)
-         bodies(3, 1) = 0.0_wp          ! the roller model has no axial race motion (no thrust)
+         bodies(3, 1) = e%u_axial       ! 0 without flanges (no axial race motion); the flanged start's
          bodies(2, 10) = s%mounting%outer_hoop_stress
          bodies(3, 10) = s%mounting%inner_hoop_stress
          bodies(2:3, 11) = s%race_wear
@@ -264,7 +265,32 @@ contains
       call write_step(unit, step, header, b%run_id, re_no, contact, motion, traction, &
                       thermal, [1], slice_no, slices, 1, cage_el, cage_end, cage_code, re_cage, &
                       land_no, land_code, race_cage, bodies, loads, acc, perf, [step], summary)
+      if (step == 0 .and. allocated(s%equilibrium%flange_load)) call write_roller_flanges(unit, s)
    end subroutine write_roller_step0
+
+   !> The flanged start's roller end / flange contacts (adore_quasistatic_roller_flange_equilibrium),
+   !> a block after step 0's sections (the report's print has no flange columns; docs/dynamics.md,
+   !> "Flanges at step 0"): per roller its axial position (m), tilt (rad) and each flange's Hertz
+   !> load (N), then the inner race's axial position and the flanges' axial force on it (N).
+   subroutine write_roller_flanges(unit, s)
+      integer, intent(in) :: unit
+      type(roller_step0_t), intent(in) :: s
+      character(len=12) :: name(size(s%flanges%flange))
+      integer :: i, k
+      do i = 1, size(name)
+         name(i) = trim(merge("Outer", "Inner", s%flanges%flange(i)%race == 1))//" "// &
+                   trim(merge("-x", "+x", s%flanges%flange(i)%side < 0))
+      end do
+      write (unit, "(/a)") "  ROLLER END / FLANGE CONTACTS AT STEP 0 (QUASI-STATIC START, FLANGE LOADS IN N)"
+      write (unit, "(a,*(a12))") "   RE No   Axial Pos        Tilt", (adjustr(name(i)), i=1, size(name))
+      associate (e => s%equilibrium)
+         do k = 1, size(e%x)
+            write (unit, "(i8,2es12.4,*(es12.4))") k, e%x(k), e%tilt(k), e%flange_load(:, k)
+         end do
+         write (unit, "(a,es12.4,a,es12.4)") "   Inner race axial position ", e%u_axial, &
+            "   flanges' axial force on it ", -sum(e%flange_axial, mask=spread(s%flanges%flange%race == 2, 2, size(e%x)))
+      end associate
+   end subroutine write_roller_flanges
 
    !> The thermal model's columns of a printed step (docs/thermal.md, "The wiring"), where
    !> given: fluid(n), each rolling element's drag, churning moment and their loss in

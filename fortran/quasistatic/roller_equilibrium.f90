@@ -40,7 +40,7 @@ module adore_quasistatic_roller_equilibrium
    private
 
    public :: roller_qs_bearing_t, roller_qs_load_t, roller_qs_solution_t
-   public :: solve_roller_equilibrium, roller_contacts, solve_roller
+   public :: solve_roller_equilibrium, roller_contacts, solve_roller, clear_reactions, add_slice_reactions
 
    !> Bearing data needed by the quasi-static solution (m, kg, Pa).
    type :: roller_qs_bearing_t
@@ -76,6 +76,13 @@ module adore_quasistatic_roller_equilibrium
       real(wp) :: inner_moment(3) = 0.0_wp   !< their moment about the race centre (N m)
       real(wp) :: outer_force(3) = 0.0_wp    !< force of the rollers on the outer race (N)
       real(wp) :: outer_moment(3) = 0.0_wp
+      !> roller end / flange contacts (flanged bearings, adore_quasistatic_roller_flange_equilibrium;
+      !> unallocated without flanges): each roller's axial position (m), the inner race's axial
+      !> position (m), per flange of the set and roller its Hertz load (N), axial force on the
+      !> roller (N) and contact height above (inner) / below (outer) the raceway (m)
+      real(wp), allocatable :: x(:)
+      real(wp) :: u_axial = 0.0_wp
+      real(wp), allocatable :: flange_load(:, :), flange_axial(:, :), flange_height(:, :)
       real(wp) :: race_residual(2) = 0.0_wp  !< inner race y, z force balance (N)
       real(wp) :: max_roller_residual = 0.0_wp   !< largest roller force imbalance (N)
       integer :: iterations = 0
@@ -299,16 +306,12 @@ contains
          real(wp), intent(in) :: u(2)
          real(wp), intent(out) :: res(2), jac(2, 2)
          logical, intent(out) :: ok
-         real(wp) :: sp, cp, u_r, t_r, fc, dq(2), dm(2), qi, mi, qo, mo
+         real(wp) :: sp, cp, u_r, t_r, fc, dq(2), dm(2)
          integer :: k
 
          res = 0.0_wp
          jac = 0.0_wp
-         s%inner_force = 0.0_wp
-         s%inner_moment = 0.0_wp
-         s%outer_force = 0.0_wp
-         s%outer_moment = 0.0_wp
-         s%max_roller_residual = 0.0_wp
+         call clear_reactions(s)
          do k = 1, n
             sp = sin(s%azimuth(k))
             cp = cos(s%azimuth(k))
@@ -321,16 +324,9 @@ contains
                return
             end if
             s%centrifugal(k) = fc
-            qi = s%c_i(k)%load
-            mi = s%c_i(k)%moment
-            qo = s%c_o(k)%load
-            mo = s%c_o(k)%moment
-            s%max_roller_residual = max(s%max_roller_residual, abs(qi - qo + fc))
+            s%max_roller_residual = max(s%max_roller_residual, abs(s%c_i(k)%load - s%c_o(k)%load + fc))
             ! rollers push the inner race along -e_r, the outer race along +e_r
-            s%inner_force(2:3) = s%inner_force(2:3) + qi*[sp, -cp]
-            s%inner_moment(2:3) = s%inner_moment(2:3) + mi*[cp, sp]
-            s%outer_force(2:3) = s%outer_force(2:3) + qo*[-sp, cp]
-            s%outer_moment(2:3) = s%outer_moment(2:3) - mo*[cp, sp]
+            call add_slice_reactions(s, k, sp, cp)
             ! d(u_r)/d(Y, Z) = (-sp, cp)
             jac(1, :) = jac(1, :) + sp*dq(1)*[-sp, cp]
             jac(2, :) = jac(2, :) - cp*dq(1)*[-sp, cp]
@@ -339,5 +335,28 @@ contains
       end subroutine evaluate
 
    end subroutine solve_roller_equilibrium
+
+   !> Zero the race reactions and the roller residual of s before a sweep over the rollers.
+   pure subroutine clear_reactions(s)
+      type(roller_qs_solution_t), intent(inout) :: s
+      s%inner_force = 0.0_wp
+      s%inner_moment = 0.0_wp
+      s%outer_force = 0.0_wp
+      s%outer_moment = 0.0_wp
+      s%max_roller_residual = 0.0_wp
+   end subroutine clear_reactions
+
+   !> Add roller k's slice reactions to the races' forces (N) and moments (N m) of s: the
+   !> rollers push the inner race along -e_r, the outer race along +e_r (sp, cp: sin, cos of
+   !> its azimuth).
+   pure subroutine add_slice_reactions(s, k, sp, cp)
+      type(roller_qs_solution_t), intent(inout) :: s
+      integer, intent(in) :: k
+      real(wp), intent(in) :: sp, cp
+      s%inner_force(2:3) = s%inner_force(2:3) + s%c_i(k)%load*[sp, -cp]
+      s%inner_moment(2:3) = s%inner_moment(2:3) + s%c_i(k)%moment*[cp, sp]
+      s%outer_force(2:3) = s%outer_force(2:3) + s%c_o(k)%load*[-sp, cp]
+      s%outer_moment(2:3) = s%outer_moment(2:3) - s%c_o(k)%moment*[cp, sp]
+   end subroutine add_slice_reactions
 
 end module adore_quasistatic_roller_equilibrium

@@ -19,9 +19,12 @@
 !>   1.816e5).
 !> * Slices: the report's grid (3 zones x 4 Gauss points), slice reference length the
 !>   length scale D/2 (adore_contact_line_slices).
-!> * Flanges: none.  Rec 5B/5B.1 carry no flange geometry (the flag records 3.3/3.4 are not
-!>   decoded), the rollers carry no axial load at step 0 (zero thrust, no misalignment,
-!>   symmetric profile) and the report prints no flange loads at step 0.  Roller skew is
+!> * Flanges: a deck without Rec 5B.2 flanges (both appendix decks) has none: the rollers
+!>   carry no axial load at step 0 (zero thrust, no misalignment, symmetric profile) and the
+!>   report prints no flange loads at step 0.  With Rec 5B.2 flanges (a spherical roller end,
+!>   R_e >= L/2) the start is adore_quasistatic_roller_flange_equilibrium: each roller's axial
+!>   position and tilt with its flange contacts, the inner race's axial position, so that the
+!>   flanges carry the axial load (docs/dynamics.md, "Flanges at step 0").  Roller skew is
 !>   prescribed 0; roller tilt is solved.
 !> * Race and roller weights are left out of the start (see solve_roller_step0).
 !> * Tribology (roller_tribology): slice slips, tractions and contact losses of both races
@@ -43,11 +46,13 @@ module adore_start_roller_step0
    use adore_quasistatic_models, only: roller_qs_model
    use adore_quasistatic_roller_equilibrium, only: roller_qs_bearing_t, roller_qs_load_t, &
                                                    roller_qs_solution_t, solve_roller_equilibrium
+   use adore_quasistatic_roller_flange_equilibrium, only: solve_flanged_equilibrium
+   use adore_contact_roller_flange, only: roller_flange_set_t, roller_flanges, flange_contact_t, flange_contact
    use adore_life_lundberg_palmgren, only: life_params_t
    use adore_life_roller, only: roller_lives_t, roller_bearing_lp_life
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_RECTANGULAR
    use adore_tribology_wear, only: archard_wear_rate
-   use adore_tribology_traction_law, only: law_slip_scale
+   use adore_tribology_traction_law, only: law_slip_scale, law_kappa
    use adore_forces_race_contact, only: line_flash, wall_temperature
    use adore_tribology_roller_traction, only: roller_spin_t, line_traction_t, line_traction, &
                                               roller_equilibrium_spin, RACE_OUTER, RACE_INNER
@@ -64,6 +69,8 @@ module adore_start_roller_step0
       type(mounting_t) :: mounting
       type(roller_qs_bearing_t) :: model       !< the contact model actually solved
       type(roller_qs_solution_t) :: equilibrium
+      !> the roller end / flange contacts solved at step 0 (none allocated: no flanges)
+      type(roller_flange_set_t) :: flanges
       real(wp) :: orbital_speed = 0.0_wp       !< w_m (rad/s)
       real(wp) :: spin_speed = 0.0_wp          !< roller spin about its axis, w_R (rad/s, <0: -x)
       real(wp) :: contact_clearance = 0.0_wp   !< 2 (R_o - R_i - D) of the contact geometry (m)
@@ -93,7 +100,10 @@ module adore_start_roller_step0
       !> moment x, y, z about the race centre (N m)], the normal slice loads of the
       !> equilibrium plus the slice tractions along the orbit direction (section 3 of the print)
       real(wp) :: race_loads(6, 2) = 0.0_wp
-      !> total power loss (W): contact_power + cage contact losses; NaN while a cage contact
+      !> the flange contacts' traction loss (W): kappa(|u|) Q |u| of each loaded flange contact at
+      !> the start's kinematics (flange_power; 0 without flanges)
+      real(wp) :: flange_power = 0.0_wp
+      !> total power loss (W): contact_power + flange_power + cage contact losses; NaN while a cage contact
       !> (pocket or land) touches, since the cage contact forces are not modelled
       real(wp) :: power_loss = 0.0_wp
    end type roller_step0_t
@@ -151,7 +161,18 @@ contains
       ld%skew = 0.0_wp
       allocate (w(b%n_elements))
       w = s%orbital_speed
-      call solve_roller_equilibrium(s%model, ld, w, s%equilibrium, error)
+      associate (r => b%roller)
+         ! flanges at step 0 (docs/dynamics.md, "Flanges at step 0"); a flange set the contact
+         ! model cannot honour (flat or short end) is left to the dynamics' input error
+         if (any(r%flange) .and. r%end_radius > 0.0_wp .and. r%end_radius >= 0.5_wp*r%roller_length) then
+            s%flanges = roller_flanges(b%d, r%roller_length, r%corner_radius, r%end_radius, r%flange, &
+                                       r%flange_height, r%flange_angle, r%flange_clearance, [s%model%r_o, s%model%r_i], &
+                                       [s%model%e_o, s%model%e_i])
+            call solve_flanged_equilibrium(s%model, s%flanges, ld, w, s%equilibrium, error)
+         else
+            call solve_roller_equilibrium(s%model, ld, w, s%equilibrium, error)
+         end if
+      end associate
       if (allocated(error)) return
 
       ! basic life from the slice contacts (eqs 73, 75, 76, 102); default constants
@@ -239,7 +260,8 @@ contains
       end associate
       s%contact_temp(1, :) = wall_temperature(b%temperature, BODY_OUTER)
       s%contact_temp(2, :) = wall_temperature(b%temperature, BODY_INNER)
-      s%power_loss = s%contact_power
+      if (allocated(s%flanges%flange)) s%flange_power = flange_power(b, s)
+      s%power_loss = s%contact_power + s%flange_power
       if (any(s%cage%pocket%in_contact) .or. any(s%cage%land%in_contact)) &
          s%power_loss = ieee_value(1.0_wp, ieee_quiet_nan)
 
@@ -258,5 +280,42 @@ contains
       s%race_wear(2) = archard_wear_rate(b%material(BODY_INNER)%wear, b%material(BODY_INNER)%hardness, &
                                          sum(s%tr_i%sliding))
    end subroutine roller_wear
+
+   !> The flange contacts' traction loss (W) at the start (docs/dynamics.md, "Flanges at step
+   !> 0"): each loaded contact of the flanged equilibrium with the start's kinematics - roller
+   !> centre orbiting at w_m, its absolute spin w_m + W about its axis, the races turning -
+   !> the sliding u of the roller end over the flange (adore_contact_roller_flange) and the
+   !> run's law, kappa(|u|) Q |u| (as the dynamics' flange_loads, without damping: no approach rate).
+   real(wp) function flange_power(b, s) result(p)
+      type(bearing_t), intent(in) :: b
+      type(roller_step0_t), intent(in) :: s
+      type(flange_contact_t) :: c
+      real(wp) :: centre(3), axis(3), omega(3), o(3), e_r(3), e_t(3), um, w_o
+      integer :: k, i
+      p = 0.0_wp
+      associate (e => s%equilibrium, f => s%flanges)
+         do k = 1, size(e%x)
+            e_r = [0.0_wp, -sin(e%azimuth(k)), cos(e%azimuth(k))]
+            e_t = [0.0_wp, -cos(e%azimuth(k)), -sin(e%azimuth(k))]
+            centre = [e%x(k), e%r(k), 0.0_wp]
+            axis = [1.0_wp, e%tilt(k), 0.0_wp]
+            axis = axis/norm2(axis)
+            omega = [e%orbital_speed(k) + s%roller_spin(k), s%roller_spin(k)*e%tilt(k), 0.0_wp]
+            do i = 1, size(f%flange)
+               if (.not. (e%flange_load(i, k) > 0.0_wp)) cycle
+               o = 0.0_wp
+               w_o = b%speed_outer
+               if (f%flange(i)%race == 2) then
+                  o = [e%u_axial, dot_product([0.0_wp, e%u], e_r), dot_product([0.0_wp, e%u], e_t)]
+                  w_o = b%speed_inner
+               end if
+               call flange_contact(f, f%flange(i), centre, axis, [0.0_wp, 0.0_wp, e%r(k)*e%orbital_speed(k)], omega, &
+                                   o, [0.0_wp, 0.0_wp, 0.0_wp], w_o, c)
+               um = norm2(c%slip)
+               if (um > 0.0_wp) p = p + law_kappa(b%race_traction, um)*c%load*um
+            end do
+         end do
+      end associate
+   end function flange_power
 
 end module adore_start_roller_step0

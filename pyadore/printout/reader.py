@@ -21,6 +21,9 @@ _BANNER_INFO = re.compile(r"Bearing Type\s*=\s*(\S+)\s+Program\s+Mode\s*=\s*(\S+
 _TERMINATION = re.compile(r"Last Step Number\s*=\s*(\S+)\s+Final Time\s*=\s*(\S+)")
 _SLICES_TITLE = re.compile(r"^1a\.\s+Load Distribution Along Roller no\.\s*(\d+)\s*$")
 _SECTION_TITLE = re.compile(r"^(1|1a|2|3|4)\.\s")
+#: the flanged start's block after step 0 (docs/dynamics.md, "Flanges at step 0"; not in the report)
+_FLANGE_TITLE = "ROLLER END / FLANGE CONTACTS AT STEP 0"
+_FLANGE_RACE = re.compile(r"Inner race axial position\s+(\S+)\s+flanges' axial force on it\s+(\S+)")
 _LOAD_ROWS = L.LOAD_ROWS
 _ACC_ROWS = L.ACC_ROWS
 
@@ -245,6 +248,9 @@ class _Reader:
                 if section == "3":
                     i = self.section3(i, step)
                 continue
+            if text.startswith(_FLANGE_TITLE):
+                i = self.flanges(i + 1, step)
+                continue
             spec = spec_by_key.get(_norm(line))
             if spec is None:
                 raise self.fail(i, f"a table heading, step header or section title in section {section or '?'}")
@@ -267,6 +273,36 @@ class _Reader:
     def _is_step(self, k: int) -> bool:
         s = self.lines[k]
         return s.lstrip().startswith("step") and "(ADORE 5.0)" in s
+
+    def flanges(self, i: int, step: Step) -> int:
+        """The flanged start's block after step 0 (docs/dynamics.md, "Flanges at step 0"):
+        ``step.tables["flanges"]``, per roller its axial position (m), tilt (rad) and each
+        flange's load (N, columns ``outer_minus_x_N`` ... ``inner_plus_x_N``), and
+        ``step.tables["flanges_race"]``, the inner race's axial position (m) and the flanges'
+        axial force on it (N)."""
+        head = self.lines[i].split() if i < len(self.lines) else []
+        if head[:5] != ["RE", "No", "Axial", "Pos", "Tilt"] or len(head) % 2 == 0:
+            raise self.fail(i, "the flange table's heading 'RE No Axial Pos Tilt <race> <end> ...'")
+        columns = ["axial_pos_m", "tilt_rad"] + [
+            f"{head[k].lower()}_{'minus' if head[k + 1] == '-x' else 'plus'}_x_N" for k in range(5, len(head), 2)]
+        rows, index = [], []
+        i += 1
+        while i < len(self.lines) and self.lines[i].split() and self.lines[i].split()[0].isdigit():
+            tokens = self.lines[i].split()
+            vals = [parse_number(t) for t in tokens[1:]]
+            if len(vals) != len(columns) or any(v is None for v in vals):
+                raise self.fail(i, f"a flange row: RE no and {len(columns)} numbers")
+            rows.append(vals)
+            index.append(int(tokens[0]))
+            i += 1
+        m = _FLANGE_RACE.search(self.lines[i]) if i < len(self.lines) else None
+        race = [parse_number(m.group(1)), parse_number(m.group(2))] if m else [None]
+        if None in race:
+            raise self.fail(i, "'Inner race axial position <m>   flanges' axial force on it <N>'")
+        step.tables["flanges"] = self.frame(rows, index, "re_no", columns)
+        step.tables["flanges_race"] = self.frame([race], [0], "row", ["inner_race_axial_pos_m",
+                                                                      "flange_axial_force_on_inner_race_N"])
+        return i + 1
 
     def statistics(self, i: int, run: PrintRun) -> int:
         labels = {_norm(k): v for k, v in L.STATISTICS_LABELS.items()}
