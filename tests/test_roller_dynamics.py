@@ -117,6 +117,8 @@ def test_inner_contact_loads_within_5_percent_in_the_load_zone(report_time_run):
     errors = _errors(report_time_run, "re_contact", "contact_load_inner_N")
     assert set(errors) == {3, 4, 5, 6}
     assert max(abs(e) for k, e in errors.items() if k != EDGE_ROLLER) < 0.05, errors
+    # the known deviation at the load zone's edge (+7.7 %, the xfail below), bounded
+    assert abs(errors[EDGE_ROLLER]) < 0.10, errors
 
 
 @pytest.mark.xfail(strict=True, reason="known deviation: golden roller 6 (77.2 deg, the load zone's edge) 77.78 N, "
@@ -153,34 +155,45 @@ def test_full_appendix_d_run(tmp_path, adore_exe):
     assert run.statistics["max_truncation"] <= 1e-4
 
 
-@pytest.fixture(scope="module")
-def free_cage_run(tmp_path_factory, adore_exe):
-    """Appendix D with its outer-guided cage free (run option cage=free), 300 steps."""
-    out = tmp_path_factory.mktemp("roller_free_cage") / "f.prt"
-    proc = subprocess.run([str(adore_exe), str(DECK), str(out), "--steps", "300", "--cage", "free"],
-                          capture_output=True, text=True, timeout=600)
+def _free_cage(out, whirl, adore_exe):
+    proc = subprocess.run([str(adore_exe), str(DECK), str(out), "--steps", "300", "--cage", "free",
+                           "--cage-whirl", whirl], capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr
     return out
 
 
-def test_free_roller_cage_starts_on_the_deck_whirl_and_rides_its_dry_lands(free_cage_run):
+@pytest.fixture(scope="module")
+def free_cage_run(tmp_path_factory, adore_exe):
+    """Appendix D with its outer-guided cage free (run option cage=free), 300 steps, in
+    ADORE's whirl coordinates (cage_whirl=adore, the default)."""
+    return _free_cage(tmp_path_factory.mktemp("roller_free_cage") / "f.prt", "adore", adore_exe)
+
+
+@pytest.mark.parametrize("whirl", ["adore", "inertial"])
+def test_free_roller_cage_starts_on_the_deck_whirl_and_touches_its_dry_lands_only_outside(
+        free_cage_run, adore_exe, tmp_path, whirl):
     """The free roller cage (issue #25 for Appendix D): the listing says so; it starts at the
     deck's Rec 9.5.1 centre (0, 0, 5e-5 m: on its 50 um radial land clearance) and moves off
     it; in air the lands carry no film, so a land force is recorded exactly when the cage's
     eccentricity about the (fixed) outer race exceeds the radial clearance (metal), never
-    inside it."""
-    text = free_cage_run.read_text()
+    inside it.  By Newton's equations (cage_whirl=inertial) the cage rides its lands (land
+    force in some steps); in ADORE's whirl coordinates it moves inside the clearance without
+    touching them over these 300 steps (docs/dynamics.md, "The cage's whirl frame")."""
+    run = free_cage_run if whirl == "adore" else _free_cage(tmp_path / "i.prt", whirl, adore_exe)
+    text = run.read_text()
     assert "Normal termination: Last Step Number =     300" in text
     assert "CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED" in text
-    h = pd.read_csv(free_cage_run.with_suffix(".hist.csv"))
+    assert ("CAGE MASS CENTRE IN ADORE'S WHIRL COORDINATES" in text) == (whirl == "adore")
+    h = pd.read_csv(run.with_suffix(".hist.csv"))
     assert h["cage_y_m"].iloc[0] == 0.0 and h["cage_z_m"].iloc[0] == pytest.approx(5.0e-5, rel=1e-12)
     assert np.ptp(h["cage_y_m"]) > 1.0e-5
     e = np.hypot(h["cage_y_m"], h["cage_z_m"]).to_numpy()
     c = 0.5 * h["guide_clearance_m"].to_numpy()
     land = (h["land1_force_N"] + h["land2_force_N"]).to_numpy()
     assert c[0] == pytest.approx(5.0e-5, rel=1e-9)
-    assert (land > 0).any() and (e < c).any()
+    assert (e < c).any()
     assert np.all((land > 0) == (e > c))
+    assert (land > 0).any() == (whirl == "inertial")
     # the two lands (same diameter, clearance and width) carry the same force
     np.testing.assert_allclose(h["land1_force_N"], h["land2_force_N"], rtol=1e-12, atol=0.0)
 
