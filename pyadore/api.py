@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import tempfile
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -244,7 +245,9 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
             done = getattr(exc, "output", None)
             exc.print_path = out_path if out_path.exists() else None
             history = _written_history(out_path, done)
-            exc.keep_partial(history, _written_results(deck, out_path, done, history))
+            arrays = _written_results(deck, out_path, done, history)
+            exc.keep_partial(None if history is None else partial(_history_frame, history),
+                             None if arrays is None else arrays.to_dataset)
             raise
         text = out_path.read_text(encoding="utf-8", errors="replace")
         history = _written_history(out_path, output)
@@ -252,6 +255,12 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
     return Result(deck_path=deck, print_path=out_path, steps=steps, text=text,
                   notes=[output.note] if output.note else [], steps_integrated=output.integrated,
                   _history=history, arrays=arrays, balance=parse_balance(output.note))
+
+
+def _history_frame(history: tuple) -> "pd.DataFrame":
+    from .timehistory import history_frame
+
+    return history_frame(*history)
 
 
 _NUM = r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)"

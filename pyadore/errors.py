@@ -37,23 +37,22 @@ class AdoreEngineError(AdoreError):
 
     status = STATUS_ENGINE
 
-    def keep_partial(self, history, arrays) -> None:
-        """The failed run's plot-data rows ``history`` ((values, column names) or None)
-        and element arrays ``arrays`` (:class:`pyadore.results.ResultArrays` or None)."""
-        self._partial = (history, arrays)
+    def keep_partial(self, time_history, dataset) -> None:
+        """What the failed run kept, as callables without arguments that build its
+        ``time_history`` (a pandas DataFrame) and ``dataset`` (an xarray Dataset) - each
+        may return None - called on first access."""
+        self._partial = (time_history, dataset)
+
+    def _built(self, name: str, k: int):
+        if name not in self.__dict__:
+            make = getattr(self, "_partial", (None, None))[k]
+            self.__dict__[name] = None if make is None else make()
+        return self.__dict__[name]
 
     @property
     def time_history(self):
         """The steps of the kept plot-data file as a pandas DataFrame, or None."""
-        if "_time_history" not in self.__dict__:
-            history = getattr(self, "_partial", (None, None))[0]
-            if history is None:
-                self._time_history = None
-            else:
-                from .timehistory import history_frame
-
-                self._time_history = history_frame(*history)
-        return self._time_history
+        return self._built("_time_history", 0)
 
     @time_history.setter
     def time_history(self, value) -> None:
@@ -62,10 +61,7 @@ class AdoreEngineError(AdoreError):
     @property
     def dataset(self):
         """The kept steps' results as an xarray Dataset (``run_complete`` 0), or None."""
-        if "_dataset" not in self.__dict__:
-            arrays = getattr(self, "_partial", (None, None))[1]
-            self._dataset = None if arrays is None else arrays.to_dataset()
-        return self._dataset
+        return self._built("_dataset", 1)
 
     @dataset.setter
     def dataset(self, value) -> None:
