@@ -129,6 +129,24 @@ def test_cold_ball_warns_and_runs(tmp_path):
     assert (tmp_path / "cold.prt").exists()
 
 
+def test_heavy_thrust_at_speed_starts_with_one_pitch(tmp_path):
+    """The angular-contact deck at 10 000 rpm and its static capacity (68.4 kN thrust), -20 um
+    fit: the start used to stop ("orbital speeds and equilibrium did not become
+    consistent") - the search's EHD power, at 4 x 8 Gauss points, jumped by up to 9 % where
+    the slip zones split, its two spurious minima (-44.5 and -45.4 deg) 0.9 deg apart, and
+    the balls flipped between them from pass to pass.  With the fast EHD quadrature (smooth
+    in the pitch, within 3e-5 of a 32 x 64 point rule) the start converges.  Independent
+    check: under a thrust every ball is alike (only the races' weight breaks the symmetry,
+    2e-5 of the contact load), so every ball has the same pitch and orbital speed; the
+    inner race's contact forces carry the thrust."""
+    path, force = _variant(tmp_path, ROOT / "decks" / "examples" / "angular_contact_thrust.inp", "thrust_c0",
+                           speed=10000.0, load=68410.0, fit=-20e-6)
+    balls, summary = _core.ball_step0_from_deck(path)
+    assert np.ptp(balls["pitch"]) <= 1e-5                       # rad (0.016 rad between the two minima)
+    assert np.ptp(balls["orbital_speed"]) <= 1e-6 * np.mean(balls["orbital_speed"])
+    assert abs(summary["inner_force_x"] + force[0]) <= 1e-9 * abs(force[0])
+
+
 @pytest.mark.parametrize("base", [BALL, DEEP_GROOVE], ids=["appendix_c", "deep_groove"])
 def test_shaft_at_rest_runs_its_time_steps(tmp_path, base):
     """0 rpm, 100 time steps: the run completes (a ball's micro-motion used to entrain a
