@@ -24,7 +24,8 @@ run killed part way keeps what it measured.  ``--rerun`` takes the failed cases 
 earlier CSV (e.g. after a fix, or with ``--extra`` engine options / ``--exe`` another
 executable to find a cause); ``--summarize`` prints a CSV's failures by message category,
 deck, speed, load and fit.  The measured grid and its diagnosis re-runs are kept in
-bench/operating_points_grid.csv (the last full grid; the one before in bench/operating_points_grid_before.csv) and bench/operating_points_diagnosis.csv
+bench/operating_points_grid.csv (the last full grid, session 14; session 13's in bench/operating_points_grid_s13.csv,
+the one before in bench/operating_points_grid_before.csv) and bench/operating_points_diagnosis.csv
 (docs/operating-points.md, "The dynamic grid, all 14 decks").
 """
 

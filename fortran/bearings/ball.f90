@@ -26,7 +26,7 @@ module adore_bearings_ball
    use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
                                       BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE
    use adore_tribology_wear, only: archard_wear_rate
-   use adore_quasistatic_ball_start, only: start_method_from_name
+   use adore_quasistatic_ball_start, only: start_method_from_name, start_contact_load
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
    use adore_dynamics_integrator, only: integrator_t, DERIV_OK
    use adore_dynamics_ball_system, only: ball_system_t, start_ball_dynamics
@@ -90,6 +90,7 @@ module adore_bearings_ball
       procedure :: n_balance => ball_n_balance
       procedure :: balance_values => ball_balance
       procedure :: balance_text => ball_balance_text
+      procedure :: start_load => ball_start_load
    end type ball_kind_t
 
 contains
@@ -120,6 +121,13 @@ contains
       self%condition = condition_of(self%bearing)
       call solve_ball_step0(self%bearing, self%step0, error, start_method, self%options%moment_equilibrium)
    end subroutine ball_solve_start
+
+   !> The start's largest race contact load (N): the time scale's load when it exceeds the
+   !> applied load (adore_model_scales).
+   real(wp) function ball_start_load(self) result(q)
+      class(ball_kind_t), intent(in) :: self
+      q = start_contact_load(self%step0%start)
+   end function ball_start_load
 
    !> Step 0 in the ADORE 5.0 layout.
    subroutine ball_write_start(self, unit)

@@ -73,6 +73,7 @@ module adore_bearings_system
       procedure :: balance_text => no_balance_text
       procedure :: set_condition
       procedure :: on_event
+      procedure :: start_load => no_start_load
    end type bearing_system_t
 
    abstract interface
@@ -198,6 +199,13 @@ contains
    end function no_dynamic_steps
 
    !> An engine error: the kind has no time integration.
+   !> The start's largest contact load (N) that the time scale takes when it exceeds the
+   !> applied load (adore_model_scales); 0: a kind whose scale is the applied load's.
+   real(wp) function no_start_load(self) result(q)
+      class(bearing_system_t), intent(in) :: self
+      q = 0.0_wp
+   end function no_start_load
+
    subroutine no_start_dynamics(self, it, y, error)
       class(bearing_system_t), intent(inout) :: self
       type(integrator_t), intent(out) :: it

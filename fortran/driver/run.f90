@@ -18,7 +18,8 @@ module adore_driver_run
    use adore_deck_deck_type, only: deck_t
    use adore_deck_parser, only: parse_deck
    use adore_deck_traction_table, only: read_traction_table
-   use adore_model_bearing, only: bearing_t
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT
+   use adore_model_scales, only: scale_factors
    use adore_model_from_deck, only: build_bearing
    use adore_model_checks, only: check_warnings
    use adore_model_run_options, only: run_options_t, STEPS_FROM_DECK
@@ -78,7 +79,7 @@ contains
                                        element_path
       character(len=:), allocatable :: deck_warnings, balance
       character(len=256) :: iomsg
-      real(wp) :: duration, t_end
+      real(wp) :: duration, t_end, scales(3)
       integer :: unit, stat, start_method, n_dynamic
       logical :: ok, table, to_time
 
@@ -139,6 +140,13 @@ contains
             error%message = trim(deck_path)//": "//error%message
          return
       end if
+      ! the echo's scales as the time integration takes them: the load scale is the start's
+      ! largest contact load where that exceeds the applied load (adore_model_scales)
+      call scale_factors(bearing%d, bearing%mass(BODY_ELEMENT), bearing%force, scales, error, bearing%moment, &
+                         0.5_wp*bearing%dm, sys%start_load())
+      if (allocated(error)) return
+      echo%scale_load = scales(2)
+      echo%scale_time = scales(3)
       ! The time integration: its integrator (Rec 1 int_method, Rec 2.1) and history are set
       ! up before the print file is opened (bad settings leave no output).
       n_dynamic = sys%dynamic_steps()

@@ -25,7 +25,7 @@ module adore_dynamics_ball_system
    use adore_dynamics_ball_motion, only: ball_bearing_rates
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
                                         DERIV_REJECT_STEP, INT_METHOD_DP54, INT_METHOD_ARK436
-   use adore_quasistatic_ball_start, only: ball_start_t
+   use adore_quasistatic_ball_start, only: ball_start_t, start_contact_load
    use adore_cage_step0, only: cage_step0_t
    use adore_model_scales, only: scale_factors
    implicit none
@@ -327,7 +327,10 @@ contains
       type(bearing_state_t) :: st
       type(integrator_settings_t) :: settings
 
-      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error, b%moment, 0.5_wp*b%dm)
+      ! the load scale: the applied load or, when larger, the start's largest contact load
+      ! (adore_model_scales; docs/operating-points.md)
+      call scale_factors(b%d, b%mass(BODY_ELEMENT), b%force, scales, error, b%moment, 0.5_wp*b%dm, &
+                         start_contact_load(start))
       if (allocated(error)) return
       l = scales(1)
       tt = scales(3)

@@ -11,6 +11,11 @@
 !>               load"): a tilting moment M (about y, z) counts as the ball load M / (dm / 2)
 !>               it puts on the pitch circle, so a moment-loaded bearing gets the time scale
 !>               of its contact loads; neither appendix deck has a moment, their scales stay.
+!>               Also pyadore's (docs/operating-points.md, "Load scale of the start's
+!>               contacts"): when the start's largest contact load is larger (a light load
+!>               on a bearing preloaded by its fit, centrifugal loads at speed), that load,
+!>               so that the time scale follows what the contacts carry.  Appendix C's
+!>               largest contact load (2 474 N) is below its 4 500 N: its scale stays.
 module adore_model_scales
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
@@ -33,14 +38,19 @@ contains
    !> max(|Fx|, sqrt(Fy**2 + Fz**2)).  Choice between this and the largest component
    !> is not proven by the report (see module header).  With the applied moment
    !> [Mx, My, Mz] (N m) and the pitch radius arm (m): also sqrt(My**2 + Mz**2) / arm.
-   pure function load_scale(load, moment, arm) result(f)
+   !> With contact (N), the start's largest rolling-element contact load: also that.
+   pure function load_scale(load, moment, arm, contact) result(f)
       real(wp), intent(in) :: load(3)
-      real(wp), intent(in), optional :: moment(3), arm
+      real(wp), intent(in), optional :: moment(3), arm, contact
       real(wp) :: f
 
       f = max(abs(load(1)), hypot(load(2), load(3)))
       if (present(moment) .and. present(arm)) then
          if (arm > 0.0_wp) f = max(f, hypot(moment(2), moment(3))/arm)
+      end if
+      if (present(contact)) then
+         ! only with an applied load: a deck without one stays refused (scale_factors)
+         if (f > 0.0_wp .and. contact < huge(1.0_wp)) f = max(f, contact)
       end if
    end function load_scale
 
@@ -54,13 +64,14 @@ contains
 
    !> scales = [L (m), F (N), T (s)] from rolling-element diameter (m), mass (kg) and the
    !> applied load vector (N) (and, when given, the applied moment (N m) with the pitch
-   !> radius arm (m): load_scale).  Input error for a non-positive diameter or mass, or a
-   !> zero applied load (the scale is then undefined here: ADORE's rule is not known).
-   subroutine scale_factors(d_re, mass_re, load, scales, error, moment, arm)
+   !> radius arm (m), and the start's largest contact load (N): load_scale).  Input error for
+   !> a non-positive diameter or mass, or a zero applied load (the scale is then undefined
+   !> here: ADORE's rule is not known).
+   subroutine scale_factors(d_re, mass_re, load, scales, error, moment, arm, contact)
       real(wp), intent(in) :: d_re, mass_re, load(3)
       real(wp), intent(out) :: scales(3)
       type(error_type), allocatable, intent(out) :: error
-      real(wp), intent(in), optional :: moment(3), arm
+      real(wp), intent(in), optional :: moment(3), arm, contact
 
       scales = 0.0_wp
       if (.not. (d_re > 0.0_wp .and. mass_re > 0.0_wp)) then
@@ -68,7 +79,7 @@ contains
          return
       end if
       scales(1) = length_scale(d_re)
-      scales(2) = load_scale(load, moment, arm)
+      scales(2) = load_scale(load, moment, arm, contact)
       if (.not. (scales(2) > 0.0_wp)) then
          call input_error(error, "scale factors: the applied load is zero, the load scale is undefined")
          return

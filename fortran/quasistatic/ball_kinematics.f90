@@ -16,7 +16,8 @@
 !> Minimum dissipation (report 4.4.7, the ADORE 5.0 default): the inner race contact rolls
 !> at its centre (first equation, j = i), and the pitch beta and spin speed w_b minimise the
 !> power lost in both race contacts (eq 4 with the deck's traction curve, zone-split Gauss,
-!> adore_tribology_slip).  For each beta of a grid the best w_b is found by golden section;
+!> adore_tribology_slip; with an EHD film, traction model 3, the fast EHD quadrature of
+!> adore_tribology_ehd_traction).  For each beta of a grid the best w_b is found by golden section;
 !> the minimum over beta is bracketed on the grid, located by parabolic interpolation and
 !> polished by golden section inside the bracket.  Why the inner contact: the Appendix C
 !> step 0 (the report's printed speeds and contact angles) rolls at the inner contact centre
@@ -26,9 +27,9 @@ module adore_quasistatic_ball_kinematics
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_power
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction_fast
    use adore_tribology_traction_law, only: traction_law_t
-   use adore_tribology_slip, only: ball_race_contact_t, contact_power, SIDE_OUTER, SIDE_INNER
+   use adore_tribology_slip, only: ball_race_contact_t, contact_power, contact_traction_t, SIDE_OUTER, SIDE_INNER
    use adore_quasistatic_ball_min_dissipation, only: brent_minimum, newton_minimum_2d
    implicit none
    private
@@ -40,9 +41,6 @@ module adore_quasistatic_ball_kinematics
    integer, parameter :: CONTROL_INNER = 2  !< no spin at the inner race contact
    integer, parameter :: MIN_DISSIPATION = 3  !< inner centre rolling, least contact power loss
    integer, parameter :: N_GAUSS_MIN = 4    !< Gauss points per slip zone (as the report prints)
-   !> Gauss points across each strip of the EHD traction in the search (the minimum's
-   !> position changes by < 1e-4 deg against 24 points; tests/test_ball_step0_tribology.py)
-   integer, parameter :: N_STRIP_MIN = 8
 
    !> The EHD film of a ball's two race contacts (outer first) for the minimum-dissipation
    !> search with traction model 3: rheology at the wall temperature, film h (m, the
@@ -179,7 +177,8 @@ contains
 
    !> Power (W) lost in the loaded race contacts (load > 0 and a > 0) of the ball state
    !> (beta, w_b, w_m): eq (4) with the traction law `law`, n_gauss points per slip zone; with
-   !> the EHD film traction (model 3) instead when ehd is present.
+   !> the EHD film traction (model 3) instead when ehd is present (a contact with a film:
+   !> ehd_contact_traction_fast's power, its own quadrature).
    subroutine dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, law, n_gauss, beta, w_b, w_m, p, error, ehd)
       real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), beta, w_b, w_m
       type(traction_law_t), intent(in) :: law
@@ -188,6 +187,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(ehd_films_t), intent(in), optional :: ehd
       type(ball_race_contact_t) :: c(2)
+      type(contact_traction_t) :: t
       real(wp) :: pj
       integer :: j
 
@@ -197,7 +197,14 @@ contains
          if (.not. (q(j) > 0.0_wp .and. a(j) > 0.0_wp)) cycle
          if (present(ehd)) then
             if (ehd%h(j) > 0.0_wp) then
-               call ehd_contact_power(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), n_gauss, N_STRIP_MIN, pj, error)
+               ! the EHD power by the dynamics' fast quadrature (graded at the pure-rolling
+               ! points, the Hertz edges taken out): within 3e-5 of a 32 x 64 point rule and
+               ! smooth in the pitch.  n_gauss plain Gauss points per slip zone were not: at
+               ! 4 x 8 points the power jumped by up to 9 % where the zones split (two
+               ! spurious minima 0.9 deg apart that the start flipped between;
+               ! docs/operating-points.md, "Two pitch minima")
+               call ehd_contact_traction_fast(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), t, error)
+               pj = t%power
             else
                ! a contact without an EHD film: the deck's traction curve (docs/tribology.md)
                call contact_power(c(j), law, 1.0_wp, n_gauss, pj, error)

@@ -25,7 +25,7 @@ module adore_quasistatic_ball_start
    implicit none
    private
 
-   public :: ball_start_t, solve_ball_start, is_loaded
+   public :: ball_start_t, solve_ball_start, is_loaded, start_contact_load
    public :: MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER, START_NAMES, start_method_from_name, &
              start_method_title
 
@@ -206,6 +206,16 @@ contains
       ! final equilibrium at the converged speeds
       call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
    end subroutine solve_ball_start
+
+   !> The largest race contact load (N) of the start s (outer or inner, any ball): the load
+   !> scale of the time integration when it exceeds the applied load (adore_model_scales).
+   pure function start_contact_load(s) result(q)
+      type(ball_start_t), intent(in) :: s
+      real(wp) :: q
+      q = 0.0_wp
+      if (allocated(s%equilibrium%q_o)) q = max(q, maxval(s%equilibrium%q_o, mask=s%equilibrium%q_o == s%equilibrium%q_o))
+      if (allocated(s%equilibrium%q_i)) q = max(q, maxval(s%equilibrium%q_i, mask=s%equilibrium%q_i == s%equilibrium%q_i))
+   end function start_contact_load
 
    !> The balls whose inner race contact carries load: more than UNLOADED_FRACTION of the
    !> largest inner contact load q_i (N).  Only these have a traction that sets their speed.

@@ -140,6 +140,15 @@ contains
       call check(close(s(2), 5.0_wp/0.025_wp, 1.0e-15_wp), "load scale = |(My, Mz)| / arm")
       call scale_factors(0.02_wp, 0.5_wp, [300.0_wp, 0.0_wp, 0.0_wp], s, error, [0.0_wp, 3.0_wp, 4.0_wp], 0.025_wp)
       call check(close(s(2), 300.0_wp, 1.0e-15_wp), "a larger force keeps the load scale")
+      ! the start's largest contact load, when larger than the applied load, is the scale
+      ! (a light load on a bearing preloaded by its fit); a smaller one changes nothing
+      call scale_factors(0.02_wp, 0.5_wp, [1.0_wp, 0.0_wp, 0.0_wp], s, error, contact=12.0_wp)
+      call check(close(s(2), 12.0_wp, 1.0e-15_wp), "load scale = the larger contact load")
+      call check(close(s(3)**2*s(2), 0.5_wp*s(1), 1.0e-14_wp), "T^2 F = m L with the contact load")
+      call scale_factors(0.02_wp, 0.5_wp, [4500.0_wp, 0.0_wp, 0.0_wp], s, error, contact=2474.0_wp)
+      call check(close(s(2), 4500.0_wp, 1.0e-15_wp), "a smaller contact load keeps the applied load's scale")
+      call scale_factors(0.02_wp, 0.5_wp, [0.0_wp, 0.0_wp, 0.0_wp], s, error, contact=12.0_wp)
+      call check(allocated(error), "zero applied load still rejected")
    end subroutine test_scales
 
 end program test_model
