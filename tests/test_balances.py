@@ -119,14 +119,15 @@ def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
     deck's settings"); against it the long steps' drive power is off far more than their
     dissipation: the drive torque is what they do not resolve.  Both runs shear the deck's
     thin films (5e-8 m at 1 000 rpm, film parameter below 1) as EHD films
-    (boundary_lambda=0): the EHD traction's small-slip stiffness is what the deck's
-    steps do not resolve (docs/tribology.md, "Thin films")."""
+    (boundary_lambda=0 and no mixed band, full_film_lambda=0): the EHD traction's small-slip
+    stiffness is what the deck's steps do not resolve (docs/tribology.md, "Thin films")."""
     deck = read_deck(DEEP_GROOVE)
-    loose = pyadore.run(DEEP_GROOVE, revolutions=0.1, out=tmp_path / "deck.prt", boundary_lambda=0)
+    loose = pyadore.run(DEEP_GROOVE, revolutions=0.1, out=tmp_path / "deck.prt", boundary_lambda=0, full_film_lambda=0)
     deck.set("2.1", "step_initial", 0.03)
     deck.set("2.1", "step_max", 0.03)
     deck.save(tmp_path / "short.inp")
-    short = pyadore.run(tmp_path / "short.inp", revolutions=0.1, out=tmp_path / "short.prt", boundary_lambda=0)
+    short = pyadore.run(tmp_path / "short.inp", revolutions=0.1, out=tmp_path / "short.prt", boundary_lambda=0,
+                        full_film_lambda=0)
     note = next(n for n in loose.notes if "closure" in n)
     printed = float(re.search(r"closure \(drive - dissipation - energy change\)/max\(\|drive\|, dissipation, 1 uW\)\s+(\S+),",
                               note).group(1))
