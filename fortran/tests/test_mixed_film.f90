@@ -9,15 +9,14 @@
 program test_mixed_film
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
-   use adore_core_rotation, only: quat_matrix
    use adore_model_bearing, only: bearing_t, BODY_OUTER, BODY_INNER
    use adore_geometry_mounted, only: mounted_geometry_t
-   use adore_state_bearing_state, only: bearing_state_t, body_state_t, RACE_OUTER
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, body_load_t
+   use adore_state_bearing_state, only: bearing_state_t, RACE_OUTER
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads
    use adore_forces_race_contact, only: MIN_EHD_FILM, fluid_fraction, lubricant_film
    use adore_start_ball_step0, only: ball_step0_t
    use adore_test_support, only: check, finish
-   use adore_test_ball_fixture, only: step0_state, appendix_c_race_control
+   use adore_test_ball_fixture, only: step0_state, appendix_c_race_control, loads_power
    implicit none
 
    type(bearing_t) :: b
@@ -172,13 +171,7 @@ contains
          call check(.false., "mixed film: the disturbed loads: "//error%message)
          return
       end if
-      p_mech = 0.0_wp
-      do k = 1, size(st%elements)
-         p_mech = p_mech + power_of(st%elements(k), lm%elements(k), l0%elements(k))
-      end do
-      do j = 1, 2
-         p_mech = p_mech + power_of(st%races(j), lm%races(j), l0%races(j))
-      end do
+      p_mech = loads_power(st, lm, l0)
       heat = sum(lm%heat)
       write (*, "(a,2es12.4)") "mixed film: traction power, mechanical and -heat (W) ", p_mech, -heat
       call check(heat > 0.0_wp .and. abs(p_mech + heat) <= 1.0e-10_wp*heat, &
@@ -193,15 +186,5 @@ contains
       q = [l%traction(j, k)%force, l%traction(j, k)%force_cos, l%traction(j, k)%force_sin, l%heat(j, k)]
    end function quantities
 
-   !> Mechanical power (W) of the load difference lw - lo on body bs (force . velocity +
-   !> moment . inertial angular velocity), as test_forces.
-   real(wp) function power_of(bs, lw, lo)
-      type(body_state_t), intent(in) :: bs
-      type(body_load_t), intent(in) :: lw, lo
-      real(wp) :: r(3, 3)
-      r = quat_matrix(bs%attitude)
-      power_of = dot_product(lw%force - lo%force, bs%velocity) + &
-                 dot_product(lw%moment - lo%moment, matmul(r, bs%omega))
-   end function power_of
 
 end program test_mixed_film
