@@ -23,6 +23,8 @@ ENGINE_TESTS += test_run_loop
 ENGINE_TESTS += test_thermal test_thermal_transient
 # the roller bearing's dynamics (issue #26)
 ENGINE_TESTS += test_roller_dynamics
+# the mixed-film traction of model 3 (issue #28)
+ENGINE_TESTS += test_mixed_film
 
 .PHONY: help setup gfortran run test bench debug clean distclean exe
 

@@ -71,9 +71,13 @@ def test_step0_race_loads_are_the_contact_forces(tmp_path, base, speed, load):
     """Int IRace = the equilibrium's normal loads on the inner race plus every inner
     contact's net traction F_t along e_t = (0, -cos phi, -sin phi) at its contact centre
     (radius r_c = r - D/2 cos alpha_i): Mx = sum F_t r_c.  Summed from the per-ball step-0
-    values to the print's 4 digits; the same traction sums give the print's Fy, Fz."""
+    values to the print's 4 digits; the same traction sums give the print's Fy, Fz.  The
+    per-ball values (_core.ball_step0_from_deck) have no run options: every film an EHD film,
+    so the run's are taken without thin or mixed films too (boundary_lambda=0,
+    full_film_lambda=0; the deep-groove case at 3 kN and the angular-contact deck have films
+    in the default mixed band, docs/tribology.md "Mixed films")."""
     path = _variant(tmp_path, base, "case", speed=speed, load=load)
-    result = pyadore.run(path, steps=0, out=tmp_path / "case.prt")
+    result = pyadore.run(path, steps=0, out=tmp_path / "case.prt", boundary_lambda=0, full_film_lambda=0)
     printed = _printed_race_loads(result.text, "Int IRace")
     balls, summary = _core.ball_step0_from_deck(path)
     d = read_deck(path).lookup("ball_diameter")
@@ -119,14 +123,15 @@ def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
     deck's settings"); against it the long steps' drive power is off far more than their
     dissipation: the drive torque is what they do not resolve.  Both runs shear the deck's
     thin films (5e-8 m at 1 000 rpm, film parameter below 1) as EHD films
-    (boundary_lambda=0): the EHD traction's small-slip stiffness is what the deck's
-    steps do not resolve (docs/tribology.md, "Thin films")."""
+    (boundary_lambda=0 and no mixed band, full_film_lambda=0): the EHD traction's small-slip
+    stiffness is what the deck's steps do not resolve (docs/tribology.md, "Thin films")."""
     deck = read_deck(DEEP_GROOVE)
-    loose = pyadore.run(DEEP_GROOVE, revolutions=0.1, out=tmp_path / "deck.prt", boundary_lambda=0)
+    loose = pyadore.run(DEEP_GROOVE, revolutions=0.1, out=tmp_path / "deck.prt", boundary_lambda=0, full_film_lambda=0)
     deck.set("2.1", "step_initial", 0.03)
     deck.set("2.1", "step_max", 0.03)
     deck.save(tmp_path / "short.inp")
-    short = pyadore.run(tmp_path / "short.inp", revolutions=0.1, out=tmp_path / "short.prt", boundary_lambda=0)
+    short = pyadore.run(tmp_path / "short.inp", revolutions=0.1, out=tmp_path / "short.prt", boundary_lambda=0,
+                        full_film_lambda=0)
     note = next(n for n in loose.notes if "closure" in n)
     printed = float(re.search(r"closure \(drive - dissipation - energy change\)/max\(\|drive\|, dissipation, 1 uW\)\s+(\S+),",
                               note).group(1))

@@ -10,6 +10,7 @@ bench/operating_points.py.
 
 from __future__ import annotations
 
+import csv
 from pathlib import Path
 
 import numpy as np
@@ -217,22 +218,78 @@ def test_thin_films_take_the_boundary_curve(tmp_path):
     deck's traction curve, the others keep the EHD traction.  The deep-groove deck at its
     own 1 000 rpm has thermally reduced films of 0.066-0.115 um at step 0: a threshold just
     below the thinnest (no contact below it) leaves the print of boundary_lambda = 0 as it
-    is; the default (some contacts below 1) changes it.  Appendix C's films (film parameter
-    4.5-5.3) keep the EHD traction: its step-0 print is the same with boundary_lambda 0 and
-    the default.  A negative threshold is refused naming the option."""
+    is (both without the mixed band, full_film_lambda = 0: the step); the default (some
+    contacts below 1) changes it.  Appendix C's films (film parameter 4.5-5.3) keep the EHD
+    traction: its step-0 print is the same with boundary_lambda 0 and the default.  A
+    negative threshold is refused naming the option."""
     balls, _ = _core.ball_step0_from_deck(DEEP_GROOVE)
     lam = np.concatenate([balls[f"film_{j}"][balls[f"q_{j}"] > 0.0] * balls[f"thermal_factor_{j}"][balls[f"q_{j}"] > 0.0]
                           for j in "oi"]) / 1e-7
     assert lam.min() < 1.0 < lam.max()
     def text(name, **options):
         return pyadore.run(DEEP_GROOVE, steps=0, out=tmp_path / f"{name}.prt", **options).text.replace(f"{name}.prt", "")
-    ehd = text("ehd", boundary_lambda=0)
-    assert text("below", boundary_lambda=0.999 * lam.min()) == ehd
+    ehd = text("ehd", boundary_lambda=0, full_film_lambda=0)
+    assert text("below", boundary_lambda=0.999 * lam.min(), full_film_lambda=0) == ehd
     assert text("default") != ehd
     films, _ = _core.ball_step0_from_deck(BALL)
     assert np.nanmin(films["film_i"] * films["thermal_factor_i"]) > 4e-7
-    off = pyadore.run(BALL, steps=0, out=tmp_path / "off.prt", boundary_lambda=0).text
+    off = pyadore.run(BALL, steps=0, out=tmp_path / "off.prt", boundary_lambda=0, full_film_lambda=0).text
     on = pyadore.run(BALL, steps=0, out=tmp_path / "on.prt").text
     assert off.replace("off.prt", "") == on.replace("on.prt", "")
     with pytest.raises(Exception, match="boundary_lambda"):
         pyadore.run(BALL, steps=0, out=tmp_path / "bad.prt", boundary_lambda=-1)
+
+
+ANGULAR = EXAMPLES / "angular_contact_thrust.inp"
+
+
+def test_mixed_films_have_no_step_at_the_threshold(tmp_path):
+    """Mixed films (docs/tribology.md, "Mixed films"): between boundary_lambda and
+    full_film_lambda a model-3 contact's traction is f EHD + (1 - f) the deck's curve with
+    the fluid fraction f rising from 0 at boundary_lambda with zero slope, so a contact whose
+    film parameter crosses the threshold does not change its traction by a step.  The
+    angular-contact deck at its own 10 000 rpm has film parameters 1.713-2.082 at step 0
+    (the thinnest shared by the balls' equal thrust contacts): moving boundary_lambda from
+    0.1 % below the thinnest to 0.1 % above takes those contacts from the film to the curve.
+    Without the band (full_film_lambda = 0: session 13's step) the step-0 power loss (the
+    time history's, full precision) jumps by more than 10 % (measured 3.487 -> 2.569 W);
+    with the band (full film at 2.5) it moves by less than 1e-3 of itself (measured 2.8e-4:
+    the band's lower end moved for every contact, f ~ 1e-6 at the crossing), under 1 % of
+    the step's jump.  The default (band 1-2) differs from the step on this deck, whose films
+    are in the band (3.359 W against 3.487 W)."""
+    balls, _ = _core.ball_step0_from_deck(ANGULAR)
+    lam = np.concatenate([balls[f"film_{j}"][balls[f"q_{j}"] > 0.0] * balls[f"thermal_factor_{j}"][balls[f"q_{j}"] > 0.0]
+                          for j in "oi"]) / 1e-7
+    assert 1.0 < lam.min() < 2.0
+
+    def loss(name, **options):
+        result = pyadore.run(ANGULAR, steps=1, out=tmp_path / f"{name}.prt", **options)
+        with open(result.print_path.with_suffix(".hist.csv"), newline="") as f:
+            return float(next(csv.DictReader(f))["total_power_loss_W"])     # step 0
+
+    lo, hi = 0.999 * lam.min(), 1.001 * lam.min()
+    step_lo = loss("step_lo", boundary_lambda=lo, full_film_lambda=0)
+    step = abs(loss("step_hi", boundary_lambda=hi, full_film_lambda=0) - step_lo)
+    base = loss("blend_lo", boundary_lambda=lo, full_film_lambda=2.5)
+    blend = abs(loss("blend_hi", boundary_lambda=hi, full_film_lambda=2.5) - base)
+    assert step > 0.1 * step_lo
+    assert blend < 1e-3 * base and blend < 0.01 * step
+    assert loss("default") < 0.99 * loss("no_band", full_film_lambda=0)
+
+
+def test_mixed_film_starts_where_the_step_did_not(tmp_path):
+    """ISO/TS 16281 example 3 at 1 000 rpm and 1 N (0 um fit): an outer film parameter of
+    1.014 at the start.  With the step at boundary_lambda (full_film_lambda = 0) the start's
+    fixed point moved it across 1 from pass to pass and the start failed ("orbital speeds
+    and equilibrium did not become consistent", one of session 13's regressions); with the
+    mixed band (the default) it starts, runs 300 steps, and its inner race carries the
+    applied load (the balance over the last half of the run, within 1 % of the load)."""
+    path, force = _variant(tmp_path, EXAMPLES / "iso16281_ex3_radial_clearance.inp", "iso3", speed=1000.0, load=1.0,
+                           fit=0.0)
+    with pytest.raises(Exception, match="did not become consistent"):
+        pyadore.run(path, steps=0, out=tmp_path / "step.prt", full_film_lambda=0)
+    result = pyadore.run(path, steps=300, out=tmp_path / "mixed.prt")
+    assert result.steps_integrated == 300
+    carried = np.linalg.norm(result.balance["inner_carried_N"])
+    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)
+    assert result.balance["inner_residual_N"] <= 0.01 * carried

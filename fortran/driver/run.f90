@@ -124,6 +124,8 @@ contains
       ! thin films on the deck's curve (run option; sigma: the composite RMS roughness of the
       ! film parameter the print and the life model use, docs/tribology.md "Thin films")
       bearing%boundary_film = opts%boundary_lambda*roughness%sigma_rms
+      ! mixed films between it and the full film blend the two tractions ("Mixed films")
+      bearing%full_film = opts%full_film_lambda*roughness%sigma_rms
       table = len_trim(opts%traction_table) > 0
       if (table) then
          call read_traction_table(trim(opts%traction_table), bearing%race_traction, error)

@@ -43,7 +43,7 @@ module adore_forces_ball_bearing
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_OUTER, SIDE_INNER, &
                                    contact_kinematics
    use adore_forces_race_contact, only: PRINT_GAUSS, EHD_GAUSS, ehd_traction_model, lubricant_film, &
-                                           ehd_film_present, ehd_traction, rolling_resistance
+                                           fluid_fraction, mixed_traction, ehd_traction, rolling_resistance
    implicit none
    private
 
@@ -417,8 +417,8 @@ contains
          real(wp), intent(in) :: tc(3), b_minor, p_h
          type(contact_traction_t), intent(out) :: t
          type(error_type), allocatable, intent(out) :: error
-         type(contact_traction_t) :: tk
-         real(wp) :: h, phi
+         type(contact_traction_t) :: tk, t_curve
+         real(wp) :: h, phi, f
          integer :: race
 
          race = merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER)
@@ -429,22 +429,30 @@ contains
             call lubricant_film(b, t_lub, tk, cj%a/b_minor, cj%load, p_h, race, h, phi, error)
             if (allocated(error)) return
          end if
-         if (.not. ehd_film_present(b, h, phi)) then
+         f = fluid_fraction(b, h, phi)
+         if (f < 1.0_wp) then
             ! the deck's traction curve: traction model 1, or model 3's contacts without an EHD
-            ! film (no entraining speed, or Gupta's thermal reduction at 0; docs/tribology.md)
+            ! film (no entraining speed, Gupta's thermal reduction at 0, a film parameter below
+            ! boundary_lambda) or in mixed lubrication (f > 0, blended below; docs/tribology.md)
             if (with_2d) then
                ! the slip vector turns across the contact: the EHD traction's nodes per zone
-               call contact_traction(cj, b%race_traction, 1.0_wp, EHD_GAUSS, t, error, transverse=tc)
+               call contact_traction(cj, b%race_traction, 1.0_wp, EHD_GAUSS, t_curve, error, transverse=tc)
             else
-               call contact_traction(cj, b%race_traction, 1.0_wp, PRINT_GAUSS, t, error)
+               call contact_traction(cj, b%race_traction, 1.0_wp, PRINT_GAUSS, t_curve, error)
             end if
-            return
+            if (allocated(error) .or. f == 0.0_wp) then
+               t = t_curve
+               return
+            end if
          end if
          if (with_2d) then
             call ehd_traction(b, t_lub, cj, b_minor, race, h*phi, t, error, with_reference, tc)
          else
             call ehd_traction(b, t_lub, cj, b_minor, race, h*phi, t, error, with_reference)
          end if
+         if (allocated(error)) return
+         ! mixed lubrication (boundary_lambda < film parameter < full_film_lambda)
+         if (f < 1.0_wp) t = mixed_traction(f, t, t_curve)
       end subroutine race_traction
 
    end subroutine ball_bearing_loads

@@ -29,7 +29,7 @@ module adore_forces_race_contact
 
    public :: ehd_traction_model, wall_temperature, wall_rheology, thermal_properties, lubricant_film, &
              ehd_film_present, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip, &
-             rolling_resistance
+             rolling_resistance, fluid_fraction, mixed_traction
 
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
@@ -175,6 +175,54 @@ contains
       real(wp), intent(in) :: h, phi
       ehd_film_present = h*phi >= max(MIN_EHD_FILM, b%boundary_film) .and. h*phi < huge(1.0_wp)
    end function ehd_film_present
+
+   !> Fluid fraction f (-) of a traction model 3 race contact with isothermal film h (m)
+   !> and thermal reduction factor phi: the share of its traction the EHD film gives in
+   !> mixed lubrication, the rest the deck's curve (mixed_traction; docs/tribology.md,
+   !> "Mixed films").  With the thermally reduced film h_f = h phi, h_b = max(MIN_EHD_FILM,
+   !> b%boundary_film) and h_full = b%full_film: 0 without an EHD film (ehd_film_present
+   !> false: h_f < h_b), 1 at h_f >= h_full, between them the cubic f = s**2 (3 - 2 s),
+   !> s = (h_f - h_b) / (h_full - h_b): continuous with its slope at both ends, so the
+   !> traction has no step at the boundary film.  h_full <= h_b: 1 for every film present
+   !> (no blend: the step at h_b).  With sigma the composite roughness, s is linear in the
+   !> film parameter Lambda = h_f / sigma between Lambda_b and Lambda_f (run options
+   !> boundary_lambda and full_film_lambda, defaults 1 and 2).
+   pure real(wp) function fluid_fraction(b, h, phi) result(f)
+      type(bearing_t), intent(in) :: b
+      real(wp), intent(in) :: h, phi
+      real(wp) :: h_b, s
+      h_b = max(MIN_EHD_FILM, b%boundary_film)
+      if (.not. ehd_film_present(b, h, phi)) then
+         f = 0.0_wp
+      else if (b%full_film <= h_b .or. h*phi >= b%full_film) then
+         f = 1.0_wp
+      else
+         s = (h*phi - h_b)/(b%full_film - h_b)
+         f = s*s*(3.0_wp - 2.0_wp*s)
+      end if
+   end function fluid_fraction
+
+   !> The traction of a race contact in mixed lubrication (docs/tribology.md, "Mixed
+   !> films"): f (the fluid fraction, 0 < f < 1) times the EHD film's traction `fluid` plus
+   !> 1 - f times the deck curve's `boundary` - the load-sharing blend mu = f mu_EHD +
+   !> (1 - f) mu_boundary - for every force, moment, the coefficient, the heat (W) and the
+   !> sliding integral (N m/s); the kinematic fields (slips, speeds, spin, R_x, the
+   !> pure-rolling points) are the contact's own, taken from `fluid`.  Both tractions are of
+   !> the same contact (the same load and slip), so the blend is the traction of the shared
+   !> load: f of it at the film's shear, 1 - f at the curve's.
+   pure function mixed_traction(f, fluid, boundary) result(t)
+      real(wp), intent(in) :: f
+      type(contact_traction_t), intent(in) :: fluid, boundary
+      type(contact_traction_t) :: t
+      t = fluid
+      t%force = f*fluid%force + (1.0_wp - f)*boundary%force
+      t%force_cos = f*fluid%force_cos + (1.0_wp - f)*boundary%force_cos
+      t%force_sin = f*fluid%force_sin + (1.0_wp - f)*boundary%force_sin
+      t%cross_force = f*fluid%cross_force + (1.0_wp - f)*boundary%cross_force
+      t%coefficient = f*fluid%coefficient + (1.0_wp - f)*boundary%coefficient
+      t%power = f*fluid%power + (1.0_wp - f)*boundary%power
+      t%sliding = f*fluid%sliding + (1.0_wp - f)*boundary%sliding
+   end function mixed_traction
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):
    !> film h (m, the thermally reduced central film), semi-minor axis b_minor (m), the

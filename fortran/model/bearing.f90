@@ -131,6 +131,11 @@ module adore_model_bearing
       !> is thinner take the deck's curve (run option boundary_lambda times the
       !> composite RMS roughness; docs/tribology.md, "Thin films"); 0: off (the 1 nm floor only)
       real(wp) :: boundary_film = 0.0_wp
+      !> full-film thickness (m): above it a model-3 contact is a full EHD film; between
+      !> boundary_film and it (mixed lubrication) the traction blends the EHD film's and the
+      !> deck's curve by the fluid fraction (run option full_film_lambda times the composite
+      !> RMS roughness; docs/tribology.md, "Mixed films"); at or below boundary_film: no blend
+      real(wp) :: full_film = 0.0_wp
       type(lubricant_t) :: lubricant
       !> the coolant and the thermal times (Rec 2.4, 2.5)
       type(coolant_data_t) :: coolant

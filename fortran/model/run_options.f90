@@ -61,6 +61,13 @@ module adore_model_run_options
       !> "Thin films"); default 1 (Tallian's boundary of boundary lubrication); 0: off (films
       !> down to 1 nm are sheared as EHD films)
       real(wp) :: boundary_lambda = 1.0_wp
+      !> film parameter Lambda_f of a full EHD film: between boundary_lambda and it (mixed
+      !> lubrication) a model-3 race contact's traction is f EHD + (1 - f) the deck's curve,
+      !> f the fluid fraction rising smoothly from 0 to 1 (docs/tribology.md, "Mixed films");
+      !> default 2 (Tallian's classical bound 3 changes Appendix C's print: a contact of its
+      !> run passes through film parameters 2.9-3); at or below boundary_lambda (0 included):
+      !> no blend, the step at boundary_lambda
+      real(wp) :: full_film_lambda = 2.0_wp
       !> the coordinates of the balls in the integrated state: "orbit" (the report's eq 54:
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
@@ -120,7 +127,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 21
+   integer, parameter :: N_OPTIONS = 22
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -152,6 +159,9 @@ module adore_model_run_options
       option_spec_t("boundary_lambda", OPTION_REAL, "1", 0, "", "L", "", &
                     "film parameter h/sigma below which an EHD (model 3) race contact takes the deck's "// &
                     "traction curve (boundary lubrication); 0: off (1 nm films sheared)"), &
+      option_spec_t("full_film_lambda", OPTION_REAL, "2", 0, "", "L", "", &
+                    "film parameter h/sigma of a full EHD film (model 3): below it, down to boundary_lambda, "// &
+                    "traction blends EHD and the deck's curve; <= boundary_lambda: no blend"), &
       option_spec_t("duration", OPTION_REAL, "0", 0, "", "SECONDS", "", &
                     "simulated time to integrate (s): the run ends exactly there, its last step printed "// &
                     "(instead of a step count)"), &
@@ -307,6 +317,8 @@ contains
          opts%thermal_transient = flag
       case ("boundary_lambda")
          opts%boundary_lambda = x
+      case ("full_film_lambda")
+         opts%full_film_lambda = x
       case ("duration")
          opts%duration = x
       case ("revolutions")

@@ -24,8 +24,8 @@ module adore_start_ball_step0
                                                 ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
    use adore_forces_race_contact, only: PRINT_GAUSS, ehd_traction_model, wall_temperature, wall_rheology, &
-                                           lubricant_film, ehd_film_present, ehd_traction, ehd_flash, law_flash, &
-                                           printed_slip
+                                           lubricant_film, fluid_fraction, mixed_traction, ehd_traction, ehd_flash, &
+                                           law_flash, printed_slip
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start, is_loaded
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, bearing_life, life_hours
@@ -219,7 +219,6 @@ contains
          real(wp) :: change
          integer :: iter
          logical, allocatable :: loaded(:)
-         real(wp), parameter :: FILM_FLOOR = 1.0e-9_wp    ! m
 
          call current_films(films, error)
          if (allocated(error)) return
@@ -233,14 +232,26 @@ contains
             ! only the loaded balls' films set speeds (unloaded ones follow the cage)
             loaded = is_loaded(s%start%equilibrium%q_i)
             ! relative to the film, or to 1 nm where there is next to none (a shaft at rest:
-            ! no entraining speed, no film; 1 nm is far below any surface roughness)
-            change = maxval(abs(next%h(1) - films%h(1))/max(next%h(1), FILM_FLOOR), mask=loaded)
-            change = max(change, maxval(abs(next%h(2) - films%h(2))/max(next%h(2), FILM_FLOOR), mask=loaded))
+            ! no entraining speed, no film; 1 nm is far below any surface roughness); the film
+            ! weighted by its fluid fraction, which is continuous through the mixed films (a
+            ! contact near boundary_lambda does not flip between the film and none)
+            change = maxval(film_change(next, films, 1), mask=loaded)
+            change = max(change, maxval(film_change(next, films, 2), mask=loaded))
             films = next
             if (change <= 1.0e-5_wp) return
          end do
          call engine_error(error, "ball start: EHD films and ball speeds did not become consistent")
       end subroutine ehd_start
+
+      !> Relative change of race j's films (fluid fraction x film, m) from old to new: to the
+      !> new value, or to 1 nm where there is next to none.
+      pure function film_change(new, old, j) result(change)
+         type(ehd_films_t), intent(in) :: new(:), old(:)
+         integer, intent(in) :: j
+         real(wp) :: change(size(new))
+         real(wp), parameter :: FILM_FLOOR = 1.0e-9_wp    ! m
+         change = abs(new%fluid(j)*new%h(j) - old%fluid(j)*old%h(j))/max(new%fluid(j)*new%h(j), FILM_FLOOR)
+      end function film_change
 
       !> The EHD films of every ball's race contacts at the current start (unloaded
       !> contacts: h = 0, skipped by the search).
@@ -264,8 +275,10 @@ contains
                call lubricant_film(b, b%temperature, t, k_ell(j), c(j)%load, p_h(j), merge(BODY_OUTER, BODY_INNER, j == 1), &
                                    h, phi, error)
                if (allocated(error)) return
-               ! no film: 0, and the search takes the deck's curve for that contact
-               films(k)%h(j) = merge(h*phi, 0.0_wp, ehd_film_present(b, h, phi))
+               ! no film: 0, and the search takes the deck's curve for that contact; a mixed
+               ! film blends the two by its fluid fraction
+               films(k)%fluid(j) = fluid_fraction(b, h, phi)
+               films(k)%h(j) = merge(h*phi, 0.0_wp, films(k)%fluid(j) > 0.0_wp)
             end do
          end do
       end subroutine current_films
@@ -299,8 +312,8 @@ contains
       subroutine contact_tribology(error)
          type(error_type), allocatable, intent(out) :: error
          type(ball_race_contact_t) :: c(2)
-         type(contact_traction_t) :: t
-         real(wp) :: nan, h, b_minor(2), k_ell(2), p_h(2)
+         type(contact_traction_t) :: t, t_curve
+         real(wp) :: nan, h, b_minor(2), k_ell(2), p_h(2), f, rise, slip, coefficient
          integer :: k, j, race
          logical :: ehd
 
@@ -334,20 +347,35 @@ contains
                                       s%thermal_factor(j, k), error)
                   if (allocated(error)) return
                end if
-               if (ehd .and. ehd_film_present(b, s%film(j, k), s%thermal_factor(j, k))) then
+               f = 0.0_wp
+               if (ehd) f = fluid_fraction(b, s%film(j, k), s%thermal_factor(j, k))
+               if (f > 0.0_wp) then
                   h = s%film(j, k)*s%thermal_factor(j, k)
+                  t_curve = t
                   ! the print's losses and tractions by the reference quadrature
                   call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error, reference=.true.)
                   if (allocated(error)) return
                   call ehd_flash(b, b%temperature, c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
+                  if (f < 1.0_wp .and. .not. allocated(error)) then
+                     ! mixed film: the blend of the two tractions, and of their flash rises
+                     ! (eq 35 is linear in the heat; docs/tribology.md, "Mixed films")
+                     t = mixed_traction(f, t, t_curve)
+                     call law_flash(b, c(j), b_minor(j), p_h(j), race, abs(t%rolling_speed), rise, error)
+                     s%temp_rise(j, k) = f*s%temp_rise(j, k) + (1.0_wp - f)*rise
+                  end if
                else
                   call law_flash(b, c(j), b_minor(j), p_h(j), race, abs(t%rolling_speed), s%temp_rise(j, k), error)
                end if
                if (allocated(error)) return
                s%contact_temp(j, k) = wall_temperature(b%temperature, race)
-               ! the printed node of the traction used: model 3's with a film, else the curve's
+               ! the printed node of the traction used: model 3's with a film, else the curve's,
+               ! a mixed film's blend of the two
                call printed_slip(b, b%temperature, c(j), b_minor(j), race, h, h > 0.0_wp, s%slip(j, k), &
                                  s%trac_coeff(j, k))
+               if (f > 0.0_wp .and. f < 1.0_wp) then
+                  call printed_slip(b, b%temperature, c(j), b_minor(j), race, h, .false., slip, coefficient)
+                  s%trac_coeff(j, k) = f*s%trac_coeff(j, k) + (1.0_wp - f)*coefficient
+               end if
                s%spin_roll(j, k) = t%spin_roll
                s%loss(j, k) = t%power
                s%sliding(j, k) = t%sliding

@@ -1,6 +1,7 @@
 !> Fixtures shared by the engine's unit-test programs of the ball bearing force assembly
-!> (test_forces, test_traction_fast, test_cage_contacts): Appendix C's step 0 under race
-!> control and the bearing state of a step-0 solution.
+!> (test_forces, test_traction_fast, test_cage_contacts, test_mixed_film): Appendix C's step
+!> 0 under race control, the bearing state of a step-0 solution and the mechanical power of
+!> a load difference on a body.
 module adore_test_ball_fixture
    use adore_core_kinds, only: wp
    use adore_model_bearing, only: bearing_t
@@ -11,10 +12,13 @@ module adore_test_ball_fixture
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_quasistatic_ball_kinematics, only: CONTROL_OUTER
    use adore_test_support, only: check, finish, get_decks_dir
+   use adore_state_bearing_state, only: body_state_t
+   use adore_forces_ball_bearing, only: body_load_t, ball_bearing_loads_t
+   use adore_core_rotation, only: quat_matrix
    implicit none
    private
 
-   public :: step0_state, appendix_c_race_control
+   public :: step0_state, appendix_c_race_control, power_of, loads_power
 
 contains
 
@@ -67,5 +71,32 @@ contains
       call check(.not. allocated(error), "step 0 of Appendix C with race control")
       if (allocated(error)) call finish(suite)
    end subroutine appendix_c_race_control
+
+   !> Mechanical power (W) of the load difference lw - lo on body bs (force . velocity +
+   !> moment . inertial angular velocity): the traction power identity of test_forces and
+   !> test_mixed_film.
+   real(wp) function power_of(bs, lw, lo)
+      type(body_state_t), intent(in) :: bs
+      type(body_load_t), intent(in) :: lw, lo
+      real(wp) :: r(3, 3)
+      r = quat_matrix(bs%attitude)
+      power_of = dot_product(lw%force - lo%force, bs%velocity) + &
+                 dot_product(lw%moment - lo%moment, matmul(r, bs%omega))
+   end function power_of
+
+   !> Mechanical power (W) of the load difference lw - lo on every ball and both races of
+   !> state st (power_of summed): with lo the loads without traction, the traction's power.
+   real(wp) function loads_power(st, lw, lo)
+      type(bearing_state_t), intent(in) :: st
+      type(ball_bearing_loads_t), intent(in) :: lw, lo
+      integer :: k, j
+      loads_power = 0.0_wp
+      do k = 1, size(st%elements)
+         loads_power = loads_power + power_of(st%elements(k), lw%elements(k), lo%elements(k))
+      end do
+      do j = 1, 2
+         loads_power = loads_power + power_of(st%races(j), lw%races(j), lo%races(j))
+      end do
+   end function loads_power
 
 end module adore_test_ball_fixture

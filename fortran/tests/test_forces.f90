@@ -37,7 +37,7 @@ program test_forces
    use adore_state_bearing_state, only: body_state_t
    use adore_core_rotation, only: quat_matrix
    use adore_test_support, only: check, finish
-   use adore_test_ball_fixture, only: step0_state, appendix_c_race_control
+   use adore_test_ball_fixture, only: step0_state, appendix_c_race_control, power_of, loads_power
    implicit none
 
    type(bearing_t) :: b
@@ -383,7 +383,7 @@ contains
       type(bearing_state_t) :: st
       type(ball_bearing_loads_t) :: l0, l1
       real(wp) :: p_mech, heat
-      integer :: icase, k, j
+      integer :: icase
       logical :: two_d
 
       do icase = 1, 4
@@ -397,13 +397,7 @@ contains
          if (allocated(error)) return
          call ball_bearing_loads(b, g, st, l1, error, cage=.false., two_d=two_d)
          if (allocated(error)) return
-         p_mech = 0.0_wp
-         do k = 1, size(st%elements)
-            p_mech = p_mech + power_of(st%elements(k), l1%elements(k), l0%elements(k))
-         end do
-         do j = 1, 2
-            p_mech = p_mech + power_of(st%races(j), l1%races(j), l0%races(j))
-         end do
+         p_mech = loads_power(st, l1, l0)
          heat = sum(l1%heat)
          write (*, "(a,l2,a,2es12.4,es10.2)") "traction power: perturbed, two_d", two_d, &
             "  mechanical, -heat (W), rel ", p_mech, -heat, abs(p_mech + heat)/heat
@@ -513,16 +507,6 @@ contains
       power = dot_product(df, v*n)
    end subroutine damping_case
 
-   !> Mechanical power (W) of the load difference lw - lo on body bs (force . velocity +
-   !> moment . inertial angular velocity).
-   real(wp) function power_of(bs, lw, lo)
-      type(body_state_t), intent(in) :: bs
-      type(body_load_t), intent(in) :: lw, lo
-      real(wp) :: r(3, 3)
-      r = quat_matrix(bs%attitude)
-      power_of = dot_product(lw%force - lo%force, bs%velocity) + &
-                 dot_product(lw%moment - lo%moment, matmul(r, bs%omega))
-   end function power_of
 
    !> Equations of motion at the step-0 state without traction: every ball accelerates
    !> towards the axis with its orbit's centripetal acceleration r w_m**2 and the inner
