@@ -132,20 +132,33 @@ def test_netcdf_writer_matches_xarrays(run400, tmp_path):
     assert again.read_bytes() == run400.results_path.read_bytes() == reference.read_bytes()
 
 
-def test_run_imports_no_xarray(tmp_path, short_ball_deck):
-    """A run with time steps writes its netCDF file without importing xarray, pandas or dask (issue #29: their first import cost about 2 s); its dataset and time
-    history are built when first asked for."""
+def _python_lines(code: str, *args) -> list[str]:
+    """The lines ``code`` prints, run by a fresh interpreter with ``args`` as its argv[1:]."""
     import subprocess
     import sys
 
+    return subprocess.run([sys.executable, "-c", code, *map(str, args)], capture_output=True, text=True,
+                          check=True).stdout.split("\n")
+
+
+def _stopping_deck(tmp_path, ball_deck):
+    """Appendix C with Rec 2.1 fixed at 5 tau: its time integration stops after step 0."""
+    deck = tmp_path / "step5.inp"
+    deck.write_text(ball_deck.read_text().replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01",
+                                                  "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1))
+    return deck
+
+
+def test_run_imports_no_xarray(tmp_path, short_ball_deck):
+    """A run with time steps writes its netCDF file without importing xarray, pandas or dask (issue #29: their first import cost about 2 s); its dataset and time
+    history are built when first asked for."""
     code = ("import sys, pyadore\n"
             "r = pyadore.run(sys.argv[1], out=sys.argv[2], progress=False)\n"
             "assert r.results_path.is_file() and r.history_path.is_file() and r.arrays.sizes['element'] == 18\n"
             "heavy = ('xarray', 'pandas', 'dask', 'scipy.io', 'scipy.sparse')\n"
             "print(' '.join(h for h in heavy if h in sys.modules) or '-')\n"
             "print(r.dataset.sizes['time'] == len(r.time_history), 'xarray' in sys.modules)\n")
-    out = subprocess.run([sys.executable, "-c", code, str(short_ball_deck), str(tmp_path / "s.prt")],
-                         capture_output=True, text=True, check=True).stdout.split("\n")
+    out = _python_lines(code, short_ball_deck, tmp_path / "s.prt")
     assert out[0] == "-", out
     assert out[1] == "True True"
 
@@ -243,9 +256,7 @@ def test_failed_run_dataset_is_marked_incomplete(tmp_path, ball_deck):
     from pyadore.errors import AdoreEngineError
     from pyadore.results import read_results, results_path
 
-    deck = tmp_path / "step5.inp"
-    deck.write_text(ball_deck.read_text().replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01",
-                                                  "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1))
+    deck = _stopping_deck(tmp_path, ball_deck)
     out = tmp_path / "f.prt"
     with pytest.raises(AdoreEngineError, match="integration stopped") as info:
         pyadore.run(deck, steps=5, out=out, progress=False)
@@ -289,12 +300,7 @@ def test_failed_run_imports_no_xarray(tmp_path, ball_deck):
     """A run that fails builds neither its kept time history nor its dataset until asked
     (pandas and xarray stay unimported, as for a run that succeeds); asked, they hold the
     steps done."""
-    import subprocess
-    import sys
-
-    deck = tmp_path / "step5.inp"
-    deck.write_text(ball_deck.read_text().replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01",
-                                                  "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1))
+    deck = _stopping_deck(tmp_path, ball_deck)
     code = ("import sys, pyadore\n"
             "from pyadore.errors import AdoreEngineError\n"
             "try:\n"
@@ -302,8 +308,7 @@ def test_failed_run_imports_no_xarray(tmp_path, ball_deck):
             "except AdoreEngineError as exc:\n"
             "    print(' '.join(h for h in ('xarray', 'pandas') if h in sys.modules) or '-')\n"
             "    print(exc.dataset.attrs['run_complete'], len(exc.time_history), 'xarray' in sys.modules)\n")
-    out = subprocess.run([sys.executable, "-c", code, str(deck), str(tmp_path / "f.prt")],
-                         capture_output=True, text=True, check=True).stdout.split("\n")
+    out = _python_lines(code, deck, tmp_path / "f.prt")
     assert out[0] == "-", out
     assert out[1] == "0 1 True", out
 
