@@ -146,8 +146,15 @@ contains
       u = (v + cross(omega, c%point - centre)) - (v_o + cross([w_o, 0.0_wp, 0.0_wp], c%point - o))
       c%rate = -dot_product(u, c%normal)
       c%slip = u - dot_product(u, c%normal)*c%normal
-      c%radius = sqrt(s%end_radius/(1.0_wp + s%end_radius*s_r*sin(f%angle)/rc))
-      c%radius = c%radius*sqrt(s%end_radius)
+      ! the equivalent sphere's radius; a state with the end's centre on or across the
+      ! raceway's axis (rc <= 0, a trial point of the start's solve) has none: the end's own
+      c%radius = s%end_radius
+      if (rc > 0.0_wp) then
+         if (1.0_wp + s%end_radius*s_r*sin(f%angle)/rc > 0.0_wp) then
+            c%radius = sqrt(s%end_radius/(1.0_wp + s%end_radius*s_r*sin(f%angle)/rc))
+            c%radius = c%radius*sqrt(s%end_radius)
+         end if
+      end if
       if (c%delta > 0.0_wp) then
          c%load = sphere_plane_load(s%e_star(f%race), c%radius, c%delta)
          c%stiffness = 2.0_wp*s%e_star(f%race)*sqrt(c%radius*c%delta)
