@@ -13,6 +13,7 @@ import subprocess
 import pytest
 
 import pyadore
+from builds import checks_build, same_to_the_printed_digit
 from pyadore.errors import AdoreInputError
 
 N = 10
@@ -30,10 +31,17 @@ def prints(tmp_path_factory, ball_deck, adore_exe):
     return one, two, proc, out / "exe.prt"
 
 
-def test_the_option_is_listed_and_f2py_equals_the_executable(prints):
+def test_the_option_is_listed_and_f2py_equals_the_executable(prints, build_dir):
     one, two, proc, exe_print = prints
     assert proc.returncode == 0, proc.stderr
-    assert exe_print.read_bytes() == two.print_path.read_bytes()
+    if checks_build(build_dir):
+        # `make debug`: a debug `adore` (-O0, scalar libm) beside the release extension
+        # (libmvec in its vectorised loops; tests/builds.py): alike to the printed digit, but
+        # section 2's pocket forces of a few uN, which the centred cage's pocket impacts make
+        # sensitive to round-off (measured 4.049E-06 against 4.068E-06 N, 0.47 %): within 1 %
+        assert same_to_the_printed_digit(exe_print.read_text(), two.print_path.read_text(), rel=1e-2)
+    else:
+        assert exe_print.read_bytes() == two.print_path.read_bytes()
     listing = two.text.split("Listing of input data records", 1)[0]
     assert LINE in listing and "DEVELOPER OPTION" in listing
     assert LINE not in one.text
