@@ -141,6 +141,8 @@ def test_plot_sweep_map_marks_stable_and_erratic_cases(tmp_path):
     assert len(fig.axes) == 2   # the colour bar
     offsets = np.concatenate([c.get_offsets() for c in ax.collections])
     assert len(offsets) == 6
+    # the fields in words inside the title, an abbreviation left as it is
+    assert ax.get_title().endswith("over RE/cage traction coefficient A and inner race speed")
     with pytest.raises(SweepError, match="a map needs two varied parameters"):
         plot_sweep(frame, x="10.5.1B/re_cage_coeff_a", y="whirl_speed_ratio", map=True,
                    where={"inner_race_speed": 10000.0})

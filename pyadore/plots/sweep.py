@@ -50,6 +50,15 @@ PREFIXED_UNITS = ("m", "Pa", "N", "W", "N*m", "J", "s")
 _PREFIXES = {-9: "n", -6: "\u00b5", -3: "m", 0: "", 3: "k", 6: "M", 9: "G"}
 
 
+
+def _in_sentence(title: str) -> str:
+    """A field's title inside a sentence: its first letter lower case, unless the first word
+    is an abbreviation ("RE/cage ...", "EHD ...": two capitals in a row stay as they are)."""
+    head = title.split(" ", 1)[0]
+    if len(head) > 1 and head[:2].isupper():
+        return title
+    return title[:1].lower() + title[1:]
+
 def si_scale(unit: str, values) -> tuple[float, str]:
     """(divisor, unit) of an axis of ``values`` in ``unit``: an SI prefix (GPa, kN, um)
     when ``unit`` takes one and the largest magnitude is below 0.1 or from 10 000 on; else
@@ -205,7 +214,7 @@ def plot_sweep(summary_or_dir, x: str, y: str, by: str | None = None, where: dic
     ax.set_xlabel(_label(x, x_unit))
     ax.set_ylabel(f"{y_title} ({y_unit})" if y_unit and y_unit != "-" else y_title)
     held = ", ".join(f"{field_title(k)} = {v} {_unit(k)}".rstrip() for k, v in where.items())
-    ax.set_title(f"{y_title} against {field_title(x)[0].lower() + field_title(x)[1:]}"
+    ax.set_title(f"{y_title} against {_in_sentence(field_title(x))}"
                  + (f"\n({held})" if held else ""), fontsize="medium")
     if log_y:
         ax.set_yscale("log")
@@ -246,8 +255,8 @@ def _draw_map(fig, ax, ok, x: str, y: str, by: str, name: str):
         fig.colorbar(sc, ax=ax, label=f"{y_title} ({y_unit})" if y_unit and y_unit != "-" else y_title)
     ax.set_xlabel(_label(x, x_unit))
     ax.set_ylabel(_label(by, by_unit))
-    ax.set_title(f"{y_title} over {field_title(x)[0].lower() + field_title(x)[1:]} and "
-                 f"{field_title(by)[0].lower() + field_title(by)[1:]}", fontsize="medium")
+    ax.set_title(f"{y_title} over {_in_sentence(field_title(x))} and {_in_sentence(field_title(by))}",
+                 fontsize="medium")
     ax.margins(0.15)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize="small", loc="best")
