@@ -39,6 +39,11 @@ runs), the cage contacts' work (the run note's balance) and the contact damping.
 
     .venv/bin/python bench/skf_friction.py [--revolutions 2] [--workers 1]
     .venv/bin/python bench/skf_friction.py --hand      # the hand calculations only (no runs)
+    .venv/bin/python bench/skf_friction.py --step0 --boundary-friction 0.1    # step 0 only
+    # boundary friction in the time steps (its stiffer slip wants a smaller largest step):
+    .venv/bin/python bench/skf_friction.py --revolutions 1 --boundary-friction 0.1 --step-max 0.03 \
+        --with-rolling-only
+Results: docs/operating-points.md, "Deep-groove friction by mechanism".
 """
 
 from __future__ import annotations
@@ -189,7 +194,8 @@ def deck_curve(kappa0: float = 0.0, kappa_max: float = 0.02, kappa_inf: float = 
 
     a, d = kappa0 - kappa_inf, kappa_inf
     # maximum kappa_max at u_max: B = C (A + B u_max) and (A + B u_max) exp(-C u_max) = kappa_max - D
-    c = brentq(lambda c: (a / (1.0 - c * u_max)) * math.exp(-c * u_max) - (kappa_max - d), 1.0 / u_max + 1e-9, 50.0 / u_max)
+    c = brentq(lambda c: (a / (1.0 - c * u_max)) * math.exp(-c * u_max) - (kappa_max - d),
+               1.0 / u_max + 1e-9, 50.0 / u_max)
     b = c * a / (1.0 - c * u_max)
     return lambda u: np.sign(u) * ((a + b * np.abs(u)) * np.exp(-c * np.abs(u)) + d)
 
@@ -207,7 +213,8 @@ def hand() -> None:
             "boundary law 0.1, u_b 1 cm/s (the option's default slip)":
                 lambda u: 0.1 * np.sign(u) * (1.0 - np.exp(-np.abs(u) / 1e-2)),
             "boundary law 0.1, u_b 1 mm/s": lambda u: 0.1 * np.sign(u) * (1.0 - np.exp(-np.abs(u) / 1e-3)),
-            "boundary law 0.15 (SKF mu_bl), u_b 1 cm/s": lambda u: 0.15 * np.sign(u) * (1.0 - np.exp(-np.abs(u) / 1e-2)),
+            "boundary law 0.15 (SKF mu_bl), u_b 1 cm/s":
+                lambda u: 0.15 * np.sign(u) * (1.0 - np.exp(-np.abs(u) / 1e-2)),
             "Coulomb 0.1, tanh(u / 0.01 mm/s)": lambda u: 0.1 * np.tanh(u / 1e-5)}
     for name, law in laws.items():
         h = heathcote_free_rolling(q, a_i, q, a_o, 1000.0, law)
@@ -286,7 +293,8 @@ def main() -> int:
     print(f"nu = {nu:.3f} mm^2/s; engine: time-averaged dissipation over the last half of {a.revolutions} revolutions"
           f"; boundary_friction {a.boundary_friction:g}, boundary_slip {a.boundary_slip or 'default'}, "
           f"largest step {a.step_max or 'the deck'}s")
-    print("| speed (r/min) | load (N) | SKF total (W) | SKF rolling / sliding (W) | Palmgren total (W) | Palmgren M0 / M1 (W) "
+    print("| speed (r/min) | load (N) | SKF total (W) | SKF rolling / sliding (W) | Palmgren total (W) "
+          "| Palmgren M0 / M1 (W) "
           "| engine with rolling resistance (W) | outer / inner race heat (W) | rolling resistance (on - off, W) "
           "| cage / damping (W) | engine / SKF | engine / Palmgren | engine without (W) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
