@@ -217,6 +217,11 @@ contains
          end if
          if (s%rolling_resistance) text = text//"  EHD ROLLING RESISTANCE OF THE RACE CONTACTS (HOUPERT; "// &
             "docs/tribology.md)"//lf
+         if (self%options%boundary_friction > 0.0_wp) then
+            write (num, "(es10.3)") self%options%boundary_friction
+            text = text//"  BOUNDARY FRICTION "//trim(adjustl(num))//" (COULOMB) WHERE THE DECK'S TRACTION CURVE "// &
+                   "WOULD ACT (docs/tribology.md)"//lf
+         end if
          if (.not. s%traction_2d) text = text//"  ONE-DIMENSIONAL RACE TRACTION (SLIP ALONG THE ROLLING "// &
             "DIRECTION ONLY, REPORT EQ 1): DEVELOPER OPTION"//lf
       end associate
@@ -248,6 +253,8 @@ contains
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
          if (s%rolling_resistance) text = text//"; EHD rolling resistance of the race contacts"
+         if (self%options%boundary_friction > 0.0_wp) text = text//"; boundary friction (Coulomb) where the "// &
+                                                         "deck's traction curve would act"
       end associate
    end subroutine ball_run_note
 

@@ -18,7 +18,9 @@ module adore_driver_run
    use adore_deck_deck_type, only: deck_t
    use adore_deck_parser, only: parse_deck
    use adore_deck_traction_table, only: read_traction_table
-   use adore_model_bearing, only: bearing_t, BODY_ELEMENT
+   use adore_tribology_traction_law, only: boundary_law
+   use adore_forces_race_contact, only: TRACTION_EHD
+   use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BALL_BEARING
    use adore_model_scales, only: scale_factors
    use adore_model_from_deck, only: build_bearing
    use adore_model_checks, only: check_warnings
@@ -130,6 +132,21 @@ contains
       if (table) then
          call read_traction_table(trim(opts%traction_table), bearing%race_traction, error)
          if (allocated(error)) return
+      end if
+      ! boundary friction (run option): Coulomb friction where an EHD deck's contacts take the
+      ! deck's curve (boundary and mixed films; docs/tribology.md, "Boundary friction")
+      if (opts%boundary_friction > 0.0_wp) then
+         if (table .or. bearing%bearing_type /= BALL_BEARING .or. bearing%traction_model /= TRACTION_EHD .or. &
+             bearing%lubricant_code == 0) then
+            call input_error(error, trim(deck_path)//": boundary_friction needs a ball deck with the EHD "// &
+                             "traction model (Rec 10.0 traction_model 3, a lubricant) and no traction table")
+            return
+         end if
+         if (.not. opts%boundary_slip > 0.0_wp) then
+            call input_error(error, "boundary_slip (--boundary-slip): must be > 0 m/s")
+            return
+         end if
+         bearing%race_traction = boundary_law(opts%boundary_friction, opts%boundary_slip)
       end if
       call fill_echo(deck, bearing, echo, error)
       if (allocated(error)) return

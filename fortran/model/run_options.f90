@@ -68,6 +68,14 @@ module adore_model_run_options
       !> run passes through film parameters 2.9-3); at or below boundary_lambda (0 included):
       !> no blend, the step at boundary_lambda
       real(wp) :: full_film_lambda = 2.0_wp
+      !> boundary friction coefficient mu_b: > 0 replaces the deck's traction curve of an EHD
+      !> (model 3) ball deck by Coulomb friction mu_b (1 - exp(-|u| / boundary_slip)) where the
+      !> curve acts - boundary-lubricated contacts (film parameter below boundary_lambda), the
+      !> dry share of mixed films, contacts without a film (docs/tribology.md, "Boundary
+      !> friction"; not in ADORE 5.0); 0 (default): the deck's curve
+      real(wp) :: boundary_friction = 0.0_wp
+      !> slip speed u_b (m/s) over which the boundary friction rises to its coefficient
+      real(wp) :: boundary_slip = 1.0e-2_wp
       !> the coordinates of the balls in the integrated state: "orbit" (the report's eq 54:
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
@@ -127,7 +135,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 22
+   integer, parameter :: N_OPTIONS = 24
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -162,6 +170,12 @@ module adore_model_run_options
       option_spec_t("full_film_lambda", OPTION_REAL, "2", 0, "", "L", "", &
                     "film parameter h/sigma of a full EHD film (model 3): below it, down to boundary_lambda, "// &
                     "traction blends EHD and the deck's curve; <= boundary_lambda: no blend"), &
+      option_spec_t("boundary_friction", OPTION_REAL, "0", 0, "", "MU", "", &
+                    "Coulomb friction of model-3 race contacts below boundary_lambda and of the dry share "// &
+                    "of mixed films, instead of the deck's curve (not ADORE 5.0); 0: the curve"), &
+      option_spec_t("boundary_slip", OPTION_REAL, "0.01", 0, "", "M/S", "", &
+                    "slip speed (m/s, > 0) over which boundary_friction rises to its coefficient: "// &
+                    "mu (1 - exp(-|u| / boundary_slip))"), &
       option_spec_t("duration", OPTION_REAL, "0", 0, "", "SECONDS", "", &
                     "simulated time to integrate (s): the run ends exactly there, its last step printed "// &
                     "(instead of a step count)"), &
@@ -319,6 +333,10 @@ contains
          opts%boundary_lambda = x
       case ("full_film_lambda")
          opts%full_film_lambda = x
+      case ("boundary_friction")
+         opts%boundary_friction = x
+      case ("boundary_slip")
+         opts%boundary_slip = x
       case ("duration")
          opts%duration = x
       case ("revolutions")

@@ -1,14 +1,15 @@
 !> Engine unit tests of the traction law (fortran/tribology/traction_law.f90) and the
 !> traction-slip table file (fortran/deck/traction_table.f90, ADRX7): interpolation through
 !> the nodes, the linear-interpolation error bound against the curve it samples, the
-!> constant-coefficient identity power = mu * sliding, and every rejected input.
+!> constant-coefficient identity power = mu * sliding, every rejected input, and the boundary
+!> (Coulomb) law of the run option boundary_friction.
 program test_traction_law
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR
    use adore_tribology_traction_fit, only: traction_coefficient
    use adore_tribology_traction_law, only: traction_law_t, curve_law, table_law, law_kappa, &
-                                           law_slip_scale, LAW_TABLE
+                                           law_slip_scale, boundary_law, LAW_TABLE, LAW_CURVE
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_INNER, &
                                    print_slip_node
    use adore_deck_traction_table, only: read_traction_table
@@ -23,6 +24,7 @@ program test_traction_law
    call test_constant_table_power()
    call test_rejected_tables()
    call test_file_reader()
+   call test_boundary_law()
    call finish("traction law")
 
 contains
@@ -121,6 +123,21 @@ contains
       call table_law([0.0_wp, 1.0_wp], [0.1_wp], "t", law, error)
       call expect(error, "2 slip values but 1", "unequal lengths rejected")
    end subroutine test_rejected_tables
+
+   !> The boundary (Coulomb) law of the run option boundary_friction: mu (1 - exp(-|u| / u_b)),
+   !> 0 at zero slip, slope mu / u_b there, mu (1 - 1/e) at u_b, mu within 1e-12 at 30 u_b.
+   subroutine test_boundary_law()
+      type(traction_law_t) :: law
+      real(wp), parameter :: mu = 0.1_wp, u_b = 0.01_wp, h = 1.0e-7_wp
+
+      law = boundary_law(mu, u_b)
+      call check(law%kind == LAW_CURVE, "boundary law: a curve")
+      call check(law_kappa(law, 0.0_wp) == 0.0_wp, "boundary law: 0 at zero slip")
+      call check(abs(law_kappa(law, h)/h - mu/u_b) < 1.0e-4_wp*mu/u_b, "boundary law: slope mu/u_b at zero")
+      call check(abs(law_kappa(law, u_b) - mu*(1.0_wp - exp(-1.0_wp))) < 1.0e-15_wp, "boundary law: at u_b")
+      call check(abs(law_kappa(law, -u_b) - law_kappa(law, u_b)) == 0.0_wp, "boundary law: kappa depends on |u|")
+      call check(abs(law_kappa(law, 30.0_wp*u_b) - mu) < 1.0e-12_wp, "boundary law: mu beyond the slip")
+   end subroutine test_boundary_law
 
    subroutine test_file_reader()
       type(traction_law_t) :: law

@@ -20,6 +20,7 @@ module adore_tribology_traction_law
    private
 
    public :: traction_law_t, curve_law, table_law, law_kappa, law_slip_scale, check_traction_table
+   public :: boundary_law
    public :: LAW_CURVE, LAW_TABLE
 
    integer, parameter :: LAW_CURVE = 1   !< four-parameter curve (Rec 10.1B/10.1C)
@@ -43,6 +44,16 @@ contains
       law%kind = LAW_CURVE
       law%coef = coef
    end function curve_law
+
+   !> Boundary (Coulomb) friction mu (1 - exp(-|u| / u_b)) as the four-parameter curve
+   !> [A, B, C, D] = [-mu, 0, 1/u_b, mu]: kappa(0) = 0, rising over the slip u_b (m/s) to the
+   !> coefficient mu (-) with no maximum (docs/tribology.md, "Boundary friction").
+   pure function boundary_law(mu, u_b) result(law)
+      real(wp), intent(in) :: mu, u_b
+      type(traction_law_t) :: law
+
+      law = curve_law([-mu, 0.0_wp, 1.0_wp/u_b, mu])
+   end function boundary_law
 
    !> The law of a traction-slip table (slip in m/s, kappa dimensionless), checked with
    !> `check_traction_table`; `source` names the table in error messages.
