@@ -203,6 +203,7 @@ def _start_group(workers: list["_Worker"]) -> None:
             w._attach(proc, proc.stdin, proc.stdout)
         return
     groups = [workers] if sys.platform.startswith("linux") else [[w] for w in workers]
+    # (Linux: one fork server for the group, :mod:`.worker`; it ends when its workers have)
     for group in groups:
         theirs, mine, slots = [], [], []
         try:
@@ -220,9 +221,10 @@ def _start_group(workers: list["_Worker"]) -> None:
             raise
         for fd in theirs:  # only the worker holds its ends: its death closes the channel
             os.close(fd)
-        for k, (w, (job_w, res_r)) in enumerate(zip(group, mine)):
-            w._attach(proc if k == 0 else _Forked(), os.fdopen(job_w, "w", encoding="utf-8"),
-                      os.fdopen(res_r, "r", encoding="utf-8"))
+        forked = sys.platform.startswith("linux")
+        for w, (job_w, res_r) in zip(group, mine):
+            w._attach(_Forked() if forked else proc, os.fdopen(job_w, "w", encoding="utf-8"),
+                      os.fdopen(res_r, "r", encoding="utf-8"), server=proc if forked else None)
 
 
 class _Worker:
@@ -236,10 +238,12 @@ class _Worker:
         self.jobs = None        # its job channel (text, written here)
         self.results = None     # its result channel (text, read here)
         self.ready = False      # its ready line was read: it is warm and its pid known
+        self.server = None      # the fork server that forked it (Linux)
         self.interrupted = threading.Event()  # set by kill(): serve() ends without a report
 
-    def _attach(self, proc, jobs, results) -> None:
+    def _attach(self, proc, jobs, results, server=None) -> None:
         self.proc, self.jobs, self.results, self.ready = proc, jobs, results, False
+        self.server = server  # the fork server of a forked worker (a Popen): reaped by the pool
 
     def running(self) -> bool:
         """Whether a process serves (or boots for) this worker."""
@@ -377,10 +381,18 @@ class WorkerPool:
         return self
 
     def close(self) -> None:
-        """End the worker processes (a later sweep on this pool starts them again); the forked
-        ones first, while the first of their group (their parent) still runs."""
-        for w in reversed(self._workers):
+        """End the worker processes (a later sweep on this pool starts them again), then
+        their fork servers (which end with their workers)."""
+        servers = {id(w.server): w.server for w in self._workers if w.server is not None}
+        for w in self._workers:
             w.stop()
+            w.server = None
+        for server in servers.values():
+            try:
+                server.wait(timeout=5)
+            except Exception:
+                server.kill()
+                server.wait()
 
 
 def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None], count: int) -> None:

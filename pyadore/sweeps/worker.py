@@ -9,13 +9,14 @@ stray print) can mix into a channel.  A fresh interpreter: nothing of the client
 (threads, its ``__main__``) is inherited.
 
 Without ``--slots`` the channels are stdin and the original stdout: one worker.  With
-``--slots`` (POSIX: the client passes the pipes' file descriptors) the process serves the
-first slot itself and, on Linux, forks one child per other slot *after* it is warm (the
-engine extension, numpy, the deck checker and the print reader imported, nothing run):
-N workers cost one interpreter start, not N, and every worker's first case costs what the
-others do (docs/sweeps.md, "Scaling").  The fork is of this fresh, single-threaded process
+``--slots`` (POSIX: the client passes the pipes' file descriptors), on Linux, the process is
+a fork server: once warm (the engine extension, numpy, the deck checker and the print reader
+imported, nothing run) it forks one worker per slot and waits for them.  N workers cost one
+interpreter start, not N, and every worker's first case costs what the others do
+(docs/sweeps.md, "Scaling").  The fork is of this fresh, single-threaded process
 (OMP_NUM_THREADS and OPENBLAS_NUM_THREADS are 1 in a worker: one engine thread each), never
-of the client.  Elsewhere each slot gets its own process (``--slots`` with one pair).
+of the client.  Elsewhere the process serves its one slot itself (the client starts one
+process a slot).
 """
 
 from __future__ import annotations
@@ -93,17 +94,17 @@ def main(argv: list[str] | None = None) -> int:
     if not slots:
         serve(sys.stdin, channel)
         return 0
-    forking = len(slots) > 1 and sys.platform.startswith("linux")
-    if forking:
-        # the children end on their own (the kernel reaps them: no zombie while this one serves)
-        signal.signal(signal.SIGCHLD, signal.SIG_IGN)
-    for k, pair in enumerate(slots[1:] if forking else [], start=1):
+    if not sys.platform.startswith("linux"):
+        serve(*_open(slots[0]))  # one slot a process (the client starts one each)
+        return 0
+    # Linux: this warm process forks one worker per slot and waits for them (a fork server: it
+    # runs no case itself, so an engine crash never takes it, and it reaps its workers)
+    for k, pair in enumerate(slots):
         pid = os.fork()
-        if pid == 0:  # the child: slot k only
+        if pid == 0:  # the worker of slot k
             code = 0
             try:
-                signal.signal(signal.SIGCHLD, signal.SIG_DFL)
-                for other in slots[:k] + slots[k + 1:]:
+                for other in slots[k + 1:]:  # (those of the slots before are closed already)
                     for fd in other:
                         _close(fd)
                 serve(*_open(pair))
@@ -111,10 +112,15 @@ def main(argv: list[str] | None = None) -> int:
                 code = 1
             finally:
                 os._exit(code)
-        for fd in pair:  # the parent: only the child holds slot k (its death closes the channel)
+        for fd in pair:  # only the worker holds slot k: its end closes the client's channel
             _close(fd)
-    serve(*_open(slots[0]))
-    return 0
+    while True:
+        try:
+            os.wait()
+        except ChildProcessError:  # every worker ended
+            return 0
+        except InterruptedError:
+            continue
 
 
 def _close(fd: int) -> None:
