@@ -442,11 +442,15 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
         click.echo("pyadore: error: --workers and --scheduler exclude each other (the Dask cluster has its "
                    "own workers)", err=True)
         sys.exit(1)
-    # the local workers boot first, while the client imports its modules and reads the deck
-    # (a light module: the runner, the deck reader and pandas are not needed for this)
-    from .sweeps.execute import WorkerPool
+    # the local workers boot first, while the client imports its modules and reads the deck:
+    # started by pyadore/__main__.py before this module loaded, or here (a light module: the
+    # runner, the deck reader and pandas are not needed for this)
+    from .sweeps.execute import WorkerPool, take_early
 
-    pool = WorkerPool(workers or os.cpu_count() or 1).start() if scheduler is None else None
+    pool = None
+    if scheduler is None:
+        n = workers or os.cpu_count() or 1
+        pool = take_early(n) or WorkerPool(n).start()
     try:
         from .sweeps.runner import run_sweep
 

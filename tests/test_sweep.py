@@ -391,7 +391,8 @@ def test_a_worker_pool_stays_warm_across_sweeps(tmp_path):
         procs[1].wait(timeout=10)
         third = pyadore.sweep(ROLLER, grid, tmp_path / "c", steps=0, workers=pool, progress=False)
         assert pool._workers[1].proc is not procs[1] and pool._workers[1].proc.poll() is None
-        used = {e["worker"].rsplit(":", 1)[1] for e in json.loads((tmp_path / "c" / "manifest.json").read_text())["cases"]}
+        manifest = json.loads((tmp_path / "c" / "manifest.json").read_text())
+        used = {e["worker"].rsplit(":", 1)[1] for e in manifest["cases"]}
         assert str(procs[1].pid) not in used and str(procs[0].pid) in used
         pd.testing.assert_frame_equal(third, own)
         procs.append(pool._workers[1].proc)

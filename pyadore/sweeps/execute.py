@@ -20,7 +20,12 @@ import time
 from pathlib import Path
 from typing import Callable, Iterable
 
-__all__ = ["run_case", "run_local", "run_dask", "WorkerPool"]
+__all__ = ["run_case", "run_local", "run_dask", "WorkerPool", "start_early", "take_early", "WORKER_ENV"]
+
+#: The environment of a local worker process (:mod:`.worker`): one engine (OpenMP) thread and
+#: one BLAS thread per worker (a sweep's parallelism is its workers; a forked process must
+#: hold one thread).
+WORKER_ENV = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
 
 
 def _guide(deck_text: str) -> str:
@@ -49,11 +54,12 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
     """Run one case deck (text) and return ``{case, status, error, notes, duration_s,
     print_text, history_text, results_nc, results, worker, tmp_deck, tmp_print,
     incomplete_text, incomplete_history, timing}``: ``timing`` when the case started and
-    its parts ended (``start``, ``checked``, ``engine``, ``results``, ``end``; time.time(),
-    for the bench's budget, bench/sweep_bench.py; not recorded), ``history_text`` the plot-data file of a run with
-    time steps, ``results_nc`` its netCDF results file (base64; docs/results.md), ``results``
-    the key results of the last printed step and the time averages over the last shaft
-    revolution (:func:`pyadore.sweeps.results.mean_results`).
+    its parts ended (``start``, ``checked``, ``engine``, ``results``, ``end``; time.time())
+    and its CPU time ``cpu_s``, for the bench's budget (bench/sweep_bench.py; not recorded);
+    ``history_text`` the plot-data file of a run with time steps, ``results_nc`` its netCDF
+    results file (base64; docs/results.md), ``results`` the key results of the last printed
+    step and the time averages over the last shaft revolution
+    (:func:`pyadore.sweeps.results.mean_results`).
     ``status`` is ``ok``, ``invalid`` (the deck validator's problems, before any run; the
     message names the worker's ``tmp_deck``), ``input-error`` (the engine refused the deck),
     ``engine-failure`` or ``error`` (anything else, e.g. a print file that does not read).  A failed run that
@@ -65,6 +71,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
     import tempfile
 
     start = time.perf_counter()
+    cpu = time.process_time()
     stamps = {"start": time.time()}  # when each part of the case ended (s since the epoch): the budget's
     out = {"case": case_id, "status": "ok", "error": "", "notes": [], "print_text": None, "results": {},
            "timing": stamps,
@@ -131,6 +138,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
         out.update(status="error", error=f"{type(exc).__name__}: {exc}", print_text=None, results={})
     out["duration_s"] = time.perf_counter() - start
     stamps["end"] = time.time()
+    stamps["cpu_s"] = time.process_time() - cpu  # the case's CPU time in the worker
     return out
 
 
@@ -189,10 +197,8 @@ def _start_group(workers: list["_Worker"]) -> None:
     forks one process per further worker (one start-up for the group, :mod:`.worker`); on
     other POSIX systems one process each, on pipes passed by descriptor; elsewhere one
     process each on its stdin and stdout.  Each process runs one engine thread
-    (:data:`.worker.WORKER_ENV`)."""
+    (:data:`WORKER_ENV`)."""
     import subprocess
-
-    from .worker import WORKER_ENV
 
     env = {**os.environ, **WORKER_ENV}
     cmd = [sys.executable, "-m", "pyadore.sweeps.worker"]
@@ -393,6 +399,46 @@ class WorkerPool:
             except Exception:
                 server.kill()
                 server.wait()
+
+
+#: The pool :func:`start_early` started for this process's ``pyadore sweep`` command (at most one).
+_EARLY: list[WorkerPool] = []
+
+
+def start_early(argv: list[str]) -> None:
+    """Start the workers of a local ``pyadore sweep`` command line (``argv``: the command's
+    arguments) before the command's own modules load: click, the option table and with it
+    numpy and the engine extension cost the client about 0.2 s of CPU before the sweep
+    command runs, time the workers' boot can overlap (docs/sweeps.md, "Scaling").  Nothing
+    for another command, ``--help``, ``--scheduler`` or a ``--workers`` that is no number
+    >= 1; the sweep command takes the pool (:func:`take_early`) or, when its workers differ,
+    closes it."""
+    if not argv or argv[0] != "sweep" or any(a in ("--help", "-h") or a.startswith("--scheduler") for a in argv):
+        return
+    workers = os.cpu_count() or 1
+    for i, arg in enumerate(argv[1:], start=1):
+        if arg == "--workers" and i + 1 < len(argv):
+            value = argv[i + 1]
+        elif arg.startswith("--workers="):
+            value = arg.split("=", 1)[1]
+        else:
+            continue
+        try:
+            workers = int(value)
+        except ValueError:
+            return
+    if workers >= 1:
+        _EARLY.append(WorkerPool(workers).start())
+
+
+def take_early(workers: int) -> WorkerPool | None:
+    """The pool :func:`start_early` started, when it has ``workers`` workers (one that has
+    not is closed); None when there is none."""
+    pool = _EARLY.pop() if _EARLY else None
+    if pool is not None and pool.size != workers:
+        pool.close()
+        pool = None
+    return pool
 
 
 def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None], count: int) -> None:

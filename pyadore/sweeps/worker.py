@@ -13,10 +13,10 @@ Without ``--slots`` the channels are stdin and the original stdout: one worker. 
 a fork server: once warm (the engine extension, numpy, the deck checker and the print reader
 imported, nothing run) it forks one worker per slot and waits for them.  N workers cost one
 interpreter start, not N, and every worker's first case costs what the others do
-(docs/sweeps.md, "Scaling").  The fork is of this fresh, single-threaded process
-(OMP_NUM_THREADS and OPENBLAS_NUM_THREADS are 1 in a worker: one engine thread each), never
-of the client.  Elsewhere the process serves its one slot itself (the client starts one
-process a slot).
+(docs/sweeps.md, "Scaling").  The fork is of this fresh, single-threaded process (a
+worker's OMP_NUM_THREADS and OPENBLAS_NUM_THREADS are 1, execute.WORKER_ENV: one engine
+thread each), never of the client.  Elsewhere the process serves its one slot itself (the
+client starts one process a slot).
 """
 
 from __future__ import annotations
@@ -25,11 +25,6 @@ import json
 import os
 import signal
 import sys
-
-#: The environment of a worker process: one engine (OpenMP) thread and one BLAS thread per
-#: worker (a sweep's parallelism is its workers; a forked process must hold one thread).
-WORKER_ENV = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
-
 
 def warm() -> None:
     """Import now what every case needs - the engine extension, numpy, the deck checker,
