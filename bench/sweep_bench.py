@@ -197,6 +197,7 @@ def budget(workers: int, pool=None) -> dict:
         def timed_jobs():
             for job in jobs:
                 marks.setdefault("first_job", time.time())
+                marks.setdefault("first_job_cpu", time.process_time())
                 yield job
             marks["last_job"] = time.time()
 
@@ -204,6 +205,7 @@ def budget(workers: int, pool=None) -> dict:
             arrived = time.time()
             on_result(res)
             marks["results"].append((res, arrived, time.time()))
+            marks["last_result_cpu"] = time.process_time()
 
         original(timed_jobs(), pool_, timed_result, count)
 
@@ -214,7 +216,7 @@ def budget(workers: int, pool=None) -> dict:
             cpu = time.process_time()
             pyadore.sweep(BALL, GRID, Path(tmp) / "s", steps=0, workers=pool or workers, progress=False)
             end = time.time()
-            cpu = time.process_time() - cpu
+            end_cpu = time.process_time()
     finally:
         runner.run_local = original
     res = marks["results"]
@@ -224,7 +226,11 @@ def budget(workers: int, pool=None) -> dict:
         return statistics.mean(values) if values else float("nan")
 
     return {
-        "workers": workers, "warm": pool is not None, "wall": end - start, "client_cpu": cpu,
+        "workers": workers, "warm": pool is not None, "wall": end - start, "client CPU": end_cpu - cpu,
+        "client CPU to 1st job": marks["first_job_cpu"] - cpu,
+        "client CPU, cases": marks["last_result_cpu"] - marks["first_job_cpu"],
+        "client CPU, end": end_cpu - marks["last_result_cpu"],
+        "case CPU": mean([x["cpu_s"] for x in t]),
         "client to first job": marks["first_job"] - start,
         "first case starts": min(x["start"] for x in t) - start,
         "check": mean([x["checked"] - x["start"] for x in t]),
@@ -235,7 +241,7 @@ def budget(workers: int, pool=None) -> dict:
         "return to client": mean([r[1] - r[0]["timing"]["end"] for r in res]),
         "client records": mean([r[2] - r[1] for r in res]),
         "last result to end": end - max(r[2] for r in res),
-        "load": _load(), "engine_share": None,
+        "load": _load(),
     }
 
 
@@ -257,8 +263,9 @@ def print_budget(repeats: int = 2) -> None:
                 else:
                     runs.append(budget(n))
             rows.append(min(runs, key=lambda r: r["wall"]))
-    keys = ["wall", "client_cpu", "client to first job", "first case starts", "check", "engine", "key results",
-            "rest of case", "case total", "return to client", "client records", "last result to end"]
+    keys = ["wall", "client to first job", "first case starts", "check", "engine", "key results", "rest of case",
+            "case total", "case CPU", "return to client", "client records", "last result to end", "client CPU",
+            "client CPU to 1st job", "client CPU, cases", "client CPU, end"]
     head = [f"{'cold' if r['warm'] is False else 'warm'} {r['workers']}" for r in rows]
     print(f"{'part (s; a case: mean)':24s} " + " ".join(f"{h:>9s}" for h in head))
     for k in keys:

@@ -316,7 +316,7 @@ class _Worker:
         proc = self.proc
         if proc is not None and self.ready:
             try:
-                self.jobs.close()
+                self.jobs.close()  # (closing a closed file does nothing)
             except (OSError, ValueError, AttributeError):
                 pass
             try:
@@ -390,6 +390,12 @@ class WorkerPool:
         """End the worker processes (a later sweep on this pool starts them again), then
         their fork servers (which end with their workers)."""
         servers = {id(w.server): w.server for w in self._workers if w.server is not None}
+        for w in self._workers:  # every warm worker told first, so that they end together
+            if w.ready and w.jobs is not None:
+                try:
+                    w.jobs.close()
+                except (OSError, ValueError):
+                    pass
         for w in self._workers:
             w.stop()
             w.server = None

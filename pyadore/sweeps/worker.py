@@ -112,8 +112,8 @@ def main(argv: list[str] | None = None) -> int:
     while True:
         try:
             os.wait()
-        except ChildProcessError:  # every worker ended
-            return 0
+        except ChildProcessError:  # every worker ended: so does this process, at once (nothing to
+            os._exit(0)            # flush; the interpreter's own clean-up is wall time a sweep waits for)
         except InterruptedError:
             continue
 
