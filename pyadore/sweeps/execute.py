@@ -389,7 +389,10 @@ class WorkerPool:
     def close(self) -> None:
         """End the worker processes (a later sweep on this pool starts them again), then
         their fork servers (which end with their workers)."""
-        servers = {id(w.server): w.server for w in self._workers if w.server is not None}
+        servers: dict[int, list] = {}  # id -> [the fork server, whether one of its workers served]
+        for w in self._workers:
+            if w.server is not None:
+                servers.setdefault(id(w.server), [w.server, False])[1] |= w.ready
         for w in self._workers:  # every warm worker told first, so that they end together
             if w.ready and w.jobs is not None:
                 try:
@@ -399,7 +402,9 @@ class WorkerPool:
         for w in self._workers:
             w.stop()
             w.server = None
-        for server in servers.values():
+        for server, served in servers.values():
+            if not served:  # still booting (a sweep with nothing to run): no need to wait for it
+                server.kill()
             try:
                 server.wait(timeout=5)
             except Exception:
