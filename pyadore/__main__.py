@@ -20,10 +20,11 @@ def main() -> None:
     try:
         import sys
 
-        from .sweeps.execute import start_early
+        if sys.argv[1:2] == ["sweep"]:
+            from .sweeps.execute import start_early
 
-        # a local sweep's workers boot while the command's modules load (docs/sweeps.md, "Scaling")
-        start_early(sys.argv[1:])
+            # a local sweep's workers boot while the command's modules load (docs/sweeps.md, "Scaling")
+            start_early(sys.argv[1:])
         from .cli import main as command
     except BaseException:
         # a stop signal while the command's modules load (a C extension may turn it into an
