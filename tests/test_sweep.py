@@ -420,3 +420,19 @@ def test_summary_csv_is_the_text_pandas_writes():
     columns = ["case", "n", "x", "mixed", "with_nan", "status", "empty"]
     assert summary_csv(columns, rows) == pd.DataFrame(rows, columns=columns).to_csv(index=False)
 
+
+
+def test_the_sweep_command_never_imports_pandas(tmp_path):
+    """`pyadore sweep` writes summary.csv and its report without pandas (its import was the
+    largest serial part of the command's end, docs/sweeps.md "Scaling"); the workers it
+    started before its own modules loaded ran the cases."""
+    proc = subprocess.run([sys.executable, "-X", "importtime", "-m", "pyadore", "sweep", str(ROLLER), "--vary",
+                           "applied_force_z=500,750", "--steps", "0", "-o", str(tmp_path / "s"), "--workers", "2"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    names = {line.split("|")[-1].strip() for line in proc.stderr.splitlines() if line.startswith("import time:")}
+    assert "pyadore.sweeps.runner" in names and "pyadore.sweeps.execute" in names   # the client's own trace
+    assert not [n for n in names if n == "pandas" or n.startswith("pandas.")]
+    assert "2 cases: 2 finished" in proc.stdout
+    frame = pd.read_csv(tmp_path / "s" / "summary.csv")
+    assert list(frame["status"]) == ["ok", "ok"] and list(frame["applied_force_z"]) == [500, 750]
