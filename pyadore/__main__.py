@@ -18,6 +18,13 @@ def main() -> None:
     set_phase("while starting: nothing done")
     install_command_handlers()
     try:
+        import sys
+
+        if sys.argv[1:2] == ["sweep"]:
+            from .sweeps.execute import start_early
+
+            # a local sweep's workers boot while the command's modules load (docs/sweeps.md, "Scaling")
+            start_early(sys.argv[1:])
         from .cli import main as command
     except BaseException:
         # a stop signal while the command's modules load (a C extension may turn it into an

@@ -435,17 +435,27 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
     failed or the sweep could not start; a stop signal (Ctrl-C, SIGTERM, SIGHUP) ends the
     workers and then the command by that signal (exit status 128 + its number).
     """
+    import os
     import signal
-
-    from .sweeps import sweep as run_sweep
 
     if workers is not None and scheduler is not None:
         click.echo("pyadore: error: --workers and --scheduler exclude each other (the Dask cluster has its "
                    "own workers)", err=True)
         sys.exit(1)
+    # the local workers boot first, while the client imports its modules and reads the deck:
+    # started by pyadore/__main__.py before this module loaded, or here (a light module: the
+    # runner, the deck reader and pandas are not needed for this)
+    from .sweeps.execute import WorkerPool, take_early
+
+    pool = None
+    if scheduler is None:
+        n = workers or os.cpu_count() or 1
+        pool = take_early(n) or WorkerPool(n).start()
     try:
-        frame = run_sweep(deck, list(vary), out_dir, zip=zip_values, steps=steps, workers=workers,
-                          scheduler=scheduler, **options)
+        from .sweeps.runner import run_sweep
+
+        run = run_sweep(deck, list(vary), out_dir, zip=zip_values, steps=steps, workers=pool,
+                        scheduler=scheduler, **options)
     except AdoreError as exc:
         _fail(exc)
     except OSError as exc:  # the sweep folder cannot be made or written
@@ -454,24 +464,25 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
         sys.exit(1)
     except (SignalInterrupt, KeyboardInterrupt) as exc:  # the workers are ended (sweeps/execute.py)
         signum = getattr(exc, "signum", signal.SIGINT)
+        if pool is not None:
+            pool.close()
         _end_by_signal(signum, f"pyadore: sweep interrupted by {signal_label(signum)}; finished cases are kept "
                                f"in {out_dir}: rerun the same command to run the rest")
-    counts = frame["status"].value_counts()
-    done = int(counts.get("ok", 0))
-    click.echo(f"{len(frame)} cases: {done} finished" + "".join(
-        f", {int(n)} {status}" for status, n in counts.items() if status != "ok"))
-    failed = frame[frame["status"] != "ok"]
-    if not failed.empty:
-        import json
-
-        manifest = json.loads((out_dir / "manifest.json").read_text(encoding="utf-8"))
-        errors = {e["case"]: e["error"] for e in manifest["cases"]}
-        for case in failed["case"]:
-            first = (errors.get(case) or "").strip().splitlines()
+    finally:
+        if pool is not None:
+            pool.close()
+    counts = run.status_counts()
+    done = counts.get("ok", 0)
+    click.echo(f"{len(run.cases)} cases: {done} finished" + "".join(
+        f", {n} {status}" for status, n in counts.items() if status != "ok"))
+    failed = [c.case_id for c in run.cases if run.entries.get(c.case_id, {}).get("status", "pending") != "ok"]
+    if failed:
+        for case in failed:
+            first = (run.entries.get(case, {}).get("error") or "").strip().splitlines()
             click.echo(f"  {case}: {first[0] if first else 'no message'}", err=True)
         click.echo(f"full messages: {out_dir / 'manifest.json'}", err=True)
     click.echo(f"summary: {out_dir / 'summary.csv'}")
-    sys.exit(0 if failed.empty else 1)
+    sys.exit(1 if failed else 0)
 
 
 @cli.command("plot-sweep")

@@ -89,6 +89,8 @@ def test_ball_results_are_the_prints(ball_sweep):
     assert deck.get("9.1.1", "applied_force_z") == row["applied_force_z"] == 3000
     on_disk = pd.read_csv(folder / "summary.csv")
     pd.testing.assert_frame_equal(on_disk, frame, check_dtype=False)
+    # written without pandas (the command's serial end): the bytes pandas writes
+    assert (folder / "summary.csv").read_text() == frame.to_csv(index=False)
     manifest = json.loads((folder / "manifest.json").read_text())
     assert [e["status"] for e in manifest["cases"]] == ["ok"] * 4
     assert all(e["duration_s"] > 0 and e["error"] == "" for e in manifest["cases"])
@@ -353,9 +355,17 @@ def test_worker_starts_without_pandas_and_reads_the_same_key_results(tmp_path):
         assert all(v == v for v in key_results(plain).values())   # no NaN: every value found
 
 
+def _parent_and_environment(pid: int) -> tuple[int, list[bytes]]:
+    """A Linux process's parent pid and environment (/proc)."""
+    stat = Path(f"/proc/{pid}/stat").read_bytes().rsplit(b")", 1)[1].split()
+    return int(stat[1]), Path(f"/proc/{pid}/environ").read_bytes().split(b"\0")
+
+
 def test_a_worker_pool_stays_warm_across_sweeps(tmp_path):
     """Two sweeps on one WorkerPool run on the same two processes (booted once) and give the
-    summary a sweep with its own workers gives; closing the pool ends the processes."""
+    summary a sweep with its own workers gives; closing the pool ends the processes.  On
+    Linux both are forked by one warm fork server (one interpreter start for the pool), each
+    with one engine thread (OMP_NUM_THREADS=1); a worker killed between sweeps is replaced."""
     from pyadore.sweeps import WorkerPool
 
     grid = {"applied_force_z": [500, 750, 1000, 1250]}
@@ -364,6 +374,12 @@ def test_a_worker_pool_stays_warm_across_sweeps(tmp_path):
         first = pyadore.sweep(ROLLER, grid, tmp_path / "a", steps=0, workers=pool, progress=False)
         procs = [w.proc for w in pool._workers]
         assert all(p is not None and p.poll() is None for p in procs)
+        if sys.platform.startswith("linux"):
+            server = pool._workers[0].server
+            assert server is not None and all(w.server is server for w in pool._workers)
+            for p in procs:
+                parent, env = _parent_and_environment(p.pid)
+                assert parent == server.pid and b"OMP_NUM_THREADS=1" in env
         second = pyadore.sweep(ROLLER, {"inner_race_speed": [60000, 65000]}, tmp_path / "b", steps=0,
                                workers=pool, progress=False)
         assert [w.proc for w in pool._workers] == procs       # the same processes, not restarted
@@ -371,8 +387,52 @@ def test_a_worker_pool_stays_warm_across_sweeps(tmp_path):
         for folder in (tmp_path / "a", tmp_path / "b"):
             used = {e["worker"].rsplit(":", 1)[1] for e in json.loads((folder / "manifest.json").read_text())["cases"]}
             assert used <= pids
+        os.kill(procs[1].pid, signal.SIGKILL)                    # a worker lost between sweeps
+        procs[1].wait(timeout=10)
+        third = pyadore.sweep(ROLLER, grid, tmp_path / "c", steps=0, workers=pool, progress=False)
+        assert pool._workers[1].proc is not procs[1] and pool._workers[1].proc.poll() is None
+        manifest = json.loads((tmp_path / "c" / "manifest.json").read_text())
+        used = {e["worker"].rsplit(":", 1)[1] for e in manifest["cases"]}
+        assert str(procs[1].pid) not in used and str(procs[0].pid) in used
+        pd.testing.assert_frame_equal(third, own)
+        procs.append(pool._workers[1].proc)
     assert all(p.poll() is not None for p in procs)             # ended with the pool
+    if sys.platform.startswith("linux"):
+        assert server.poll() is not None                        # and its fork server with them
     assert list(second["status"]) == ["ok", "ok"]
     pd.testing.assert_frame_equal(first, own)
     with pytest.raises(SweepError, match="WorkerPool"):
         pyadore.sweep(ROLLER, grid, tmp_path / "c", steps=0, workers=0, progress=False)
+
+
+def test_summary_csv_is_the_text_pandas_writes():
+    """summary.csv is written without pandas (0.3-0.6 s of the `pyadore sweep` command's serial
+    end, docs/sweeps.md "Scaling"): the bytes pandas' to_csv writes, for a column of integers,
+    of floats (shortest repr, the exponent forms, -0.0, inf, NaN as empty), of integers mixed
+    with floats or NaN (all written as floats), of text that needs quoting and of NaN only."""
+    from pyadore.sweeps.runner import summary_csv
+
+    floats = [1e16, 1e15, 1.5e-5, 1e-4, 0.1 + 0.2, -0.0, 12.7, 1e22, 123456789.123, float("inf"), 5e-324,
+              1201000000.0, 2.2250738585072014e-308, 9007199254740993.0, 0.4435]
+    rows = [{"case": f"case_{i:04d}", "n": 1000 * i, "x": v, "mixed": i if i % 2 else i + 0.5,
+             "with_nan": float("nan") if i == 3 else i, "status": "ok" if i % 3 else 'a, "b"\nc',
+             "empty": float("nan")} for i, v in enumerate(floats)]
+    columns = ["case", "n", "x", "mixed", "with_nan", "status", "empty"]
+    assert summary_csv(columns, rows) == pd.DataFrame(rows, columns=columns).to_csv(index=False)
+
+
+
+def test_the_sweep_command_never_imports_pandas(tmp_path):
+    """`pyadore sweep` writes summary.csv and its report without pandas (its import was the
+    largest serial part of the command's end, docs/sweeps.md "Scaling"); the workers it
+    started before its own modules loaded ran the cases."""
+    proc = subprocess.run([sys.executable, "-X", "importtime", "-m", "pyadore", "sweep", str(ROLLER), "--vary",
+                           "applied_force_z=500,750", "--steps", "0", "-o", str(tmp_path / "s"), "--workers", "2"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    names = {line.split("|")[-1].strip() for line in proc.stderr.splitlines() if line.startswith("import time:")}
+    assert "pyadore.sweeps.runner" in names and "pyadore.sweeps.execute" in names   # the client's own trace
+    assert not [n for n in names if n == "pandas" or n.startswith("pandas.")]
+    assert "2 cases: 2 finished" in proc.stdout
+    frame = pd.read_csv(tmp_path / "s" / "summary.csv")
+    assert list(frame["status"]) == ["ok", "ok"] and list(frame["applied_force_z"]) == [500, 750]

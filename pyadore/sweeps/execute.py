@@ -20,7 +20,12 @@ import time
 from pathlib import Path
 from typing import Callable, Iterable
 
-__all__ = ["run_case", "run_local", "run_dask", "WorkerPool"]
+__all__ = ["run_case", "run_local", "run_dask", "WorkerPool", "start_early", "take_early", "WORKER_ENV"]
+
+#: The environment of a local worker process (:mod:`.worker`): one engine (OpenMP) thread and
+#: one BLAS thread per worker (a sweep's parallelism is its workers; a forked process must
+#: hold one thread).
+WORKER_ENV = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
 
 
 def _guide(deck_text: str) -> str:
@@ -48,10 +53,13 @@ def _host() -> str:
 def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | None = None) -> dict:
     """Run one case deck (text) and return ``{case, status, error, notes, duration_s,
     print_text, history_text, results_nc, results, worker, tmp_deck, tmp_print,
-    incomplete_text, incomplete_history}``: ``history_text`` the plot-data file of a run with
-    time steps, ``results_nc`` its netCDF results file (base64; docs/results.md), ``results``
-    the key results of the last printed step and the time averages over the last shaft
-    revolution (:func:`pyadore.sweeps.results.mean_results`).
+    incomplete_text, incomplete_history, timing}``: ``timing`` when the case started and
+    its parts ended (``start``, ``checked``, ``engine``, ``results``, ``end``; time.time())
+    and its CPU time ``cpu_s``, for the bench's budget (bench/sweep_bench.py; not recorded);
+    ``history_text`` the plot-data file of a run with time steps, ``results_nc`` its netCDF
+    results file (base64; docs/results.md), ``results`` the key results of the last printed
+    step and the time averages over the last shaft revolution
+    (:func:`pyadore.sweeps.results.mean_results`).
     ``status`` is ``ok``, ``invalid`` (the deck validator's problems, before any run; the
     message names the worker's ``tmp_deck``), ``input-error`` (the engine refused the deck),
     ``engine-failure`` or ``error`` (anything else, e.g. a print file that does not read).  A failed run that
@@ -63,7 +71,10 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
     import tempfile
 
     start = time.perf_counter()
+    cpu = time.process_time()
+    stamps = {"start": time.time()}  # when each part of the case ended (s since the epoch): the budget's
     out = {"case": case_id, "status": "ok", "error": "", "notes": [], "print_text": None, "results": {},
+           "timing": stamps,
            "history_text": None, "results_nc": None,
            "worker": f"{_host()}:{os.getpid()}", "tmp_deck": "", "tmp_print": "",
            "incomplete_text": None, "incomplete_history": None}
@@ -81,6 +92,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
             prt = Path(tmp) / "case.prt"
             out["tmp_print"] = str(prt)
             _, problems = check_deck(deck)  # here, in parallel, not in the client's serial loop
+            stamps["checked"] = time.time()
             if problems:
                 out.update(status="invalid", error="\n".join(p.format() for p in problems)
                            + f"\n{deck}: {len(problems)} problem(s)")
@@ -89,6 +101,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
             try:
                 # the sweep has its own progress bar
                 result = run(deck, steps=steps, out=prt, progress=False, **(options or {}))
+                stamps["engine"] = time.time()
                 out["notes"] = list(result.notes)
                 # plain tables of the steps: the worker needs no pandas for a run without time steps
                 out["results"] = key_results(read_print(prt, frames=False, echo=False))
@@ -98,6 +111,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                     out["results"].update(mean_results(result.arrays, guide=_guide(deck_text)))
                 else:
                     out["results"].update(mean_results(None))
+                stamps["results"] = time.time()
                 out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
                 if result.history_path is not None:
                     out["history_text"] = result.history_path.read_text(encoding="utf-8", errors="replace")
@@ -123,6 +137,8 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
     except Exception as exc:  # a case's failure is a row of the manifest, never the sweep's end
         out.update(status="error", error=f"{type(exc).__name__}: {exc}", print_text=None, results={})
     out["duration_s"] = time.perf_counter() - start
+    stamps["end"] = time.time()
+    stamps["cpu_s"] = time.process_time() - cpu  # the case's CPU time in the worker
     return out
 
 
@@ -133,11 +149,88 @@ def _died(case_id: str, why: str) -> dict:
             "duration_s": float("nan")}
 
 
-def _start_process():
+def _alive(pid: int) -> bool:
+    """Whether process ``pid`` runs (Linux: /proc; a zombie counts as ended)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as fh:
+            state = fh.read().rsplit(b")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        return False
+    return state not in (b"Z", b"X")
+
+
+class _Forked:
+    """A worker forked by the first worker of its group (:mod:`.worker`): not a child of this
+    process, so known by its pid (from its ready line) and polled through /proc."""
+
+    def __init__(self) -> None:
+        self.pid: int | None = None
+        self.returncode: int | None = None
+
+    def poll(self):
+        if self.returncode is None and self.pid is not None and not _alive(self.pid):
+            self.returncode = -1  # its status went to its parent
+        return self.returncode
+
+    def kill(self) -> None:
+        import signal
+
+        if self.pid is not None and self.poll() is None:
+            try:
+                os.kill(self.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+
+    def wait(self, timeout: float | None = None):
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while self.pid is not None and self.poll() is None:
+            if deadline is not None and time.monotonic() > deadline:
+                import subprocess
+
+                raise subprocess.TimeoutExpired(f"worker {self.pid}", timeout)
+            time.sleep(0.005)
+        return self.returncode
+
+
+def _start_group(workers: list["_Worker"]) -> None:
+    """Start worker processes for ``workers``: on Linux one fresh interpreter that, once warm,
+    forks one process per further worker (one start-up for the group, :mod:`.worker`); on
+    other POSIX systems one process each, on pipes passed by descriptor; elsewhere one
+    process each on its stdin and stdout.  Each process runs one engine thread
+    (:data:`WORKER_ENV`)."""
     import subprocess
 
-    return subprocess.Popen([sys.executable, "-m", "pyadore.sweeps.worker"], stdin=subprocess.PIPE,
-                            stdout=subprocess.PIPE, text=True, encoding="utf-8")
+    env = {**os.environ, **WORKER_ENV}
+    cmd = [sys.executable, "-m", "pyadore.sweeps.worker"]
+    if os.name != "posix":
+        for w in workers:
+            proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, encoding="utf-8",
+                                    env=env)
+            w._attach(proc, proc.stdin, proc.stdout)
+        return
+    groups = [workers] if sys.platform.startswith("linux") else [[w] for w in workers]
+    # (Linux: one fork server for the group, :mod:`.worker`; it ends when its workers have)
+    for group in groups:
+        theirs, mine, slots = [], [], []
+        try:
+            for _ in group:
+                job_r, job_w = os.pipe()
+                res_r, res_w = os.pipe()
+                theirs += [job_r, res_w]
+                mine.append((job_w, res_r))
+                slots.append(f"{job_r}:{res_w}")
+            proc = subprocess.Popen(cmd + ["--slots", ",".join(slots)], stdin=subprocess.DEVNULL, env=env,
+                                    pass_fds=theirs)
+        except BaseException:
+            for fd in theirs + [fd for pair in mine for fd in pair]:
+                os.close(fd)
+            raise
+        for fd in theirs:  # only the worker holds its ends: its death closes the channel
+            os.close(fd)
+        forked = sys.platform.startswith("linux")
+        for w, (job_w, res_r) in zip(group, mine):
+            w._attach(_Forked() if forked else proc, os.fdopen(job_w, "w", encoding="utf-8"),
+                      os.fdopen(res_r, "r", encoding="utf-8"), server=proc if forked else None)
 
 
 class _Worker:
@@ -147,13 +240,35 @@ class _Worker:
     def __init__(self) -> None:
         import threading
 
-        self.proc = None
+        self.proc = None        # a Popen, or a _Forked for a worker its group's first one forked
+        self.jobs = None        # its job channel (text, written here)
+        self.results = None     # its result channel (text, read here)
+        self.ready = False      # its ready line was read: it is warm and its pid known
+        self.server = None      # the fork server that forked it (Linux)
         self.interrupted = threading.Event()  # set by kill(): serve() ends without a report
+
+    def _attach(self, proc, jobs, results, server=None) -> None:
+        self.proc, self.jobs, self.results, self.ready = proc, jobs, results, False
+        self.server = server  # the fork server of a forked worker (a Popen): reaped by the pool
+
+    def running(self) -> bool:
+        """Whether a process serves (or boots for) this worker."""
+        return self.proc is not None and self.proc.poll() is None
 
     def start(self) -> None:
         """Start the process unless it runs (it boots while the client prepares cases)."""
-        if self.proc is None or self.proc.poll() is not None:
-            self.proc = _start_process()
+        if not self.running():
+            self.stop()
+            _start_group([self])
+
+    def _await_ready(self) -> None:
+        line = self.results.readline()
+        if not line:
+            raise OSError("the worker ended before it was ready")
+        pid = json.loads(line)["ready"]
+        if isinstance(self.proc, _Forked):
+            self.proc.pid = pid
+        self.ready = True
 
     def serve(self, jobs, results) -> None:
         """Run jobs from the queue ``jobs`` until a None; each result, then a None, to ``results``.
@@ -163,43 +278,66 @@ class _Worker:
             job = jobs.get()
             if job is None or self.interrupted.is_set():
                 break
-            self.start()
-            proc = self.proc  # kill() may set self.proc to None from the client's thread
+            proc = None
             try:
-                proc.stdin.write(json.dumps(list(job)) + "\n")
-                proc.stdin.flush()
-                line = proc.stdout.readline()
-            except (OSError, ValueError, AttributeError):
+                self.start()
+                proc = self.proc  # kill() may set self.proc to None from the client's thread
+                if not self.ready:
+                    self._await_ready()
+                self.jobs.write(json.dumps(list(job)) + "\n")
+                self.jobs.flush()
+                line = self.results.readline()
+            except (OSError, ValueError, AttributeError, KeyError, TypeError):
                 line = ""
             if self.interrupted.is_set():
                 break
             if not line:  # the process died on this job: report it, go on with a fresh one
-                code = proc.poll()
+                code = proc.poll() if proc is not None else None
                 results.put(_died(job[0], f"the worker process died while running this case (exit status "
-                                          f"{code}): a crash of the engine"))
+                                          f"{'unknown' if code is None or code == -1 else code}): a crash of "
+                                          f"the engine"))
                 self.stop()
                 continue
             results.put(json.loads(line))
         results.put(None)
 
+    def _close_channels(self) -> None:
+        for ch in (self.jobs, self.results):
+            try:
+                if ch is not None:
+                    ch.close()
+            except (OSError, ValueError):
+                pass
+        self.jobs = self.results = None
+
     def stop(self) -> None:
-        """Close the worker's stdin (it exits when idle) and end it if it does not."""
-        if self.proc is None:
-            return
-        try:
-            self.proc.stdin.close()
-        except OSError:
-            pass
-        try:
-            self.proc.wait(timeout=5)
-        except Exception:
-            self.proc.kill()
+        """Close the job channel (a warm worker exits when idle) and end the process if it
+        does not; a worker still booting (it never served) is ended at once."""
+        proc = self.proc
+        if proc is not None and self.ready:
+            try:
+                self.jobs.close()  # (closing a closed file does nothing)
+            except (OSError, ValueError, AttributeError):
+                pass
+            try:
+                proc.wait(timeout=5)
+            except Exception:
+                proc.kill()
+        elif proc is not None:
+            proc.kill()
+            try:
+                proc.wait(timeout=5)
+            except Exception:
+                pass
+        self._close_channels()
         self.proc = None
+        self.ready = False
 
     def kill(self) -> None:
         """End the worker now (the sweep was interrupted)."""
         self.interrupted.set()
         proc, self.proc = self.proc, None
+        self.ready = False
         if proc is None:
             return
         proc.kill()
@@ -207,14 +345,20 @@ class _Worker:
             proc.wait(timeout=5)
         except Exception:
             pass
+        try:  # a forked worker whose pid is not known yet ends at the end of its job channel
+            if self.jobs is not None:
+                self.jobs.close()
+        except (OSError, ValueError):
+            pass
 
 
 class WorkerPool:
     """Local worker processes that stay warm across sweeps: ``with WorkerPool(2) as pool:``
-    then ``pyadore.sweep(..., workers=pool)`` as often as needed.  Each process boots once
-    (the interpreter, numpy, the engine: about 0.4 s of CPU, docs/sweeps.md "Scaling"), at
-    its first sweep, instead of at every sweep; :meth:`close` (or the end of the ``with``)
-    ends them, and they end by themselves when this process exits."""
+    then ``pyadore.sweep(..., workers=pool)`` as often as needed.  The processes boot once
+    (on Linux one interpreter start for the whole pool, which forks the others once warm:
+    the interpreter, numpy, the engine, about 0.4 s of CPU, docs/sweeps.md "Scaling"), at
+    :meth:`start` or the first sweep, instead of at every sweep; :meth:`close` (or the end of
+    the ``with``) ends them, and they end by themselves when this process exits."""
 
     def __init__(self, workers: int) -> None:
         if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
@@ -232,17 +376,88 @@ class WorkerPool:
         running = sum(w.proc is not None for w in self._workers)
         return f"WorkerPool({self.size}, {running} running)"
 
+    def start(self, count: int | None = None) -> "WorkerPool":
+        """Start the first ``count`` workers (all by default) that do not run, as one group:
+        they boot while the caller goes on (a sweep starts its pool before it reads the deck)."""
+        idle = [w for w in self._workers[:self.size if count is None else count] if not w.running()]
+        for w in idle:
+            w.stop()
+        if idle:
+            _start_group(idle)
+        return self
+
     def close(self) -> None:
-        """End the worker processes (a later sweep on this pool starts them again)."""
+        """End the worker processes (a later sweep on this pool starts them again), then
+        their fork servers (which end with their workers)."""
+        servers: dict[int, list] = {}  # id -> [the fork server, whether one of its workers served]
+        for w in self._workers:
+            if w.server is not None:
+                servers.setdefault(id(w.server), [w.server, False])[1] |= w.ready
+        for w in self._workers:  # every warm worker told first, so that they end together
+            if w.ready and w.jobs is not None:
+                try:
+                    w.jobs.close()
+                except (OSError, ValueError):
+                    pass
         for w in self._workers:
             w.stop()
+            w.server = None
+        for server, served in servers.values():
+            if not served:  # still booting (a sweep with nothing to run): no need to wait for it
+                server.kill()
+            try:
+                server.wait(timeout=5)
+            except Exception:
+                server.kill()
+                server.wait()
+
+
+#: The pool :func:`start_early` started for this process's ``pyadore sweep`` command (at most one).
+_EARLY: list[WorkerPool] = []
+
+
+def start_early(argv: list[str]) -> None:
+    """Start the workers of a local ``pyadore sweep`` command line (``argv``: the command's
+    arguments) before the command's own modules load: click, the option table and with it
+    numpy and the engine extension cost the client about 0.2 s of CPU before the sweep
+    command runs, time the workers' boot can overlap (docs/sweeps.md, "Scaling").  Nothing
+    for another command, ``--help``, ``--scheduler`` or a ``--workers`` that is no number
+    >= 1; the sweep command takes the pool (:func:`take_early`) or, when its workers differ,
+    closes it."""
+    if not argv or argv[0] != "sweep" or any(a in ("--help", "-h") or a.startswith("--scheduler") for a in argv):
+        return
+    workers = os.cpu_count() or 1
+    for i, arg in enumerate(argv[1:], start=1):
+        if arg == "--workers" and i + 1 < len(argv):
+            value = argv[i + 1]
+        elif arg.startswith("--workers="):
+            value = arg.split("=", 1)[1]
+        else:
+            continue
+        try:
+            workers = int(value)
+        except ValueError:
+            return
+    if workers >= 1:
+        _EARLY.append(WorkerPool(workers).start())
+
+
+def take_early(workers: int) -> WorkerPool | None:
+    """The pool :func:`start_early` started, when it has ``workers`` workers (one that has
+    not is closed); None when there is none."""
+    pool = _EARLY.pop() if _EARLY else None
+    if pool is not None and pool.size != workers:
+        pool.close()
+        pool = None
+    return pool
 
 
 def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None], count: int) -> None:
     """Run ``jobs`` (tuples of :func:`run_case` arguments, at most ``count``) on ``workers``
     local worker processes (a number: started for this sweep when the first job comes, so
     they boot while the client prepares the next ones, and ended after it; or a
-    :class:`WorkerPool`, whose processes stay warm); ``on_result`` gets each
+    :class:`WorkerPool`, whose processes stay warm, possibly started already by
+    :meth:`WorkerPool.start`); ``on_result`` gets each
     :func:`run_case` result, in this thread, as it arrives.  A case whose process dies (a
     crash in the engine) is reported as an error and a fresh process takes the next case;
     the others are not affected."""
@@ -258,9 +473,9 @@ def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None],
         for job in jobs:
             if not used:
                 used = pool._workers[:max(1, min(pool.size, count))]
+                pool.start(len(used))  # those not started yet (sweep() starts its pool early)
                 for w in used:
                     w.interrupted.clear()  # a pool's worker serves again after an interrupted sweep
-                    w.start()
                     threading.Thread(target=w.serve, args=(pending, results), daemon=True).start()
             pending.put(job)
         for _ in used:

@@ -22,7 +22,7 @@ from .execute import run_dask, run_local
 from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_vary
 from .results import RESULT_COLUMNS, key_results
 
-__all__ = ["sweep", "read_summary", "read_summary_file"]
+__all__ = ["sweep", "run_sweep", "read_summary", "read_summary_file", "summary_csv"]
 
 #: While cases finish, manifest.json is rewritten after a case when the last rewrite is
 #: MANIFEST_COST_FACTOR times its own duration ago, and at least every MANIFEST_INTERVAL (s):
@@ -233,10 +233,9 @@ class _Sweep:
             self._events = []
         self._manifest_cost = time.monotonic() - self._manifest_written
 
-    def summary(self):
-        """The summary frame: case, the varied parameters, status, the key results."""
-        import pandas as pd
-
+    def summary_rows(self) -> tuple[list[str], list[dict]]:
+        """The summary's columns (case, the varied parameters, status, the key results) and
+        rows (one dict a case; a result the case does not have is NaN)."""
         rows = []
         for case in self.cases:
             e = self.entries.get(case.case_id, {})
@@ -246,14 +245,26 @@ class _Sweep:
                 v = res.get(col)
                 row[col] = float("nan") if v is None else v
             rows.append(row)
-        columns = ["case", *[v.name for v in self.varied], "status", *RESULT_COLUMNS]
+        return ["case", *[v.name for v in self.varied], "status", *RESULT_COLUMNS], rows
+
+    def summary(self):
+        """The summary frame (pandas): :meth:`summary_rows` as summary.csv holds them."""
+        import pandas as pd
+
+        columns, rows = self.summary_rows()
         return pd.DataFrame(rows, columns=columns)
 
-    def write_summary(self):
-        """Write summary.csv and return its frame."""
-        frame = self.summary()
-        store.write_atomic(self.root / store.SUMMARY, frame.to_csv(index=False))
-        return frame
+    def write_summary(self) -> None:
+        """Write summary.csv (:func:`summary_csv`: pandas' text, without pandas)."""
+        store.write_atomic(self.root / store.SUMMARY, summary_csv(*self.summary_rows()))
+
+    def status_counts(self) -> dict[str, int]:
+        """How many cases have each status, the most frequent first (as pandas' value_counts)."""
+        counts: dict[str, int] = {}
+        for case in self.cases:
+            status = self.entries.get(case.case_id, {}).get("status", "pending")
+            counts[status] = counts.get(status, 0) + 1
+        return dict(sorted(counts.items(), key=lambda kv: -kv[1]))
 
     # -- preparing the cases --------------------------------------------------------------------
     def prepare(self, case: Case) -> str | None:
@@ -272,6 +283,31 @@ class _Sweep:
         # rewritten from the sweep's definition whenever the case runs: no fsync needed
         store.write_atomic(deck_file, text, durable=False)
         return text
+
+
+def _csv_column(values: list) -> list[str]:
+    """The cells of one summary column as pandas writes them: a column of integers as
+    integers, a column of numbers with one float (or NaN) in it all as floats (repr, NaN
+    empty), anything else as text."""
+    numbers = all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values)
+    if numbers and any(isinstance(v, float) for v in values):
+        return ["" if v != v else repr(float(v)) for v in values]
+    return [str(v) for v in values]
+
+
+def summary_csv(columns: list[str], rows: list[dict]) -> str:
+    """summary.csv's text: what ``pandas.DataFrame(rows, columns=columns).to_csv(index=False)``
+    writes, without importing pandas (0.3-0.6 s of the client's serial end of a
+    ``pyadore sweep``; tests/test_sweep.py compares the two)."""
+    import csv
+    import io
+
+    cells = [_csv_column([row.get(c, float("nan")) for row in rows]) for c in columns]
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(columns)
+    writer.writerows(zip(*cells))
+    return buffer.getvalue()
 
 
 def _manifest_text(definition: dict, updated_at: str, counts: dict, rows: list[dict]) -> str:
@@ -318,6 +354,16 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
     Raises :class:`~pyadore.sweeps.SweepError` (an ``AdoreInputError``) when the sweep cannot
     start; a case that fails is a row with its status and message, never an exception.
     """
+    return run_sweep(deck, vary, out_dir, zip=zip, steps=steps, workers=workers, scheduler=scheduler,
+                     progress=progress, **options).summary()
+
+
+def run_sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, workers=None,
+              scheduler=None, progress: bool | None = None, **options) -> _Sweep:
+    """:func:`sweep` without pandas (the ``pyadore sweep`` command): the sweep's state, whose
+    :meth:`~_Sweep.status_counts` and ``entries`` tell how its cases ended; summary.csv is
+    written all the same.  A local sweep starts its workers first, so that they boot while
+    the deck is read and the cases are prepared (docs/sweeps.md, "Scaling")."""
     given = deck if isinstance(deck, Deck) else None
     deck_path = Path(str(deck.path)) if given is not None else Path(os.fspath(deck))
     if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int) or steps < 0):
@@ -327,6 +373,20 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
     if workers is not None and not isinstance(workers, WorkerPool) and (
             isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise SweepError(f"workers must be an integer >= 1 or a WorkerPool, got {workers!r}")
+    pool, own = None, False
+    if scheduler is None:
+        own = not isinstance(workers, WorkerPool)
+        pool = WorkerPool(workers or os.cpu_count() or 1) if own else workers
+        pool.start()  # boots while the client reads the deck and prepares the cases
+    try:
+        return _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, scheduler, progress, options)
+    finally:
+        if own:
+            pool.close()
+
+
+def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, scheduler, progress, options) -> _Sweep:
+    """:func:`run_sweep` once its arguments are checked and its local pool started."""
     if given is not None:  # a Deck: its text as the deck writer gives it (unchanged records verbatim)
         base_text = format_deck(given)
     elif deck_path.exists() and not deck_path.is_file():  # a FIFO would wait for a writer for ever
@@ -392,13 +452,13 @@ def sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, work
         if scheduler is not None:
             run_dask(jobs(), scheduler, on_result)
         else:
-            run_local(jobs(), workers or os.cpu_count() or 1, on_result, count=len(todo))
+            run_local(jobs(), pool, on_result, count=len(todo))
     finally:
         if bar is not None:
             bar.close()
         run.write_manifest()
-        frame = run.write_summary()
-    return frame
+        run.write_summary()
+    return run
 
 
 def read_summary(out_dir):
