@@ -299,7 +299,8 @@ contains
          end associate
       end do
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, self%tribology, &
-                              flash=.false., lubricant_temperature=self%eom%lubricant_temperature)
+                              flash=.false., lubricant_temperature=self%eom%lubricant_temperature, &
+                              threads=self%eom%threads)
       self%tribology_current = .true.
    end subroutine ball_accepted
 
@@ -373,7 +374,8 @@ contains
          tribology = self%tribology          ! the same numbers: flash only at printed rows
       else
          call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
-                                 flash=h%printed, lubricant_temperature=self%eom%lubricant_temperature)
+                                 flash=h%printed, lubricant_temperature=self%eom%lubricant_temperature, &
+                                 threads=self%eom%threads)
       end if
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
       ! the thermal model's exit fluid temperature and the history element's contact
