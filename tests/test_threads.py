@@ -117,3 +117,27 @@ def test_sweep_case_on_one_thread(short_ball_deck):
     two = run_case("c2", text, 1, {"threads": 2})
     assert two["status"] == "ok", two["error"]
     assert _threads_line(two["print_text"].splitlines()).startswith(THREADS_LINE + "2 THREADS ")
+
+
+FORK_SCRIPT = """
+import os, sys
+import pyadore
+deck, out = sys.argv[1], sys.argv[2]
+pyadore.run(deck, out=out + "/parent.prt", steps=2, threads=2, progress=False)
+pid = os.fork()
+if pid == 0:
+    result = pyadore.run(deck, out=out + "/child.prt", steps=2, progress=False)
+    os._exit(0)
+_, status = os.waitpid(pid, 0)
+sys.exit(os.waitstatus_to_exitcode(status))
+"""
+
+
+def test_forked_child_runs_on_one_thread(short_ball_deck, tmp_path):
+    """A run in a child forked after the parent ran on 2 threads: on one thread by default
+    (libgomp does not survive a fork: on 2 it would wait forever), and it completes."""
+    proc = subprocess.run([sys.executable, "-c", FORK_SCRIPT, str(short_ball_deck), str(tmp_path)],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    child = (tmp_path / "child.prt").read_text().splitlines()
+    assert _threads_line(child).startswith(THREADS_LINE + "1 THREAD ")
