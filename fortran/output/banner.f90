@@ -56,10 +56,10 @@ contains
             if (present(substeps)) then
                if (substeps > 1) write (unit, "(a,i0,a)") "  ", substeps, " SUBSTEPS IN EACH TIME STEP (REPORT 4.4.5)"
             end if
+            if (present(dynamics_lines)) write (unit, "(a)", advance="no") dynamics_lines
             if (present(threads)) write (unit, "(a,i0,a)") "  DERIVATIVE ON ", threads, &
                trim(merge(" THREAD  ", " THREADS ", threads == 1))//" (RUN OPTION THREADS; THE RESULTS ARE THE SAME "// &
                "ON ANY NUMBER)"
-            if (present(dynamics_lines)) write (unit, "(a)", advance="no") dynamics_lines
             write (unit, "(a)") ""
          end if
       end if
