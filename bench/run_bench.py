@@ -25,7 +25,9 @@ interpreter against `adore DECK --steps 0`, budget STARTUP_BUDGET over the engin
 interpreter against the engine, and a sweep worker's boot.  The roller dynamics (`roller`, issue #26): the full
 Appendix D run (the deck's 4000 steps; budget ROLLER_BUDGET s wall, goal 1 s) standalone and f2py, as the ball
 dynamics' rows, and once the run to the report's simulated time (`--duration ROLLER_REPORT_DURATION`, the report's
-tau 76.18).  Results are printed, and written to bench/results/latest.json.
+tau 76.18).  Every run takes the default threads (run option threads: OMP_NUM_THREADS, else the
+cores, at most 4; docs/dynamics.md, "Threads"), and the executable's full runs once more with `--threads 1`.
+Results are printed, and written to bench/results/latest.json.
 """
 
 from __future__ import annotations
@@ -136,6 +138,10 @@ def _roller_rows(exe):
         rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, executable",
                              lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(ROLLER_STEPS)],
                                                     check=True, capture_output=True), out, DYNAMIC_REPEAT))
+        rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, executable, --threads 1",
+                             lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(ROLLER_STEPS),
+                                                     "--threads", "1"], check=True, capture_output=True),
+                             out, DYNAMIC_REPEAT))
         rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, f2py",
                              lambda: pyadore.run(deck, steps=ROLLER_STEPS, out=out, progress=False), out,
                              DYNAMIC_REPEAT))
@@ -143,7 +149,7 @@ def _roller_rows(exe):
                              "executable", lambda: subprocess.run([exe, str(deck), str(out), "--duration",
                                                                    str(ROLLER_REPORT_DURATION)],
                                                                   check=True, capture_output=True), out, 1))
-    for row in rows[:2]:
+    for row in rows[:3]:
         row["within_budget"] = row["best_s"] <= ROLLER_BUDGET
     return rows
 
@@ -166,6 +172,11 @@ def _dynamic_rows(exe):
                                                       check=True, capture_output=True)),
             ]:
                 rows.append(_run_row(deck, f"{DYNAMIC_STEPS} steps, {traction}, {label}", fn, out, DYNAMIC_REPEAT))
+        # the default's threads (run option threads: OMP_NUM_THREADS, else the cores, at most 4) against one
+        rows.append(_run_row(deck, f"{DYNAMIC_STEPS} steps, 2-D traction (default), executable, --threads 1",
+                             lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(DYNAMIC_STEPS),
+                                                     "--threads", "1"], check=True, capture_output=True),
+                             out, DYNAMIC_REPEAT))
         # the report's simulated time (Appendix C step 2500: 8.612E-02 s; issue #30), once
         rows.append(_run_row(deck, f"--duration {REPORT_DURATION} (the report's time), {{steps}} steps, executable",
                              lambda: subprocess.run([exe, str(deck), str(out), "--duration", str(REPORT_DURATION)],

@@ -127,7 +127,8 @@ def _case(args) -> dict:
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "case.inp"
         deck.save(path)
-        cmd = [exe, str(path), str(Path(tmp) / "case.prt"), "--revolutions", str(revolutions)]
+        # one thread a case: the pool's workers share the cores (docs/dynamics.md, "Threads")
+        cmd = [exe, str(path), str(Path(tmp) / "case.prt"), "--revolutions", str(revolutions), "--threads", "1"]
         if rolling:
             cmd.append("--rolling-resistance")
         if mu_b > 0.0:

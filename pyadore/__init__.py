@@ -10,9 +10,19 @@ Importing pyadore does not load the engine extension, nor numpy or pandas: ``run
 
 from __future__ import annotations
 
+import os
 from importlib import import_module
 
 from .errors import AdoreEngineError, AdoreError, AdoreInputError, AdoreInterrupted
+
+# The engine's threads (run option threads) sleep between its parallel loops instead of
+# spinning, unless the environment says otherwise: OpenMP's run-time reads this when the
+# engine extension loads it (docs/dynamics.md, "Threads"; fortran/app/wait_policy.c for adore)
+os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+#: the process that imported pyadore: a run in a child forked from it takes one thread unless
+#: told otherwise (OpenMP's run-time of GCC, libgomp, does not survive a fork: a child's
+#: first parallel loop after the parent ran one waits forever; docs/dynamics.md, "Threads")
+_IMPORT_PID = os.getpid()
 
 __all__ = ["run", "sweep", "read_traction_table", "Result", "BALL_STARTS", "AdoreError", "AdoreInputError",
            "AdoreEngineError", "AdoreInterrupted", "__version__"]

@@ -9,7 +9,7 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from . import _core
+from . import _IMPORT_PID, _core
 from .errors import AdoreEngineError, AdoreError, AdoreInputError
 
 if TYPE_CHECKING:
@@ -215,6 +215,8 @@ def run(deck_path, steps: int | None = None, out=None, progress=None, overrides:
         engine_steps = steps
     if "steps" in options:
         raise AdoreInputError("steps is run()'s own argument; pass it once")
+    if options.get("threads") is None and os.getpid() != _IMPORT_PID:
+        options["threads"] = 1  # a forked child (pyadore/__init__.py, _IMPORT_PID)
     text = options_text(steps=engine_steps, **options)
     if not isinstance(deck_path, (str, os.PathLike)) or overrides:
         with tempfile.TemporaryDirectory(prefix="pyadore-deck-") as tmp:

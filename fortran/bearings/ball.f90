@@ -12,6 +12,7 @@ module adore_bearings_ball
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, engine_error, input_error
    use adore_core_strings, only: itoa, upper
+   use adore_core_threads, only: run_threads
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_OUTER, BODY_INNER, BODY_CAGE
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, cage_option_free, &
                                     dof_constraints_t, deck_constraints
@@ -163,6 +164,7 @@ contains
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
       self%eom%rolling_resistance = self%options%rolling_resistance
+      self%eom%threads = run_threads(self%options%threads)
       ! the run's degrees of freedom are the condition's from now on (report 4.4.6)
       self%condition%constraints = default_constraints(self%eom%cage_spin_only)
       self%eom%constraints = self%condition%constraints
@@ -304,7 +306,8 @@ contains
          end associate
       end do
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, self%tribology, &
-                              flash=.false., lubricant_temperature=self%eom%lubricant_temperature)
+                              flash=.false., lubricant_temperature=self%eom%lubricant_temperature, &
+                              threads=self%eom%threads)
       self%tribology_current = .true.
    end subroutine ball_accepted
 
@@ -378,7 +381,8 @@ contains
          tribology = self%tribology          ! the same numbers: flash only at printed rows
       else
          call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
-                                 flash=h%printed, lubricant_temperature=self%eom%lubricant_temperature)
+                                 flash=h%printed, lubricant_temperature=self%eom%lubricant_temperature, &
+                                 threads=self%eom%threads)
       end if
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
       ! the thermal model's exit fluid temperature and the history element's contact

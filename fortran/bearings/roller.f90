@@ -9,6 +9,7 @@ module adore_bearings_roller
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_strings, only: itoa
+   use adore_core_threads, only: run_threads
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_INNER, BODY_OUTER, TEMP_ELEMENT, TEMP_OUTER, &
                                   TEMP_INNER
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, dof_constraints_t, &
@@ -209,6 +210,7 @@ contains
                                     axial=e%x, race_axial=e%u_axial)
          if (allocated(error)) return
          self%eom%adore_whirl = self%options%cage_whirl == "adore"   ! sys is intent(out) there
+         self%eom%threads = run_threads(self%options%threads)
          self%azimuth = e%azimuth
          self%last = e%azimuth
       end associate

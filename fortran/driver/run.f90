@@ -14,6 +14,7 @@ module adore_driver_run
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_os, only: rename_file, delete_file
+   use adore_core_threads, only: run_threads
    use adore_deck_text, only: deck_text_t, read_deck_text
    use adore_deck_deck_type, only: deck_t
    use adore_deck_parser, only: parse_deck
@@ -207,10 +208,11 @@ contains
 
       if (to_time .and. n_dynamic > 0) then
          call write_listing(unit, text, bearing%race_traction, table_path, start_title, opts%moment_equilibrium, &
-                            n_dynamic, opts%substeps, listing, duration, duration*abs(bearing%speed_inner)/(2.0_wp*pi))
+                            n_dynamic, opts%substeps, listing, duration, duration*abs(bearing%speed_inner)/(2.0_wp*pi), &
+                            run_threads(opts%threads))
       else
          call write_listing(unit, text, bearing%race_traction, table_path, start_title, opts%moment_equilibrium, &
-                            n_dynamic, opts%substeps, listing)
+                            n_dynamic, opts%substeps, listing, threads=run_threads(opts%threads))
       end if
       call write_banner(unit)
       call write_echo(unit, echo)

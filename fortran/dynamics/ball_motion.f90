@@ -47,10 +47,11 @@ contains
    !> degrees of freedom (replaces cage_spin_only; absent: default_constraints);
    !> lubricant_temperature as ball_bearing_loads'; adore_whirl (default .false.): a free
    !> cage's mass centre in ADORE's whirl coordinates (adore_dynamics_cage_whirl) instead of
-   !> Newton's.  Input errors of the traction model come back in error.
+   !> Newton's; threads (default 1): the balls' contacts on that many threads (ball_bearing_loads',
+   !> the same rates bit for bit).  Input errors of the traction model come back in error.
    subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
                                  damping, land_film, cage_spin_only, constraints, rolling, lubricant_temperature, &
-                                 adore_whirl)
+                                 adore_whirl, threads)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -70,6 +71,7 @@ contains
       logical, intent(in), optional :: rolling
       real(wp), intent(in), optional :: lubricant_temperature(:)
       logical, intent(in), optional :: adore_whirl
+      integer, intent(in), optional :: threads
       type(dof_constraints_t) :: dof
       integer :: k
 
@@ -81,7 +83,8 @@ contains
       end if
 
       call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
-                              land_film=land_film, rolling=rolling, lubricant_temperature=lubricant_temperature)
+                              land_film=land_film, rolling=rolling, lubricant_temperature=lubricant_temperature, &
+                              threads=threads)
       if (allocated(error)) return
       if (present(gyro_restraint)) then
          if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, BODY_ELEMENT), loads)

@@ -95,6 +95,9 @@ module adore_dynamics_ball_system
       !> evaluated at instead of the state's (ball_bearing_loads' lubricant_temperature; the
       !> thermal model holds them at the initial ones, docs/thermal.md)
       real(wp), allocatable :: lubricant_temperature(:)
+      !> threads of each evaluation's ball contacts (run option threads, adore_core_threads;
+      !> ball_bearing_loads: the same rates bit for bit on any number)
+      integer :: threads = 1
       type(bearing_state_t) :: state, rates  !< scratch of eval
       type(ball_bearing_loads_t) :: loads    !< the loads of the last evaluation
       integer :: calls = 0                   !< evaluations so far
@@ -138,21 +141,21 @@ contains
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
                                  self%contact_damping, self%land_film, self%cage_spin_only, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl)
+                                 adore_whirl=self%adore_whirl, threads=self%threads)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, constraints=self%constraints, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl)
+                                 adore_whirl=self%adore_whirl, threads=self%threads)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, cage_spin_only=self%cage_spin_only, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl)
+                                 adore_whirl=self%adore_whirl, threads=self%threads)
       end if
       if (allocated(self%failure)) then
          ! a state outside the contact models' range (e.g. a stage of a too long step that

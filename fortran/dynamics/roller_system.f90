@@ -101,6 +101,9 @@ module adore_dynamics_roller_system
       real(wp) :: land_torque = 0.0_wp             !< guide-land torque on the cage of the last evaluation (N m)
       real(wp) :: land_power = 0.0_wp              !< guide-land loss (W)
       type(cage_land_geometry_t), allocatable :: land(:)   !< each guide land of the last evaluation
+      !> threads of each evaluation's rollers (run option threads, adore_core_threads; the same
+      !> rates bit for bit on any number)
+      integer :: threads = 1
       real(wp) :: cage_force(3) = 0.0_wp           !< pocket + land force on the cage, last evaluation (N)
       real(wp) :: cage_moment(3) = 0.0_wp          !< pocket + land moment on the cage about its centre (N m)
       integer :: calls = 0
@@ -135,12 +138,11 @@ contains
       real(wp), intent(in) :: y(:)
       real(wp), intent(out) :: dydt(:)
       integer, intent(out) :: flag
-      type(roller_pose_t) :: p
       type(race_pose_t) :: a
       type(body_state_t) :: cage, outer
       type(cage_land_geometry_t) :: lc
-      real(wp) :: race_force(3), cage_torque, cage_force(3), m, ia, it, h, cage_moment(3)
-      integer :: k, i0, c0, r0, g0, t0
+      real(wp) :: race_force(3), cage_torque, cage_force(3), m, ia, it, cage_moment(3)
+      integer :: k, c0, r0, g0, t0
 
       self%calls = self%calls + 1
       if (allocated(self%failure_reason)) deallocate (self%failure_reason)
@@ -165,33 +167,21 @@ contains
       cage_torque = 0.0_wp
       cage_force = 0.0_wp
       cage_moment = 0.0_wp
+      ! every roller's loads and rates into its own slots, on self%threads threads (run option
+      ! threads, adore_core_threads); the sums over the rollers after, in roller order: the
+      ! same numbers bit for bit on any number of threads
+      if (self%threads > 1) then
+         !$omp parallel do num_threads(self%threads) schedule(static, 1) default(shared) private(k)
+         do k = 1, self%n
+            call roller_rates(k)
+         end do
+         !$omp end parallel do
+      else
+         do k = 1, self%n
+            call roller_rates(k)
+         end do
+      end if
       do k = 1, self%n
-         i0 = ROLLER_SIZE*(k - 1)
-         p = roller_pose(y, k)
-         ! constrained roller degrees of freedom (report 4.4.6): axial position, tilt and skew
-         ! held with their rates
-         if (.not. self%constraints%elements%translation(1)) p%xdot = 0.0_wp
-         if (.not. self%constraints%elements%rotation(3)) p%tiltdot = 0.0_wp
-         if (.not. self%constraints%elements%rotation(2)) p%skewdot = 0.0_wp
-         a%pocket_azimuth = self%pocket_azimuth(k) + y(c0 + 1)
-         call roller_loads(self%model, p, a, self%loads(k))
-         associate (f => self%loads(k)%force, mo => self%loads(k)%moment, d => dydt(i0 + 1:i0 + ROLLER_SIZE))
-            h = ia*y(i0 + R_SPIN) - it*p%phidot
-            d(R_X) = p%xdot
-            d(R_R) = p%rdot
-            d(R_PHI) = p%phidot
-            d(R_XDOT) = f(1)/m
-            d(R_RDOT) = f(2)/m + p%r*p%phidot**2
-            d(R_PHIDOT) = (f(3)/m - 2.0_wp*p%rdot*p%phidot)/p%r
-            d(R_TILT) = p%tiltdot
-            d(R_SKEW) = p%skewdot
-            d(R_WT) = (mo(3) + h*y(i0 + R_WR))/it
-            d(R_WR) = (mo(2) - h*y(i0 + R_WT))/it
-            d(R_SPIN) = mo(1)/ia
-            if (.not. self%constraints%elements%translation(1)) d(R_X:R_XDOT:R_XDOT - R_X) = 0.0_wp
-            if (.not. self%constraints%elements%rotation(3)) d([R_TILT, R_WT]) = 0.0_wp
-            if (.not. self%constraints%elements%rotation(2)) d([R_SKEW, R_WR]) = 0.0_wp
-         end associate
          race_force = race_force + self%loads(k)%race_force(:, 2)
          cage_torque = cage_torque + self%loads(k)%cage_torque
          cage_force = cage_force + self%loads(k)%cage_force
@@ -251,6 +241,47 @@ contains
                                "contact model's range)"
          flag = DERIV_FAIL
       end if
+
+   contains
+
+      !> Roller k's loads (self%loads(k)) and rates (its part of dydt) at the state y; run by
+      !> one thread per roller.
+      subroutine roller_rates(k)
+         integer, intent(in) :: k
+         type(roller_pose_t) :: p
+         type(race_pose_t) :: ak
+         real(wp) :: h
+         integer :: i0
+
+         i0 = ROLLER_SIZE*(k - 1)
+         p = roller_pose(y, k)
+         ! constrained roller degrees of freedom (report 4.4.6): axial position, tilt and skew
+         ! held with their rates
+         if (.not. self%constraints%elements%translation(1)) p%xdot = 0.0_wp
+         if (.not. self%constraints%elements%rotation(3)) p%tiltdot = 0.0_wp
+         if (.not. self%constraints%elements%rotation(2)) p%skewdot = 0.0_wp
+         ak = a
+         ak%pocket_azimuth = self%pocket_azimuth(k) + y(c0 + 1)
+         call roller_loads(self%model, p, ak, self%loads(k))
+         associate (f => self%loads(k)%force, mo => self%loads(k)%moment, d => dydt(i0 + 1:i0 + ROLLER_SIZE))
+            h = ia*y(i0 + R_SPIN) - it*p%phidot
+            d(R_X) = p%xdot
+            d(R_R) = p%rdot
+            d(R_PHI) = p%phidot
+            d(R_XDOT) = f(1)/m
+            d(R_RDOT) = f(2)/m + p%r*p%phidot**2
+            d(R_PHIDOT) = (f(3)/m - 2.0_wp*p%rdot*p%phidot)/p%r
+            d(R_TILT) = p%tiltdot
+            d(R_SKEW) = p%skewdot
+            d(R_WT) = (mo(3) + h*y(i0 + R_WR))/it
+            d(R_WR) = (mo(2) - h*y(i0 + R_WT))/it
+            d(R_SPIN) = mo(1)/ia
+            if (.not. self%constraints%elements%translation(1)) d(R_X:R_XDOT:R_XDOT - R_X) = 0.0_wp
+            if (.not. self%constraints%elements%rotation(3)) d([R_TILT, R_WT]) = 0.0_wp
+            if (.not. self%constraints%elements%rotation(2)) d([R_SKEW, R_WR]) = 0.0_wp
+         end associate
+      end subroutine roller_rates
+
    end subroutine roller_system_eval
 
    !> The free cage's axial motion and tilt (module header): the rates of (x_c, a_y, a_z, x_c',

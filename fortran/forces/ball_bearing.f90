@@ -72,6 +72,23 @@ module adore_forces_ball_bearing
       logical :: abnormal = .false.                         !< an abnormal cage contact (4.4.12)
    end type ball_bearing_loads_t
 
+   !> What one ball/race contact puts on its race (force N, moments about the race centre
+   !> N m, in the order the serial sum adds them): kept per contact so that the races' loads
+   !> are summed after the balls, in ball order, whatever thread computed each ball.
+   type :: race_share_t
+      logical :: loaded = .false.           !< the contact carries load
+      logical :: rolled = .false.           !< moment_rolling set (EHD rolling resistance)
+      logical :: tractive = .false.         !< the traction's force and moments set
+      real(wp) :: damping_power = 0.0_wp    !< the contact damping's work rate (W)
+      real(wp) :: force_normal(3) = 0.0_wp, moment_normal(3) = 0.0_wp, moment_rolling(3) = 0.0_wp
+      real(wp) :: force_traction(3) = 0.0_wp, arm_traction(3) = 0.0_wp, moment_traction(3) = 0.0_wp
+   end type race_share_t
+
+   !> A ball's error (its race contacts' traction model), the first in ball order returned.
+   type :: ball_error_t
+      type(error_type), allocatable :: error
+   end type ball_error_t
+
 contains
 
    !> The ball/race pairs (outer, inner) of ball bearing b in its mounted geometry g.
@@ -217,9 +234,13 @@ contains
    !> temperatures the race contacts' lubricant (film, EHD traction, rolling resistance) is
    !> evaluated at - the thermal model holds them at the initial ones, as ADORE 5.0 does
    !> (report 5.3, 7 rec. 1; docs/thermal.md, "Traction and the temperatures").
-   !> Input errors of the traction model (e.g. no EHD film) come back in error.
+   !> threads (default 1): the balls' contacts on that many OpenMP threads (run option
+   !> threads, adore_core_threads); every sum over the balls is taken afterwards in ball
+   !> order, so the loads are the same bit for bit on any number of threads.
+   !> Input errors of the traction model (e.g. no EHD film) come back in error (the first
+   !> ball's in ball order).
    subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference, damping, &
-                                 land_film, rolling, lubricant_temperature)
+                                 land_film, rolling, lubricant_temperature, threads)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -232,13 +253,15 @@ contains
       logical, intent(in), optional :: land_film
       logical, intent(in), optional :: rolling
       real(wp), intent(in), optional :: lubricant_temperature(:)
+      integer, intent(in), optional :: threads
       type(ball_race_pair_t) :: pairs(2)
-      type(ball_race_contact_t) :: cj
-      type(contact_traction_t) :: t
-      real(wp) :: rho, f_n(3), f_t(3), m_t(3), sums(6), beta, q_n, rate
-      real(wp) :: t_lub(size(s%temperature)), race_rot(3, 3, 2), ball_rot(3, 3)
-      integer :: n, k, j
-      logical :: with_traction, with_2d, with_reference, with_rolling
+      type(cage_pocket_pair_t) :: pp
+      type(race_share_t) :: share(2, size(s%elements))
+      type(ball_error_t) :: failed(size(s%elements))
+      real(wp) :: rho, beta
+      real(wp) :: t_lub(size(s%temperature)), race_rot(3, 3, 2)
+      integer :: n, k, j, n_threads
+      logical :: with_traction, with_2d, with_reference, with_rolling, with_cage
 
       with_traction = .true.
       if (present(traction)) with_traction = traction
@@ -250,6 +273,10 @@ contains
       if (present(damping)) beta = damping
       with_rolling = .false.
       if (present(rolling)) with_rolling = rolling
+      with_cage = .true.
+      if (present(cage)) with_cage = cage
+      n_threads = 1
+      if (present(threads)) n_threads = max(threads, 1)
       t_lub = s%temperature
       if (present(lubricant_temperature)) t_lub = lubricant_temperature
       n = size(s%elements)
@@ -265,11 +292,66 @@ contains
       loads%races(RACE_INNER)%force = b%mass(BODY_INNER)*b%gravity + b%force
       loads%races(RACE_INNER)%moment = b%moment
 
-      ! the attitude matrices once per body (every contact of a race or ball uses its own)
+      ! the attitude matrices once per race (every contact of a race uses its own)
       do j = 1, 2
          race_rot(:, :, j) = quat_matrix(s%races(j)%attitude)
       end do
+      if (with_cage) then
+         pp = ball_pocket_pair(b, g, s%temperature)
+         allocate (loads%pockets(n))
+      end if
+      ! every ball's race and pocket contacts, each ball's into its own slots (its loads, its
+      ! contacts, its share of the races' loads, its error): on n_threads threads (run option
+      ! threads, adore_core_threads) or without OpenMP on one, the same numbers bit for bit
+      if (n_threads > 1) then
+         !$omp parallel do num_threads(n_threads) schedule(static, 1) default(shared) private(k)
+         do k = 1, n
+            call ball_contacts(k)
+         end do
+         !$omp end parallel do
+      else
+         do k = 1, n
+            call ball_contacts(k)
+         end do
+      end if
+      ! the first failed ball in ball order (as a serial loop would stop there)
       do k = 1, n
+         if (allocated(failed(k)%error)) then
+            call move_alloc(failed(k)%error, error)
+            return
+         end if
+      end do
+      ! the sums over the balls, in ball order (the races' loads and the damping's work)
+      do k = 1, n
+         do j = 1, 2
+            associate (r => share(j, k))
+               if (.not. r%loaded) cycle
+               loads%damping_power = loads%damping_power + r%damping_power
+               loads%races(j)%force = loads%races(j)%force + r%force_normal
+               loads%races(j)%moment = loads%races(j)%moment + r%moment_normal
+               if (r%rolled) loads%races(j)%moment = loads%races(j)%moment + r%moment_rolling
+               if (r%tractive) then
+                  loads%races(j)%force = loads%races(j)%force + r%force_traction
+                  loads%races(j)%moment = loads%races(j)%moment + r%arm_traction + r%moment_traction
+               end if
+            end associate
+         end do
+      end do
+      if (.not. with_cage) return
+      call add_cage_contacts()
+
+   contains
+
+      !> Ball k's race contacts and (with_cage) its pocket contact: its loads, contacts,
+      !> traction and heat into its slots of loads, what its contacts put on the races into
+      !> share(:, k), an error into failed(k) (module header).  Run by one thread per ball.
+      subroutine ball_contacts(k)
+         integer, intent(in) :: k
+         type(ball_race_contact_t) :: cj
+         type(contact_traction_t) :: t
+         real(wp) :: f_n(3), f_t(3), m_t(3), sums(6), q_n, rate, ball_rot(3, 3)
+         integer :: j
+
          ball_rot = quat_matrix(s%elements(k)%attitude)
          do j = 1, 2
             if (present(stiffness)) then
@@ -279,25 +361,27 @@ contains
                call ball_race_contact(pairs(j), s%elements(k), s%races(j), loads%contacts(j, k), &
                                       race_rot=race_rot(:, :, j), ball_rot=ball_rot)
             end if
-            associate (c => loads%contacts(j, k), ball => s%elements(k)%position, race => s%races(j)%position)
+            associate (c => loads%contacts(j, k), ball => s%elements(k)%position, race => s%races(j)%position, &
+                       r => share(j, k))
                if (.not. (c%load > 0.0_wp)) cycle
                call normal_force(c, j, k, q_n, rate)
                f_n = q_n*c%normal
-               loads%damping_power = loads%damping_power + (q_n - c%load)*rate
+               r%loaded = .true.
+               r%damping_power = (q_n - c%load)*rate
                loads%elements(k)%force = loads%elements(k)%force - f_n
-               loads%races(j)%force = loads%races(j)%force + f_n
-               loads%races(j)%moment = loads%races(j)%moment + cross(c%point - race, f_n)
+               r%force_normal = f_n
+               r%moment_normal = cross(c%point - race, f_n)
                cj = planar_contact(pairs(j), c)
                if (with_rolling) then
-                  call rolling_couple(j, k, cj, loads%contacts(j, k), error)
-                  if (allocated(error)) return
+                  call rolling_couple(j, k, cj, loads%contacts(j, k), ball_rot, r, failed(k)%error)
+                  if (allocated(failed(k)%error)) return
                end if
                if (.not. with_traction) cycle
                call race_traction(j, cj, c%transverse_coeff, c%ellipse%semi_minor, c%ellipse%max_pressure, t, &
-                                  error)
-               if (allocated(error)) then   ! name the contact (the integrator adds time and step)
-                  error%message = "ball "//itoa(k)//", "//trim(merge("outer", "inner", j == RACE_OUTER))// &
-                                  " race contact: "//error%message
+                                  failed(k)%error)
+               if (allocated(failed(k)%error)) then   ! name the contact (the integrator adds time and step)
+                  failed(k)%error%message = "ball "//itoa(k)//", "//trim(merge("outer", "inner", j == RACE_OUTER))// &
+                                            " race contact: "//failed(k)%error%message
                   return
                end if
                ! the traction along the rolling direction and (two-dimensional only) across it
@@ -309,19 +393,20 @@ contains
                f_t = sums(1)*c%rolling + sums(5)*c%transverse - sums(6)*c%normal
                m_t = rho*(cross(sums(2)*c%normal + sums(3)*c%transverse, c%rolling) + &
                           sums(4)*cross(c%normal, c%transverse))
-               loads%races(j)%force = loads%races(j)%force + f_t
-               loads%races(j)%moment = loads%races(j)%moment + cross(ball - race, f_t) + m_t
+               r%tractive = .true.
+               r%force_traction = f_t
+               r%arm_traction = cross(ball - race, f_t)
+               r%moment_traction = m_t
                loads%elements(k)%force = loads%elements(k)%force - f_t
                loads%elements(k)%moment = loads%elements(k)%moment - m_t
             end associate
          end do
-      end do
-      if (present(cage)) then
-         if (.not. cage) return
-      end if
-      call add_cage_contacts()
-
-   contains
+         if (.not. with_cage) return
+         ! the ball in its pocket (pocket k at cage-frame azimuth 2 pi (k-1)/n)
+         call cage_pocket_contact(pp, 2.0_wp*pi*(k - 1)/n, s%elements(k), s%cage, loads%pockets(k))
+         loads%elements(k)%force = loads%elements(k)%force + loads%pockets(k)%force_ball
+         loads%elements(k)%moment = loads%elements(k)%moment + loads%pockets(k)%moment_ball
+      end subroutine ball_contacts
 
       !> Normal force q_n (N) of race contact c (race j, ball k): the Hertz load plus the
       !> contact damping beta (1.5 Q / delta) d(delta)/dt, never negative; rate: the approach
@@ -342,15 +427,18 @@ contains
          q_n = max(c%load + beta*1.5_wp*c%load/c%delta*rate, 0.0_wp)
       end subroutine normal_force
 
-      !> The EHD rolling resistance of race contact c (race j, ball k; planar form cj) as a
-      !> couple about the contact's major axis e_m: M = F_R R_x opposing the relative rolling
-      !> rate w = (omega_ball - omega_race).e_m (smoothly through 0: w / sqrt(w**2 + w0**2),
-      !> w0 = 1e-3 u / R_x), -M on the ball and +M on the race; its heat M w enters the
-      !> contact's heat (rolling_resistance; docs/tribology.md, "Rolling resistance").
-      subroutine rolling_couple(j, k, cj, c, error)
+      !> The EHD rolling resistance of race contact c (race j, ball k; planar form cj; ball_rot
+      !> the ball's attitude matrix) as a couple about the contact's major axis e_m: M = F_R R_x
+      !> opposing the relative rolling rate w = (omega_ball - omega_race).e_m (smoothly through 0:
+      !> w / sqrt(w**2 + w0**2), w0 = 1e-3 u / R_x), -M on the ball and +M on the race (into
+      !> the contact's share r); its heat M w enters the contact's heat (rolling_resistance;
+      !> docs/tribology.md, "Rolling resistance").
+      subroutine rolling_couple(j, k, cj, c, ball_rot, r, error)
          integer, intent(in) :: j, k
          type(ball_race_contact_t), intent(in) :: cj
          type(ball_race_geometry_t), intent(in) :: c
+         real(wp), intent(in) :: ball_rot(3, 3)
+         type(race_share_t), intent(inout) :: r
          type(error_type), allocatable, intent(out) :: error
          type(contact_traction_t) :: tk
          real(wp) :: f_r, w, w0, m_r
@@ -365,23 +453,19 @@ contains
          w0 = 1.0e-3_wp*abs(tk%rolling_speed)/tk%rx
          m_r = f_r*tk%rx*w/sqrt(w*w + w0*w0)
          loads%elements(k)%moment = loads%elements(k)%moment - m_r*c%transverse
-         loads%races(j)%moment = loads%races(j)%moment + m_r*c%transverse
+         r%rolled = .true.
+         r%moment_rolling = m_r*c%transverse
          loads%heat(j, k) = loads%heat(j, k) + m_r*w
       end subroutine rolling_couple
 
-      !> The pocket and guide-land contacts' loads (module header).
+      !> The cage's sums over the pockets (ball order) and the guide-land contacts (module
+      !> header); the pockets' contacts themselves are each ball's (ball_contacts).
       subroutine add_cage_contacts()
-         type(cage_pocket_pair_t) :: pp
          type(cage_land_pair_t), allocatable :: lp(:)
          integer :: k, j
 
-         pp = ball_pocket_pair(b, g, s%temperature)
-         allocate (loads%pockets(n))
          do k = 1, n
-            call cage_pocket_contact(pp, 2.0_wp*pi*(k - 1)/n, s%elements(k), s%cage, loads%pockets(k))
             associate (c => loads%pockets(k))
-               loads%elements(k)%force = loads%elements(k)%force + c%force_ball
-               loads%elements(k)%moment = loads%elements(k)%moment + c%moment_ball
                loads%cage%force = loads%cage%force + c%force_cage
                loads%cage%moment = loads%cage%moment + c%moment_cage
                loads%abnormal = loads%abnormal .or. c%abnormal

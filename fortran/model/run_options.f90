@@ -121,6 +121,11 @@ module adore_model_run_options
       !> rec. 4; not ADORE 5.0, whose field has no thermal inertia; docs/thermal.md, "Thermal
       !> transients"): each body's bulk temperature relaxes toward the steady field
       logical :: thermal_transient = .false.
+      !> threads of the time integration's derivative (the rolling elements' contacts shared
+      !> by an OpenMP team; the results the same bit for bit on any number; docs/dynamics.md,
+      !> "Threads"); 0: automatic (adore_core_threads' run_threads: OMP_NUM_THREADS, else the
+      !> processors, at most 4)
+      integer :: threads = 0
    end type run_options_t
 
    !> One row of the option table.
@@ -135,7 +140,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 24
+   integer, parameter :: N_OPTIONS = 25
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -208,7 +213,10 @@ module adore_model_run_options
                     "temperature (0: the surface at it, report 2.10)"), &
       option_spec_t("thermal_transient", OPTION_FLAG, "false", 0, "", "", "", &
                     "thermal model on: transients with lumped heat capacities, the bodies relaxing toward the "// &
-                    "steady field (report 7 rec. 4; not ADORE 5.0)") &
+                    "steady field (report 7 rec. 4; not ADORE 5.0)"), &
+      option_spec_t("threads", OPTION_INT, "0", 0, "", "N", "", &
+                    "threads of the time steps' derivative (OpenMP; same results on any number); 0: "// &
+                    "OMP_NUM_THREADS, else the processors, at most 4") &
       ]
 
 contains
@@ -305,6 +313,8 @@ contains
          opts%history_element = n
       case ("history_stride")
          opts%history_stride = n
+      case ("threads")
+         opts%threads = n
       case ("traction_table")
          if (len_trim(value) > len(opts%traction_table)) then
             call input_error(error, "run option traction_table: the file name is longer than "// &

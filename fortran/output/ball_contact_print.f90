@@ -45,8 +45,9 @@ contains
    !> temperature rise is left NaN (it costs about four times the rest of a time step with
    !> the EHD traction: the element record computes it at printed steps only).
    !> lubricant_temperature: as the force assembly's (ball_bearing_loads; default the
-   !> bulk temperatures of s).
-   subroutine ball_contact_print(b, g, s, loads, p, flash, lubricant_temperature)
+   !> bulk temperatures of s).  threads (default 1): the balls on that many OpenMP threads,
+   !> the same values bit for bit (run option threads).
+   subroutine ball_contact_print(b, g, s, loads, p, flash, lubricant_temperature, threads)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -54,12 +55,10 @@ contains
       type(contact_print_t), intent(out) :: p
       logical, intent(in), optional :: flash
       real(wp), intent(in), optional :: lubricant_temperature(:)
+      integer, intent(in), optional :: threads
       type(ball_race_pair_t) :: pairs(2)
-      type(ball_race_contact_t) :: cj
-      type(contact_traction_t) :: tk
-      type(error_type), allocatable :: error
-      real(wp) :: nan, b_minor, p_h, h, t_lub(size(s%temperature)), f, rise, slip, coefficient
-      integer :: n, k, j, race
+      real(wp) :: nan, t_lub(size(s%temperature))
+      integer :: n, k, n_threads
       logical :: ehd, with_flash
 
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -72,7 +71,32 @@ contains
       ehd = ehd_traction_model(b)
       with_flash = .true.
       if (present(flash)) with_flash = flash
-      do k = 1, n
+      ! each ball's contacts into its own slots, on threads threads (as the force assembly)
+      n_threads = 1
+      if (present(threads)) n_threads = max(threads, 1)
+      if (n_threads > 1) then
+         !$omp parallel do num_threads(n_threads) schedule(static, 1) default(shared) private(k)
+         do k = 1, n
+            call ball_print(k)
+         end do
+         !$omp end parallel do
+      else
+         do k = 1, n
+            call ball_print(k)
+         end do
+      end if
+
+   contains
+
+      !> Ball k's two contacts (the procedure's header); run by one thread per ball.
+      subroutine ball_print(k)
+         integer, intent(in) :: k
+         type(ball_race_contact_t) :: cj
+         type(contact_traction_t) :: tk
+         type(error_type), allocatable :: error
+         real(wp) :: b_minor, p_h, h, f, rise, slip, coefficient
+         integer :: j, race
+
          do j = 1, 2
             associate (c => loads%contacts(j, k))
                if (.not. (c%load > 0.0_wp .and. c%ellipse%semi_major > 0.0_wp)) cycle
@@ -116,7 +140,8 @@ contains
                end if
             end associate
          end do
-      end do
+      end subroutine ball_print
+
    end subroutine ball_contact_print
 
 end module adore_output_ball_contact_print

@@ -21,7 +21,7 @@ contains
    !> slip in m/s) and the "Listing of input data records": every deck line, verbatim (ADORE
    !> prints the deck before its banner, report Appendix C/D).
    subroutine write_listing(unit, text, traction, traction_path, start_title, moment_equilibrium, dynamics_steps, &
-                            substeps, dynamics_lines, duration, revolutions)
+                            substeps, dynamics_lines, duration, revolutions, threads)
       integer, intent(in) :: unit
       type(deck_text_t), intent(in) :: text
       type(traction_law_t), intent(in), optional :: traction
@@ -37,6 +37,8 @@ contains
       character(len=*), intent(in), optional :: dynamics_lines
       !> a run to a simulated time: that time (s) and the shaft's revolutions in it
       real(wp), intent(in), optional :: duration, revolutions
+      !> threads of the time steps' derivative (run option threads, adore_core_threads)
+      integer, intent(in), optional :: threads
       character(len=16) :: num
       integer :: i
 
@@ -55,6 +57,9 @@ contains
                if (substeps > 1) write (unit, "(a,i0,a)") "  ", substeps, " SUBSTEPS IN EACH TIME STEP (REPORT 4.4.5)"
             end if
             if (present(dynamics_lines)) write (unit, "(a)", advance="no") dynamics_lines
+            if (present(threads)) write (unit, "(a,i0,a)") "  DERIVATIVE ON ", threads, &
+               trim(merge(" THREAD  ", " THREADS ", threads == 1))//" (RUN OPTION THREADS; THE RESULTS ARE THE SAME "// &
+               "ON ANY NUMBER)"
             write (unit, "(a)") ""
          end if
       end if

@@ -14,10 +14,13 @@
 !> * the two-dimensional traction (two_d): it opposes a spin about e_t, keeps action =
 !>   reaction, and its fast quadrature agrees with the reference one within 1e-4 at every
 !>   race contact at the step-0 state and at states slipping across the rolling direction.
+!> * threads: the loads on 1, 2 and 5 threads are the same bit for bit (every body, contact,
+!>   heat, pocket and land), and an error is the first ball's whichever thread met it;
 !> * the Hertz ellipse (adore_contact_hertz): the bisection with its Newton shortcut gives
 !>   the exhaustive bisection's ellipse bit for bit (the force assembly's cost).
 !> Run by `meson test` with the decks/ directory as argument.
 program test_forces
+   use, intrinsic :: iso_fortran_env, only: int64
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
    use adore_core_rotation, only: cross, quat_from_rotation_vector, quat_multiply
@@ -57,6 +60,7 @@ program test_forces
    call test_gyroscopic_restraint(b, g, st)
    call test_contact_damping(b, g, st)
    call test_free_body_rates()
+   call test_threads_same_loads(b, g, st)
    call finish("force assembly")
 
 contains
@@ -577,5 +581,73 @@ contains
       call check(maxval(abs(rdot - matmul(quat_matrix(body%attitude), skew))) < 1.0e-6_wp*norm2(w), &
                  "free body: attitude rate dR/dt = R [omega]x")
    end subroutine test_free_body_rates
+
+   !> The force assembly on several threads (ball_bearing_loads' threads; run option threads):
+   !> at a state where every ball differs (each displaced and spinning off its start, the inner
+   !> race shifted and misaligned, the cage turned) with 2-D traction, contact damping,
+   !> rolling resistance and the cage contacts, the loads on 2 and 5 threads equal those on
+   !> one bit for bit; with the lubricant near 0 K every contact's film fails and the error
+   !> names ball 1 on any number of threads (a serial loop stops there first).
+   subroutine test_threads_same_loads(b, g, base)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      type(bearing_state_t), intent(in) :: base
+      type(bearing_state_t) :: st
+      type(ball_bearing_loads_t) :: l1, ln
+      type(error_type), allocatable :: e1, en
+      real(wp) :: cold(size(base%temperature))
+      integer :: k, nt
+      logical :: same
+
+      st = base
+      do k = 1, size(st%elements)
+         st%elements(k)%position = st%elements(k)%position + 1.0e-6_wp*[sin(1.0_wp*k), cos(2.0_wp*k), sin(3.0_wp*k)]
+         st%elements(k)%velocity = st%elements(k)%velocity + 0.01_wp*[cos(1.0_wp*k), sin(2.0_wp*k), cos(3.0_wp*k)]
+         st%elements(k)%omega = st%elements(k)%omega + 100.0_wp*[sin(5.0_wp*k), cos(7.0_wp*k), sin(11.0_wp*k)]
+      end do
+      st%races(RACE_INNER)%position = st%races(RACE_INNER)%position + [2.0e-6_wp, 1.0e-6_wp, -1.5e-6_wp]
+      st%races(RACE_INNER)%attitude = quat_from_rotation_vector([1.0e-4_wp, 4.0e-4_wp, -3.0e-4_wp])
+      st%cage%attitude = quat_from_rotation_vector([0.05_wp, 0.0_wp, 0.0_wp])
+      call ball_bearing_loads(b, g, st, l1, e1, two_d=.true., damping=2.5e-6_wp, rolling=.true.)
+      call check(.not. allocated(e1), "threads: force assembly on one thread")
+      if (allocated(e1)) return
+      call check(count(l1%contacts%load > 0.0_wp) > size(st%elements) .and. l1%damping_power /= 0.0_wp .and. &
+                 any(l1%pockets%power > 0.0_wp), "threads: the state loads contacts, damping and pockets")
+      do nt = 2, 5, 3
+         call ball_bearing_loads(b, g, st, ln, en, two_d=.true., damping=2.5e-6_wp, rolling=.true., threads=nt)
+         call check(.not. allocated(en), "threads: force assembly on several threads")
+         if (allocated(en)) return
+         same = same_bits(l1%cage%force, ln%cage%force) .and. same_bits(l1%cage%moment, ln%cage%moment)
+         do k = 1, 2
+            same = same .and. same_bits(l1%races(k)%force, ln%races(k)%force) .and. &
+                   same_bits(l1%races(k)%moment, ln%races(k)%moment)
+         end do
+         do k = 1, size(st%elements)
+            same = same .and. same_bits(l1%elements(k)%force, ln%elements(k)%force) .and. &
+                   same_bits(l1%elements(k)%moment, ln%elements(k)%moment) .and. &
+                   same_bits(l1%contacts(:, k)%load, ln%contacts(:, k)%load) .and. &
+                   same_bits(l1%heat(:, k), ln%heat(:, k)) .and. &
+                   same_bits(l1%traction(:, k)%force, ln%traction(:, k)%force) .and. &
+                   same_bits(l1%pockets(k)%force_cage, ln%pockets(k)%force_cage)
+         end do
+         same = same .and. same_bits([l1%damping_power], [ln%damping_power]) .and. &
+                same_bits(l1%lands%power, ln%lands%power) .and. (l1%abnormal .eqv. ln%abnormal)
+         call check(same, "threads: the loads on 1 and "//achar(48 + nt)//" threads are the same bit for bit")
+      end do
+      cold = 1.0_wp
+      call ball_bearing_loads(b, g, st, l1, e1, lubricant_temperature=cold)
+      call ball_bearing_loads(b, g, st, ln, en, lubricant_temperature=cold, threads=5)
+      call check(allocated(e1) .and. allocated(en), "threads: a lubricant at 1 K fails")
+      if (.not. (allocated(e1) .and. allocated(en))) return
+      call check(index(e1%message, "ball 1, outer race contact:") == 1 .and. e1%message == en%message, &
+                 "threads: the error is ball 1's on any number of threads")
+   end subroutine test_threads_same_loads
+
+   !> Whether x and y hold the same values bit for bit (tells -0 from 0; a NaN equals itself).
+   pure logical function same_bits(x, y)
+      real(wp), intent(in) :: x(:), y(:)
+      same_bits = size(x) == size(y)
+      if (same_bits) same_bits = all(transfer(x, [0_int64]) == transfer(y, [0_int64]))
+   end function same_bits
 
 end program test_forces

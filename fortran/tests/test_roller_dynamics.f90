@@ -2,8 +2,10 @@
 !> fortran/dynamics/roller_system.f90): independent checks only - symmetry, hand sums of the
 !> slice forces' lever arms, the quasi-static solution, the gyroscopic closed form, energy
 !> and momentum balances.  The comparison with the report's Appendix D print is in
-!> tests/test_roller_dynamics.py.
+!> tests/test_roller_dynamics.py.  The rates on several threads (run option threads) equal
+!> those on one bit for bit.
 program test_roller_dynamics
+   use, intrinsic :: iso_fortran_env, only: int64
    use adore_test_support, only: check, finish, get_decks_dir
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
@@ -44,6 +46,7 @@ program test_roller_dynamics
    call test_free_cage_pockets()
    call test_free_cage_nutation()
    call test_tilted_cage_pocket_moment()
+   call test_threads_same_rates()
 
    call finish("roller dynamics")
 
@@ -456,5 +459,45 @@ contains
       call check(abs(wy_rate - mom_sum(3)/sys%cage_inertia_t) <= 1.0e-12_wp*abs(mom_sum(3)/sys%cage_inertia_t) &
                  .and. mom_sum(3) < 0.0_wp, "tilted cage: transverse angular acceleration = pocket moments / I_t")
    end subroutine test_tilted_cage_pocket_moment
+
+   !> The equations of motion on several threads (roller_system_t%threads; run option
+   !> threads): at a state where every roller differs (its radius, tilt, skew, axial position
+   !> and rates off the start's) with a free, displaced cage, the rates and every roller's
+   !> loads on 2 and 5 threads equal those on one bit for bit.
+   subroutine test_threads_same_rates()
+      type(roller_system_t) :: sys
+      type(integrator_t) :: it
+      real(wp), allocatable :: y(:), d1(:), dn(:)
+      integer :: flag, k, nt, i0
+      logical :: same
+      real(wp), allocatable :: f1(:), fn(:)
+
+      call start(sys, it, y, .true., cage_free=.true.)
+      if (allocated(error)) return
+      do k = 1, sys%n
+         i0 = ROLLER_SIZE*(k - 1)
+         y(i0 + 1) = y(i0 + 1) + 2.0e-6_wp*sin(1.0_wp*k)
+         y(i0 + 2) = y(i0 + 2) + 1.0e-6_wp*cos(2.0_wp*k)
+         y(i0 + R_TILT) = 1.0e-4_wp*sin(3.0_wp*k)
+         y(i0 + R_SKEW) = 1.0e-4_wp*cos(5.0_wp*k)
+         y(i0 + 5) = 1.0e-3_wp*sin(7.0_wp*k)
+      end do
+      y(ROLLER_SIZE*sys%n + CAGE_POS_OFFSET + 1:ROLLER_SIZE*sys%n + CAGE_POS_OFFSET + 2) = [3.0e-6_wp, -2.0e-6_wp]
+      ! the cage turned by 0.6 of its pockets' play at the pitch radius: every pocket pushes
+      y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 1) = y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 1) + &
+                                               0.6_wp*sys%model%pocket_clearance/y(2)
+      allocate (d1(size(y)), dn(size(y)))
+      call sys%eval(0.0_wp, y, d1, flag)
+      f1 = [(sys%loads(k)%force, sys%loads(k)%moment, sys%loads(k)%race_force(:, 2), k=1, sys%n)]
+      call check(count(sys%loads%cage_torque /= 0.0_wp) > sys%n/2, "threads: the rollers load their pockets")
+      do nt = 2, 5, 3
+         sys%threads = nt
+         call sys%eval(0.0_wp, y, dn, flag)
+         fn = [(sys%loads(k)%force, sys%loads(k)%moment, sys%loads(k)%race_force(:, 2), k=1, sys%n)]
+         same = all(transfer(d1, [0_int64]) == transfer(dn, [0_int64])) .and. &
+                all(transfer(f1, [0_int64]) == transfer(fn, [0_int64]))
+         call check(same, "threads: the rates on 1 and "//achar(48 + nt)//" threads are the same bit for bit")
+      end do
+   end subroutine test_threads_same_rates
 
 end program test_roller_dynamics

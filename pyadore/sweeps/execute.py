@@ -99,8 +99,9 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                 out["duration_s"] = time.perf_counter() - start
                 return out
             try:
-                # the sweep has its own progress bar
-                result = run(deck, steps=steps, out=prt, progress=False, **(options or {}))
+                # the sweep has its own progress bar; one thread a case unless the sweep's options
+                # say otherwise (its workers share the cores: docs/dynamics.md, "Threads")
+                result = run(deck, steps=steps, out=prt, progress=False, **{"threads": 1, **(options or {})})
                 stamps["engine"] = time.time()
                 out["notes"] = list(result.notes)
                 # plain tables of the steps: the worker needs no pandas for a run without time steps
