@@ -20,7 +20,7 @@ module adore_bearings_roller
    use adore_quasistatic_models, only: roller_qs_model
    use adore_forces_ball_bearing, only: guide_land_pairs
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
-   use adore_dynamics_integrator, only: integrator_t, DERIV_OK
+   use adore_dynamics_integrator, only: integrator_t, DERIV_OK, INT_METHOD_ARK436, INT_METHOD_ROS34PW2
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, R_PHI, &
                                            R_PHIDOT, CAGE_OFFSET, RACE_OFFSET
    use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
@@ -112,6 +112,10 @@ contains
       if (self%thermal%mode /= THERMAL_OFF) text = text//" (roller runs: docs/thermal.md, Roller runs)"
       if (self%eom%cage_free) then
          text = text//"; cage free in all six degrees of freedom (report 4.4.6), on its pockets and guide lands"
+         if (self%options%integrator == "deck" .and. &
+             run_int_method("deck", self%bearing%controls%int_method) == INT_METHOD_ARK436) &
+            text = text//", integrated by ROS34PW2 (the deck's INT METHOD with a free roller cage: the IMEX ARK4 "// &
+                   "holds spurious pocket contacts at the deck's error limit; --integrator ark4 for it)"
          if (self%eom%adore_whirl) then
             text = text//", its centre in ADORE's whirl coordinates (r'' = F_r/m, r psi'' = F_t/m: no centripetal "// &
                    "or Coriolis acceleration, report 4.4.4; cage_whirl=inertial for Newton's); "
@@ -199,6 +203,11 @@ contains
       call cage_option_free(self%options%cage, self%bearing%dof_flags, cage_free, error)
       if (allocated(error)) return
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
+      ! a free cage under the deck's INT METHOD 5: the Rosenbrock-W ROS34PW2, not the IMEX
+      ! ARK4, which at the deck's error limit holds pocket contacts the accurate integrations
+      ! do not have (docs/dynamics.md, "The free roller cage's pocket episode")
+      if (cage_free .and. self%options%integrator == "deck" .and. method == INT_METHOD_ARK436) &
+         method = INT_METHOD_ROS34PW2
       associate (s => self%step0, e => self%step0%equilibrium)
          call start_roller_dynamics(self%bearing, mount_geometry(self%bearing, self%bearing%temperature, 2), &
                                     s%model, e%azimuth, e%r, e%tilt, e%orbital_speed, &
