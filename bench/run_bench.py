@@ -25,8 +25,8 @@ interpreter against `adore DECK --steps 0`, budget STARTUP_BUDGET over the engin
 interpreter against the engine, and a sweep worker's boot.  The roller dynamics (`roller`, issue #26): the full
 Appendix D run (the deck's 4000 steps; budget ROLLER_BUDGET s wall, goal 1 s) standalone and f2py, as the ball
 dynamics' rows, and once the run to the report's simulated time (`--duration ROLLER_REPORT_DURATION`, the report's
-tau 76.18).  Every run takes the default threads (run option threads: OMP_NUM_THREADS, else 1;
-docs/dynamics.md, "Threads"), and the executable's full runs once more with `--threads 2`.
+tau 76.18).  Every run takes the default threads (run option threads: OMP_NUM_THREADS, else the
+cores, at most 4; docs/dynamics.md, "Threads"), and the executable's full runs once more with `--threads 1`.
 Results are printed, and written to bench/results/latest.json.
 """
 
@@ -138,9 +138,9 @@ def _roller_rows(exe):
         rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, executable",
                              lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(ROLLER_STEPS)],
                                                     check=True, capture_output=True), out, DYNAMIC_REPEAT))
-        rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, executable, --threads 2",
+        rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, executable, --threads 1",
                              lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(ROLLER_STEPS),
-                                                     "--threads", "2"], check=True, capture_output=True),
+                                                     "--threads", "1"], check=True, capture_output=True),
                              out, DYNAMIC_REPEAT))
         rows.append(_run_row(deck, f"{ROLLER_STEPS} steps, f2py",
                              lambda: pyadore.run(deck, steps=ROLLER_STEPS, out=out, progress=False), out,
@@ -172,10 +172,10 @@ def _dynamic_rows(exe):
                                                       check=True, capture_output=True)),
             ]:
                 rows.append(_run_row(deck, f"{DYNAMIC_STEPS} steps, {traction}, {label}", fn, out, DYNAMIC_REPEAT))
-        # the default's threads (run option threads: OMP_NUM_THREADS, else 1) against two
-        rows.append(_run_row(deck, f"{DYNAMIC_STEPS} steps, 2-D traction (default), executable, --threads 2",
+        # the default's threads (run option threads: OMP_NUM_THREADS, else the cores, at most 4) against one
+        rows.append(_run_row(deck, f"{DYNAMIC_STEPS} steps, 2-D traction (default), executable, --threads 1",
                              lambda: subprocess.run([exe, str(deck), str(out), "--steps", str(DYNAMIC_STEPS),
-                                                     "--threads", "2"], check=True, capture_output=True),
+                                                     "--threads", "1"], check=True, capture_output=True),
                              out, DYNAMIC_REPEAT))
         # the report's simulated time (Appendix C step 2500: 8.612E-02 s; issue #30), once
         rows.append(_run_row(deck, f"--duration {REPORT_DURATION} (the report's time), {{steps}} steps, executable",

@@ -1,7 +1,8 @@
 """The run option ``threads`` (docs/dynamics.md, "Threads"): the rolling elements' contacts of
 every derivative call on an OpenMP team, the sums over the elements in element order, so a
 run's files are the same bit for bit on any number of threads - the print apart from its
-listing line naming the threads.  Also: the default count (OMP_NUM_THREADS, else 1), the passive wait policy both front ends set, and a sweep's cases on
+listing line naming the threads.  Also: the default count (OMP_NUM_THREADS, else the
+processors, at most 4), the passive wait policy both front ends set, and a sweep's cases on
 one thread each.  The engine's own checks (loads and rates on 1, 2 and 5 threads) are in
 fortran/tests/test_forces.f90 and test_roller_dynamics.f90."""
 
@@ -66,11 +67,12 @@ def test_extension_on_two_threads_equals_the_executable(adore_exe, short_ball_de
 
 
 def test_default_threads(adore_exe, short_ball_deck, tmp_path):
-    """threads 0 (the default): OMP_NUM_THREADS when set, else 1 (docs/dynamics.md,
-    "Threads": two threads were slower than one on the 2-core machines measured)."""
+    """threads 0 (the default): OMP_NUM_THREADS when set, else the processors this process
+    may run on, at most 4."""
     env = {k: v for k, v in os.environ.items() if k != "OMP_NUM_THREADS"}
     auto = _run(adore_exe, short_ball_deck, tmp_path / "auto.prt", "--steps", 1, env=env)
-    assert _threads_line(auto).startswith(f"{THREADS_LINE}1 THREAD ")
+    expected = min(len(os.sched_getaffinity(0)), 4)
+    assert _threads_line(auto).startswith(f"{THREADS_LINE}{expected} THREAD")
     env["OMP_NUM_THREADS"] = "3"
     three = _run(adore_exe, short_ball_deck, tmp_path / "three.prt", "--steps", 1, env=env)
     assert _threads_line(three).startswith(THREADS_LINE + "3 THREADS ")

@@ -123,7 +123,8 @@ module adore_model_run_options
       logical :: thermal_transient = .false.
       !> threads of the time integration's derivative (the rolling elements' contacts shared
       !> by an OpenMP team; the results the same bit for bit on any number; docs/dynamics.md,
-      !> "Threads"); 0: automatic (adore_core_threads' run_threads: OMP_NUM_THREADS, else 1)
+      !> "Threads"); 0: automatic (adore_core_threads' run_threads: OMP_NUM_THREADS, else the
+      !> processors, at most 4)
       integer :: threads = 0
    end type run_options_t
 
@@ -215,7 +216,7 @@ module adore_model_run_options
                     "steady field (report 7 rec. 4; not ADORE 5.0)"), &
       option_spec_t("threads", OPTION_INT, "0", 0, "", "N", "", &
                     "threads of the time steps' derivative (OpenMP; same results on any number); 0: "// &
-                    "OMP_NUM_THREADS, else 1") &
+                    "OMP_NUM_THREADS, else the processors, at most 4") &
       ]
 
 contains
