@@ -325,3 +325,46 @@ def test_jittering_orbital_speeds_take_the_least_moving_pass(tmp_path):
     carried = np.linalg.norm(result.balance["inner_carried_N"])
     assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)
     assert result.balance["inner_residual_N"] <= 0.01 * carried
+
+
+def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
+    """The deep-groove deck with 50 um clearance under its combined load at the static
+    capacity (17 540 N) and 60 000 rpm.  Balls 4 and 5, in the unloaded zone, touch the inner
+    race with 70 N (0.7 % of ball 1's 9.9 kN) at a 61 deg contact angle; their own rolling
+    orbital speed was 34 380 rpm against 22 530 rpm for the loaded balls and the cage's
+    26 740.  Started with it, ball 4 crossed its 113 um pocket gap at 21 m/s: its pocket
+    force grew from 0.25 N to 9 954 N in 41 steps and the run stopped ("an abnormal cage
+    contact: ball 4's pocket").  Balls whose inner contact carries at most 5 % of the largest
+    inner load are now carried by the cage (fortran/quasistatic/ball_start.f90
+    UNLOADED_FRACTION).  Checked: those balls orbit at the mean speed of the others; the
+    start's equilibrium carries the applied load and the race's weight (1e-6 N); the run integrates its 300 steps
+    with ball 4's pocket force below 1 N, the cage pockets take at most 1e-4 of the
+    dissipation (nothing is lost in collisions), and the race contacts dissipate what the
+    start's contacts lose (the step-0 print's total power loss)."""
+    path, force = _variant(tmp_path, EXAMPLES / "deep_groove_combined_clearance.inp", "dgc", speed=60000.0,
+                           load=17540.0, fit=0.0)
+    balls, summary = _core.ball_step0_from_deck(path)
+    light = balls["q_i"] <= 0.05 * np.max(balls["q_i"])
+    assert 0 < light.sum() < light.size
+    w = balls["orbital_speed"]
+    assert np.allclose(w[light], w[~light].mean(), rtol=1e-12)
+    # the balls' force on the inner race balances the applied load and the race's weight
+    # (gravity along -z), the weight that the same deck's static solution at rest implies
+    race = np.array([summary["inner_force_x"], summary["inner_force_y"], summary["inner_force_z"]])
+    rest, _ = _variant(tmp_path, EXAMPLES / "deep_groove_combined_clearance.inp", "rest", speed=0.0, load=17540.0,
+                       fit=0.0)
+    _, at_rest = _core.ball_step0_from_deck(rest)
+    weight = np.array([0.0, 0.0, at_rest["inner_force_z"] + force[2]])
+    assert weight[2] > 0.0
+    assert np.linalg.norm(race + force - weight) <= 1e-6
+    result = pyadore.run(path, steps=300, out=tmp_path / "dgc.prt", history_element=4)
+    assert result.steps_integrated == 300
+    assert np.max(result.time_history["pocket4_force_N"]) < 1.0
+    # where the power goes: the race contacts (8.0 kW), not the cage pockets (the stopped run
+    # put 1e4 N on a pocket); the race contacts' dissipation is the start's (the print's
+    # step-0 total power loss, 8.1 kW) within 2 % over this short transient (1.4 % apart)
+    bal = result.balance
+    assert bal["cage_work_W"] <= 1e-4 * bal["dissipation_W"]
+    text = (tmp_path / "dgc.prt").read_text()
+    step0_loss = float(text.split("Total Power Loss       (W)")[1].split()[0])
+    assert bal["race_heat_W"] == pytest.approx(step0_loss, rel=0.02)

@@ -7,9 +7,10 @@
 !> by less than 1e-12 relative (race control) or 1e-7 (minimum dissipation, whose search
 !> locates a minimum to ~sqrt(epsilon); it also stops when the speed change moves no
 !> centrifugal force by more than MECH_TOL of the load scale).  The equilibrium is
-!> warm-started from the previous pass.  Balls whose inner contact carries no load have no
-!> traction to set their speed: they orbit with the cage, keep the spin-axis pitch of the
-!> last loaded ball and roll on the outer race (unloaded_kinematics; docs/examples.md).
+!> warm-started from the previous pass.  Balls whose inner contact carries no load, or less
+!> than UNLOADED_FRACTION of the largest, have no traction to set their speed: they orbit
+!> with the cage, keep the spin-axis pitch of the last loaded ball and roll on the outer
+!> race (unloaded_kinematics; docs/examples.md).
 !> The report's start chooses the spin-axis pitch by minimum contact dissipation
 !> (MIN_DISSIPATION, needs the traction curve); race control (CONTROL_OUTER,
 !> CONTROL_INNER) is ADORE's kAngVel alternative.
@@ -35,9 +36,16 @@ module adore_quasistatic_ball_start
                                   "dissipation", "outer-race-control", "inner-race-control"]
    integer, parameter :: START_CODES(3) = [MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER]
    !> A ball whose inner contact load is at most this fraction of the largest inner contact
-   !> load is unloaded: its speed is set by the cage, not by its own traction
-   !> (unloaded_kinematics; docs/examples.md)
-   real(wp), parameter :: UNLOADED_FRACTION = 1.0e-6_wp
+   !> load is carried by the cage: its speed is set by the cage, not by its own traction
+   !> (unloaded_kinematics; docs/examples.md).  Not only an unloaded ball: a ball in the
+   !> unloaded zone that touches the inner race lightly (a combined load with clearance at
+   !> 60 000 rpm: 70 N against 9.9 kN, at a 61 deg inner contact angle) has its own rolling
+   !> orbital speed far from the cage's (34 380 against 22 530 rpm), which its light contact
+   !> cannot hold against the cage; started with it, it crossed its pocket clearance at
+   !> 21 m/s and the run stopped ("abnormal cage contact"; docs/operating-points.md, "Balls
+   !> the cage carries").  5 %: the measured grid cases need more than 1 % (0.7 % and 3.7 %
+   !> balls both hit their pockets at 1 %)
+   real(wp), parameter :: UNLOADED_FRACTION = 5.0e-2_wp
    !> The speeds and the equilibrium are also consistent when the last speed change moves
    !> no centrifugal force by more than this fraction of the load scale (1000 times below
    !> the print's 5 digits): lightly loaded balls have a flat dissipation minimum, located
