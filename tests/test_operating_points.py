@@ -44,6 +44,18 @@ def _variant(tmp_path: Path, base: Path, name: str, speed=None, load=None, fit=N
     return path, force
 
 
+def _runs_and_carries_its_load(path: Path, force: np.ndarray, out: Path):
+    """Run path for 300 time steps; over the last half of the run the inner race's mean
+    contact force balances the applied load and the race's weight (Newton: the residual is
+    the race's mass times its mean acceleration) within 1 % of the load.  Returns the result."""
+    result = pyadore.run(path, steps=300, out=out)
+    assert result.steps_integrated == 300
+    carried = np.linalg.norm(result.balance["inner_carried_N"])
+    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)   # the load and the race weight
+    assert result.balance["inner_residual_N"] <= 0.01 * carried
+    return result
+
+
 @pytest.mark.parametrize("base", [BALL, DEEP_GROOVE], ids=["appendix_c", "deep_groove"])
 def test_shaft_at_rest_is_the_static_solution(tmp_path, base):
     """0 rpm: the balls do not move, nothing slips, nothing is lost; the contact loads are
@@ -204,12 +216,7 @@ def test_grid_subset_runs_and_carries_its_load(tmp_path, deck, speed, load, fit)
     race's mean contact force balances the applied load and the race's weight (Newton: the
     residual is the race's mass times its mean acceleration) within 1 % of the load."""
     path, force = _variant(tmp_path, EXAMPLES / deck, "case", speed=speed, load=load, fit=fit)
-    result = pyadore.run(path, steps=300, out=tmp_path / "case.prt")
-    assert result.steps_integrated == 300
-    bal = result.balance
-    carried = np.linalg.norm(bal["inner_carried_N"])
-    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)   # the load and the race weight
-    assert bal["inner_residual_N"] <= 0.01 * carried
+    _runs_and_carries_its_load(path, force, tmp_path / "case.prt")
 
 
 def test_thin_films_take_the_boundary_curve(tmp_path):
@@ -288,11 +295,7 @@ def test_mixed_film_at_the_threshold_starts_and_balances(tmp_path):
     load (the balance over the last half of the run, within 1 % of the load)."""
     path, force = _variant(tmp_path, EXAMPLES / "iso16281_ex3_radial_clearance.inp", "iso3", speed=1000.0, load=1.0,
                            fit=0.0)
-    result = pyadore.run(path, steps=300, out=tmp_path / "mixed.prt")
-    assert result.steps_integrated == 300
-    carried = np.linalg.norm(result.balance["inner_carried_N"])
-    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)
-    assert result.balance["inner_residual_N"] <= 0.01 * carried
+    _runs_and_carries_its_load(path, force, tmp_path / "mixed.prt")
 
 
 def test_jittering_orbital_speeds_take_the_least_moving_pass(tmp_path):
@@ -320,11 +323,7 @@ def test_jittering_orbital_speeds_take_the_least_moving_pass(tmp_path):
     assert w.mean() * 30.0 / np.pi == pytest.approx(epicyclic, rel=0.01)
     race = np.array([summary["inner_force_x"], summary["inner_force_y"], summary["inner_force_z"]])
     assert np.linalg.norm(race + force) <= 1e-6
-    result = pyadore.run(path, steps=300, out=tmp_path / "iso1.prt")
-    assert result.steps_integrated == 300
-    carried = np.linalg.norm(result.balance["inner_carried_N"])
-    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)
-    assert result.balance["inner_residual_N"] <= 0.01 * carried
+    _runs_and_carries_its_load(path, force, tmp_path / "iso1.prt")
 
 
 def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
