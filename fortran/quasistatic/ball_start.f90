@@ -51,12 +51,13 @@ module adore_quasistatic_ball_start
    !> the print's 5 digits): lightly loaded balls have a flat dissipation minimum, located
    !> only to ~1e-4 of their speed, and their speeds need not settle further
    real(wp), parameter :: MECH_TOL = 1.0e-8_wp
-   !> Minimum dissipation only: when the passes do not settle (a ball whose pitch hardly
-   !> changes its power - a radial bearing preloaded by its fit, the pitch free within a
-   !> degree - moves its orbital speed by 1e-7 to 3e-4 from pass to pass without end), the
-   !> pass whose speed change moved the centrifugal forces least is taken if that change is
-   !> at most this fraction of the equilibrium's largest contact load (100 times below the
-   !> print's 4 digits); docs/operating-points.md, "Orbital speeds that jitter"
+   !> Minimum dissipation only: when the passes do not settle (ISO example 1 at 10 000 rpm,
+   !> 1 N, +20 um fit: every ball preloaded alike by the fit, pitch 0, the orbital speeds
+   !> moving by 1e-7 to 3e-4 relative from pass to pass without end; why the search's speed
+   !> jitters there is not identified), the pass whose speed change moved the centrifugal
+   !> forces least is taken if that change is at most this fraction of the equilibrium's
+   !> largest contact load (100 times below the print's 4 digits); docs/operating-points.md,
+   !> "Orbital speeds that jitter"
    real(wp), parameter :: JITTER_TOL = 1.0e-6_wp
 
    !> The consistent start: equilibrium plus the kinematics of every ball.
