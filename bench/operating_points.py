@@ -12,19 +12,24 @@ field; counted apart: the goal is none), or failed (the engine's message).  Resu
 counts by outcome and by message, written to bench/results/NAME.json (NAME: --out).
 
     .venv/bin/python bench/operating_points.py [--steps 300] [--workers 2] [--decks a.inp,b.inp]
-        [--speeds 0,10] [--loads 1,C0] [--fits 0] [--out NAME] [--rerun failed.csv]
+        [--speeds 0,10] [--loads 1,C0] [--fits 0] [--out NAME] [--rerun a.csv[,b.csv]] [--sample N]
         [--extra '--traction-table t.txt'] [--exe other/adore]
     .venv/bin/python bench/operating_points.py --summarize bench/operating_points_grid.csv
+    .venv/bin/python bench/operating_points.py --merge bench/results/NAME.csv --mark s15
 
 Every case is also appended, as it ends, to bench/results/NAME.csv (deck, speed, load, fit,
 outcome, a message category, the message, seconds, and for a run that ran the balance line's
 revolutions in the window, drive power, dissipation, energy change, drive/dissipation, closure
 and the inner race's force residual as a fraction of its load), so a long grid
-run killed part way keeps what it measured.  ``--rerun`` takes the failed cases of an
-earlier CSV (e.g. after a fix, or with ``--extra`` engine options / ``--exe`` another
-executable to find a cause); ``--summarize`` prints a CSV's failures by message category,
+run killed part way keeps what it measured.  ``--rerun`` takes the failed cases of one or
+more earlier CSVs (e.g. after a fix, or with ``--extra`` engine options / ``--exe`` another
+executable to find a cause), ``--sample N`` adds N cases that ran in the first of them (a
+fixed random choice: did the fix break what ran?); ``--merge`` writes such a re-run's rows
+into bench/operating_points_grid.csv in place of the same cases, marked in its ``rerun``
+column, and prints the before -> after transitions; ``--summarize`` prints a CSV's failures by message category,
 deck, speed, load and fit.  The measured grid and its diagnosis re-runs are kept in
-bench/operating_points_grid.csv (the last full grid, session 14; session 13's in bench/operating_points_grid_s13.csv,
+bench/operating_points_grid.csv (the last full grid, session 15; session 14's in
+bench/operating_points_grid_s14.csv, session 13's in bench/operating_points_grid_s13.csv,
 the one before in bench/operating_points_grid_before.csv) and bench/operating_points_diagnosis.csv
 (docs/operating-points.md, "The dynamic grid, all 14 decks").
 """
@@ -163,6 +168,43 @@ def _case(args) -> dict:
 FIELDS = ("deck", "speed_rpm", "load_N", "fit_m", "outcome", "category", "message", "seconds",
           "revolutions", "drive_W", "dissipation_W", "energy_rate_W", "drive_over_dissipation", "closure",
           "inner_force_residual")
+GRID = ROOT / "bench" / "operating_points_grid.csv"
+
+
+def _key(r: dict) -> tuple:
+    """A case's identity in a CSV: deck, speed, load, fit (as numbers)."""
+    return (r["deck"], float(r["speed_rpm"]), float(r["load_N"]), float(r["fit_m"]))
+
+
+def _short(r: dict) -> str:
+    """A row's outcome for the transition table: "ran" or its message class."""
+    return "ran" if r["outcome"] == "ran" else f"{r['outcome']}: {category(r['message'])[:90]}"
+
+
+def merge(results: Path, mark: str, grid: Path = GRID) -> None:
+    """Write the rows of a re-run (results CSV) into the grid CSV in place of the same cases,
+    their ``rerun`` column set to mark (the other rows keep theirs), and print how the re-run
+    cases moved (before -> after, counted)."""
+    with open(grid, newline="") as f:
+        old = list(csv.DictReader(f))
+    with open(results, newline="") as f:
+        new = {_key(r): r for r in csv.DictReader(f)}
+    moves = collections.Counter()
+    rows = []
+    for r in old:
+        n = new.pop(_key(r), None)
+        if n is not None:
+            moves[(_short(r), _short(n))] += 1
+            r = {k: n.get(k, "") for k in FIELDS} | {"rerun": mark}
+        rows.append({k: r.get(k, "") for k in (*FIELDS, "rerun")})
+    if new:
+        raise SystemExit(f"{len(new)} re-run cases are not in {grid}")
+    with open(grid, "w", newline="") as f:
+        writer = csv.DictWriter(f, (*FIELDS, "rerun"))
+        writer.writeheader()
+        writer.writerows(rows)
+    for (before, after), n in sorted(moves.items(), key=lambda kv: -kv[1]):
+        print(f"  {n:4d}  {before}  ->  {after}")
 
 
 def summarize(rows: list[dict]) -> None:
@@ -189,7 +231,10 @@ def main() -> int:
     ap.add_argument("--speeds", default="", help="comma-separated shaft speeds, rpm (default: the grid's)")
     ap.add_argument("--loads", default="", help="comma-separated loads, N, or C0 (default: the grid's)")
     ap.add_argument("--fits", default="", help="comma-separated inner race fits, m (default: the grid's)")
-    ap.add_argument("--rerun", default="", help="a CSV of an earlier run: run its failed cases again")
+    ap.add_argument("--rerun", default="", help="CSVs of earlier runs (comma-separated): run their failed cases again")
+    ap.add_argument("--sample", type=int, default=0, help="with --rerun: also N cases that ran in the first CSV")
+    ap.add_argument("--merge", default="", help="a re-run's CSV: write its rows into the grid CSV, marked")
+    ap.add_argument("--mark", default="rerun", help="with --merge: the rerun column's value")
     ap.add_argument("--out", default="operating_points", help="name of the results in bench/results/")
     ap.add_argument("--exe", default=os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore")))
     ap.add_argument("--extra", default="", help="further engine options, e.g. '--traction-table t.txt' (diagnosis)")
@@ -199,6 +244,9 @@ def main() -> int:
         with open(a.summarize, newline="") as f:
             summarize(list(csv.DictReader(f)))
         return 0
+    if a.merge:
+        merge(Path(a.merge), a.mark)
+        return 0
     extra = a.extra.split()
     decks = [Path(d) for d in a.decks.split(",")] if a.decks else _ball_decks()
     speeds = _floats(a.speeds) if a.speeds else SPEEDS
@@ -207,12 +255,18 @@ def main() -> int:
     cases = []
     capacities = {}
     if a.rerun:
-        with open(a.rerun, newline="") as f:
-            old = [r for r in csv.DictReader(f) if r["outcome"] != "ran"]
+        old = {}
+        for k, name in enumerate(a.rerun.split(",")):
+            with open(name, newline="") as f:
+                rows_k = list(csv.DictReader(f))
+            old |= {_key(r): r for r in rows_k if r["outcome"] != "ran"}
+            if k == 0 and a.sample:
+                ran = sorted(_key(r) for r in rows_k if r["outcome"] == "ran")
+                pick = np.random.default_rng(15).choice(len(ran), size=min(a.sample, len(ran)), replace=False)
+                old |= {ran[j]: {} for j in sorted(pick)}
         by_name = {d.name: d for d in _ball_decks()}
-        for r in old:
-            cases.append((str(by_name[r["deck"]]), float(r["speed_rpm"]), float(r["load_N"]),
-                          float(r["fit_m"]), a.steps, a.exe, extra))
+        for deck, speed, load, fit in old:
+            cases.append((str(by_name[deck]), speed, load, fit, a.steps, a.exe, extra))
     else:
         cache = ROOT / "bench" / "results" / "static_capacity.json"
         known = json.loads(cache.read_text()) if cache.exists() else {}

@@ -44,6 +44,18 @@ def _variant(tmp_path: Path, base: Path, name: str, speed=None, load=None, fit=N
     return path, force
 
 
+def _runs_and_carries_its_load(path: Path, force: np.ndarray, out: Path):
+    """Run path for 300 time steps; over the last half of the run the inner race's mean
+    contact force balances the applied load and the race's weight (Newton: the residual is
+    the race's mass times its mean acceleration) within 1 % of the load.  Returns the result."""
+    result = pyadore.run(path, steps=300, out=out)
+    assert result.steps_integrated == 300
+    carried = np.linalg.norm(result.balance["inner_carried_N"])
+    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)   # the load and the race weight
+    assert result.balance["inner_residual_N"] <= 0.01 * carried
+    return result
+
+
 @pytest.mark.parametrize("base", [BALL, DEEP_GROOVE], ids=["appendix_c", "deep_groove"])
 def test_shaft_at_rest_is_the_static_solution(tmp_path, base):
     """0 rpm: the balls do not move, nothing slips, nothing is lost; the contact loads are
@@ -204,12 +216,7 @@ def test_grid_subset_runs_and_carries_its_load(tmp_path, deck, speed, load, fit)
     race's mean contact force balances the applied load and the race's weight (Newton: the
     residual is the race's mass times its mean acceleration) within 1 % of the load."""
     path, force = _variant(tmp_path, EXAMPLES / deck, "case", speed=speed, load=load, fit=fit)
-    result = pyadore.run(path, steps=300, out=tmp_path / "case.prt")
-    assert result.steps_integrated == 300
-    bal = result.balance
-    carried = np.linalg.norm(bal["inner_carried_N"])
-    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)   # the load and the race weight
-    assert bal["inner_residual_N"] <= 0.01 * carried
+    _runs_and_carries_its_load(path, force, tmp_path / "case.prt")
 
 
 def test_thin_films_take_the_boundary_curve(tmp_path):
@@ -288,8 +295,75 @@ def test_mixed_film_at_the_threshold_starts_and_balances(tmp_path):
     load (the balance over the last half of the run, within 1 % of the load)."""
     path, force = _variant(tmp_path, EXAMPLES / "iso16281_ex3_radial_clearance.inp", "iso3", speed=1000.0, load=1.0,
                            fit=0.0)
-    result = pyadore.run(path, steps=300, out=tmp_path / "mixed.prt")
+    _runs_and_carries_its_load(path, force, tmp_path / "mixed.prt")
+
+
+def test_jittering_orbital_speeds_take_the_least_moving_pass(tmp_path):
+    """ISO/TS 16281 example 1 (radial, no clearance) at 10 000 rpm, 1 N and a +20 um fit: the
+    fit loads every ball alike (216 N inner, 236 N outer against 1 N applied).  The start's
+    passes moved the orbital speeds by 1e-7 to 3e-4 relative from pass to pass without
+    settling (the centrifugal test's 1e-8 of the load scale never met in 50 passes) and the
+    start stopped ("orbital speeds and equilibrium did not become consistent").  Now the
+    pass whose speed change moved the centrifugal forces least is taken when that change is
+    at most 1e-6 of the largest contact load (fortran/quasistatic/ball_start.f90
+    JITTER_TOL).  Checked: the balls, loaded alike, orbit alike (1e-6) at the epicyclic
+    speed of a ball rolling at both contacts (within 1 %: the minimum-dissipation start
+    rolls at the inner contact, the outer one slides a little); the equilibrium's inner race
+    carries the applied 1 N (1e-6 N); the run integrates its 300 steps and its inner race
+    carries the load within 1 % over the last half."""
+    path, force = _variant(tmp_path, EXAMPLES / "iso16281_ex1_radial.inp", "iso1", speed=10000.0, load=1.0,
+                           fit=20e-6)
+    balls, summary = _core.ball_step0_from_deck(path)
+    assert np.all(balls["q_i"] > 100.0)                   # the fit, not the applied 1 N, loads them
+    w = balls["orbital_speed"]
+    assert np.ptp(w) <= 1e-6 * np.max(np.abs(w))
+    deck = read_deck(path)
+    d, dm = deck.lookup("ball_diameter"), deck.lookup("pitch_diameter")
+    epicyclic = 0.5 * 10000.0 * (1.0 - d / dm)             # rpm, zero contact angle, outer race at rest
+    assert w.mean() * 30.0 / np.pi == pytest.approx(epicyclic, rel=0.01)
+    race = np.array([summary["inner_force_x"], summary["inner_force_y"], summary["inner_force_z"]])
+    assert np.linalg.norm(race + force) <= 1e-6
+    _runs_and_carries_its_load(path, force, tmp_path / "iso1.prt")
+
+
+def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
+    """The deep-groove deck with 50 um clearance under its combined load at the static
+    capacity (17 540 N) and 60 000 rpm.  Balls 4 and 5, in the unloaded zone, touch the inner
+    race with 70 N (0.7 % of ball 1's 9.9 kN) at a 61 deg contact angle; their own rolling
+    orbital speed was 34 380 rpm against 22 530 rpm for the loaded balls and the cage's
+    26 740.  Started with it, ball 4 crossed its 113 um pocket gap at 21 m/s: its pocket
+    force grew from 0.25 N to 9 954 N in 41 steps and the run stopped ("an abnormal cage
+    contact: ball 4's pocket").  Balls whose inner contact carries at most 5 % of the largest
+    inner load are now carried by the cage (fortran/quasistatic/ball_start.f90
+    UNLOADED_FRACTION).  Checked: those balls orbit at the mean speed of the others; the
+    start's equilibrium carries the applied load and the race's weight (1e-6 N); the run integrates its 300 steps
+    with ball 4's pocket force below 1 N, the cage pockets take at most 1e-4 of the
+    dissipation (nothing is lost in collisions), and the race contacts dissipate what the
+    start's contacts lose (the step-0 print's total power loss)."""
+    path, force = _variant(tmp_path, EXAMPLES / "deep_groove_combined_clearance.inp", "dgc", speed=60000.0,
+                           load=17540.0, fit=0.0)
+    balls, summary = _core.ball_step0_from_deck(path)
+    light = balls["q_i"] <= 0.05 * np.max(balls["q_i"])
+    assert 0 < light.sum() < light.size
+    w = balls["orbital_speed"]
+    assert np.allclose(w[light], w[~light].mean(), rtol=1e-12)
+    # the balls' force on the inner race balances the applied load and the race's weight
+    # (gravity along -z), the weight that the same deck's static solution at rest implies
+    race = np.array([summary["inner_force_x"], summary["inner_force_y"], summary["inner_force_z"]])
+    rest, _ = _variant(tmp_path, EXAMPLES / "deep_groove_combined_clearance.inp", "rest", speed=0.0, load=17540.0,
+                       fit=0.0)
+    _, at_rest = _core.ball_step0_from_deck(rest)
+    weight = np.array([0.0, 0.0, at_rest["inner_force_z"] + force[2]])
+    assert weight[2] > 0.0
+    assert np.linalg.norm(race + force - weight) <= 1e-6
+    result = pyadore.run(path, steps=300, out=tmp_path / "dgc.prt", history_element=4)
     assert result.steps_integrated == 300
-    carried = np.linalg.norm(result.balance["inner_carried_N"])
-    assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)
-    assert result.balance["inner_residual_N"] <= 0.01 * carried
+    assert np.max(result.time_history["pocket4_force_N"]) < 1.0
+    # where the power goes: the race contacts (8.0 kW), not the cage pockets (the stopped run
+    # put 1e4 N on a pocket); the race contacts' dissipation is the start's (the print's
+    # step-0 total power loss, 8.1 kW) within 2 % over this short transient (1.4 % apart)
+    bal = result.balance
+    assert bal["cage_work_W"] <= 1e-4 * bal["dissipation_W"]
+    text = (tmp_path / "dgc.prt").read_text()
+    step0_loss = float(text.split("Total Power Loss       (W)")[1].split()[0])
+    assert bal["race_heat_W"] == pytest.approx(step0_loss, rel=0.02)

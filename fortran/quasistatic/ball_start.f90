@@ -7,9 +7,10 @@
 !> by less than 1e-12 relative (race control) or 1e-7 (minimum dissipation, whose search
 !> locates a minimum to ~sqrt(epsilon); it also stops when the speed change moves no
 !> centrifugal force by more than MECH_TOL of the load scale).  The equilibrium is
-!> warm-started from the previous pass.  Balls whose inner contact carries no load have no
-!> traction to set their speed: they orbit with the cage, keep the spin-axis pitch of the
-!> last loaded ball and roll on the outer race (unloaded_kinematics; docs/examples.md).
+!> warm-started from the previous pass.  Balls whose inner contact carries no load, or less
+!> than UNLOADED_FRACTION of the largest, have no traction to set their speed: they orbit
+!> with the cage, keep the spin-axis pitch of the last loaded ball and roll on the outer
+!> race (unloaded_kinematics; docs/examples.md).
 !> The report's start chooses the spin-axis pitch by minimum contact dissipation
 !> (MIN_DISSIPATION, needs the traction curve); race control (CONTROL_OUTER,
 !> CONTROL_INNER) is ADORE's kAngVel alternative.
@@ -35,20 +36,38 @@ module adore_quasistatic_ball_start
                                   "dissipation", "outer-race-control", "inner-race-control"]
    integer, parameter :: START_CODES(3) = [MIN_DISSIPATION, CONTROL_OUTER, CONTROL_INNER]
    !> A ball whose inner contact load is at most this fraction of the largest inner contact
-   !> load is unloaded: its speed is set by the cage, not by its own traction
-   !> (unloaded_kinematics; docs/examples.md)
-   real(wp), parameter :: UNLOADED_FRACTION = 1.0e-6_wp
+   !> load is carried by the cage: its speed is set by the cage, not by its own traction
+   !> (unloaded_kinematics; docs/examples.md).  Not only an unloaded ball: a ball in the
+   !> unloaded zone that touches the inner race lightly (a combined load with clearance at
+   !> 60 000 rpm: 70 N against 9.9 kN, at a 61 deg inner contact angle) has its own rolling
+   !> orbital speed far from the cage's (34 380 against 22 530 rpm), which its light contact
+   !> cannot hold against the cage; started with it, it crossed its pocket clearance at
+   !> 21 m/s and the run stopped ("abnormal cage contact"; docs/operating-points.md, "Balls
+   !> the cage carries").  5 %: the measured grid cases need more than 1 % (0.7 % and 3.7 %
+   !> balls both hit their pockets at 1 %)
+   real(wp), parameter :: UNLOADED_FRACTION = 5.0e-2_wp
    !> The speeds and the equilibrium are also consistent when the last speed change moves
    !> no centrifugal force by more than this fraction of the load scale (1000 times below
    !> the print's 5 digits): lightly loaded balls have a flat dissipation minimum, located
    !> only to ~1e-4 of their speed, and their speeds need not settle further
    real(wp), parameter :: MECH_TOL = 1.0e-8_wp
+   !> Minimum dissipation only: when the passes do not settle (ISO example 1 at 10 000 rpm,
+   !> 1 N, +20 um fit: every ball preloaded alike by the fit, pitch 0, the orbital speeds
+   !> moving by 1e-7 to 3e-4 relative from pass to pass without end; why the search's speed
+   !> jitters there is not identified), the pass whose speed change moved the centrifugal
+   !> forces least is taken if that change is at most this fraction of the equilibrium's
+   !> largest contact load (100 times below the print's 4 digits); docs/operating-points.md,
+   !> "Orbital speeds that jitter"
+   real(wp), parameter :: JITTER_TOL = 1.0e-6_wp
 
    !> The consistent start: equilibrium plus the kinematics of every ball.
    type :: ball_start_t
       type(ball_qs_solution_t) :: equilibrium
       type(ball_kinematics_t), allocatable :: kinematics(:)
       integer :: passes = 0                !< mechanics/kinematics passes
+      !> 0, or when the passes did not settle: the centrifugal change of the pass taken,
+      !> relative to the largest contact load (at most JITTER_TOL)
+      real(wp) :: jitter = 0.0_wp
    end type ball_start_t
 
 contains
@@ -108,8 +127,9 @@ contains
       type(ball_start_t), intent(in), optional :: guess
       real(wp), intent(in), optional :: centrifugal_tol
 
-      real(wp), allocatable :: speed(:), new_speed(:)
-      real(wp) :: d_i(2), d_o(2), change, previous, previous_speed, tol, fscale, mech, mtol
+      real(wp), allocatable :: speed(:), new_speed(:), best_speed(:)
+      real(wp) :: d_i(2), d_o(2), change, previous, previous_speed, tol, fscale, mech, mtol, jitter, best_jitter
+      type(ball_kinematics_t), allocatable :: best_kinematics(:)
       integer :: pass, k
       logical :: first
       logical, allocatable :: loaded(:)
@@ -138,6 +158,7 @@ contains
          speed = guess%kinematics%orbital_speed
          start%kinematics = guess%kinematics
       end if
+      best_jitter = huge(1.0_wp)
       do pass = 1, 50
          call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
          if (allocated(error)) return
@@ -195,13 +216,28 @@ contains
          mech = huge(1.0_wp)
          if (control == MIN_DISSIPATION) &
             mech = maxval(b%ball_mass*start%equilibrium%r*abs(new_speed**2 - speed**2))/fscale
+         if (control == MIN_DISSIPATION) then
+            ! the same change against the equilibrium's own load scale (its largest contact)
+            jitter = mech*fscale/max(fscale, start_contact_load(start))
+            if (jitter < best_jitter) then
+               best_jitter = jitter
+               best_speed = new_speed
+               best_kinematics = start%kinematics
+            end if
+         end if
          speed = new_speed
          start%passes = pass
          if (change <= tol .or. mech <= mtol) exit
       end do
       if (change > tol .and. mech > mtol) then
-         call engine_error(error, "ball start: orbital speeds and equilibrium did not become consistent")
-         return
+         if (.not. best_jitter <= JITTER_TOL) then
+            call engine_error(error, "ball start: orbital speeds and equilibrium did not become consistent")
+            return
+         end if
+         ! the passes jitter within JITTER_TOL: the least moving pass (documented fallback)
+         speed = best_speed
+         start%kinematics = best_kinematics
+         start%jitter = best_jitter
       end if
       ! final equilibrium at the converged speeds
       call solve_ball_equilibrium(b, ld, speed, start%equilibrium, error)
