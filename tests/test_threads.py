@@ -15,6 +15,7 @@ import sys
 import pytest
 
 import pyadore
+from builds import checks_build
 
 THREADS_LINE = "  DERIVATIVE ON "
 
@@ -56,10 +57,16 @@ def test_files_same_on_one_and_two_threads(kind, adore_exe, short_ball_deck, sho
         assert (tmp_path / "one.elements.bin").read_bytes() == (tmp_path / "two.elements.bin").read_bytes()
 
 
-def test_extension_on_two_threads_equals_the_executable(adore_exe, short_ball_deck, tmp_path):
+def test_extension_on_two_threads_equals_the_executable(adore_exe, build_dir, short_ball_deck, tmp_path):
     """pyadore.run(threads=2) (the f2py extension, linked with OpenMP) prints what the
-    executable prints on one thread."""
-    one = _run(adore_exe, short_ball_deck, tmp_path / "exe.prt", "--threads", 1)
+    executable prints on one thread.  `make debug` pairs a debug `adore` with the release
+    extension, whose round-off differs (tests/builds.py; after 60 steps of the implicit method
+    their step sequences part): there the extension on 2 threads is held to itself on 1."""
+    if checks_build(build_dir):
+        one = pyadore.run(short_ball_deck, out=tmp_path / "ext1.prt", threads=1, progress=False)
+        one = one.print_path.read_text().splitlines()
+    else:
+        one = _run(adore_exe, short_ball_deck, tmp_path / "exe.prt", "--threads", 1)
     result = pyadore.run(short_ball_deck, out=tmp_path / "ext.prt", threads=2, progress=False)
     two = result.print_path.read_text().splitlines()
     assert _threads_line(two).startswith(THREADS_LINE + "2 THREADS ")
