@@ -345,8 +345,9 @@ def test_carried_balls_keep_their_class_from_pass_to_pass(tmp_path):
     force = np.array([deck.lookup(f"applied_force_{c}") for c in "xyz"], dtype=float)
     balls, summary = _core.ball_step0_from_deck(path)
     q, w = balls["q_i"], balls["orbital_speed"]
-    mean = w[q > 0.1 * q.max()].mean()
-    carried = np.isclose(w, mean, rtol=1e-12, atol=0.0)
+    # a carried ball orbits at the mean speed of the balls with their own speeds (all of
+    # them: loaded in the first pass, they stay loaded down to 5 %)
+    carried = np.array([np.isclose(w[k], w[w != w[k]].mean(), rtol=1e-12, atol=0.0) for k in range(w.size)])
     # measured: ball 10 (5.2 % of the largest inner load) carried, balls 9 and 11 (6.2 %) on their own
     assert 1 <= carried.sum() < carried.size and np.all(q[carried] <= 0.1 * q.max())
     race = np.array([summary["inner_force_x"], summary["inner_force_y"], summary["inner_force_z"]])
