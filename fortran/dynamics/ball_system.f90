@@ -14,8 +14,8 @@ module adore_dynamics_ball_system
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, engine_error
    use adore_core_strings, only: itoa
-   use adore_core_rotation, only: quat_from_rotation_vector
-   use adore_model_bearing, only: BODY_ELEMENT, bearing_t
+   use adore_core_rotation, only: quat_from_rotation_vector, quat_matrix
+   use adore_model_bearing, only: BODY_CAGE, BODY_ELEMENT, BODY_INNER, bearing_t
    use adore_model_condition, only: dof_constraints_t
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, state_size, pack_state, unpack_state, &
@@ -102,8 +102,13 @@ module adore_dynamics_ball_system
       type(ball_bearing_loads_t) :: loads    !< the loads of the last evaluation
       integer :: calls = 0                   !< evaluations so far
       type(error_type), allocatable :: failure   !< why the last evaluation returned DERIV_FAIL
+      !> the border of the integrator's arrowhead Jacobian (packed indices; set by
+      !> start_ball_dynamics: the inner race's translation and a free cage's unknowns), whose
+      !> rows border_shares gives per ball (docs/dynamics.md, "The stiff-aware method")
+      integer, allocatable :: jacobian_border(:)
    contains
       procedure :: eval => ball_system_eval
+      procedure :: border_shares => ball_border_shares
    end type ball_system_t
 
 contains
@@ -182,6 +187,54 @@ contains
          flag = DERIV_FAIL
       end if
    end subroutine ball_system_eval
+
+   !> Each ball's share of the last evaluation's rates of the Jacobian's border unknowns
+   !> (jacobian_border; per unit of tau), shares(i, k) for border unknown i and ball k: the
+   !> border's rates are linear in the loads on its bodies, which are sums over the balls of
+   !> what each ball's contacts put on them (action and reaction) plus loads of the border
+   !> bodies alone.  The inner race's velocity rows: T F_k / m_race, F_k the force of ball k's
+   !> contacts on the race (ball_bearing_loads' race_shares); a free cage's velocity rows
+   !> T F_k / m_cage and angular-velocity rows T (R**T M_k)_i / I_i (Euler's equations are
+   !> linear in the moment), F_k, M_k its pocket contact's force and moment on the cage.
+   !> Positions and attitudes (their rates are velocities) and the race's prescribed rotation:
+   !> 0.  ok = .false. when the last evaluation has no loads.
+   subroutine ball_border_shares(self, shares, ok)
+      class(ball_system_t), intent(in) :: self
+      real(wp), intent(out) :: shares(:, :)
+      logical, intent(out) :: ok
+      integer :: i, k, n, body, comp
+      real(wp) :: rot(3, 3)
+      shares = 0.0_wp
+      n = size(self%state%elements)
+      ok = allocated(self%jacobian_border) .and. allocated(self%loads%race_shares) .and. &
+           .not. allocated(self%failure_reason)
+      if (ok) ok = size(shares, 1) == size(self%jacobian_border) .and. size(shares, 2) == n .and. &
+                   size(self%loads%race_shares, 2) == n
+      if (.not. ok) return
+      rot = quat_matrix(self%state%cage%attitude)
+      associate (b => self%bearing, tt => self%time_scale)
+         do i = 1, size(self%jacobian_border)
+            body = (self%jacobian_border(i) - 1)/BODY_SIZE + 1
+            comp = self%jacobian_border(i) - BODY_SIZE*(body - 1)
+            if (body == n + 3 .and. comp >= 4 .and. comp <= 6) then
+               do k = 1, n
+                  shares(i, k) = tt*self%loads%race_shares(RACE_INNER, k)%force(comp - 3)/b%mass(BODY_INNER)
+               end do
+            else if (body == n + 1 .and. allocated(self%loads%pockets)) then
+               if (comp >= 4 .and. comp <= 6) then
+                  do k = 1, n
+                     shares(i, k) = tt*self%loads%pockets(k)%force_cage(comp - 3)/b%mass(BODY_CAGE)
+                  end do
+               else if (comp >= 11) then
+                  do k = 1, n
+                     shares(i, k) = tt*dot_product(self%loads%pockets(k)%moment_cage, rot(:, comp - 10))/ &
+                                    b%moments(comp - 10, BODY_CAGE)
+                  end do
+               end if
+            end if
+         end do
+      end associate
+   end subroutine ball_border_shares
 
    !> The body of unknown i of a packed state of n balls (adore_state_bearing_state's order):
    !> "ball k", "the cage", "the outer race", "the inner race" or "the temperatures".
@@ -376,9 +429,15 @@ contains
          call it%init(size(y), settings, error, scale=state_error_scale(b%n_elements, l, tt))
       end if
       if (allocated(error)) return
-      ! each ball's block of the Jacobian (used by the Rosenbrock-W method only): the balls
-      ! touch the races and the cage, never another ball
-      call it%set_jacobian_blocks([(BODY_SIZE*(k - 1) + 1, k=1, b%n_elements)], BODY_SIZE, BALL_JACOBIAN_COLUMNS, error)
+      ! the linearly implicit methods' arrowhead Jacobian: each ball's block (the balls touch
+      ! the races and the cage, never another ball), bordered by the inner race's translation
+      ! and, when free, the cage (every ball touches them; issue #28: the balls' contact mode
+      ! against the race is then implicit too)
+      sys%jacobian_border = [(BODY_SIZE*(b%n_elements + 2) + k, k=1, 6)]
+      if (.not. sys%cage_spin_only) sys%jacobian_border = [(BODY_SIZE*b%n_elements + k, k=1, BODY_SIZE), &
+                                                           sys%jacobian_border]
+      call it%set_jacobian_blocks([(BODY_SIZE*(k - 1) + 1, k=1, b%n_elements)], BODY_SIZE, BALL_JACOBIAN_COLUMNS, &
+                                  error, border=sys%jacobian_border)
    end subroutine start_ball_dynamics
 
 end module adore_dynamics_ball_system

@@ -1,16 +1,30 @@
 !> A block-diagonal approximation of the Jacobian df/dy for the integrator's linearly implicit
-!> (Rosenbrock-W) methods, and its W = I - h gamma J factorised block by block.
+!> methods (Rosenbrock-W, IMEX), bordered by a few coupling unknowns (an "arrowhead"), and its
+!> W = I - h gamma J factorised block by block with the border by its Schur complement.
 !>
 !> The system names its blocks: nb equally sized groups of m consecutive unknowns (first(b)
 !> .. first(b) + m - 1, e.g. the 13 values of each rolling element) whose rates depend on
-!> their own block and on unknowns outside every block, never directly on another block's
-!> (each ball touches the races and the cage, not another ball).  Within a block only the
-!> listed columns cols(:) are approximated (e.g. a ball's position and velocity, the
-!> contact's stiffness and damping); the others are zero, and so is everything outside the
-!> blocks: those unknowns are treated explicitly by the method.  With that structure a
+!> their own block, on the border unknowns and on unknowns outside both, never directly on
+!> another block's (each ball touches the races and the cage, not another ball).  Within a
+!> block only the listed columns cols(:) are approximated (e.g. a ball's position and
+!> velocity, the contact's stiffness and damping); the others are zero.  With that structure a
 !> column c of every block can be differenced at once (one derivative call for all blocks:
-!> a "colouring", Curtis, Powell & Reid, IMA J. Appl. Math. 13 (1974) 117-119), so a
-!> Jacobian costs size(cols) derivative calls whatever the number of blocks.
+!> a "colouring", Curtis, Powell & Reid, IMA J. Appl. Math. 13 (1974) 117-119), so the blocks
+!> cost size(cols) derivative calls whatever the number of blocks.
+!>
+!> The border (optional): nr unknowns border(:) outside every block (e.g. the inner race's
+!> translation, which every ball touches).  J then has, besides the blocks A_b, the columns
+!> B_b = df_b/dy_r (m x nr, every row of the block), the rows C_b = df_r/dy_b (nr x m, the
+!> columns cols(:)) and the corner D = df_r/dy_r (nr x nr): an arrowhead matrix
+!>     J = [ A_1          B_1 ]
+!>         [      ...     ... ]
+!>         [          A_nb B_nb]
+!>         [ C_1 ... C_nb  D  ].
+!> W x = v is solved by the Schur complement of the border (Golub & Van Loan, Matrix
+!> Computations, 4th ed., 3.2.11 and 4.5.5 "block tridiagonal/arrowhead" elimination):
+!>     E_b = (I - hg A_b)**-1 (hg B_b),   S = I - hg D - hg sum_b C_b E_b   (nr x nr),
+!>     w_b = (I - hg A_b)**-1 v_b,   S x_r = v_r + hg sum_b C_b w_b,   x_b = w_b + E_b x_r.
+!> Everything outside the blocks and the border is zero in J (treated explicitly).
 module adore_dynamics_block_jacobian
    use adore_core_kinds, only: wp
    implicit none
@@ -18,38 +32,58 @@ module adore_dynamics_block_jacobian
 
    public :: block_jacobian_t
 
-   !> The blocks, their Jacobian blocks and the LU factors of I - hg J.
+   !> The blocks, the border, their Jacobian parts and the factors of I - hg J.
    type :: block_jacobian_t
       integer :: m = 0                        !< unknowns per block
       integer, allocatable :: first(:)        !< first unknown of each block
       integer, allocatable :: cols(:)         !< columns (1..m) approximated in every block
-      real(wp), allocatable :: j(:, :, :)     !< (m, m, nb) df_block/dy_block (per unit of t)
-      real(wp), allocatable :: lu(:, :, :)    !< (m, m, nb) LU factors of I - hg J (unit lower L), transposed
+      real(wp), allocatable :: j(:, :, :)     !< (m, m, nb) A_b = df_block/dy_block (per unit of t)
+      real(wp), allocatable :: lu(:, :, :)    !< (m, m, nb) LU factors of I - hg A_b (unit lower L), transposed
       integer, allocatable :: piv(:, :)       !< (m, nb) row interchanges of the factorisation
       real(wp) :: hg = -1.0_wp                !< h gamma of the factors (unit of t); < 0: none
+      integer, allocatable :: border(:)       !< (nr) the border unknowns; not allocated: no border
+      real(wp), allocatable :: bj(:, :, :)    !< (m, nr, nb) B_b = df_block/dy_border
+      real(wp), allocatable :: cj(:, :, :)    !< (nr, m, nb) C_b = df_border/dy_block (columns cols only)
+      real(wp), allocatable :: dj(:, :)       !< (nr, nr) D = df_border/dy_border
+      real(wp), allocatable :: e(:, :, :)     !< (m, nr, nb) E_b = (I - hg A_b)**-1 hg B_b
+      real(wp), allocatable :: slu(:, :)      !< (nr, nr) LU factors of the Schur complement S, transposed
+      integer, allocatable :: spiv(:)         !< (nr) its row interchanges
    contains
       procedure :: setup
       procedure :: factor
       procedure :: solve
       procedure :: multiply
       procedure :: active
+      procedure :: bordered
    end type block_jacobian_t
 
 contains
 
-   !> Blocks of m unknowns starting at first(:), columns cols(:) (1..m) approximated; J = 0.
-   !> ok = .false. for blocks outside 1..n or overlapping, or columns outside 1..m.
-   subroutine setup(self, n, first, m, cols, ok)
+   !> Blocks of m unknowns starting at first(:) of a state of n unknowns, columns cols(:) (1..m)
+   !> approximated; border(:) (optional) the border unknowns; J = 0.  ok = .false. for blocks
+   !> outside 1..n or overlapping, columns outside 1..m, or border unknowns outside 1..n,
+   !> repeated or inside a block.
+   subroutine setup(self, n, first, m, cols, ok, border)
       class(block_jacobian_t), intent(inout) :: self
       integer, intent(in) :: n, first(:), m, cols(:)
       logical, intent(out) :: ok
-      integer :: b, nb
+      integer, intent(in), optional :: border(:)
+      integer :: b, nb, i, nr
       nb = size(first)
       ok = m >= 1 .and. nb >= 1 .and. size(cols) >= 1
       if (ok) ok = all(first >= 1) .and. all(first + m - 1 <= n) .and. all(cols >= 1) .and. all(cols <= m)
       do b = 2, nb
          if (ok) ok = all(abs(first(b) - first(1:b - 1)) >= m)
       end do
+      if (present(border)) then
+         nr = size(border)
+         if (ok) ok = nr >= 1
+         if (ok) ok = all(border >= 1) .and. all(border <= n)
+         do i = 1, nr
+            if (.not. ok) exit
+            ok = count(border == border(i)) == 1 .and. .not. any(border(i) >= first .and. border(i) <= first + m - 1)
+         end do
+      end if
       if (.not. ok) return
       self%m = m
       self%first = first
@@ -57,6 +91,14 @@ contains
       allocate (self%j(m, m, nb), self%lu(m, m, nb), self%piv(m, nb))
       self%j = 0.0_wp
       self%hg = -1.0_wp
+      if (present(border)) then
+         self%border = border
+         allocate (self%bj(m, nr, nb), self%cj(nr, m, nb), self%dj(nr, nr), self%e(m, nr, nb), self%slu(nr, nr), &
+                   self%spiv(nr))
+         self%bj = 0.0_wp
+         self%cj = 0.0_wp
+         self%dj = 0.0_wp
+      end if
    end subroutine setup
 
    !> Whether blocks are set.
@@ -65,83 +107,92 @@ contains
       active = allocated(self%first)
    end function active
 
-   !> LU factors (partial pivoting) of I - hg J of every block (hg = h gamma, unit of t);
-   !> ok = .false. when a block is singular.
+   !> Whether a border is set.
+   pure logical function bordered(self)
+      class(block_jacobian_t), intent(in) :: self
+      bordered = allocated(self%border)
+   end function bordered
+
+   !> LU factors (partial pivoting) of I - hg A_b of every block (hg = h gamma, unit of t) and,
+   !> with a border, E_b and the factors of the Schur complement S (module header);
+   !> ok = .false. when a block or S is singular.
    subroutine factor(self, hg, ok)
       class(block_jacobian_t), intent(inout) :: self
       real(wp), intent(in) :: hg
       logical, intent(out) :: ok
-      integer :: b, i, k, p, m
-      real(wp) :: row(self%m), a(self%m, self%m)
+      integer :: b, i, m, nr, k
+      real(wp) :: a(self%m, self%m)
+      real(wp), allocatable :: s(:, :)
       m = self%m
       ok = .true.
       do b = 1, size(self%first)
-         associate (piv => self%piv(:, b))
-            a = -hg*self%j(:, :, b)
-            do i = 1, m
-               a(i, i) = a(i, i) + 1.0_wp
-            end do
-            do k = 1, m
-               p = k - 1 + maxloc(abs(a(k:m, k)), 1)
-               piv(k) = p
-               if (a(p, k) == 0.0_wp) then
-                  ok = .false.
-                  self%hg = -1.0_wp
-                  return
-               end if
-               if (p /= k) then
-                  row = a(k, :)
-                  a(k, :) = a(p, :)
-                  a(p, :) = row
-               end if
-               a(k + 1:m, k) = a(k + 1:m, k)/a(k, k)
-               ! the update column by column (contiguous): each element sees the same operations
-               do i = k + 1, m
-                  a(k + 1:m, i) = a(k + 1:m, i) - a(k + 1:m, k)*a(k, i)
-               end do
-            end do
-         end associate
+         a = -hg*self%j(:, :, b)
+         do i = 1, m
+            a(i, i) = a(i, i) + 1.0_wp
+         end do
+         call lu_factor(a, self%piv(:, b), ok)
+         if (.not. ok) then
+            self%hg = -1.0_wp
+            return
+         end if
          self%lu(:, :, b) = transpose(a)      ! rows of the factors contiguous for solve
       end do
+      if (self%bordered()) then
+         nr = size(self%border)
+         s = -hg*self%dj
+         do i = 1, nr
+            s(i, i) = s(i, i) + 1.0_wp
+         end do
+         do b = 1, size(self%first)
+            do k = 1, nr
+               self%e(:, k, b) = hg*self%bj(:, k, b)
+               call lu_solve(self%lu(:, :, b), self%piv(:, b), self%e(:, k, b))
+            end do
+            s = s - hg*matmul(self%cj(:, :, b), self%e(:, :, b))
+         end do
+         call lu_factor(s, self%spiv, ok)
+         if (.not. ok) then
+            self%hg = -1.0_wp
+            return
+         end if
+         self%slu = transpose(s)
+      end if
       self%hg = hg
    end subroutine factor
 
-   !> v := (I - hg J)**-1 v on the blocks' unknowns (the factors of the last factor call);
-   !> the unknowns outside the blocks unchanged (their W is the identity).
+   !> v := (I - hg J)**-1 v on the blocks' and the border's unknowns (the factors of the last
+   !> factor call; module header); the other unknowns unchanged (their W is the identity).
    subroutine solve(self, v)
       class(block_jacobian_t), intent(in) :: self
       real(wp), intent(inout) :: v(:)
-      integer :: b, k, i0, m
-      real(wp) :: x(self%m), s
+      integer :: b, i0, m
+      real(wp), allocatable :: r(:)
       m = self%m
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
-         x = v(i0 + 1:i0 + m)
-         associate (at => self%lu(:, :, b), piv => self%piv(:, b))
-            do k = 1, m
-               if (piv(k) /= k) then
-                  s = x(k)
-                  x(k) = x(piv(k))
-                  x(piv(k)) = s
-               end if
-            end do
-            do k = 2, m
-               x(k) = x(k) - dot_product(at(1:k - 1, k), x(1:k - 1))
-            end do
-            do k = m, 1, -1
-               x(k) = (x(k) - dot_product(at(k + 1:m, k), x(k + 1:m)))/at(k, k)
-            end do
-         end associate
-         v(i0 + 1:i0 + m) = x
+         call lu_solve(self%lu(:, :, b), self%piv(:, b), v(i0 + 1:i0 + m))
       end do
+      if (.not. self%bordered()) return
+      r = v(self%border)
+      do b = 1, size(self%first)
+         i0 = self%first(b) - 1
+         r = r + self%hg*matmul(self%cj(:, :, b), v(i0 + 1:i0 + m))
+      end do
+      call lu_solve(self%slu, self%spiv, r)
+      do b = 1, size(self%first)
+         i0 = self%first(b) - 1
+         v(i0 + 1:i0 + m) = v(i0 + 1:i0 + m) + matmul(self%e(:, :, b), r)
+      end do
+      v(self%border) = r
    end subroutine solve
 
-   !> w := J v on the blocks' unknowns, 0 elsewhere (units of v per unit of t).
+   !> w := J v on the blocks' and the border's unknowns, 0 elsewhere (units of v per unit of t).
    subroutine multiply(self, v, w)
       class(block_jacobian_t), intent(in) :: self
       real(wp), intent(in) :: v(:)
       real(wp), intent(out) :: w(:)
       integer :: b, i0, m, k
+      real(wp), allocatable :: vr(:), wr(:)
       m = self%m
       w = 0.0_wp
       do b = 1, size(self%first)
@@ -151,6 +202,68 @@ contains
             w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + self%j(:, k, b)*v(i0 + k)
          end do
       end do
+      if (.not. self%bordered()) return
+      vr = v(self%border)
+      wr = matmul(self%dj, vr)
+      do b = 1, size(self%first)
+         i0 = self%first(b) - 1
+         w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + matmul(self%bj(:, :, b), vr)
+         wr = wr + matmul(self%cj(:, :, b), v(i0 + 1:i0 + m))
+      end do
+      w(self%border) = wr
    end subroutine multiply
+
+   !> In-place LU factorisation with partial pivoting of the square a (unit lower L below the
+   !> diagonal, U on and above), row interchanges in piv; ok = .false. when a is singular.
+   subroutine lu_factor(a, piv, ok)
+      real(wp), intent(inout) :: a(:, :)
+      integer, intent(out) :: piv(:)
+      logical, intent(out) :: ok
+      integer :: i, k, p, m
+      real(wp) :: row(size(a, 1))
+      m = size(a, 1)
+      ok = .true.
+      do k = 1, m
+         p = k - 1 + maxloc(abs(a(k:m, k)), 1)
+         piv(k) = p
+         if (a(p, k) == 0.0_wp) then
+            ok = .false.
+            return
+         end if
+         if (p /= k) then
+            row = a(k, :)
+            a(k, :) = a(p, :)
+            a(p, :) = row
+         end if
+         a(k + 1:m, k) = a(k + 1:m, k)/a(k, k)
+         ! the update column by column (contiguous): each element sees the same operations
+         do i = k + 1, m
+            a(k + 1:m, i) = a(k + 1:m, i) - a(k + 1:m, k)*a(k, i)
+         end do
+      end do
+   end subroutine lu_factor
+
+   !> x := A**-1 x for the factors at (lu_factor's result, transposed) and interchanges piv.
+   pure subroutine lu_solve(at, piv, x)
+      real(wp), intent(in) :: at(:, :)
+      integer, intent(in) :: piv(:)
+      real(wp), intent(inout) :: x(:)
+      integer :: k, m
+      real(wp) :: s
+      m = size(x)
+      do k = 1, m
+         if (piv(k) /= k) then
+            s = x(k)
+            x(k) = x(piv(k))
+            x(piv(k)) = s
+         end if
+      end do
+      do k = 2, m
+         x(k) = x(k) - dot_product(at(1:k - 1, k), x(1:k - 1))
+      end do
+      do k = m, 1, -1
+         x(k) = (x(k) - dot_product(at(k + 1:m, k), x(k + 1:m)))/at(k, k)
+      end do
+   end subroutine lu_solve
 
 end module adore_dynamics_block_jacobian

@@ -61,6 +61,7 @@ module adore_dynamics_integrator
       character(len=:), allocatable :: failure_reason
    contains
       procedure(eval_i), deferred :: eval
+      procedure :: border_shares
    end type derivative_t
 
    abstract interface
@@ -150,11 +151,13 @@ module adore_dynamics_integrator
    !> The linearly implicit methods (Rosenbrock-W and IMEX) and their block Jacobian:
    !> submodule adore_dynamics_integrator_implicit (fortran/dynamics/integrator_implicit.f90).
    interface
-      !> Jacobian blocks of the linearly implicit methods (nb blocks of m unknowns at first(:), columns cols(:)).
-      module subroutine set_jacobian_blocks(self, first, m, cols, error)
+      !> Jacobian blocks of the linearly implicit methods (nb blocks of m unknowns at first(:),
+      !> columns cols(:)), bordered by the unknowns border(:) when given.
+      module subroutine set_jacobian_blocks(self, first, m, cols, error, border)
          class(integrator_t), intent(inout) :: self
          integer, intent(in) :: first(:), m, cols(:)
          type(error_type), allocatable, intent(out) :: error
+         integer, intent(in), optional :: border(:)
       end subroutine set_jacobian_blocks
       !> The block Jacobian at (t, y) by forward differences (k(:, 1) = f(t, y) given).
       module subroutine block_jacobian(self, deriv, t, y, error)
@@ -187,6 +190,20 @@ module adore_dynamics_integrator
    end interface
 
 contains
+
+   !> The last evaluation's share of each Jacobian block in the rates of the border unknowns
+   !> (adore_dynamics_block_jacobian; units of y per unit of t): a system whose border rates
+   !> are sum_b p_b(y_b, y_border) + q(y_border) gives p_b in shares(:, b) (nr x nb, border
+   !> and block order of set_jacobian_blocks), from which the integrator differences the
+   !> border rows C_b of every block in the blocks' coloured calls.  This default has none:
+   !> ok = .false., C_b is left zero (a valid but poorer W).
+   subroutine border_shares(self, shares, ok)
+      class(derivative_t), intent(in) :: self
+      real(wp), intent(out) :: shares(:, :)
+      logical, intent(out) :: ok
+      shares = 0.0_wp
+      ok = .false.
+   end subroutine border_shares
 
    !> Check the settings, choose the method and allocate the workspace for n unknowns.
    !> scale(n) (units of y, > 0) sets the absolute part of the error test; default 1.

@@ -1,7 +1,8 @@
 !> The linearly implicit methods of the integrator (issue #30 item 2): the Rosenbrock-W
 !> ROS34PW2 and the additive (IMEX) ARK4(3)6L[2]SA attempts, which take the system's stiff
-!> per-element blocks implicitly through the block Jacobian (adore_dynamics_block_jacobian,
-!> forward differences, one derivative call per column for all blocks).  A submodule of
+!> per-element blocks and their border (e.g. the inner race, issue #28) implicitly through
+!> the arrowhead Jacobian (adore_dynamics_block_jacobian, forward differences, one derivative
+!> call per column for all blocks and one per border unknown).  A submodule of
 !> adore_dynamics_integrator: it works on integrator_t's workspace and statistics; the
 !> explicit pairs, the step control and the statistics stay in the parent
 !> (docs/dynamics.md, "The stiff-aware method").
@@ -10,27 +11,46 @@ submodule(adore_dynamics_integrator) adore_dynamics_integrator_implicit
 
 contains
 
-   !> Rosenbrock-W: the system's Jacobian blocks (adore_dynamics_block_jacobian): nb blocks of
-   !> m unknowns starting at first(:), whose rates depend on their own block and the unknowns
-   !> outside the blocks only; columns cols(:) (1..m) of each block are differenced (one
-   !> derivative call per column for all blocks).  Ignored by the explicit methods.
+   !> The linearly implicit methods' Jacobian (adore_dynamics_block_jacobian): nb blocks of m
+   !> unknowns starting at first(:), whose rates depend on their own block, the border and the
+   !> unknowns outside both only; columns cols(:) (1..m) of each block are differenced (one
+   !> derivative call per column for all blocks); border(:), when given, the border unknowns
+   !> (one call per border unknown; the border rows of the blocks from the derivative's
+   !> border_shares in the blocks' calls).  Ignored by the explicit methods.
    module procedure set_jacobian_blocks
       logical :: ok
       if (.not. (self%rosenbrock .or. self%imex)) return
-      call self%jac%setup(self%n, first, m, cols, ok)
-      if (.not. ok) call engine_error(error, "integrator: Jacobian blocks outside the state, overlapping, or "// &
-                                      "columns outside the block (m = "//itoa(m)//")")
+      call self%jac%setup(self%n, first, m, cols, ok, border)
+      if (.not. ok) call engine_error(error, "integrator: Jacobian blocks outside the state, overlapping, "// &
+                                      "columns outside the block (m = "//itoa(m)//"), or border unknowns "// &
+                                      "outside the state, repeated or inside a block")
       self%jac_age = -1
    end procedure set_jacobian_blocks
 
    !> The block Jacobian at (t, y), k(:, 1) = f(t, y): forward differences, column c of every
    !> block perturbed at once by sqrt(eps) max(|y_i|, scale_i).  A column whose perturbed
    !> evaluation is refused or not finite is left zero (any W keeps a W-method's order).
+   !> With a border: one more call at (t, y) for the blocks' border shares (deriv%border_shares,
+   !> differenced in the blocks' calls into C_b; zero when the derivative has none), and one
+   !> call per border unknown (B_b and D: that unknown perturbed alone).
    module procedure block_jacobian
-      real(wp) :: d(size(self%jac%first))
-      integer :: c, b, i, i0, m, flag
+      real(wp) :: d(size(self%jac%first)), dr
+      real(wp), allocatable :: share0(:, :), share(:, :)
+      integer :: c, b, i, i0, m, flag, nr
+      logical :: shares_ok
 
       m = self%jac%m
+      shares_ok = .false.
+      if (self%jac%bordered()) then
+         nr = size(self%jac%border)
+         allocate (share0(nr, size(self%jac%first)), share(nr, size(self%jac%first)))
+         ! the shares at (t, y) itself (the system's last evaluation may be another state's)
+         call jacobian_call(t, y, flag)
+         if (allocated(error)) return
+         if (flag == DERIV_OK) call deriv%border_shares(share0, shares_ok)
+         if (shares_ok) shares_ok = all(ieee_is_finite(share0))
+         self%jac%cj = 0.0_wp
+      end if
       do c = 1, size(self%jac%cols)
          self%y_stage = y
          do b = 1, size(self%jac%first)
@@ -39,13 +59,8 @@ contains
             self%y_stage(i) = y(i) + d(b)
             d(b) = self%y_stage(i) - y(i)
          end do
-         call deriv%eval(t, self%y_stage, self%k(:, 2), flag)
-         self%stats%derivative_calls = self%stats%derivative_calls + 1
-         self%stats%jacobian_calls = self%stats%jacobian_calls + 1
-         if (flag == DERIV_FAIL) then
-            call self%stop_error(error, "the derivative failed (Jacobian)", t, self%h_next, deriv=deriv)
-            return
-         end if
+         call jacobian_call(t, self%y_stage, flag)
+         if (allocated(error)) return
          do b = 1, size(self%jac%first)
             i0 = self%jac%first(b) - 1
             if (flag == DERIV_OK .and. all(ieee_is_finite(self%k(i0 + 1:i0 + m, 2)))) then
@@ -54,10 +69,55 @@ contains
                self%jac%j(:, self%jac%cols(c), b) = 0.0_wp
             end if
          end do
+         if (shares_ok .and. flag == DERIV_OK) then
+            call deriv%border_shares(share, shares_ok)
+            if (shares_ok) shares_ok = all(ieee_is_finite(share))
+            if (shares_ok) then
+               do b = 1, size(self%jac%first)
+                  self%jac%cj(:, self%jac%cols(c), b) = (share(:, b) - share0(:, b))/d(b)
+               end do
+            else
+               self%jac%cj = 0.0_wp      ! all or nothing: C_b of some columns only is not kept
+            end if
+         end if
       end do
+      if (self%jac%bordered()) then
+         do c = 1, nr
+            i = self%jac%border(c)
+            self%y_stage = y
+            self%y_stage(i) = y(i) + sqrt(epsilon(1.0_wp))*max(abs(y(i)), self%scale(i))
+            dr = self%y_stage(i) - y(i)
+            call jacobian_call(t, self%y_stage, flag)
+            if (allocated(error)) return
+            if (flag == DERIV_OK .and. all(ieee_is_finite(self%k(:, 2)))) then
+               do b = 1, size(self%jac%first)
+                  i0 = self%jac%first(b) - 1
+                  self%jac%bj(:, c, b) = (self%k(i0 + 1:i0 + m, 2) - self%k(i0 + 1:i0 + m, 1))/dr
+               end do
+               self%jac%dj(:, c) = (self%k(self%jac%border, 2) - self%k(self%jac%border, 1))/dr
+            else
+               self%jac%bj(:, c, :) = 0.0_wp
+               self%jac%dj(:, c) = 0.0_wp
+            end if
+         end do
+      end if
       self%jac%hg = -1.0_wp
       self%jac_age = 0
       self%stats%jacobians = self%stats%jacobians + 1
+
+   contains
+
+      !> f(t, ys) into k(:, 2) for the Jacobian, counted; error when the derivative failed.
+      subroutine jacobian_call(tc, ys, flag)
+         real(wp), intent(in) :: tc
+         real(wp), intent(in) :: ys(:)
+         integer, intent(out) :: flag
+         call deriv%eval(tc, ys, self%k(:, 2), flag)
+         self%stats%derivative_calls = self%stats%derivative_calls + 1
+         self%stats%jacobian_calls = self%stats%jacobian_calls + 1
+         if (flag == DERIV_FAIL) &
+            call self%stop_error(error, "the derivative failed (Jacobian)", t, self%h_next, deriv=deriv)
+      end subroutine jacobian_call
    end procedure block_jacobian
 
    !> One Rosenbrock-W attempt of size h from (t, y), k(:, 1) = f(t, y) given (HNW II, IV.7

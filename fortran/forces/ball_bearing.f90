@@ -62,6 +62,10 @@ module adore_forces_ball_bearing
       type(body_load_t), allocatable :: elements(:)
       type(body_load_t) :: cage
       type(body_load_t) :: races(2)                         !< RACE_OUTER, RACE_INNER
+      !> (2, n): what ball k's contacts put on race j (force N; moment N m about the race
+      !> centre, without the gyroscopic restraint's), the terms of races(j)'s sum: the
+      !> integrator's border rows of its Jacobian (adore_dynamics_ball_system%border_shares)
+      type(body_load_t), allocatable :: race_shares(:, :)
       type(ball_race_geometry_t), allocatable :: contacts(:, :)
       type(contact_traction_t), allocatable :: traction(:, :)  !< zero where unloaded or traction off
       real(wp), allocatable :: heat(:, :)                   !< contact power loss (W)
@@ -321,18 +325,27 @@ contains
             return
          end if
       end do
-      ! the sums over the balls, in ball order (the races' loads and the damping's work)
+      ! the sums over the balls, in ball order (the races' loads and the damping's work), and
+      ! each ball's terms of them
+      allocate (loads%race_shares(2, n))
       do k = 1, n
          do j = 1, 2
-            associate (r => share(j, k))
+            associate (r => share(j, k), rs => loads%race_shares(j, k))
                if (.not. r%loaded) cycle
                loads%damping_power = loads%damping_power + r%damping_power
                loads%races(j)%force = loads%races(j)%force + r%force_normal
                loads%races(j)%moment = loads%races(j)%moment + r%moment_normal
-               if (r%rolled) loads%races(j)%moment = loads%races(j)%moment + r%moment_rolling
+               rs%force = r%force_normal
+               rs%moment = r%moment_normal
+               if (r%rolled) then
+                  loads%races(j)%moment = loads%races(j)%moment + r%moment_rolling
+                  rs%moment = rs%moment + r%moment_rolling
+               end if
                if (r%tractive) then
                   loads%races(j)%force = loads%races(j)%force + r%force_traction
                   loads%races(j)%moment = loads%races(j)%moment + r%arm_traction + r%moment_traction
+                  rs%force = rs%force + r%force_traction
+                  rs%moment = rs%moment + r%arm_traction + r%moment_traction
                end if
             end associate
          end do

@@ -694,12 +694,16 @@ contains
       steps = it%stats%accepted
    end subroutine tight_run
 
-   !> The integrator's block Jacobian (each ball's block, its columns differenced for all balls
-   !> at once, adore_dynamics_block_jacobian) against central differences of the whole ball
-   !> system perturbing one ball at a time, at Appendix C's state after tau = 3 in the orbit
-   !> frame: every block within 1e-4 of its largest entry (in the error scale's units; forward
-   !> differences at sqrt(eps), measured 6.2e-6), and
-   !> a ball's perturbation leaves every other ball's rates unchanged (the colouring's premise).
+   !> The integrator's arrowhead Jacobian (adore_dynamics_block_jacobian: each ball's block,
+   !> its columns differenced for all balls at once; the border - the inner race's translation
+   !> - with its columns B_b and D from one call per border unknown and its rows C_b from each
+   !> ball's action on the race, ball_system_t%border_shares, differenced in the blocks' calls)
+   !> against central differences of the whole ball system perturbing one unknown at a time, at
+   !> Appendix C's state after tau = 3 in the orbit frame, column by column in the error
+   !> scale's units (d(f_i/scale_i)/d(y_c/scale_c)): every block, every ball's border rows C_b,
+   !> every border column B_b, D within 1e-4 of the largest entry of its part (forward
+   !> differences at sqrt(eps)); a ball's perturbation leaves every other ball's rates
+   !> unchanged (the colouring's premise).
    subroutine test_block_jacobian_against_finite_differences()
       type(bearing_t) :: b
       type(mounted_geometry_t) :: g
@@ -707,9 +711,10 @@ contains
       type(ball_system_t) :: sys
       type(integrator_t) :: it
       type(error_type), allocatable :: error
-      real(wp), allocatable :: y(:), y0(:), yp(:), fp(:), fm(:), col(:)
-      real(wp) :: t, t0, d, worst, cross, big
-      integer :: k, c, j, i0, flag, n, m
+      real(wp), allocatable :: y(:), y0(:), yp(:), fp(:), fm(:), col(:), sr(:), cfd(:, :, :), bfd(:, :, :), dfd(:, :)
+      real(wp) :: t, t0, d, worst, cross, big, worst_b, worst_c, worst_d
+      integer :: k, c, j, i0, flag, n, m, nr, jr
+      integer, allocatable :: br(:)
 
       call read_bearing(decks//"/appendix_c_ball.inp", b, error)
       if (allocated(error)) return
@@ -717,14 +722,15 @@ contains
       call solve_ball_step0(b, s0, error)
       if (allocated(error)) return
       call start_ball_dynamics(b, g, s0%start, s0%cage, sys, it, y, error, orbit_frame=.true.)
-      call check(.not. allocated(error) .and. it%jac%active(), "block Jacobian: the deck's method has blocks")
-      if (allocated(error) .or. .not. it%jac%active()) return
+      call check(.not. allocated(error) .and. it%jac%active() .and. it%jac%bordered(), &
+                 "arrowhead Jacobian: the deck's method has blocks and a border")
+      if (allocated(error) .or. .not. it%jac%bordered()) return
       t = 0.0_wp
       do while (t < 3.0_wp .and. .not. allocated(error))
          call it%step(sys, t, y, error, t_limit=3.0_wp)
       end do
       if (allocated(error)) return
-      ! a new block Jacobian at (t0, y0), taken by the next step before its attempts
+      ! a new Jacobian at (t0, y0), taken by the next step before its attempts
       t0 = t
       y0 = y
       call it%restart()
@@ -732,12 +738,17 @@ contains
       if (allocated(error)) return
       n = b%n_elements
       m = BODY_SIZE
-      allocate (yp(size(y0)), fp(size(y0)), fm(size(y0)), col(m))
+      br = it%jac%border
+      nr = size(br)
+      call check(all(br == [(BODY_SIZE*(n + 2) + c, c=1, 6)]), "arrowhead Jacobian: the border is the inner race's "// &
+                 "position and velocity")
+      sr = it%scale(br)
+      allocate (yp(size(y0)), fp(size(y0)), fm(size(y0)), col(m), cfd(nr, m, n), bfd(m, nr, n), dfd(nr, nr))
+      cfd = 0.0_wp
       worst = 0.0_wp
       cross = 0.0_wp
       do k = 1, n
          i0 = BODY_SIZE*(k - 1)
-         ! the block in the error scale's units: d(f_i/scale_i)/d(y_c/scale_c)
          big = maxval(abs(it%jac%j(:, :, k))*spread(it%scale(i0 + 1:i0 + m), 1, m)/ &
                       spread(it%scale(i0 + 1:i0 + m), 2, m))
          do j = 1, size(BALL_JACOBIAN_COLUMNS)
@@ -752,12 +763,47 @@ contains
             worst = max(worst, maxval(abs(it%jac%j(:, c, k) - col)*it%scale(i0 + c)/it%scale(i0 + 1:i0 + m))/big)
             cross = max(cross, maxval(abs(fp(:i0) - fm(:i0))), maxval(abs(fp(i0 + m + 1:BODY_SIZE*n) - &
                                                                            fm(i0 + m + 1:BODY_SIZE*n))))
+            ! the race's rows: this ball's C_b column, in the error scale's units
+            cfd(:, c, k) = (fp(br) - fm(br))/(2.0_wp*d)*it%scale(i0 + c)/sr
          end do
       end do
+      do jr = 1, nr
+         d = 1.0e-6_wp*sr(jr)
+         yp = y0
+         yp(br(jr)) = y0(br(jr)) + d
+         call sys%eval(t0, yp, fp, flag)
+         yp(br(jr)) = y0(br(jr)) - d
+         call sys%eval(t0, yp, fm, flag)
+         do k = 1, n
+            i0 = BODY_SIZE*(k - 1)
+            bfd(:, jr, k) = (fp(i0 + 1:i0 + m) - fm(i0 + 1:i0 + m))/(2.0_wp*d)*sr(jr)/it%scale(i0 + 1:i0 + m)
+         end do
+         dfd(:, jr) = (fp(br) - fm(br))/(2.0_wp*d)*sr(jr)/sr
+      end do
+      worst_c = 0.0_wp
+      worst_b = 0.0_wp
+      do k = 1, n
+         i0 = BODY_SIZE*(k - 1)
+         do c = 1, m
+            worst_c = max(worst_c, maxval(abs(it%jac%cj(:, c, k)*it%scale(i0 + c)/sr - cfd(:, c, k))))
+         end do
+         do jr = 1, nr
+            worst_b = max(worst_b, maxval(abs(it%jac%bj(:, jr, k)*sr(jr)/it%scale(i0 + 1:i0 + m) - bfd(:, jr, k))))
+         end do
+      end do
+      worst_c = worst_c/maxval(abs(cfd))
+      worst_b = worst_b/maxval(abs(bfd))
+      worst_d = maxval(abs(it%jac%dj*spread(sr, 1, nr)/spread(sr, 2, nr) - dfd))/maxval(abs(dfd))
       write (*, "(a,es10.2,a,es10.2)") "block Jacobian against central differences: worst entry ", worst, &
          " of the block's largest; other balls' rates moved by ", cross
+      write (*, "(a,3es10.2,a)") "border against central differences: C_b, B_b, D worst entries ", worst_c, &
+         worst_b, worst_d, " of their parts' largest"
       call check(worst <= 1.0e-4_wp, "block Jacobian: every ball's block within 1e-4 of central differences")
       call check(cross == 0.0_wp, "block Jacobian: a ball's state does not enter another ball's rates")
+      call check(maxval(abs(cfd)) > 0.0_wp .and. worst_c <= 1.0e-4_wp, &
+                 "arrowhead Jacobian: the race's rows C_b (action and reaction) within 1e-4 of central differences")
+      call check(worst_b <= 1.0e-4_wp, "arrowhead Jacobian: the border columns B_b within 1e-4 of central differences")
+      call check(worst_d <= 1.0e-4_wp, "arrowhead Jacobian: the corner D within 1e-4 of central differences")
    end subroutine test_block_jacobian_against_finite_differences
 
 end program test_dynamics
