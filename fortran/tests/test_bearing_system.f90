@@ -429,7 +429,11 @@ contains
       t_fresh = t
       call it_fresh%init(size(y), it%settings, error, scale=it%scale)
       ! the same method: the linearly implicit ones with the system's Jacobian blocks
-      if (it%jac%active()) call it_fresh%set_jacobian_blocks(it%jac%first, it%jac%m, it%jac%cols, error)
+      if (it%jac%bordered()) then
+         call it_fresh%set_jacobian_blocks(it%jac%first, it%jac%m, it%jac%cols, error, border=it%jac%border)
+      else if (it%jac%active()) then
+         call it_fresh%set_jacobian_blocks(it%jac%first, it%jac%m, it%jac%cols, error)
+      end if
       call it_fresh%restart(h)
       call it%step(sys, t, y, error)
       call it_fresh%step(fresh, t_fresh, y_fresh, error)
