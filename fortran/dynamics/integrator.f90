@@ -13,7 +13,8 @@
 !> and what is assumed): 5 = Dormand-Prince 5(4), 3 = Bogacki-Shampine 3(2), both explicit,
 !> embedded, FSAL, propagating the higher order; 34 = ROS34PW2 (pyadore's code, not an ADORE
 !> value), a linearly implicit Rosenbrock-W method whose W uses the system's block-diagonal
-!> Jacobian (set_jacobian_blocks: each block by finite differences, all blocks at once,
+!> Jacobian, optionally bordered (an arrowhead: set_jacobian_blocks; each block by finite
+!> differences, all blocks at once, the border's rows from derivative_t%border_shares,
 !> adore_dynamics_block_jacobian), which takes the stiff per-ball contact modes implicitly;
 !> without blocks it is an explicit 4-stage method of order 3.  Step control (Rec 2.1): initial, minimum and
 !> maximum step and ERROR LIMIT; weighted max-norm of the embedded error estimate,
