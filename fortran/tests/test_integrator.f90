@@ -287,6 +287,7 @@ program test_integrator
    use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t, &
       driven_oscillators_t, driven_exact, shaker_t
    use adore_dynamics_block_jacobian, only: block_jacobian_t
+   use adore_core_linalg, only: solve_dense
    implicit none
 
    call test_settings_errors()
@@ -963,7 +964,8 @@ contains
       do i = 1, n
          w(i, i) = w(i, i) + 1.0_wp
       end do
-      xd = dense_solve(w, v)
+      call solve_dense(n, w, v, xd, ok)
+      call check(ok, "arrowhead: the dense W is regular")
       r = maxval(abs(x - xd))/maxval(abs(xd))
       write (*, "(a,es10.2,a,es10.2)") "arrowhead W**-1 v by the Schur complement against a dense LU: ", r, &
          "; residual ", maxval(abs(matmul(w, x) - v))
@@ -976,33 +978,6 @@ contains
       state = int(modulo(int(state, 8)*16807_8, 2147483647_8))
       rnd = real(state, wp)/2147483647.0_wp
    end function rnd
-
-   !> Gaussian elimination with partial pivoting: a**-1 b (dense, for the tests).
-   function dense_solve(a_in, b_in) result(x)
-      real(wp), intent(in) :: a_in(:, :), b_in(:)
-      real(wp) :: x(size(b_in)), a(size(b_in), size(b_in)), row(size(b_in)), s
-      integer :: k, p, i, n
-      n = size(b_in)
-      a = a_in
-      x = b_in
-      do k = 1, n
-         p = k - 1 + maxloc(abs(a(k:n, k)), 1)
-         row = a(k, :)
-         a(k, :) = a(p, :)
-         a(p, :) = row
-         s = x(k)
-         x(k) = x(p)
-         x(p) = s
-         do i = k + 1, n
-            s = a(i, k)/a(k, k)
-            a(i, k:n) = a(i, k:n) - s*a(k, k:n)
-            x(i) = x(i) - s*x(k)
-         end do
-      end do
-      do k = n, 1, -1
-         x(k) = (x(k) - dot_product(a(k, k + 1:n), x(k + 1:n)))/a(k, k)
-      end do
-   end function dense_solve
 
    !> The shaker (integrator_test_problems' shaker_t: three stiff masses on a common driven
    !> mass, collective mode omega = 1414, zeta 0.05) to t = 10 at error limit 1e-3 by ARK4 with
