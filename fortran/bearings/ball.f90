@@ -159,7 +159,7 @@ contains
       call ball_deck_dof_check(self%bearing%dof_flags, error)
       if (allocated(error)) return
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
-      call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
+      call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage_start, self%eom, it, y, &
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &
                                int_method=method, cage_free=cage_free, &
                                adore_whirl=self%options%cage_whirl == "adore")
@@ -236,6 +236,7 @@ contains
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
       character(len=:), allocatable, intent(out) :: text
+      character(len=16) :: buf
       text = ""
       if (n_steps < 1) return
       associate (s => self%eom)
@@ -251,6 +252,12 @@ contains
                       "no centripetal or Coriolis acceleration, report 4.4.4; cage_whirl=inertial for Newton's)"
             else
                text = text//"; its mass centre by Newton's inertial equations (cage_whirl=inertial)"
+            end if
+            if (self%step0%cage_start%start_scale < 1.0_wp) then
+               write (buf, "(f0.4)") self%step0%cage_start%start_scale
+               text = text//"; the cage started at "//trim(buf)//" x its Rec 9.5.1 offset from the guiding "// &
+                      "race: the deck's centre puts a ball into its pocket or the cage into a land (step 0's "// &
+                      "negative Geo Int)"
             end if
          end if
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"

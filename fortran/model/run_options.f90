@@ -195,8 +195,8 @@ module adore_model_run_options
                     "integration method: the deck's INT METHOD (5: ark4 for balls), IMEX ARK4(3)6L[2]SA, "// &
                     "Rosenbrock-W ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)"), &
       option_spec_t("cage", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,centred,free", &
-                    "cage degrees of freedom (report 4.4.6): as the deck's Rec 3.3 says (all zeros: free), "// &
-                    "centred (translation and tilt constrained) or free (all six, land films on)"), &
+                    "cage DOFs (report 4.4.6): as the deck's Rec 3.3 says (all zeros: free), centred (translation "// &
+                    "and tilt constrained) or free (all six, land films on)"), &
       option_spec_t("cage_whirl", OPTION_CHOICE, "adore", 0, "", "NAME", "adore,inertial", &
                     "a free cage's mass centre: ADORE's whirl coordinates (report 4.4.4: a cage free of "// &
                     "interactions keeps its whirl circle) or Newton's inertial equations"), &
