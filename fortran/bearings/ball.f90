@@ -206,8 +206,11 @@ contains
          if (.not. s%cage) text = text//"  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"//lf
          if (s%cage .and. s%cage_spin_only) text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT "// &
             "ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
-         if (s%cage .and. .not. s%cage_spin_only) text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM "// &
-            "INTEGRATED (REPORT 4.4.6)"//lf
+         if (s%cage .and. .not. s%cage_spin_only) then
+            text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED (REPORT 4.4.6"
+            if (self%options%cage == "deck") text = text//"; AS THE DECK'S REC 3.3 SAYS"
+            text = text//")"//lf
+         end if
          if (s%cage .and. .not. s%cage_spin_only .and. s%adore_whirl) text = text//"  CAGE MASS CENTRE IN "// &
             "ADORE'S WHIRL COORDINATES (REPORT 4.4.4; NO CENTRIPETAL OR CORIOLIS TERMS, docs/dynamics.md)"//lf
          if (s%cage .and. .not. s%land_film) text = text//"  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT "// &
