@@ -127,7 +127,7 @@ def category(message: str) -> str:
 def balance(stderr: str) -> dict:
     """The run note's balance numbers (pyadore.api.parse_balance): revolutions in the window,
     drive power, dissipation, energy change (W), their ratio, the closure (drive - dissipation
-    - energy change) / max(|drive|, dissipation) and the inner race's force residual against
+    - energy change - whirl frame) / max(|drive|, dissipation) and the inner race's force residual against
     the applied load (fraction)."""
     from pyadore.api import parse_balance
 

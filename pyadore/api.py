@@ -46,11 +46,14 @@ class Result:
     #: ``drive_power_W``, ``dissipation_W`` (race contacts' heat, their damping, and what
     #: the cage contacts take), ``race_heat_W``, ``damping_W``, ``cage_work_W``,
     #: ``cage_heat_W`` (the cage contacts' friction heat, part of the print's power loss),
-    #: ``energy_rate_W`` (mechanical energy's mean rate),
+    #: ``energy_rate_W`` (mechanical energy's mean rate), ``whirl_frame_W`` (the power of the
+    #: centripetal and Coriolis terms a free cage's ADORE whirl coordinates omit, 0 by
+    #: Newton's equations: docs/dynamics.md, "The cage's whirl frame"),
     #: ``drive_ratio`` (drive / dissipation), ``inner_force_N`` and ``inner_carried_N``
     #: (the inner race's mean contact force and the applied load plus its weight),
     #: ``inner_residual_N``, ``outer_force_N``, ``outer_expected_N``, ``outer_residual_N``,
-    #: ``closure`` ((drive - dissipation - energy change) / max(|drive|, dissipation, 1 uW));
+    #: ``closure`` ((drive - dissipation - energy change - whirl frame) / max(|drive|,
+    #: dissipation, 1 uW));
     #: None without time steps or for a run that stopped early
     balance: dict | None = None
     #: the run's full results as numpy arrays (:class:`pyadore.results.ResultArrays`: the
@@ -281,7 +284,7 @@ def parse_balance(note: str) -> dict | None:
         r"balance over the last half of the run \(t" + _NUM + " to" + _NUM + " s," + _NUM +
         r" shaft revolutions\): drive power" + _NUM + " W, dissipation" + _NUM +
         r" W \(race contacts" + _NUM + " W, contact damping" + _NUM + " W, cage contacts" + _NUM +
-        " W of which friction heat" + _NUM + r" W\), energy change" + _NUM +
+        " W of which friction heat" + _NUM + r" W\), energy change" + _NUM + " W, whirl frame" + _NUM +
         " W, drive/dissipation" + _NUM + "; inner race contact force" + _VEC +
         " N against applied load and weight" + _VEC + " N, residual" + _NUM +
         " N; outer race contact force" + _VEC + " N against" + _VEC + " N, residual" + _NUM + " N",
@@ -291,17 +294,19 @@ def parse_balance(note: str) -> dict | None:
     v = [float(x) for x in m.groups()]
     return {"window_s": (v[0], v[1]), "revolutions": v[2], "drive_power_W": v[3], "dissipation_W": v[4],
             "race_heat_W": v[5], "damping_W": v[6], "cage_work_W": v[7], "cage_heat_W": v[8],
-            "energy_rate_W": v[9], "drive_ratio": v[10],
-            "inner_force_N": tuple(v[11:14]), "inner_carried_N": tuple(v[14:17]), "inner_residual_N": v[17],
-            "outer_force_N": tuple(v[18:21]), "outer_expected_N": tuple(v[21:24]), "outer_residual_N": v[24],
-            "closure": _closure(v[3], v[4], v[9])}
+            "energy_rate_W": v[9], "whirl_frame_W": v[10], "drive_ratio": v[11],
+            "inner_force_N": tuple(v[12:15]), "inner_carried_N": tuple(v[15:18]), "inner_residual_N": v[18],
+            "outer_force_N": tuple(v[19:22]), "outer_expected_N": tuple(v[22:25]), "outer_residual_N": v[25],
+            "closure": _closure(v[3], v[4], v[9], v[10])}
 
 
-def _closure(drive: float, dissipation: float, rate: float) -> float:
-    """(drive - dissipation - energy change) / max(|drive|, dissipation, 1 uW): 0 up to the
-    integration error (Newton-Euler; the run note flags it above 0.01; below a microwatt,
-    a shaft at rest, there is nothing to balance: fortran/bearings/ball.f90)."""
-    return (drive - dissipation - rate) / max(abs(drive), dissipation, 1e-6)
+def _closure(drive: float, dissipation: float, rate: float, whirl_frame: float = 0.0) -> float:
+    """(drive - dissipation - energy change - whirl frame) / max(|drive|, dissipation, 1 uW):
+    0 up to the integration error (Newton-Euler, with the power of the terms a free cage's
+    ADORE whirl coordinates omit: fortran/forces/ball_power.f90; the run note flags it above
+    0.01; below a microwatt, a shaft at rest, there is nothing to balance:
+    fortran/bearings/ball.f90)."""
+    return (drive - dissipation - rate - whirl_frame) / max(abs(drive), dissipation, 1e-6)
 
 
 def run_title(deck_path: Path) -> str:

@@ -14,7 +14,9 @@ Newton-Euler that the force assembly keeps (fortran/tests/test_dynamics.f90, "po
 identity"), and the inner race's mean contact force against the applied load and the
 race's weight (its mean acceleration times its mass).  Both hold to the integration error:
 at the decks' error limit (1e-4) the drive torque, a small difference of large opposing
-traction zones, is off by far more than the dissipation, so these runs use 1e-8.
+traction zones, is off by far more than the dissipation, so these runs use 1e-8.  A free
+cage in ADORE's whirl coordinates (the default for a deck whose Rec 3.3 constrains nothing)
+adds the power of the terms its polar equations omit as its own line (``whirl_frame_W``).
 """
 
 from __future__ import annotations
@@ -108,7 +110,7 @@ def test_dynamic_run_reports_closed_balances(tmp_path, base, revolutions):
     result = pyadore.run(path, revolutions=revolutions, out=tmp_path / "tight.prt")
     bal = result.balance
     assert bal is not None and bal["revolutions"] == pytest.approx(revolutions / 2, abs=0.01)
-    closure = bal["drive_power_W"] - bal["dissipation_W"] - bal["energy_rate_W"]
+    closure = bal["drive_power_W"] - bal["dissipation_W"] - bal["energy_rate_W"] - bal["whirl_frame_W"]
     assert abs(closure) <= 0.01 * max(abs(bal["drive_power_W"]), bal["dissipation_W"])
     carried = np.array(bal["inner_carried_N"])
     assert bal["inner_residual_N"] <= 0.01 * np.linalg.norm(carried)
@@ -125,9 +127,48 @@ def test_axial_deck_balances_at_its_own_error_limit(tmp_path):
     contact damping 2.7e-8 W of 38.6 mW."""
     result = pyadore.run(AXIAL, revolutions=1.0, out=tmp_path / "axial.prt")
     bal = result.balance
-    closure = bal["drive_power_W"] - bal["dissipation_W"] - bal["energy_rate_W"]
+    closure = bal["drive_power_W"] - bal["dissipation_W"] - bal["energy_rate_W"] - bal["whirl_frame_W"]
     assert abs(closure) <= 0.01 * max(abs(bal["drive_power_W"]), bal["dissipation_W"])
     assert not any("do not resolve the drive torque" in n for n in result.notes)
+
+
+def _printed_cage_mass(text: str) -> float:
+    """The echo's cage mass (kg; the CAGE row of the mass and inertia table)."""
+    number = r"\s+([-+]?\d\.\d+E[-+]\d+)"
+    return float(re.search(r"^ CAGE" + number * 4, text, re.MULTILINE).group(1))
+
+
+def test_whirl_frame_power_closes_the_free_cage_balance(tmp_path):
+    """Appendix C's free cage (the default, Rec 3.3 all zeros) at error limit 1e-8, 0.5
+    revolutions: in ADORE's whirl coordinates (r'' = F_r/m, r psi'' = F_t/m) the cage moves
+    by F/m plus the centripetal and Coriolis accelerations the polar equations omit, whose
+    power -m a_w.v = -m v_r v_t**2 / r is its own line of the balance (fortran/forces/
+    ball_power.f90).  With it the balance closes to the integration error; without it it
+    misses by that line (the start transient: the cage moves in from 0.59 mm, about 73 W).
+    The line is checked against the time history: -m v_r v_t**2 / r from the recorded
+    cage position and velocities, averaged over the window by the trapezoidal rule.  The
+    independent case: the same run by Newton's equations (cage_whirl=inertial) has no such
+    line and closes without it."""
+    path = _variant(tmp_path, BALL, "tight", error_limit=1e-8)
+    adore = pyadore.run(path, revolutions=0.5, out=tmp_path / "adore.prt")
+    newton = pyadore.run(path, revolutions=0.5, cage_whirl="inertial", out=tmp_path / "newton.prt")
+    for r in (adore, newton):
+        assert "cage free in all six degrees of freedom" in " ".join(r.notes)
+    a, n = adore.balance, newton.balance
+    scale = max(abs(a["drive_power_W"]), a["dissipation_W"])
+    without = a["drive_power_W"] - a["dissipation_W"] - a["energy_rate_W"]
+    assert abs(a["whirl_frame_W"]) > 0.01 * scale and abs(without) > 0.01 * scale
+    assert abs(a["closure"]) <= 1e-3
+    assert n["whirl_frame_W"] == 0.0 and abs(n["closure"]) <= 1e-3
+    # the line from the recorded motion (every step is a history row at this length)
+    h = adore.time_history
+    t = h.index.to_numpy()
+    r = np.hypot(h["cage_y_m"].to_numpy(), h["cage_z_m"].to_numpy())
+    v_t, v_r = h["cage_whirl_velocity_m_s"].to_numpy(), h["cage_radial_velocity_m_s"].to_numpy()
+    window = t >= a["window_s"][0] * (1.0 - 1e-9)
+    power = -_printed_cage_mass(adore.text) * v_r * v_t ** 2 / r
+    mean = np.trapezoid(power[window], t[window]) / (t[window][-1] - t[window][0])
+    assert mean == pytest.approx(a["whirl_frame_W"], rel=0.01)
 
 
 def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
@@ -148,7 +189,8 @@ def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
     short = pyadore.run(tmp_path / "short.inp", revolutions=0.1, out=tmp_path / "short.prt", boundary_lambda=0,
                         full_film_lambda=0)
     note = next(n for n in loose.notes if "closure" in n)
-    printed = float(re.search(r"closure \(drive - dissipation - energy change\)/max\(\|drive\|, dissipation, 1 uW\)\s+(\S+),",
+    printed = float(re.search(r"closure \(drive - dissipation - energy change - whirl frame\)/max\(\|drive\|, dissipation, "
+                                 r"1 uW\)\s+(\S+),",
                               note).group(1))
     assert printed == pytest.approx(loose.balance["closure"], rel=1e-3, abs=1e-3)
     assert abs(loose.balance["closure"]) > 0.1 and "do not resolve the drive torque" in note
@@ -169,5 +211,5 @@ def test_rolling_resistance_adds_its_heat(tmp_path):
     off = pyadore.run(path, revolutions=0.25, out=tmp_path / "off.prt").balance
     on = pyadore.run(path, revolutions=0.25, rolling_resistance=True, out=tmp_path / "on.prt").balance
     assert on["race_heat_W"] > off["race_heat_W"]
-    closure = on["drive_power_W"] - on["dissipation_W"] - on["energy_rate_W"]
+    closure = on["drive_power_W"] - on["dissipation_W"] - on["energy_rate_W"] - on["whirl_frame_W"]
     assert abs(closure) <= 0.01 * max(abs(on["drive_power_W"]), on["dissipation_W"])

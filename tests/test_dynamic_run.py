@@ -74,13 +74,18 @@ def _step0_part(text: str) -> str:
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory, ball_deck, short_ball_deck, adore_exe):
     """Short deck as the deck says through f2py and `adore`; Appendix C at step 0 only and
-    with N explicit steps."""
+    with N explicit steps and to EARLY_S, these two with the cage held centred: the tests of
+    the integrator's call count and of the bearing hardly moving early have the centred
+    cage's premise.  The default free cage (the deck's Rec 3.3) starts on the Rec 9.5.1
+    whirl; in its start transient the derivative refuses stages on abnormal pocket contacts
+    (report 4.4.12: 237 calls for 30 steps, not 1 + 6 per attempt) and the inner loads at
+    EARLY_S move up to 6.1 % from step 0's (measured 2026-11-27)."""
     out = tmp_path_factory.mktemp("dynrun")
     res = {
         "short": pyadore.run(short_ball_deck, out=out / "short.prt"),
         "zero": pyadore.run(ball_deck, steps=0, out=out / "zero.prt"),
-        "dyn": pyadore.run(ball_deck, steps=N, out=out / "dyn.prt"),
-        "early": pyadore.run(ball_deck, duration=EARLY_S, out=out / "early.prt"),
+        "dyn": pyadore.run(ball_deck, steps=N, out=out / "dyn.prt", cage="centred"),
+        "early": pyadore.run(ball_deck, duration=EARLY_S, out=out / "early.prt", cage="centred"),
     }
     res["exe"] = _exe(adore_exe, short_ball_deck, out / "exe.prt")
     res["exe_path"] = out / "exe.prt"
@@ -288,7 +293,7 @@ def test_roller_deck_integrates_with_a_note(tmp_path, roller_deck, adore_exe):
     five = pyadore.run(roller_deck, steps=5, out=tmp_path / "r5.prt")
     zero = pyadore.run(roller_deck, steps=0, out=tmp_path / "r0.prt")
     assert five.steps_integrated == 5 and "Normal termination: Last Step Number =       5" in five.text
-    assert five.notes and "cage centred" in five.notes[0]
+    assert five.notes and "cage free" in five.notes[0]   # the default: the deck's Rec 3.3 (report 4.4.6)
     assert len(five.time_history) == 6 and "total_power_loss_W" in five.time_history
     assert zero.notes == [] and zero.steps_integrated == 0
     proc = _exe(adore_exe, roller_deck, tmp_path / "rexe.prt", "--steps", "5")

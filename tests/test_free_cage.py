@@ -77,9 +77,11 @@ def _history(res):
 
 
 def test_cage_option_centred_free_and_deck(tmp_path, short_ball_deck):
-    centred = pyadore.run(short_ball_deck, out=tmp_path / "centred.prt")
+    """`centred`, `free` and `deck` (the default: the deck's Rec 3.3, all zeros in Appendix C,
+    constrains nothing, so the default run's cage is the free one, issue #25 deliver 3)."""
+    centred = pyadore.run(short_ball_deck, out=tmp_path / "centred.prt", cage="centred")
     free = pyadore.run(short_ball_deck, out=tmp_path / "free.prt", cage="free")
-    deck = pyadore.run(short_ball_deck, out=tmp_path / "deck.prt", cage="deck")
+    deck = pyadore.run(short_ball_deck, out=tmp_path / "deck.prt")
     c_text = (tmp_path / "centred.prt").read_text()
     f_text = (tmp_path / "free.prt").read_text()
     assert "CAGE CENTRED ON THE BEARING AXIS" in c_text and "CAGE FREE" not in c_text
@@ -93,7 +95,9 @@ def test_cage_option_centred_free_and_deck(tmp_path, short_ball_deck):
     assert r.iloc[0] == pytest.approx(6.0e-4, rel=0.05) and np.ptp(hf["cage_y_m"]) > 1e-5
     # Appendix C's Rec 3.3 (all zero) constrains nothing: the deck's cage is the free one
     assert np.array_equal(_history(deck).to_numpy(), hf.to_numpy(), equal_nan=True)
-    assert "CAGE FREE" in (tmp_path / "deck.prt").read_text()
+    d_text = (tmp_path / "deck.prt").read_text()
+    assert "CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED (REPORT 4.4.6; AS THE DECK'S REC 3.3 SAYS)" in d_text
+    assert "AS THE DECK'S REC 3.3 SAYS" not in f_text
 
 
 def test_cage_deck_refuses_an_unidentified_rec_3_3_flag(tmp_path, ball_deck):
@@ -181,8 +185,10 @@ def test_appendix_c_free_cage_to_step_2500(tmp_path, whirl):
     step 2500's total power loss and basic life are within 10 % of the report's.  By
     Newton's equations (``inertial``) the same cage whips on its land films: near-contact
     all the time (docs/dynamics.md, "The cage's whirl frame")."""
-    res = pyadore.run(ROOT / "decks" / "appendix_c_ball.inp", out=tmp_path / f"{whirl}.prt", cage="free",
-                      cage_whirl=whirl, progress=False)
+    # Appendix C as written: the default cage is the deck's (Rec 3.3 all zeros: free)
+    res = pyadore.run(ROOT / "decks" / "appendix_c_ball.inp", out=tmp_path / f"{whirl}.prt", cage_whirl=whirl,
+                      progress=False)
+    assert "cage free in all six degrees of freedom" in " ".join(res.notes)
     m = cage_stability(res.dataset)
     if whirl == "inertial":
         assert m["land_contact_fraction"] > 0.9 and m["cage_stability"] == 0.0

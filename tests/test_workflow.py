@@ -174,7 +174,7 @@ def test_plot_one_figure_window_limits_and_labels(short_print, tmp_path):
     assert x.min() >= 0.5 * t_end - 1e-9 and x.max() == pytest.approx(t_end)
     assert ax.get_ylim() == (0, 900)
     res = CliRunner().invoke(cli, ["plot", str(short_print), "--figure", "2", "--compare", str(short_print),
-                                   "--label", "base", "--compare-label", "variant", "--window", "0.001:",
+                                   "--label", "base", "--compare-label", "variant", "--window", f"{0.5e-3 * t_end:.6g}:",
                                    "-o", str(tmp_path / "p.png")])
     assert res.exit_code == 0, res.output
     assert (tmp_path / "p.png").is_file() and "figure type 2" in res.stdout

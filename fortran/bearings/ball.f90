@@ -25,7 +25,9 @@ module adore_bearings_ball
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs, total_power_loss
    use adore_bearings_thermal_run, only: hold_race_load, thermal_run_text, thermal_run_for, thermal_condition
    use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
-                                      BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE
+                                      BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE, &
+                                      BAL_WHIRL_FRAME
+   use adore_dynamics_cage_whirl, only: whirl_frame_acceleration
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name, start_contact_load
    use adore_start_ball_step0, only: ball_step0_t, solve_ball_step0, BALL_START_METHOD
@@ -157,7 +159,7 @@ contains
       call ball_deck_dof_check(self%bearing%dof_flags, error)
       if (allocated(error)) return
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
-      call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage, self%eom, it, y, &
+      call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage_start, self%eom, it, y, &
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &
                                int_method=method, cage_free=cage_free, &
                                adore_whirl=self%options%cage_whirl == "adore")
@@ -204,8 +206,11 @@ contains
          if (.not. s%cage) text = text//"  CAGE CONTACTS OFF: NO POCKET OR GUIDE-LAND FORCES"//lf
          if (s%cage .and. s%cage_spin_only) text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT "// &
             "ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
-         if (s%cage .and. .not. s%cage_spin_only) text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM "// &
-            "INTEGRATED (REPORT 4.4.6)"//lf
+         if (s%cage .and. .not. s%cage_spin_only) then
+            text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED (REPORT 4.4.6"
+            if (self%options%cage == "deck") text = text//"; AS THE DECK'S REC 3.3 SAYS"
+            text = text//")"//lf
+         end if
          if (s%cage .and. .not. s%cage_spin_only .and. s%adore_whirl) text = text//"  CAGE MASS CENTRE IN "// &
             "ADORE'S WHIRL COORDINATES (REPORT 4.4.4; NO CENTRIPETAL OR CORIOLIS TERMS, docs/dynamics.md)"//lf
          if (s%cage .and. .not. s%land_film) text = text//"  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT "// &
@@ -234,6 +239,7 @@ contains
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: n_steps
       character(len=:), allocatable, intent(out) :: text
+      character(len=16) :: buf
       text = ""
       if (n_steps < 1) return
       associate (s => self%eom)
@@ -249,6 +255,12 @@ contains
                       "no centripetal or Coriolis acceleration, report 4.4.4; cage_whirl=inertial for Newton's)"
             else
                text = text//"; its mass centre by Newton's inertial equations (cage_whirl=inertial)"
+            end if
+            if (self%step0%cage_start%start_scale < 1.0_wp) then
+               write (buf, "(f0.4)") self%step0%cage_start%start_scale
+               text = text//"; the cage started at "//trim(buf)//" x its Rec 9.5.1 offset from the guiding "// &
+                      "race: the deck's centre puts a ball into its pocket or the cage into a land (step 0's "// &
+                      "negative Geo Int)"
             end if
          end if
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
@@ -446,11 +458,19 @@ contains
    end function ball_n_balance
 
    !> adore_forces_ball_power's balance values at the last evaluated state (the equations
-   !> of motion's loads, the condition's applied load).
+   !> of motion's loads, the condition's applied load; a free cage in ADORE's whirl
+   !> coordinates with the acceleration they add, whose power is the balance's whirl-frame
+   !> line).
    subroutine ball_balance(self, v)
       class(ball_kind_t), intent(in) :: self
       real(wp), intent(out) :: v(:)
-      v = ball_balance_values(self%eom%bearing, self%eom%state, self%eom%loads)
+      real(wp) :: a(3)
+      associate (e => self%eom)
+         a = 0.0_wp
+         if (e%cage .and. e%adore_whirl .and. .not. e%cage_spin_only) &
+            a(2:3) = whirl_frame_acceleration(e%state%cage%position(2:3), e%state%cage%velocity(2:3), e%whirl_blend)
+         v = ball_balance_values(e%bearing, e%state, e%loads, a)
+      end associate
    end subroutine ball_balance
 
    !> The run note's balance line over the window [window(1), window(2)] (tau) from the
@@ -458,13 +478,15 @@ contains
    !> against the dissipation (contacts and cage, contact damping) and the mechanical
    !> energy's rate of change (adore_forces_ball_power: drive = dissipation + dE/dt); the
    !> inner race's mean contact force against the applied load and its weight (the residual
-   !> is m dv/dt averaged), the outer race's against the housing's share; the closure
-   !> (drive - dissipation - dE/dt) / max(|drive|, dissipation, 1 uW), flagged above 1 %.
+   !> is m dv/dt averaged), the outer race's against the housing's share; the power of the
+   !> terms a free cage's whirl coordinates omit (P_frame, adore_forces_ball_power: 0 by
+   !> Newton's equations); the closure (drive - dissipation - dE/dt - P_frame) /
+   !> max(|drive|, dissipation, 1 uW), flagged above 1 %.
    subroutine ball_balance_text(self, window, mean, first, last, text)
       class(ball_kind_t), intent(in) :: self
       real(wp), intent(in) :: window(2), mean(:), first(:), last(:)
       character(len=:), allocatable, intent(out) :: text
-      character(len=700) :: buf
+      character(len=900) :: buf
       real(wp) :: seconds, dissipation, rate, carried(3), housing(3), closure
       integer :: stat
       associate (b => self%eom%bearing)
@@ -476,12 +498,13 @@ contains
          carried = b%force + b%mass(BODY_INNER)*b%gravity
          housing = carried + b%n_elements*b%mass(BODY_ELEMENT)*b%gravity
          write (buf, "(a,es10.4,a,es10.4,a,es10.3,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,"// &
-                "a,es11.4,a,3es12.4,a,3es12.4,a,es10.3,a,3es12.4,a,3es12.4,a,es10.3,a)", iostat=stat) &
+                "a,es11.4,a,es11.4,a,3es12.4,a,3es12.4,a,es10.3,a,3es12.4,a,3es12.4,a,es10.3,a)", iostat=stat) &
             "balance over the last half of the run (t ", window(1)*self%time_scale, " to ", window(2)*self%time_scale, &
             " s, ", seconds*abs(b%speed_inner - b%speed_outer)/(2.0_wp*pi), " shaft revolutions): drive power ", &
             mean(BAL_DRIVE), " W, dissipation ", dissipation, " W (race contacts ", mean(BAL_RACE_HEAT), &
             " W, contact damping ", mean(BAL_DAMPING), " W, cage contacts ", mean(BAL_CAGE_WORK), &
-            " W of which friction heat ", mean(BAL_CAGE_HEAT), " W), energy change ", rate, " W, drive/dissipation ", &
+            " W of which friction heat ", mean(BAL_CAGE_HEAT), " W), energy change ", rate, &
+            " W, whirl frame ", mean(BAL_WHIRL_FRAME), " W, drive/dissipation ", &
             mean(BAL_DRIVE)/dissipation, "; inner race contact force", mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2), &
             " N against applied load and weight", carried, " N, residual ", &
             norm2(mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2) + carried), " N; outer race contact force", &
@@ -490,9 +513,10 @@ contains
          text = trim(buf)
          ! the closure: Newton-Euler makes it 0 up to the integration error (issue #28);
          ! below a microwatt (a shaft at rest) there is nothing to balance
-         closure = (mean(BAL_DRIVE) - dissipation - rate)/max(abs(mean(BAL_DRIVE)), dissipation, MIN_BALANCED_POWER)
-         write (buf, "(a,es10.3)", iostat=stat) "; closure (drive - dissipation - energy change)/max(|drive|, "// &
-            "dissipation, 1 uW) ", closure
+         closure = (mean(BAL_DRIVE) - dissipation - rate - mean(BAL_WHIRL_FRAME))/ &
+                   max(abs(mean(BAL_DRIVE)), dissipation, MIN_BALANCED_POWER)
+         write (buf, "(a,es10.3)", iostat=stat) "; closure (drive - dissipation - energy change - whirl frame)"// &
+            "/max(|drive|, dissipation, 1 uW) ", closure
          text = text//trim(buf)
          if (abs(closure) > 0.01_wp) text = text//", above 0.01: the time steps do not resolve the drive torque "// &
                                             "(a smaller Rec 2.1 maximum step does; docs/operating-points.md)"

@@ -152,7 +152,9 @@ contains
       text = text//lf
       if (self%eom%cage_free) then
          text = text//"  CAGE FREE: ALL SIX DEGREES OF FREEDOM INTEGRATED, ON ITS POCKETS AND GUIDE LANDS "// &
-                "(REPORT 4.4.6)"//lf
+                "(REPORT 4.4.6"
+         if (self%options%cage == "deck") text = text//"; AS THE DECK'S REC 3.3 SAYS"
+         text = text//")"//lf
          if (self%eom%adore_whirl) text = text//"  CAGE MASS CENTRE IN ADORE'S WHIRL COORDINATES (REPORT 4.4.4; "// &
                 "NO CENTRIPETAL OR CORIOLIS TERMS, docs/dynamics.md)"//lf
       else
@@ -190,8 +192,8 @@ contains
    !> orbital speed, its land spinning in pure rolling on the outer race (outer race control,
    !> as step 0; adore_forces_roller_bearing's slip), the inner race at its equilibrium, the cage at its step-0
    !> angle and speed; the pockets centred on the rollers at the start.  The cage by the run
-   !> option cage (report 4.4.6): centred (default) turning about its axis only; free (or deck
-   !> with Rec 3.3 all zero or Appendix D's) free in all six DOFs from the deck's Rec 9.5.1
+   !> option cage (report 4.4.6): centred turning about its axis only; free (or deck, the
+   !> default, with Rec 3.3 all zero or Appendix D's) free in all six DOFs from the deck's Rec 9.5.1
    !> start whirl (adore_cage_step0's centre and velocity).
    subroutine roller_start_dynamics(self, it, y, error)
       class(roller_kind_t), intent(inout) :: self

@@ -129,6 +129,10 @@ module adore_cage_step0
       !> (n_ends, n): one contact per ball, two (end 1, end 2) per roller
       type(pocket_contact_t), allocatable :: pocket(:, :)
       type(land_contact_t), allocatable :: land(:)
+      !> the factor (0..1) the Rec 9.5.1 centre offset from the guiding race was scaled by so
+      !> that no pocket or land interferes at the start (solve_cage_step0's open_start); 1: as
+      !> the deck says
+      real(wp) :: start_scale = 1.0_wp
    end type cage_step0_t
 
 contains
@@ -228,8 +232,16 @@ contains
    !> at azimuth(k); mean_orbital: mean RE orbital speed (rad/s); d: RE diameter;
    !> pocket_kind, pocket_clearance (diametral); cage_od, cage_id; lands; race_centre(3, 2)
    !> and race_growth(2): outer (1) and inner (2) race centres and land radial growths.
+   !> open_start (default .false.): when the Rec 9.5.1 centre puts a rolling element into its
+   !> pocket or the cage into a land (a Geo Int below zero: interpenetrating bodies, which no
+   !> state of rigid bodies in contact has; report 4.4.12 rejects such a contact as abnormal),
+   !> the centre's offset from the guiding race is scaled down, direction kept, to the largest
+   !> factor that leaves every gap open (bisection to 1e-12; s%start_scale), the speeds from
+   !> that centre (a free cage's dynamic start; docs/dynamics.md, "The cage's degrees of
+   !> freedom").
    subroutine solve_cage_step0(inp, re_centre, azimuth, mean_orbital, d, pocket_kind, &
-                               pocket_clearance, cage_od, cage_id, lands, race_centre, race_growth, s, error)
+                               pocket_clearance, cage_od, cage_id, lands, race_centre, race_growth, s, error, &
+                               open_start)
       type(cage_input_t), intent(in) :: inp
       real(wp), intent(in) :: re_centre(:, :), azimuth(:), mean_orbital, d
       integer, intent(in) :: pocket_kind
@@ -238,9 +250,11 @@ contains
       real(wp), intent(in) :: race_centre(3, 2), race_growth(2)
       type(cage_step0_t), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: open_start
 
-      integer :: n, k, guide
-      real(wp) :: r_c, q(3), p(3), nan
+      integer :: n, k, guide, iter
+      real(wp) :: r_c, q(3), p(3), nan, lo, hi
+      type(cage_input_t) :: scaled
 
       n = size(azimuth)
       if (size(re_centre, 1) /= 3 .or. size(re_centre, 2) /= n .or. n < 1) then
@@ -269,41 +283,77 @@ contains
 
       guide = GUIDE_INNER
       if (size(lands) > 0) guide = lands(1)%guide
-      s%state = cage_initial_state(inp, race_centre(:, guide), sum(re_centre(1, :))/n, mean_orbital)
-      s%pocket_kind = pocket_kind
-      s%geometry_known = inp%angle(2) == 0.0_wp .and. inp%angle(3) == 0.0_wp
-
       r_c = 0.25_wp*(cage_od + cage_id)
-      if (pocket_kind == POCKET_BALL) then
-         allocate (s%pocket(1, n))
-      else
-         allocate (s%pocket(2, n))
-      end if
-      do k = 1, n
-         p = re_centre(:, k)
-         q = pocket_frame(s%state%centre, r_c, azimuth(k) + inp%angle(1), p)
-         if (pocket_kind == POCKET_BALL) then
-            s%pocket(1, k) = ball_pocket_contact(q, d, pocket_clearance)
+      call place(inp)
+      if (.not. present(open_start)) return
+      if (.not. open_start .or. .not. s%geometry_known .or. .not. interferes()) return
+      ! the largest scale of the offset with every gap open (interference grows with the
+      ! offset along its direction from the race, which carries the ball set's near centre)
+      lo = 0.0_wp
+      hi = 1.0_wp
+      scaled = inp
+      do iter = 1, 45
+         scaled%centre(2:3) = 0.5_wp*(lo + hi)*inp%centre(2:3)
+         call place(scaled)
+         if (interferes()) then
+            hi = 0.5_wp*(lo + hi)
          else
-            s%pocket(:, k) = roller_pocket_contacts(q, d, pocket_clearance)
+            lo = 0.5_wp*(lo + hi)
          end if
       end do
-      if (.not. s%geometry_known) then
-         nan = ieee_value(1.0_wp, ieee_quiet_nan)
-         s%pocket%geo_int = nan
-         s%pocket%theta = nan
-         s%pocket%phi = nan
-         do k = 1, 3
-            s%pocket%pos(k) = nan
-         end do
-      end if
+      scaled%centre(2:3) = lo*inp%centre(2:3)
+      call place(scaled)
+      s%start_scale = lo
 
-      allocate (s%land(size(lands)))
-      do k = 1, size(lands)
-         s%land(k) = land_contact(lands(k), s%state%centre, race_centre(:, lands(k)%guide), &
-                                  race_growth(lands(k)%guide))
-         if (.not. s%geometry_known) s%land(k)%geo_int = ieee_value(1.0_wp, ieee_quiet_nan)
-      end do
+   contains
+
+      !> Whether a pocket or a land of s interferes (a Geo Int below zero).
+      logical function interferes()
+         interferes = any(s%pocket%geo_int < 0.0_wp)
+         if (allocated(s%land)) interferes = interferes .or. any(s%land%geo_int < 0.0_wp)
+      end function interferes
+
+      !> s for the cage input c: the state, the pockets' and the lands' interactions.
+      subroutine place(c)
+         type(cage_input_t), intent(in) :: c
+         if (allocated(s%pocket)) deallocate (s%pocket)
+         if (allocated(s%land)) deallocate (s%land)
+         s%state = cage_initial_state(c, race_centre(:, guide), sum(re_centre(1, :))/n, mean_orbital)
+         s%pocket_kind = pocket_kind
+         s%geometry_known = c%angle(2) == 0.0_wp .and. c%angle(3) == 0.0_wp
+
+         if (pocket_kind == POCKET_BALL) then
+            allocate (s%pocket(1, n))
+         else
+            allocate (s%pocket(2, n))
+         end if
+         do k = 1, n
+            p = re_centre(:, k)
+            q = pocket_frame(s%state%centre, r_c, azimuth(k) + c%angle(1), p)
+            if (pocket_kind == POCKET_BALL) then
+               s%pocket(1, k) = ball_pocket_contact(q, d, pocket_clearance)
+            else
+               s%pocket(:, k) = roller_pocket_contacts(q, d, pocket_clearance)
+            end if
+         end do
+         if (.not. s%geometry_known) then
+            nan = ieee_value(1.0_wp, ieee_quiet_nan)
+            s%pocket%geo_int = nan
+            s%pocket%theta = nan
+            s%pocket%phi = nan
+            do k = 1, 3
+               s%pocket%pos(k) = nan
+            end do
+         end if
+
+         allocate (s%land(size(lands)))
+         do k = 1, size(lands)
+            s%land(k) = land_contact(lands(k), s%state%centre, race_centre(:, lands(k)%guide), &
+                                     race_growth(lands(k)%guide))
+            if (.not. s%geometry_known) s%land(k)%geo_int = ieee_value(1.0_wp, ieee_quiet_nan)
+         end do
+      end subroutine place
+
    end subroutine solve_cage_step0
 
 end module adore_cage_step0

@@ -47,11 +47,12 @@ contains
    !> degrees of freedom (replaces cage_spin_only; absent: default_constraints);
    !> lubricant_temperature as ball_bearing_loads'; adore_whirl (default .false.): a free
    !> cage's mass centre in ADORE's whirl coordinates (adore_dynamics_cage_whirl) instead of
-   !> Newton's; threads (default 1): the balls' contacts on that many threads (ball_bearing_loads',
+   !> Newton's, faded to Newton's within whirl_blend (m; default 0) of the bearing axis
+   !> (whirl_frame_acceleration's r_blend); threads (default 1): the balls' contacts on that many threads (ball_bearing_loads',
    !> the same rates bit for bit).  Input errors of the traction model come back in error.
    subroutine ball_bearing_rates(b, g, s, rates, loads, error, traction, cage, stiffness, two_d, gyro_restraint, &
                                  damping, land_film, cage_spin_only, constraints, rolling, lubricant_temperature, &
-                                 adore_whirl, threads)
+                                 adore_whirl, threads, whirl_blend)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -72,6 +73,7 @@ contains
       real(wp), intent(in), optional :: lubricant_temperature(:)
       logical, intent(in), optional :: adore_whirl
       integer, intent(in), optional :: threads
+      real(wp), intent(in), optional :: whirl_blend
       type(dof_constraints_t) :: dof
       integer :: k
 
@@ -98,7 +100,8 @@ contains
       rates%cage = body_rates(s%cage, loads%cage, b%mass(BODY_CAGE), b%moments(:, BODY_CAGE))
       if (present(adore_whirl)) then
          if (adore_whirl) rates%cage%velocity(2:3) = rates%cage%velocity(2:3) + &
-                                                     whirl_frame_acceleration(s%cage%position(2:3), s%cage%velocity(2:3))
+                                                     whirl_frame_acceleration(s%cage%position(2:3), s%cage%velocity(2:3), &
+                                                                              whirl_blend)
       end if
       call constrain(rates%cage, dof%cage)
       rates%races(RACE_OUTER) = body_rates(s%races(RACE_OUTER), loads%races(RACE_OUTER), b%mass(BODY_OUTER), &

@@ -21,7 +21,7 @@ module adore_dynamics_ball_system
    use adore_state_bearing_state, only: bearing_state_t, new_bearing_state, state_size, pack_state, unpack_state, &
                                         pack_rates, &
                                         RACE_OUTER, RACE_INNER, BODY_SIZE
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs
    use adore_dynamics_ball_motion, only: ball_bearing_rates
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
                                         DERIV_REJECT_STEP, INT_METHOD_DP54, INT_METHOD_ARK436
@@ -68,6 +68,11 @@ module adore_dynamics_ball_system
       !> a free cage's mass centre in ADORE's whirl coordinates (adore_dynamics_cage_whirl;
       !> run option cage_whirl=adore, the default) instead of Newton's inertial equations
       logical :: adore_whirl = .false.
+      !> (m) within it of the bearing axis ADORE's whirl terms fade to Newton's
+      !> (whirl_frame_acceleration's r_blend; the whirl angle is undefined on the axis): a
+      !> tenth of the smallest guide land's radial clearance, else of the pockets' (set by
+      !> start_ball_dynamics; docs/dynamics.md, "The cage's whirl frame")
+      real(wp) :: whirl_blend = 0.0_wp
       !> the bodies' degrees of freedom (adore_model_condition; the bearing kind sets them
       !> from its operating condition); not allocated: those of cage_spin_only
       type(dof_constraints_t), allocatable :: constraints
@@ -146,21 +151,24 @@ contains
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
                                  self%contact_damping, self%land_film, self%cage_spin_only, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl, threads=self%threads)
+                                 adore_whirl=self%adore_whirl, threads=self%threads, &
+                                 whirl_blend=self%whirl_blend)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, constraints=self%constraints, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl, threads=self%threads)
+                                 adore_whirl=self%adore_whirl, threads=self%threads, &
+                                 whirl_blend=self%whirl_blend)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, two_d=self%traction_2d, &
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, cage_spin_only=self%cage_spin_only, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl, threads=self%threads)
+                                 adore_whirl=self%adore_whirl, threads=self%threads, &
+                                 whirl_blend=self%whirl_blend)
       end if
       if (allocated(self%failure)) then
          ! a state outside the contact models' range (e.g. a stage of a too long step that
@@ -403,6 +411,7 @@ contains
       if (present(two_d)) sys%traction_2d = two_d
       if (present(orbit_frame)) sys%orbit_frame = orbit_frame
       if (present(adore_whirl)) sys%adore_whirl = adore_whirl
+      sys%whirl_blend = whirl_blend_radius(b, g)
       if (present(cage_free)) then
          if (cage_free) then
             sys%cage_spin_only = .false.
@@ -449,5 +458,22 @@ contains
       call it%set_jacobian_blocks([(BODY_SIZE*(k - 1) + 1, k=1, b%n_elements)], BODY_SIZE, BALL_JACOBIAN_COLUMNS, &
                                   error, border=sys%jacobian_border)
    end subroutine start_ball_dynamics
+
+   !> The radius (m) about the bearing axis within which a free cage's whirl coordinates fade
+   !> to Newton's (ball_system_t%whirl_blend): a tenth of the smallest radial clearance of its
+   !> guide lands at the deck's temperatures (adore_forces_ball_bearing's land pairs), for a
+   !> cage without lands a tenth of the pockets' radial clearance (Rec 7.1, diametral).
+   function whirl_blend_radius(b, g) result(r)
+      type(bearing_t), intent(in) :: b
+      type(mounted_geometry_t), intent(in) :: g
+      real(wp) :: r
+      r = 0.0_wp
+      if (b%n_lands > 0) then
+         associate (pairs => guide_land_pairs(b, g, b%temperature))
+            if (size(pairs) > 0) r = 0.1_wp*minval(pairs%clearance)
+         end associate
+      end if
+      if (.not. r > 0.0_wp) r = 0.1_wp*0.5_wp*maxval(b%pocket_clearance)
+   end function whirl_blend_radius
 
 end module adore_dynamics_ball_system

@@ -20,6 +20,15 @@
 !> contacts' damping (beta k delta_dot**2), up to the small
 !> non-conservative part of a Hertz stiffness that follows the contact angle.  Time-
 !> averaged over a steady window dE/dt averages out: drive power = dissipation.
+!> A free cage in ADORE's whirl coordinates (adore_dynamics_cage_whirl: r'' = F_r/m,
+!> r psi'' = F_t/m) moves by F/m + a_w, a_w = -(v_t**2/r) e_r + (2 v_r v_t/r) e_t the
+!> centripetal and Coriolis accelerations its polar equations omit (faded to 0 near the
+!> axis).  Its kinetic energy then changes by F.v + m a_w.v, and
+!>     m a_w.v = m (-(v_t**2/r) v_r + (2 v_r v_t/r) v_t) = m v_r v_t**2 / r
+!> is power the whirl frame gives the cage that no force supplies (a cage free of force
+!> keeps r' and psi', so its speed v_t = r psi' grows with r).  The balance reads
+!>     P_drive = P_loss + P_damping + dE/dt + P_frame,    P_frame = -m a_w.v,
+!> P_frame the whirl frame's power (0 by Newton's equations).
 !> Forces: the contacts' force on the inner race balances the applied load and the race's
 !> weight, on average, when the race does not accelerate; the outer race's contact force
 !> is the housing's reaction.  No module state.
@@ -38,20 +47,25 @@ module adore_forces_ball_power
    !> Positions in the vector of ball_balance_values: drive power (W), heat of the race
    !> contacts (W), race contact damping (W), the power the cage contacts (pockets and guide
    !> lands, every force they exert) take from the bodies (W) and their friction heat (W),
-   !> mechanical energy (J), contact force on the inner race (3, N), on the outer race (3, N).
+   !> mechanical energy (J), contact force on the inner race (3, N), on the outer race (3, N),
+   !> the whirl frame's power P_frame (W, module header).
    integer, parameter, public :: BAL_DRIVE = 1, BAL_RACE_HEAT = 2, BAL_DAMPING = 3, BAL_CAGE_WORK = 4, &
                                  BAL_CAGE_HEAT = 5, BAL_ENERGY = 6, BAL_INNER_FORCE = 7, BAL_OUTER_FORCE = 10, &
-                                 N_BALANCE = 12
+                                 BAL_WHIRL_FRAME = 13, N_BALANCE = 13
 
 contains
 
    !> The balance quantities (module header) of ball bearing b at state s with the force
    !> assembly's loads there (after the gyroscopic restraint, when the run has it), into
-   !> v(N_BALANCE) in the BAL_* order.
-   function ball_balance_values(b, s, loads) result(v)
+   !> v(N_BALANCE) in the BAL_* order.  frame_acceleration (m/s**2, inertial components;
+   !> default 0): what the cage's equations of motion add to its F/m (ADORE's whirl
+   !> coordinates, adore_dynamics_cage_whirl's whirl_frame_acceleration), whose power
+   !> -m a.v is BAL_WHIRL_FRAME.
+   function ball_balance_values(b, s, loads, frame_acceleration) result(v)
       type(bearing_t), intent(in) :: b
       type(bearing_state_t), intent(in) :: s
       type(ball_bearing_loads_t), intent(in) :: loads
+      real(wp), intent(in), optional :: frame_acceleration(3)
       real(wp) :: v(N_BALANCE)
       real(wp) :: m_c(3), energy
       integer :: k, j
@@ -80,6 +94,8 @@ contains
       v(BAL_ENERGY) = energy
       v(BAL_INNER_FORCE:BAL_INNER_FORCE + 2) = loads%races(RACE_INNER)%force - b%mass(BODY_INNER)*b%gravity - b%force
       v(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2) = loads%races(RACE_OUTER)%force - b%mass(BODY_OUTER)*b%gravity
+      if (present(frame_acceleration)) v(BAL_WHIRL_FRAME) = -b%mass(BODY_CAGE)*dot_product(frame_acceleration, &
+                                                                                             s%cage%velocity)
 
    contains
 

@@ -90,10 +90,11 @@ module adore_model_run_options
       !> the same in shaft (inner race) revolutions; 0: none
       real(wp) :: revolutions = 0.0_wp
       !> the cage's degrees of freedom (report 4.4.6; docs/dynamics.md, "The cage's degrees of
-      !> freedom"): "centred" (translation and tilt constrained, turning about its axis),
-      !> "free" (all six integrated, the guide lands' film on) or "deck" (the deck's own
-      !> constraints: Rec 3.3 all zero constrains nothing, a free cage)
-      character(len=16) :: cage = "centred"
+      !> freedom"): "deck" (the default: the deck's own constraints, Rec 3.3 all zero or
+      !> Appendix D's pattern constrain nothing of the cage, a free cage), "centred"
+      !> (translation and tilt constrained, turning about its axis) or "free" (all six
+      !> integrated, the guide lands' film on)
+      character(len=16) :: cage = "deck"
       !> the equations of a free cage's mass centre in its whirl plane (docs/dynamics.md, "The
       !> cage's whirl frame"): "adore" (ADORE's, as report 4.4.4 and its prints show them: the
       !> whirl radius and angle integrated as r'' = F_r/m, r psi'' = F_t/m, so a cage free of
@@ -193,9 +194,9 @@ module adore_model_run_options
       option_spec_t("integrator", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,ark4,ros34pw2,dp5,bs3", &
                     "integration method: the deck's INT METHOD (5: ark4 for balls), IMEX ARK4(3)6L[2]SA, "// &
                     "Rosenbrock-W ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)"), &
-      option_spec_t("cage", OPTION_CHOICE, "centred", 0, "", "NAME", "centred,free,deck", &
-                    "cage degrees of freedom (report 4.4.6): centred (translation and tilt constrained), "// &
-                    "free (all six, land films on) or as the deck's Rec 3.3 says (ball decks)"), &
+      option_spec_t("cage", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,centred,free", &
+                    "cage DOFs (report 4.4.6): as the deck's Rec 3.3 says (all zeros: free), centred (translation "// &
+                    "and tilt constrained) or free (all six, land films on)"), &
       option_spec_t("cage_whirl", OPTION_CHOICE, "adore", 0, "", "NAME", "adore,inertial", &
                     "a free cage's mass centre: ADORE's whirl coordinates (report 4.4.4: a cage free of "// &
                     "interactions keeps its whirl circle) or Newton's inertial equations"), &
@@ -358,7 +359,7 @@ contains
          opts%integrator = "deck"
          if (len_trim(value) > 0) opts%integrator = trim(adjustl(value))
       case ("cage")
-         opts%cage = "centred"
+         opts%cage = "deck"
          if (len_trim(value) > 0) opts%cage = trim(adjustl(value))
       case ("cage_whirl")
          opts%cage_whirl = "adore"

@@ -58,6 +58,10 @@ module adore_start_ball_step0
       !> cage state and geometric interactions; axial positions from the outer groove
       !> curvature centre plane (the print's axial frame, see adore_cage_step0)
       type(cage_step0_t) :: cage
+      !> the free cage's dynamic start: cage, unless its Rec 9.5.1 centre puts a ball into its
+      !> pocket or the cage into a land; then with the centre's offset scaled down until every
+      !> gap is open (solve_cage_step0's open_start, cage_start%start_scale)
+      type(cage_step0_t) :: cage_start
       ! race-contact tribology, (1, k) outer and (2, k) inner contact of ball k
       real(wp), allocatable :: slip(:, :)          !< printed slip velocity, max |u| at the nodes (m/s)
       real(wp), allocatable :: trac_coeff(:, :)    !< local traction coefficient at the node of the printed slip (-)
@@ -189,6 +193,12 @@ contains
                                sum(s%start%kinematics%orbital_speed)/b%n_elements, b%d, POCKET_BALL, &
                                b%pocket_clearance(1), b%cage_od, b%cage_id, b%lands, race_centre, &
                                [-s%mounting%outer_raceway_shrink, s%mounting%inner_raceway_growth], s%cage, error)
+         if (allocated(error)) return
+         call solve_cage_step0(b%cage_initial, centres, e%azimuth, &
+                               sum(s%start%kinematics%orbital_speed)/b%n_elements, b%d, POCKET_BALL, &
+                               b%pocket_clearance(1), b%cage_od, b%cage_id, b%lands, race_centre, &
+                               [-s%mounting%outer_raceway_shrink, s%mounting%inner_raceway_growth], s%cage_start, &
+                               error, open_start=.true.)
       end associate
 
    contains

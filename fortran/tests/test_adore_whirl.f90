@@ -6,7 +6,11 @@
 !> * a purely radial motion gets nothing added (no whirl, no Coriolis term);
 !> * integrated (classical RK4) with no force for 20.3 whirl periods from a state with both a
 !>   radial and a whirl velocity, the motion is r = r0 + rdot0 t, psi = psi0 + psidot0 t
-!>   (r'' = 0, r psi'' = 0), where Newton's straight line would leave the circle.
+!>   (r'' = 0, r psi'' = 0), where Newton's straight line would leave the circle;
+!> * on that motion the kinetic energy changes by what the frame's acceleration gives,
+!>   the balance's whirl-frame power a_w.v = v_r v_t**2 / r (adore_forces_ball_power):
+!>   the closed form 1/2 psidot0**2 (r**2 - r0**2) per unit mass and the trapezoidal
+!>   integral of v_r v_t**2 / r along the path.
 program test_adore_whirl
    use adore_core_kinds, only: wp
    use adore_dynamics_cage_whirl, only: whirl_frame_acceleration
@@ -45,6 +49,7 @@ contains
    !> y = (p, v); dv/dt = whirl_frame_acceleration (no force)
    subroutine test_force_free_motion()
       real(wp) :: y(4), k1(4), k2(4), k3(4), k4(4), h, t, r0, rdot0, psi0, psidot0, r_end, psi_end, r, psi
+      real(wp) :: work, p_old, ke0, ke
       integer :: i, n
       r0 = 2.0e-4_wp
       rdot0 = 1.0e-3_wp
@@ -55,13 +60,19 @@ contains
       t = 20.3_wp*2.0_wp*pi/psidot0
       n = 200000
       h = t/n
+      ke0 = 0.5_wp*dot_product(y(3:4), y(3:4))
+      work = 0.0_wp
+      p_old = frame_power(y)
       do i = 1, n
          k1 = rate(y)
          k2 = rate(y + 0.5_wp*h*k1)
          k3 = rate(y + 0.5_wp*h*k2)
          k4 = rate(y + h*k3)
          y = y + h*(k1 + 2.0_wp*k2 + 2.0_wp*k3 + k4)/6.0_wp
+         work = work + 0.5_wp*h*(p_old + frame_power(y))
+         p_old = frame_power(y)
       end do
+      ke = 0.5_wp*dot_product(y(3:4), y(3:4))
       r = norm2(y(1:2))
       r_end = r0 + rdot0*t
       psi = atan2(y(2), y(1))
@@ -69,7 +80,23 @@ contains
       write (*, "(a,2es16.8,a,2f14.10)") "force-free, 20.3 periods: r ", r, r_end, " m; psi ", psi, psi_end
       call check(abs(r - r_end) <= 1e-9_wp*r_end, "force-free: r = r0 + rdot0 t (r'' = 0)")
       call check(abs(psi - psi_end) <= 1e-7_wp, "force-free: psi = psi0 + psidot0 t (r psi'' = 0)")
+      write (*, "(a,3es16.8)") "force-free: kinetic energy change, closed form, frame work (J/kg) ", ke - ke0, &
+         0.5_wp*psidot0**2*(r_end**2 - r0**2), work
+      call check(abs((ke - ke0) - 0.5_wp*psidot0**2*(r_end**2 - r0**2)) <= 1e-8_wp*(ke - ke0), &
+                 "force-free: kinetic energy change 1/2 psidot0**2 (r**2 - r0**2)")
+      call check(abs(work - (ke - ke0)) <= 1e-8_wp*(ke - ke0), &
+                 "force-free: the frame's work (integral of v_r v_t**2 / r) is the kinetic energy change")
    end subroutine test_force_free_motion
+
+   !> a_w.v = v_r v_t**2 / r per unit mass at y = (p, v) (m**2/s**3).
+   pure real(wp) function frame_power(y)
+      real(wp), intent(in) :: y(4)
+      real(wp) :: e_r(2), v_r, v_t
+      e_r = y(1:2)/norm2(y(1:2))
+      v_r = dot_product(y(3:4), e_r)
+      v_t = y(4)*e_r(1) - y(3)*e_r(2)
+      frame_power = v_r*v_t**2/norm2(y(1:2))
+   end function frame_power
 
    pure function rate(y) result(d)
       real(wp), intent(in) :: y(4)

@@ -17,6 +17,7 @@ program test_cage
 
    call test_centred_cage_gives_uniform_clearances()
    call test_whirl_offset_gives_sine_clearance()
+   call test_open_start_scales_the_offset()
    call test_axial_offset_turns_the_contact_angle()
    call test_land_play_and_gap()
    call test_initial_speeds()
@@ -37,13 +38,14 @@ contains
       centres(3, :) = r*cos(azimuth)
    end subroutine ring_of_elements
 
-   subroutine solve(inp, x, kind, s, lands, race_centre, growth)
+   subroutine solve(inp, x, kind, s, lands, race_centre, growth, open_start)
       type(cage_input_t), intent(in) :: inp
       real(wp), intent(in) :: x(n)
       integer, intent(in) :: kind
       type(cage_step0_t), intent(out) :: s
       type(guide_land_t), intent(in), optional :: lands(:)
       real(wp), intent(in), optional :: race_centre(3, 2), growth(2)
+      logical, intent(in), optional :: open_start
       real(wp) :: centres(3, n), azimuth(n), rc(3, 2), g(2)
       type(guide_land_t) :: none(0)
       type(error_type), allocatable :: error
@@ -53,9 +55,11 @@ contains
       if (present(race_centre)) rc = race_centre
       if (present(growth)) g = growth
       if (present(lands)) then
-         call solve_cage_step0(inp, centres, azimuth, 100.0_wp, d, kind, c, cage_od, cage_id, lands, rc, g, s, error)
+         call solve_cage_step0(inp, centres, azimuth, 100.0_wp, d, kind, c, cage_od, cage_id, lands, rc, g, s, error, &
+                               open_start)
       else
-         call solve_cage_step0(inp, centres, azimuth, 100.0_wp, d, kind, c, cage_od, cage_id, none, rc, g, s, error)
+         call solve_cage_step0(inp, centres, azimuth, 100.0_wp, d, kind, c, cage_od, cage_id, none, rc, g, s, error, &
+                               open_start)
       end if
       call check(.not. allocated(error), "solve_cage_step0 succeeds")
    end subroutine solve
@@ -110,6 +114,30 @@ contains
       call check(s%pocket(1, 4)%in_contact .and. s%pocket(1, 4)%geo_int < 0.0_wp, "offset > c/2: interference")
       call check(.not. s%pocket(1, 1)%in_contact, "psi 0: still clear")
    end subroutine test_whirl_offset_gives_sine_clearance
+
+   !> open_start: an offset e = 0.8 c along -z puts the ball at psi = 90 deg e - c/2 into its
+   !> pocket (gap c/2 - e |sin psi|); the start scales the offset to the largest with every gap
+   !> open, c/2 / e = 0.625 (the ball at 90 deg then just touches), the whirl speed from that
+   !> centre.  An offset inside the clearance is kept as it is.
+   subroutine test_open_start_scales_the_offset()
+      type(cage_input_t) :: inp
+      type(cage_step0_t) :: s, kept
+      real(wp) :: x(n)
+      x = 0.0_wp
+      inp%centre = [0.0_wp, 0.0_wp, -0.8_wp*c]
+      call solve(inp, x, POCKET_BALL, s, open_start=.true.)
+      call check(abs(s%start_scale - 0.625_wp) < 1.0e-12_wp, "open start: offset scaled by c/2 / e")
+      call check(all(s%pocket(1, :)%geo_int >= 0.0_wp), "open start: every pocket gap open")
+      call check(abs(s%pocket(1, 4)%geo_int) < 1.0e-14_wp, "open start: the ball at 90 deg touches")
+      call check(abs(s%state%centre(3) + 0.5_wp*c) < 1.0e-14_wp, "open start: centre at -c/2")
+      call check(abs(norm2(s%state%velocity) - s%state%whirl_speed*0.5_wp*c) < 1.0e-12_wp*s%state%whirl_speed, &
+                 "open start: whirl velocity from the scaled radius")
+      inp%centre = [0.0_wp, 0.0_wp, -0.3_wp*c]
+      call solve(inp, x, POCKET_BALL, s, open_start=.true.)
+      call solve(inp, x, POCKET_BALL, kept)
+      call check(s%start_scale == 1.0_wp .and. all(s%state%centre == kept%state%centre), &
+                 "open start: an offset inside the clearance kept")
+   end subroutine test_open_start_scales_the_offset
 
    !> Balls axially off the cage by a cos(psi), cage centred: ball 1 touches the pocket
    !> axially (theta 270, contact x = a + D/2), the ball opposite at theta 90.
