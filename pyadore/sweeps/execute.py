@@ -193,12 +193,96 @@ class _Forked:
         return self.returncode
 
 
-def _start_group(workers: list["_Worker"]) -> None:
+class _Child:
+    """The fork server forked by this process (:func:`_fork_server`): a child known by its pid,
+    waited for with waitpid (the Popen methods the pool uses: poll, wait, kill)."""
+
+    def __init__(self, pid: int) -> None:
+        self.pid = pid
+        self.returncode: int | None = None
+
+    def poll(self):
+        if self.returncode is None:
+            try:
+                pid, status = os.waitpid(self.pid, os.WNOHANG)
+            except ChildProcessError:
+                self.returncode = -1
+            else:
+                if pid:
+                    self.returncode = os.waitstatus_to_exitcode(status)
+        return self.returncode
+
+    def wait(self, timeout: float | None = None):
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while self.poll() is None:
+            if deadline is not None and time.monotonic() > deadline:
+                import subprocess
+
+                raise subprocess.TimeoutExpired(f"fork server {self.pid}", timeout)
+            time.sleep(0.002)
+        return self.returncode
+
+    def kill(self) -> None:
+        import signal
+
+        if self.poll() is None:
+            try:
+                os.kill(self.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+
+
+def _fork_server(slots: list[tuple[int, int]]) -> _Child:
+    """Fork this process into the fork server of ``slots`` (Linux; :func:`start_early` only:
+    the ``pyadore`` command at its very start, a single thread that has imported nothing but
+    its signal handlers and this module - no engine, no Fortran run-time, no numpy).  The
+    child is what ``python -m pyadore.sweeps.worker --slots ...`` is, without a second
+    interpreter start: the interpreter, ``site`` with the editable install's loader and its
+    rebuild check (about 0.1 s of CPU of the sweep's serial start, docs/sweeps.md "Scaling").
+    It keeps only its slots' descriptors and the standard streams (stdin from /dev/null),
+    ignores SIGINT and takes SIGTERM and SIGHUP by default, as the worker process does."""
+    import signal
+
+    pid = os.fork()
+    if pid:
+        return _Child(pid)
+    code = 1
+    try:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        for name in ("SIGTERM", "SIGHUP"):
+            signal.signal(getattr(signal, name), signal.SIG_DFL)
+        keep = {0, 1, 2} | {fd for pair in slots for fd in pair}
+        for name in os.listdir("/proc/self/fd"):  # the client's ends of every channel above all
+            if int(name) not in keep:
+                try:
+                    os.close(int(name))
+                except OSError:
+                    pass
+        null = os.open(os.devnull, os.O_RDONLY)
+        os.dup2(null, 0)
+        os.close(null)
+        os.environ.update(WORKER_ENV)  # before the engine (OpenMP) loads
+        from . import worker
+
+        code = worker.main(["--slots", ",".join(f"{r}:{w}" for r, w in slots)])
+    except BaseException:
+        try:
+            import traceback
+
+            traceback.print_exc()
+        except BaseException:
+            pass
+    finally:
+        os._exit(code)
+
+
+def _start_group(workers: list["_Worker"], fork: bool = False) -> None:
     """Start worker processes for ``workers``: on Linux one fresh interpreter that, once warm,
-    forks one process per further worker (one start-up for the group, :mod:`.worker`); on
-    other POSIX systems one process each, on pipes passed by descriptor; elsewhere one
-    process each on its stdin and stdout.  Each process runs one engine thread
-    (:data:`WORKER_ENV`)."""
+    forks one process per further worker (one start-up for the group, :mod:`.worker`) - or,
+    ``fork`` (:func:`start_early`: the command's first moments), this process forked into
+    that fork server (:func:`_fork_server`); on other POSIX systems one process each, on
+    pipes passed by descriptor; elsewhere one process each on its stdin and stdout.  Each
+    process runs one engine thread (:data:`WORKER_ENV`)."""
     import subprocess
 
     env = {**os.environ, **WORKER_ENV}
@@ -220,8 +304,11 @@ def _start_group(workers: list["_Worker"]) -> None:
                 theirs += [job_r, res_w]
                 mine.append((job_w, res_r))
                 slots.append(f"{job_r}:{res_w}")
-            proc = subprocess.Popen(cmd + ["--slots", ",".join(slots)], stdin=subprocess.DEVNULL, env=env,
-                                    pass_fds=theirs)
+            if fork and sys.platform.startswith("linux"):
+                proc = _fork_server([tuple(int(x) for x in s.split(":")) for s in slots])
+            else:
+                proc = subprocess.Popen(cmd + ["--slots", ",".join(slots)], stdin=subprocess.DEVNULL, env=env,
+                                        pass_fds=theirs)
         except BaseException:
             for fd in theirs + [fd for pair in mine for fd in pair]:
                 os.close(fd)
@@ -246,6 +333,7 @@ class _Worker:
         self.results = None     # its result channel (text, read here)
         self.ready = False      # its ready line was read: it is warm and its pid known
         self.server = None      # the fork server that forked it (Linux)
+        self.boot: dict = {}    # its ready line: pid, the boot's CPU time and end (the bench's budget)
         self.interrupted = threading.Event()  # set by kill(): serve() ends without a report
 
     def _attach(self, proc, jobs, results, server=None) -> None:
@@ -266,7 +354,8 @@ class _Worker:
         line = self.results.readline()
         if not line:
             raise OSError("the worker ended before it was ready")
-        pid = json.loads(line)["ready"]
+        self.boot = json.loads(line)  # {"ready": pid, "boot_cpu_s": ..., "booted_at": ...}
+        pid = self.boot["ready"]
         if isinstance(self.proc, _Forked):
             self.proc.pid = pid
         self.ready = True
@@ -380,11 +469,14 @@ class WorkerPool:
     def start(self, count: int | None = None) -> "WorkerPool":
         """Start the first ``count`` workers (all by default) that do not run, as one group:
         they boot while the caller goes on (a sweep starts its pool before it reads the deck)."""
+        return self._start(count)
+
+    def _start(self, count: int | None = None, fork: bool = False) -> "WorkerPool":
         idle = [w for w in self._workers[:self.size if count is None else count] if not w.running()]
         for w in idle:
             w.stop()
         if idle:
-            _start_group(idle)
+            _start_group(idle, fork=fork)
         return self
 
     def close(self) -> None:
@@ -440,7 +532,8 @@ def start_early(argv: list[str]) -> None:
         except ValueError:
             return
     if workers >= 1:
-        _EARLY.append(WorkerPool(workers).start())
+        # forked from this process: it has imported nothing yet that a fork must not copy
+        _EARLY.append(WorkerPool(workers)._start(fork=True))
 
 
 def take_early(workers: int) -> WorkerPool | None:
