@@ -189,7 +189,7 @@ class _Forked:
                 import subprocess
 
                 raise subprocess.TimeoutExpired(f"worker {self.pid}", timeout)
-            time.sleep(0.005)
+            time.sleep(0.001)
         return self.returncode
 
 
@@ -219,7 +219,7 @@ class _Child:
                 import subprocess
 
                 raise subprocess.TimeoutExpired(f"fork server {self.pid}", timeout)
-            time.sleep(0.002)
+            time.sleep(0.001)
         return self.returncode
 
     def kill(self) -> None:
