@@ -360,12 +360,19 @@ class _Worker:
             self.proc.pid = pid
         self.ready = True
 
-    def serve(self, jobs, results) -> None:
+    def serve(self, jobs, results, once: bool = False) -> None:
         """Run jobs from the queue ``jobs`` until a None; each result, then a None, to ``results``.
         After :meth:`kill` (the sweep was interrupted) it ends quietly: the process it was
-        waiting on is gone on purpose, not a crash to report, and none is started again."""
+        waiting on is gone on purpose, not a crash to report, and none is started again.
+        ``once`` (a pool of one sweep): at the None the worker is told to end (its job channel
+        closed), so it exits while the client records the last results."""
         while True:
             job = jobs.get()
+            if job is None and once and self.ready:
+                try:
+                    self.jobs.close()
+                except (OSError, ValueError, AttributeError):
+                    pass
             if job is None or self.interrupted.is_set():
                 break
             proc = None
@@ -455,6 +462,8 @@ class WorkerPool:
             raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
         self.size = workers
         self._workers = [_Worker() for _ in range(workers)]
+        #: the pool serves one sweep (a sweep's own, the command's): its workers end with its last job
+        self.once = False
 
     def __enter__(self) -> "WorkerPool":
         return self
@@ -533,7 +542,9 @@ def start_early(argv: list[str]) -> None:
             return
     if workers >= 1:
         # forked from this process: it has imported nothing yet that a fork must not copy
-        _EARLY.append(WorkerPool(workers)._start(fork=True))
+        pool = WorkerPool(workers)
+        pool.once = True  # the command's one sweep
+        _EARLY.append(pool._start(fork=True))
 
 
 def take_early(workers: int) -> WorkerPool | None:
@@ -560,6 +571,7 @@ def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None],
 
     own = not isinstance(workers, WorkerPool)
     pool = WorkerPool(max(1, min(workers, count))) if own else workers
+    pool.once = pool.once or own
     pending: queue.Queue = queue.Queue()
     results: queue.Queue = queue.Queue()
     used: list[_Worker] = []
@@ -570,7 +582,7 @@ def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None],
                 pool.start(len(used))  # those not started yet (sweep() starts its pool early)
                 for w in used:
                     w.interrupted.clear()  # a pool's worker serves again after an interrupted sweep
-                    threading.Thread(target=w.serve, args=(pending, results), daemon=True).start()
+                    threading.Thread(target=w.serve, args=(pending, results, pool.once), daemon=True).start()
             pending.put(job)
         for _ in used:
             pending.put(None)  # no more jobs: each worker's thread ends after its last one

@@ -398,6 +398,7 @@ def run_sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, 
     if scheduler is None:
         own = not isinstance(workers, WorkerPool)
         pool = WorkerPool(workers or os.cpu_count() or 1) if own else workers
+        pool.once = pool.once or own  # this sweep's own: its workers end with its last job
         pool.start()  # boots while the client reads the deck and prepares the cases
     try:
         return _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, scheduler, progress, options)
