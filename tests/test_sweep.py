@@ -219,16 +219,21 @@ def test_killed_sweep_resumes_with_nothing_lost_or_run_twice(tmp_path):
 def _assert_forked_from_the_command(command: int, worker: int) -> None:
     """The worker's parent is the fork server and the server's parent the `pyadore sweep`
     command, whose command line it has: a fork of the command at its start, not a second
-    interpreter (`python -m pyadore.sweeps.worker`; docs/sweeps.md, "Where the cases run")."""
+    interpreter (`python -m pyadore.sweeps.worker`; docs/sweeps.md, "Where the cases run").
+    The worker holds one thread: the server set OMP_NUM_THREADS and OPENBLAS_NUM_THREADS to 1
+    before numpy and the engine loaded (set after the fork, they are not in /proc's environ of
+    the exec; without them numpy's OpenBLAS starts a thread per further core)."""
     try:
         server, _ = _parent_and_environment(worker)
-        parent, env = _parent_and_environment(server)
+        parent, _ = _parent_and_environment(server)
         cmdline = Path(f"/proc/{server}/cmdline").read_bytes()
+        threads = [line for line in Path(f"/proc/{worker}/status").read_text().splitlines()
+                   if line.startswith("Threads:")]
     except (FileNotFoundError, ProcessLookupError):
         pytest.skip("the sweep ended before its processes could be read")
     assert parent == command
     assert cmdline == Path(f"/proc/{command}/cmdline").read_bytes() and b"pyadore.sweeps.worker" not in cmdline
-    assert b"OMP_NUM_THREADS=1" in _parent_and_environment(worker)[1]
+    assert threads == ["Threads:\t1"]
 
 
 def test_terminated_sweep_ends_its_workers(tmp_path):
