@@ -85,6 +85,7 @@ def cpu_budget(trace: dict, wall: float, cpu: float, launch: float) -> dict:
         served[r["worker"]] = served.get(r["worker"], 0.0) + r["timing"]["cpu_s"]
     out = {
         "client: interpreter start (to pyadore's entry)": cpu0,
+        "client: launch to pyadore's entry, wall (with the editable install's ninja check)": t0 - launch,
         "client: entry to first job (click, options, runner, deck, first case deck)": first_cpu - cpu0,
         "fork server: boot (numpy, engine, deck checker, print reader)": boot.get("boot_cpu_s", float("nan")),
         "cases: sum of their CPU": sum(cases),

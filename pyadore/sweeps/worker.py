@@ -1,7 +1,7 @@
 """A local sweep worker process: ``python -m pyadore.sweeps.worker [--slots R:W,R:W,...]``.
 
 A worker reads one job a line (JSON: the arguments of
-:func:`pyadore.sweeps.execute.run_case`) and writes one result a line (JSON) on its
+:func:`pyadore.sweeps.case.run_case`) and writes one result a line (JSON) on its
 protocol channel, until its job channel closes; when the result channel is gone (its client
 was killed) it ends quietly, without a BrokenPipeError traceback.  Its first line is
 ``{"ready": PID}`` once it is warm.  fd 1 is pointed at stderr so that nothing else (a
@@ -43,7 +43,7 @@ def warm() -> None:
     from ..api import run  # noqa: F401
     from ..deck import check_deck  # noqa: F401
     from ..printout import read_print  # noqa: F401
-    from .execute import run_case  # noqa: F401
+    from .case import run_case  # noqa: F401
     from .results import key_results, mean_results  # noqa: F401
 
     _core.base._engine()
@@ -53,7 +53,7 @@ def serve(jobs, channel, boot: dict | None = None) -> None:
     """Announce this process (``{"ready": pid, **boot}``: ``boot`` the boot's CPU time and when
     it ended, for the bench's budget), then run the jobs of the text stream ``jobs`` until it
     closes, each result a line on ``channel``."""
-    from .execute import run_case
+    from .case import run_case
 
     try:
         channel.write(json.dumps({"ready": os.getpid(), **(boot or {})}) + "\n")
