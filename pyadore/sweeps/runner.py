@@ -211,11 +211,16 @@ class _Sweep:
         self._events.append(f"{entry['finished_at']} {case.case_id} {status} {dur} {worker}".rstrip())
         since = time.monotonic() - self._manifest_written
         if since >= min(MANIFEST_INTERVAL, MANIFEST_COST_FACTOR * self._manifest_cost):
-            self.write_manifest()
+            self.write_manifest(durable=False)
 
-    def write_manifest(self) -> None:
+    def write_manifest(self, durable: bool = True) -> None:
         """Write manifest.json - every case with its parameters, status, duration and error -
-        then the events.log lines of the cases finished since the last one."""
+        then the events.log lines of the cases finished since the last one.  ``durable``: flushed
+        to the disk first (fsync: the sweep's start and end); the rewrites while the cases run
+        are progress (a resume reads each case's result.json, never the manifest) and skip the
+        fsync, as events.log's appends do: about 0.6 ms of the client's CPU a case, which
+        competes with the workers (docs/sweeps.md, "Scaling").  Whole or absent all the same:
+        written atomically."""
         self._manifest_written = time.monotonic()
         rows = []
         for case in self.cases:
@@ -227,7 +232,8 @@ class _Sweep:
         counts: dict[str, int] = {}
         for e in rows:
             counts[e["status"]] = counts.get(e["status"], 0) + 1
-        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, rows))
+        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, rows),
+                           durable=durable)
         if self._events:
             store.append_event(self.root, "\n".join(self._events))
             self._events = []
