@@ -17,9 +17,9 @@ def main() -> None:
 
     set_phase("while starting: nothing done")
     install_command_handlers()
-    try:
-        import sys
+    import sys
 
+    try:
         if sys.argv[1:2] == ["sweep"]:
             from .sweeps.execute import start_early
 
@@ -41,7 +41,37 @@ def main() -> None:
             pass
         exit_by_signal(signum)
     set_phase("")
-    command()
+    if sys.argv[1:2] != ["sweep"]:
+        command()
+        return
+    try:
+        command()
+    except SystemExit as exc:  # the sweep's end: every file written and closed, the workers ended
+        _exit_now(exc.code)
+
+
+def _exit_now(code) -> None:
+    """End the ``pyadore sweep`` command with exit status ``code`` (as SystemExit takes it) once
+    its output is flushed, without the interpreter's clean-up: freeing the modules of the
+    client (about 0.06 s of CPU, docs/sweeps.md "Scaling") is time the user waits for and
+    nothing else.  The sweep has written every file by then (each atomically, and closed),
+    ended its workers and their fork server."""
+    import os
+    import sys
+
+    if code is None:
+        status = 0
+    elif isinstance(code, int):
+        status = code
+    else:  # a message (sys.exit("...")): printed as the interpreter prints it
+        print(code, file=sys.stderr)
+        status = 1
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+    os._exit(status & 0xFF)  # as the interpreter: sys.exit(-1) is 255
 
 
 if __name__ == "__main__":

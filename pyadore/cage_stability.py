@@ -35,8 +35,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 __all__ = ["STABILITY_COLUMNS", "cage_stability"]
 
 #: The measures, in the order of the sweep summary's columns.
@@ -49,6 +47,8 @@ CENTRED_RADIUS = 1.0e-6
 
 def _weights(t: np.ndarray) -> np.ndarray:
     """Trapezoidal weights of samples at times t (sum = t[-1] - t[0])."""
+    import numpy as np
+
     w = np.zeros_like(t)
     dt = np.diff(t)
     w[:-1] += 0.5 * dt
@@ -61,6 +61,8 @@ def cage_stability(ds, fraction: float = 0.5, guide: str = "inner") -> dict:
     time (default: the second half), the land measures about the ``guide`` race ("inner"
     or "outer").  NaN everywhere for a dataset without the cage's position and velocity or
     with fewer than three rows in the window."""
+    import numpy as np  # here: the sweep command's client imports this module for its columns only
+
     if guide not in ("inner", "outer"):
         raise ValueError(f"guide must be 'inner' or 'outer', got {guide!r}")
     out = {c: math.nan for c in STABILITY_COLUMNS}

@@ -450,7 +450,11 @@ def sweep(deck: Path, vary: tuple[str, ...], zip_values: bool, steps: int | None
     pool = None
     if scheduler is None:
         n = workers or os.cpu_count() or 1
-        pool = take_early(n) or WorkerPool(n).start()
+        pool = take_early(n)
+        if pool is None:
+            pool = WorkerPool(n)
+            pool.once = True  # the command's one sweep: its workers end with its last job
+            pool.start()
     try:
         from .sweeps.runner import run_sweep
 

@@ -58,10 +58,76 @@ class RunOption:
 
 @lru_cache(maxsize=1)
 def run_options() -> tuple[RunOption, ...]:
-    """The engine's run option table, in its order."""
-    from ._core import run_option_table
+    """The engine's run option table, in its order: read from the engine once per build of
+    its extension and then from a copy in the user's cache folder (:func:`_table_cache`), so
+    that the command line's options cost no import of numpy and the engine (about 0.15 s of
+    CPU of a ``pyadore sweep`` client's start, the serial path to its first case: docs/sweeps.md,
+    "Scaling"; ``pyadore run`` imports the engine anyway)."""
+    cache = _table_cache()
+    rows = _read_cached(cache)
+    if rows is None:
+        from ._core import run_option_table
 
-    return tuple(RunOption(*row) for row in run_option_table())
+        rows = run_option_table()
+        _write_cached(cache, rows)
+    return tuple(RunOption(*row) for row in rows)
+
+
+def _table_cache() -> tuple[Path, str] | None:
+    """Where the copy of the option table lives and the key it must carry: the engine
+    extension's file (found, not loaded), its size and modification time, so a rebuilt engine
+    is read again (an editable install rebuilds it when ``pyadore`` is imported, before this).
+    ``$XDG_CACHE_HOME/pyadore`` or ``~/.cache/pyadore``; None when the extension's file is not
+    known (then the engine is read every time)."""
+    try:
+        from importlib.util import find_spec
+
+        origin = find_spec("pyadore._engine").origin
+        st = os.stat(origin)
+        key = f"{origin}|{st.st_size}|{st.st_mtime_ns}"
+        import zlib
+
+        root = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "pyadore"
+        return root / f"run-options-{zlib.crc32(origin.encode()):08x}.json", key
+    except Exception:  # noqa: BLE001 - no cache: the table is read from the engine
+        return None
+
+
+def _read_cached(cache) -> list[tuple] | None:
+    """The cached table when its key is ``cache``'s, else None."""
+    if cache is None:
+        return None
+    import json
+
+    try:
+        data = json.loads(cache[0].read_text(encoding="utf-8"))
+        if data["key"] != cache[1]:
+            return None
+        return [(r[0], r[1], r[2], r[3], r[4], r[5], tuple(r[6]), r[7]) for r in data["rows"]]
+    except Exception:  # noqa: BLE001 - absent, unreadable, of another format: read the engine
+        return None
+
+
+def _write_cached(cache, rows: list[tuple]) -> None:
+    """Keep the table for the next process (atomically; a failure only costs the next one the
+    engine's import)."""
+    if cache is None:
+        return
+    import json
+    import tempfile
+
+    path, key = cache
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            json.dump({"key": key, "rows": [list(r[:6]) + [list(r[6]), r[7]] for r in rows]}, fh)
+        os.replace(tmp, path)
+    except OSError:
+        try:
+            os.unlink(tmp)
+        except (OSError, UnboundLocalError):
+            pass
 
 
 def _option(name: str) -> RunOption:

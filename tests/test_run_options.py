@@ -4,6 +4,7 @@ issue #24 item 2): `adore --help`, `pyadore run --help`, `pyadore sweep --help` 
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 
@@ -70,3 +71,34 @@ def test_no_option_help_is_cut_by_the_table_field():
         strings = re.findall(r'"((?:[^"]|"")*)"', row)
         help_text = "".join(strings[5:])          # name, default, units, metavar, choices, then the help
         assert 0 < len(help_text) <= width, (strings[0], len(help_text), width)
+
+
+def test_the_option_table_is_cached_per_build_of_the_engine(tmp_path):
+    """The command line reads the option table from a copy in the cache folder, keyed by the
+    engine extension's file, size and time: the same table as the engine's, without importing
+    numpy or the engine; a copy of another build is not used (docs/sweeps.md, "Scaling")."""
+    import json
+
+    from pyadore._core import run_option_table
+
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path)}
+    probe = ("import json, sys; from pyadore.options import run_options; rows = run_options(); "
+             "print(json.dumps(['numpy' in sys.modules, [list(r.__dict__.values()) for r in rows]]))")
+
+    def run():
+        proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, env=env, timeout=300)
+        assert proc.returncode == 0, proc.stderr
+        return json.loads(proc.stdout)
+
+    engine = [list(r[:6]) + [list(r[6]), r[7]] for r in run_option_table()]
+    first = run()
+    assert first == [True, engine]                  # read from the engine, and kept
+    files = list((tmp_path / "pyadore").glob("run-options-*.json"))
+    assert len(files) == 1
+    assert run() == [False, engine]                 # the copy: no numpy, no engine
+    data = json.loads(files[0].read_text())
+    data["key"] += "0"                              # a copy of another build of the engine
+    data["rows"] = data["rows"][:1]
+    files[0].write_text(json.dumps(data))
+    assert run() == [True, engine]                  # not used: the engine is read again
+    assert json.loads(files[0].read_text())["rows"] == engine

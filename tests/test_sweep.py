@@ -216,6 +216,26 @@ def test_killed_sweep_resumes_with_nothing_lost_or_run_twice(tmp_path):
         assert read_deck(case / "deck.inp").get("9.1.2", "inner_race_speed") == row.inner_race_speed
 
 
+def _assert_forked_from_the_command(command: int, worker: int) -> None:
+    """The worker's parent is the fork server and the server's parent the `pyadore sweep`
+    command, whose command line it has: a fork of the command at its start, not a second
+    interpreter (`python -m pyadore.sweeps.worker`; docs/sweeps.md, "Where the cases run").
+    The worker holds one thread: the server set OMP_NUM_THREADS and OPENBLAS_NUM_THREADS to 1
+    before numpy and the engine loaded (set after the fork, they are not in /proc's environ of
+    the exec; without them numpy's OpenBLAS starts a thread per further core)."""
+    try:
+        server, _ = _parent_and_environment(worker)
+        parent, _ = _parent_and_environment(server)
+        cmdline = Path(f"/proc/{server}/cmdline").read_bytes()
+        threads = [line for line in Path(f"/proc/{worker}/status").read_text().splitlines()
+                   if line.startswith("Threads:")]
+    except (FileNotFoundError, ProcessLookupError):
+        pytest.skip("the sweep ended before its processes could be read")
+    assert parent == command
+    assert cmdline == Path(f"/proc/{command}/cmdline").read_bytes() and b"pyadore.sweeps.worker" not in cmdline
+    assert threads == ["Threads:\t1"]
+
+
 def test_terminated_sweep_ends_its_workers(tmp_path):
     """SIGTERM (or Ctrl-C) stops the sweep at once: its worker processes ended, the finished
     cases kept, and the command ends by the signal (a shell's exit status 128 + 15; the
@@ -233,6 +253,8 @@ def test_terminated_sweep_ends_its_workers(tmp_path):
         if (folder / "events.log").exists() and len(_events(folder)) >= 3:
             break
         time.sleep(0.01)
+    if sys.platform.startswith("linux") and proc.poll() is None:
+        _assert_forked_from_the_command(proc.pid, int(_events(folder)[0][4].rsplit(":", 1)[1]))
     proc.send_signal(signal.SIGTERM)
     _, err = proc.communicate(timeout=60)
     assert proc.returncode == -signal.SIGTERM, err
@@ -436,3 +458,37 @@ def test_the_sweep_command_never_imports_pandas(tmp_path):
     assert "2 cases: 2 finished" in proc.stdout
     frame = pd.read_csv(tmp_path / "s" / "summary.csv")
     assert list(frame["status"]) == ["ok", "ok"] and list(frame["applied_force_z"]) == [500, 750]
+
+
+def test_cases_are_dispatched_longest_first():
+    """The workers take the cases fastest shaft first (the longest step-0 solves: 90-137 ms of
+    CPU at 25 000 rpm against 55-80 ms at 10 000-15 000 rpm for Appendix C), the grid's order
+    within a speed, so that two workers end together (docs/sweeps.md, "Scaling"); without a
+    varied speed the grid's order.  The folder keeps the grid's order (test_ball_results_...)."""
+    from pyadore.deck import read_deck
+    from pyadore.sweeps.runner import dispatch_order
+
+    deck = read_deck(BALL)
+    varied = [parse_vary("applied_force_z=1000,2000", deck), parse_vary("inner_race_speed=10000,25000,15000", deck)]
+    cases = make_cases(varied)
+    order = dispatch_order(cases, varied)
+    assert [(c.params["inner_race_speed"], c.params["applied_force_z"]) for c in order] == [
+        (25000, 1000), (25000, 2000), (15000, 1000), (15000, 2000), (10000, 1000), (10000, 2000)]
+    assert sorted(c.case_id for c in order) == [c.case_id for c in cases]
+    loads = [parse_vary("applied_force_z=3000,1000,2000", deck)]
+    assert dispatch_order(make_cases(loads), loads) == make_cases(loads)
+
+
+def test_the_sweep_client_starts_without_numpy():
+    """What the `pyadore sweep` command imports before its first case goes to a worker - the
+    command line (its options from the option table's cached copy), the runner, the deck
+    reader, the result columns - imports neither numpy nor the engine (0.15 s of CPU on the
+    serial path to the first case, docs/sweeps.md "Scaling"); the fork server does."""
+    from pyadore.options import run_options
+
+    run_options()  # the table's copy is written (it is, by any earlier command)
+    probe = ("import sys, pyadore.cli, pyadore.sweeps.runner, pyadore.sweeps.results; "
+             "print(sorted(m for m in ('numpy', 'pyadore._engine', 'pandas') if m in sys.modules))")
+    proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == "[]"

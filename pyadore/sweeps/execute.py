@@ -1,14 +1,16 @@
 """Where the cases of a sweep run: a local process pool or a Dask distributed cluster.
 
-:func:`run_case` is the worker: it runs one case deck in a private temporary folder and
-returns the print text and key results (it never raises and writes nothing the client
-reads), so the client writes every file of the sweep folder itself, whichever backend ran
-the case.  The local pool starts its worker processes once per sweep, each a fresh
+:func:`run_case` (:mod:`.case`) is the worker: it runs one case deck in a private temporary
+folder and returns the print text and key results (it never raises and writes nothing the
+client reads), so the client writes every file of the sweep folder itself, whichever backend
+ran the case.  The local pool starts its worker processes once per sweep, from a fresh
 interpreter (``python -m pyadore.sweeps.worker``, jobs and results as JSON lines on its
 pipes) that loads the engine extension itself: nothing of the client's state is copied
 by a fork (its threads, the Fortran run-time), and unlike multiprocessing's ``spawn`` the
 worker never re-imports the client's ``__main__`` (a script without a main guard, stdin).
-A worker that dies is known by the one case it was running.
+The ``pyadore sweep`` command forks itself instead, at its entry, before it has any of that
+(:func:`start_early`, :func:`_fork_server`).  A worker that dies is known by the one case it
+was running.
 """
 
 from __future__ import annotations
@@ -17,8 +19,9 @@ import json
 import os
 import sys
 import time
-from pathlib import Path
 from typing import Callable, Iterable
+
+from .case import run_case  # one case, run where its worker is (:mod:`.case`)
 
 __all__ = ["run_case", "run_local", "run_dask", "WorkerPool", "start_early", "take_early", "WORKER_ENV"]
 
@@ -26,121 +29,6 @@ __all__ = ["run_case", "run_local", "run_dask", "WorkerPool", "start_early", "ta
 #: one BLAS thread per worker (a sweep's parallelism is its workers; a forked process must
 #: hold one thread).
 WORKER_ENV = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
-
-
-def _guide(deck_text: str) -> str:
-    """The race guiding the cage of a case deck: "outer" for Rec 7.0's first guide type 1,
-    else "inner" (type 2, and decks without guide lands)."""
-    from ..deck import parse_text
-
-    try:
-        deck, _problems = parse_text(deck_text, "case")
-        return "outer" if deck.get("7.0", "guide_type[1]") == 1 else "inner"
-    except Exception:  # an unreadable deck fails in the run itself, with its own message
-        return "inner"
-
-
-def _host() -> str:
-    """This machine's host name (the socket module's gethostname without importing it: a
-    few ms of every worker's start-up; os.uname where there is one)."""
-    if hasattr(os, "uname"):
-        return os.uname().nodename
-    import socket
-
-    return socket.gethostname()
-
-
-def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | None = None) -> dict:
-    """Run one case deck (text) and return ``{case, status, error, notes, duration_s,
-    print_text, history_text, results_nc, results, worker, tmp_deck, tmp_print,
-    incomplete_text, incomplete_history, timing}``: ``timing`` when the case started and
-    its parts ended (``start``, ``checked``, ``engine``, ``results``, ``end``; time.time())
-    and its CPU time ``cpu_s``, for the bench's budget (bench/sweep_bench.py; not recorded);
-    ``history_text`` the plot-data file of a run with time steps, ``results_nc`` its netCDF
-    results file (base64; docs/results.md), ``results`` the key results of the last printed
-    step and the time averages over the last shaft revolution
-    (:func:`pyadore.sweeps.results.mean_results`).
-    ``status`` is ``ok``, ``invalid`` (the deck validator's problems, before any run; the
-    message names the worker's ``tmp_deck``), ``input-error`` (the engine refused the deck),
-    ``engine-failure`` or ``error`` (anything else, e.g. a print file that does not read).  A failed run that
-    kept its print and plot-data file (a time integration that stopped early) returns their
-    texts as ``incomplete_text`` and ``incomplete_history``: the worker's folder is removed,
-    the client keeps them in the case folder (``tmp_deck`` and ``tmp_print``: the paths
-    the message names in the worker's folder).  options: the run options of every case
-    (:func:`pyadore.run`'s keywords, the engine's option table).  Never raises."""
-    import tempfile
-
-    start = time.perf_counter()
-    cpu = time.process_time()
-    stamps = {"start": time.time()}  # when each part of the case ended (s since the epoch): the budget's
-    out = {"case": case_id, "status": "ok", "error": "", "notes": [], "print_text": None, "results": {},
-           "timing": stamps,
-           "history_text": None, "results_nc": None,
-           "worker": f"{_host()}:{os.getpid()}", "tmp_deck": "", "tmp_print": "",
-           "incomplete_text": None, "incomplete_history": None}
-    try:
-        from ..api import run
-        from ..deck import check_deck
-        from ..errors import AdoreEngineError, AdoreInputError
-        from ..printout import PrintFormatError, read_print
-        from .results import key_results, mean_results
-
-        with tempfile.TemporaryDirectory(prefix="pyadore-case-") as tmp:
-            deck = Path(tmp) / "deck.inp"
-            out["tmp_deck"] = str(deck)
-            deck.write_text(deck_text, encoding="utf-8")
-            prt = Path(tmp) / "case.prt"
-            out["tmp_print"] = str(prt)
-            _, problems = check_deck(deck)  # here, in parallel, not in the client's serial loop
-            stamps["checked"] = time.time()
-            if problems:
-                out.update(status="invalid", error="\n".join(p.format() for p in problems)
-                           + f"\n{deck}: {len(problems)} problem(s)")
-                out["duration_s"] = time.perf_counter() - start
-                return out
-            try:
-                # the sweep has its own progress bar; one thread a case unless the sweep's options
-                # say otherwise (its workers share the cores: docs/dynamics.md, "Threads")
-                result = run(deck, steps=steps, out=prt, progress=False, **{"threads": 1, **(options or {})})
-                stamps["engine"] = time.time()
-                out["notes"] = list(result.notes)
-                # plain tables of the steps: the worker needs no pandas for a run without time steps
-                out["results"] = key_results(read_print(prt, frames=False, echo=False))
-                # the averages from the run's arrays: no xarray in the worker; the guide race
-                # (a second parse of the deck) only for a run that has results to average
-                if result.arrays is not None:
-                    out["results"].update(mean_results(result.arrays, guide=_guide(deck_text)))
-                else:
-                    out["results"].update(mean_results(None))
-                stamps["results"] = time.time()
-                out["print_text"] = prt.read_text(encoding="utf-8", errors="replace")
-                if result.history_path is not None:
-                    out["history_text"] = result.history_path.read_text(encoding="utf-8", errors="replace")
-                if result.results_path is not None:
-                    import base64
-
-                    out["results_nc"] = base64.b64encode(result.results_path.read_bytes()).decode("ascii")
-            except PrintFormatError as exc:  # the engine's own print does not read: not the deck's fault
-                out.update(status="error", error=f"the case's print file does not read: {exc}", results={},
-                           print_text=None)
-            except AdoreInputError as exc:
-                out.update(status="input-error", error=str(exc))
-            except AdoreEngineError as exc:
-                out.update(status="engine-failure", error=str(exc))
-                kept = getattr(exc, "print_path", None)
-                if kept is not None and Path(kept).is_file():
-                    from ..timehistory import history_path
-
-                    out["incomplete_text"] = Path(kept).read_text(encoding="utf-8", errors="replace")
-                    hist = history_path(kept)
-                    if hist.is_file():
-                        out["incomplete_history"] = hist.read_text(encoding="utf-8", errors="replace")
-    except Exception as exc:  # a case's failure is a row of the manifest, never the sweep's end
-        out.update(status="error", error=f"{type(exc).__name__}: {exc}", print_text=None, results={})
-    out["duration_s"] = time.perf_counter() - start
-    stamps["end"] = time.time()
-    stamps["cpu_s"] = time.process_time() - cpu  # the case's CPU time in the worker
-    return out
 
 
 def _died(case_id: str, why: str) -> dict:
@@ -189,16 +77,100 @@ class _Forked:
                 import subprocess
 
                 raise subprocess.TimeoutExpired(f"worker {self.pid}", timeout)
-            time.sleep(0.005)
+            time.sleep(0.001)
         return self.returncode
 
 
-def _start_group(workers: list["_Worker"]) -> None:
+class _Child:
+    """The fork server forked by this process (:func:`_fork_server`): a child known by its pid,
+    waited for with waitpid (the Popen methods the pool uses: poll, wait, kill)."""
+
+    def __init__(self, pid: int) -> None:
+        self.pid = pid
+        self.returncode: int | None = None
+
+    def poll(self):
+        if self.returncode is None:
+            try:
+                pid, status = os.waitpid(self.pid, os.WNOHANG)
+            except ChildProcessError:
+                self.returncode = -1
+            else:
+                if pid:
+                    self.returncode = os.waitstatus_to_exitcode(status)
+        return self.returncode
+
+    def wait(self, timeout: float | None = None):
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while self.poll() is None:
+            if deadline is not None and time.monotonic() > deadline:
+                import subprocess
+
+                raise subprocess.TimeoutExpired(f"fork server {self.pid}", timeout)
+            time.sleep(0.001)
+        return self.returncode
+
+    def kill(self) -> None:
+        import signal
+
+        if self.poll() is None:
+            try:
+                os.kill(self.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+
+
+def _fork_server(slots: list[tuple[int, int]]) -> _Child:
+    """Fork this process into the fork server of ``slots`` (Linux; :func:`start_early` only:
+    the ``pyadore`` command at its very start, a single thread that has imported nothing but
+    its signal handlers and this module - no engine, no Fortran run-time, no numpy).  The
+    child is what ``python -m pyadore.sweeps.worker --slots ...`` is, without a second
+    interpreter start: the interpreter, ``site`` with the editable install's loader and its
+    rebuild check (about 0.1 s of CPU of the sweep's serial start, docs/sweeps.md "Scaling").
+    It keeps only its slots' descriptors and the standard streams (stdin from /dev/null),
+    ignores SIGINT and takes SIGTERM and SIGHUP by default, as the worker process does."""
+    import signal
+
+    pid = os.fork()
+    if pid:
+        return _Child(pid)
+    code = 1
+    try:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        for name in ("SIGTERM", "SIGHUP"):
+            signal.signal(getattr(signal, name), signal.SIG_DFL)
+        keep = {0, 1, 2} | {fd for pair in slots for fd in pair}
+        for name in os.listdir("/proc/self/fd"):  # the client's ends of every channel above all
+            if int(name) not in keep:
+                try:
+                    os.close(int(name))
+                except OSError:
+                    pass
+        null = os.open(os.devnull, os.O_RDONLY)
+        os.dup2(null, 0)
+        os.close(null)
+        os.environ.update(WORKER_ENV)  # before the engine (OpenMP) loads
+        from . import worker
+
+        code = worker.main(["--slots", ",".join(f"{r}:{w}" for r, w in slots)])
+    except BaseException:
+        try:
+            import traceback
+
+            traceback.print_exc()
+        except BaseException:
+            pass
+    finally:
+        os._exit(code)
+
+
+def _start_group(workers: list["_Worker"], fork: bool = False) -> None:
     """Start worker processes for ``workers``: on Linux one fresh interpreter that, once warm,
-    forks one process per further worker (one start-up for the group, :mod:`.worker`); on
-    other POSIX systems one process each, on pipes passed by descriptor; elsewhere one
-    process each on its stdin and stdout.  Each process runs one engine thread
-    (:data:`WORKER_ENV`)."""
+    forks one process per further worker (one start-up for the group, :mod:`.worker`) - or,
+    ``fork`` (:func:`start_early`: the command's first moments), this process forked into
+    that fork server (:func:`_fork_server`); on other POSIX systems one process each, on
+    pipes passed by descriptor; elsewhere one process each on its stdin and stdout.  Each
+    process runs one engine thread (:data:`WORKER_ENV`)."""
     import subprocess
 
     env = {**os.environ, **WORKER_ENV}
@@ -220,8 +192,11 @@ def _start_group(workers: list["_Worker"]) -> None:
                 theirs += [job_r, res_w]
                 mine.append((job_w, res_r))
                 slots.append(f"{job_r}:{res_w}")
-            proc = subprocess.Popen(cmd + ["--slots", ",".join(slots)], stdin=subprocess.DEVNULL, env=env,
-                                    pass_fds=theirs)
+            if fork and sys.platform.startswith("linux"):
+                proc = _fork_server([tuple(int(x) for x in s.split(":")) for s in slots])
+            else:
+                proc = subprocess.Popen(cmd + ["--slots", ",".join(slots)], stdin=subprocess.DEVNULL, env=env,
+                                        pass_fds=theirs)
         except BaseException:
             for fd in theirs + [fd for pair in mine for fd in pair]:
                 os.close(fd)
@@ -246,6 +221,7 @@ class _Worker:
         self.results = None     # its result channel (text, read here)
         self.ready = False      # its ready line was read: it is warm and its pid known
         self.server = None      # the fork server that forked it (Linux)
+        self.boot: dict = {}    # its ready line: pid, the boot's CPU time and end (the bench's budget)
         self.interrupted = threading.Event()  # set by kill(): serve() ends without a report
 
     def _attach(self, proc, jobs, results, server=None) -> None:
@@ -266,17 +242,25 @@ class _Worker:
         line = self.results.readline()
         if not line:
             raise OSError("the worker ended before it was ready")
-        pid = json.loads(line)["ready"]
+        self.boot = json.loads(line)  # {"ready": pid, "boot_cpu_s": ..., "booted_at": ...}
+        pid = self.boot["ready"]
         if isinstance(self.proc, _Forked):
             self.proc.pid = pid
         self.ready = True
 
-    def serve(self, jobs, results) -> None:
+    def serve(self, jobs, results, once: bool = False) -> None:
         """Run jobs from the queue ``jobs`` until a None; each result, then a None, to ``results``.
         After :meth:`kill` (the sweep was interrupted) it ends quietly: the process it was
-        waiting on is gone on purpose, not a crash to report, and none is started again."""
+        waiting on is gone on purpose, not a crash to report, and none is started again.
+        ``once`` (a pool of one sweep): at the None the worker is told to end (its job channel
+        closed), so it exits while the client records the last results."""
         while True:
             job = jobs.get()
+            if job is None and once and self.ready:
+                try:
+                    self.jobs.close()
+                except (OSError, ValueError, AttributeError):
+                    pass
             if job is None or self.interrupted.is_set():
                 break
             proc = None
@@ -366,6 +350,8 @@ class WorkerPool:
             raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
         self.size = workers
         self._workers = [_Worker() for _ in range(workers)]
+        #: the pool serves one sweep (a sweep's own, the command's): its workers end with its last job
+        self.once = False
 
     def __enter__(self) -> "WorkerPool":
         return self
@@ -380,11 +366,14 @@ class WorkerPool:
     def start(self, count: int | None = None) -> "WorkerPool":
         """Start the first ``count`` workers (all by default) that do not run, as one group:
         they boot while the caller goes on (a sweep starts its pool before it reads the deck)."""
+        return self._start(count)
+
+    def _start(self, count: int | None = None, fork: bool = False) -> "WorkerPool":
         idle = [w for w in self._workers[:self.size if count is None else count] if not w.running()]
         for w in idle:
             w.stop()
         if idle:
-            _start_group(idle)
+            _start_group(idle, fork=fork)
         return self
 
     def close(self) -> None:
@@ -440,7 +429,10 @@ def start_early(argv: list[str]) -> None:
         except ValueError:
             return
     if workers >= 1:
-        _EARLY.append(WorkerPool(workers).start())
+        # forked from this process: it has imported nothing yet that a fork must not copy
+        pool = WorkerPool(workers)
+        pool.once = True  # the command's one sweep
+        _EARLY.append(pool._start(fork=True))
 
 
 def take_early(workers: int) -> WorkerPool | None:
@@ -467,6 +459,7 @@ def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None],
 
     own = not isinstance(workers, WorkerPool)
     pool = WorkerPool(max(1, min(workers, count))) if own else workers
+    pool.once = pool.once or own
     pending: queue.Queue = queue.Queue()
     results: queue.Queue = queue.Queue()
     used: list[_Worker] = []
@@ -477,7 +470,7 @@ def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None],
                 pool.start(len(used))  # those not started yet (sweep() starts its pool early)
                 for w in used:
                     w.interrupted.clear()  # a pool's worker serves again after an interrupted sweep
-                    threading.Thread(target=w.serve, args=(pending, results), daemon=True).start()
+                    threading.Thread(target=w.serve, args=(pending, results, pool.once), daemon=True).start()
             pending.put(job)
         for _ in used:
             pending.put(None)  # no more jobs: each worker's thread ends after its last one

@@ -33,8 +33,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from ..cage_stability import STABILITY_COLUMNS, cage_stability
 
 __all__ = ["RESULT_COLUMNS", "MEAN_COLUMNS", "key_results", "mean_results"]
@@ -101,6 +99,8 @@ def mean_results(dataset, revolutions: float = 1.0, guide: str = "inner") -> dic
     out = {c: math.nan for c in MEAN_COLUMNS}
     if dataset is None:
         return out
+    import numpy as np  # here: the sweep command's client imports this module for its columns only
+
     out.update(cage_stability(dataset, guide=guide))
     from ..errors import AdoreInputError
     from ..results import time_means

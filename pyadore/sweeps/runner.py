@@ -22,7 +22,7 @@ from .execute import run_dask, run_local
 from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_vary
 from .results import RESULT_COLUMNS, key_results
 
-__all__ = ["sweep", "run_sweep", "read_summary", "read_summary_file", "summary_csv"]
+__all__ = ["sweep", "run_sweep", "read_summary", "read_summary_file", "summary_csv", "dispatch_order"]
 
 #: While cases finish, manifest.json is rewritten after a case when the last rewrite is
 #: MANIFEST_COST_FACTOR times its own duration ago, and at least every MANIFEST_INTERVAL (s):
@@ -211,11 +211,16 @@ class _Sweep:
         self._events.append(f"{entry['finished_at']} {case.case_id} {status} {dur} {worker}".rstrip())
         since = time.monotonic() - self._manifest_written
         if since >= min(MANIFEST_INTERVAL, MANIFEST_COST_FACTOR * self._manifest_cost):
-            self.write_manifest()
+            self.write_manifest(durable=False)
 
-    def write_manifest(self) -> None:
+    def write_manifest(self, durable: bool = True) -> None:
         """Write manifest.json - every case with its parameters, status, duration and error -
-        then the events.log lines of the cases finished since the last one."""
+        then the events.log lines of the cases finished since the last one.  ``durable``: flushed
+        to the disk first (fsync: the sweep's start and end); the rewrites while the cases run
+        are progress (a resume reads each case's result.json, never the manifest) and skip the
+        fsync, as events.log's appends do: about 0.6 ms of the client's CPU a case, which
+        competes with the workers (docs/sweeps.md, "Scaling").  Whole or absent all the same:
+        written atomically."""
         self._manifest_written = time.monotonic()
         rows = []
         for case in self.cases:
@@ -227,7 +232,8 @@ class _Sweep:
         counts: dict[str, int] = {}
         for e in rows:
             counts[e["status"]] = counts.get(e["status"], 0) + 1
-        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, rows))
+        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, rows),
+                           durable=durable)
         if self._events:
             store.append_event(self.root, "\n".join(self._events))
             self._events = []
@@ -283,6 +289,27 @@ class _Sweep:
         # rewritten from the sweep's definition whenever the case runs: no fsync needed
         store.write_atomic(deck_file, text, durable=False)
         return text
+
+
+def dispatch_order(cases: list[Case], varied: list[Varied]) -> list[Case]:
+    """The order in which the cases go to the workers: the longest first, by a cheap estimate of
+    their cost, so that the workers end together instead of one idling while the other runs a
+    long last case (the grid's order puts the fastest speeds, the longest cases, last).  The
+    estimate is the varied inner race speed (Rec 9.1.2): Appendix C's step 0 takes 55-80 ms of
+    CPU at 10 000-15 000 rpm and 90-137 ms at 25 000 rpm (docs/sweeps.md, "Scaling"); cases of
+    one speed, or a sweep that does not vary it, keep the grid's order.  Only the order of the
+    work changes: every file, the manifest and the summary list the cases in the grid's order."""
+    speed = [v for v in varied if v.field == "inner_race_speed"]
+    if not speed:
+        return list(cases)
+
+    def cost(case: Case) -> float:
+        try:
+            return abs(float(case.params[speed[0].name]))
+        except (KeyError, TypeError, ValueError):
+            return 0.0
+
+    return sorted(cases, key=cost, reverse=True)  # stable: the grid's order within a speed
 
 
 def _csv_column(values: list) -> list[str]:
@@ -377,6 +404,7 @@ def run_sweep(deck, vary, out_dir, zip: bool = False, steps: int | None = None, 
     if scheduler is None:
         own = not isinstance(workers, WorkerPool)
         pool = WorkerPool(workers or os.cpu_count() or 1) if own else workers
+        pool.once = pool.once or own  # this sweep's own: its workers end with its last job
         pool.start()  # boots while the client reads the deck and prepares the cases
     try:
         return _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, scheduler, progress, options)
@@ -410,7 +438,7 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
                  base_deck=base)
     run.open_folder()
     run.load_finished()
-    todo = [c for c in cases if c.case_id not in run.entries]
+    todo = dispatch_order([c for c in cases if c.case_id not in run.entries], varied)
     by_id = {c.case_id: c for c in cases}
     bar = _progress(len(todo), progress)
 
@@ -420,8 +448,9 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
         cdir = run.case_dir(case.case_id)
         incomplete = res.get("incomplete_text")
         history = res.get("incomplete_history")
-        # the paths the message names in the worker's folder (gone) -> the case folder's
-        if res.get("tmp_print"):
+        # the paths the message names in the worker's folder (gone) -> the case folder's (a
+        # message only: timehistory imports numpy, 0.1 s of the client's CPU amid the workers)
+        if error and res.get("tmp_print"):
             from ..timehistory import history_path
 
             tmp_print = res["tmp_print"]
@@ -429,7 +458,7 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
                                   if history is not None else "(not kept)")
             error = error.replace(tmp_print, str(cdir / store.CASE_INCOMPLETE) if incomplete is not None
                                   else "(not kept)")
-        if res.get("tmp_deck"):
+        if error and res.get("tmp_deck"):
             error = error.replace(res["tmp_deck"], str(cdir / store.CASE_DECK))
         run.record(case, res["status"], error=error, duration=res["duration_s"], notes=res["notes"],
                    worker=res["worker"], results=res["results"], print_text=res["print_text"],

@@ -1,7 +1,7 @@
 """A local sweep worker process: ``python -m pyadore.sweeps.worker [--slots R:W,R:W,...]``.
 
 A worker reads one job a line (JSON: the arguments of
-:func:`pyadore.sweeps.execute.run_case`) and writes one result a line (JSON) on its
+:func:`pyadore.sweeps.case.run_case`) and writes one result a line (JSON) on its
 protocol channel, until its job channel closes; when the result channel is gone (its client
 was killed) it ends quietly, without a BrokenPipeError traceback.  Its first line is
 ``{"ready": PID}`` once it is warm.  fd 1 is pointed at stderr so that nothing else (a
@@ -25,6 +25,7 @@ import json
 import os
 import signal
 import sys
+import time
 
 def warm() -> None:
     """Import now what every case needs - the engine extension, numpy, the deck checker,
@@ -42,19 +43,20 @@ def warm() -> None:
     from ..api import run  # noqa: F401
     from ..deck import check_deck  # noqa: F401
     from ..printout import read_print  # noqa: F401
-    from .execute import run_case  # noqa: F401
+    from .case import run_case  # noqa: F401
     from .results import key_results, mean_results  # noqa: F401
 
     _core.base._engine()
 
 
-def serve(jobs, channel) -> None:
-    """Announce this process (``{"ready": pid}``), then run the jobs of the text stream
-    ``jobs`` until it closes, each result a line on ``channel``."""
-    from .execute import run_case
+def serve(jobs, channel, boot: dict | None = None) -> None:
+    """Announce this process (``{"ready": pid, **boot}``: ``boot`` the boot's CPU time and when
+    it ended, for the bench's budget), then run the jobs of the text stream ``jobs`` until it
+    closes, each result a line on ``channel``."""
+    from .case import run_case
 
     try:
-        channel.write(json.dumps({"ready": os.getpid()}) + "\n")
+        channel.write(json.dumps({"ready": os.getpid(), **(boot or {})}) + "\n")
         channel.flush()
         for line in jobs:
             if not line.strip():
@@ -86,11 +88,13 @@ def main(argv: list[str] | None = None) -> int:
     os.dup2(2, 1)
     sys.stdout = sys.stderr
     warm()
+    # the boot's CPU time (this process's, or the fork server's until it forks) and its end
+    boot = {"boot_cpu_s": time.process_time(), "booted_at": time.time()}
     if not slots:
-        serve(sys.stdin, channel)
+        serve(sys.stdin, channel, boot)
         return 0
     if not sys.platform.startswith("linux"):
-        serve(*_open(slots[0]))  # one slot a process (the client starts one each)
+        serve(*_open(slots[0]), boot)  # one slot a process (the client starts one each)
         return 0
     # Linux: this warm process forks one worker per slot and waits for them (a fork server: it
     # runs no case itself, so an engine crash never takes it, and it reaps its workers)
@@ -102,7 +106,7 @@ def main(argv: list[str] | None = None) -> int:
                 for other in slots[k + 1:]:  # (those of the slots before are closed already)
                     for fd in other:
                         _close(fd)
-                serve(*_open(pair))
+                serve(*_open(pair), boot)
             except BaseException:
                 code = 1
             finally:
