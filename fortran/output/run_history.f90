@@ -457,6 +457,7 @@ contains
       character(len=*), parameter :: lf = achar(10)
       character(len=:), allocatable :: header
       character(len=256) :: iomsg
+      real(wp), allocatable :: row(:)
       integer :: unit, stat, i, k, bad
       logical :: ok
 
@@ -481,8 +482,13 @@ contains
       end if
       write (unit, iostat=stat) header
       bad = stat
+      ! each row copied into a contiguous vector first: the same bytes, and libgfortran writes
+      ! a strided section value by value (~140 instructions a value, the run's second largest
+      ! serial cost after the integrator's linear algebra)
+      allocate (row(size(h%elements, 2)))
       do i = 1, h%rows
-         write (unit, iostat=stat) h%values(i, C_TIME), h%values(i, C_STEP), h%elements(i, :)
+         row = h%elements(i, :)
+         write (unit, iostat=stat) h%values(i, C_TIME), h%values(i, C_STEP), row
          if (stat /= 0) bad = stat
       end do
       close (unit, iostat=stat, iomsg=iomsg)
@@ -507,10 +513,9 @@ contains
       integer, intent(in) :: rows
       character(len=*), intent(in) :: path, what, incomplete
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: header, line
-      character(len=24) :: cell
+      character(len=:), allocatable :: header, line, cells, row_format
       character(len=256) :: iomsg
-      integer :: unit, stat, i, k, bad, pos
+      integer :: unit, stat, i, k, bad, pos, m
       logical :: ok
 
       open (newunit=unit, file=path//".part", status="replace", action="write", form="formatted", &
@@ -525,17 +530,26 @@ contains
       end do
       write (unit, "(a)", iostat=stat) header
       bad = stat
-      ! one line of at most 25 characters a value, filled in place and written at once
-      allocate (character(len=25*size(values, 2)) :: line)
+      ! one line of at most 25 characters a value, filled in place and written at once; the
+      ! row's values formatted by one internal write into 25-character cells (es24.16e3, the
+      ! step i24, each and a blank), then each cell's text without its blanks: the same text as
+      ! a write per value, at a third of the cost (the write statements' set-up was 40 % of
+      ! the file's time, the largest serial part of a run's end)
+      m = size(values, 2)
+      allocate (character(len=25*m) :: line, cells)
+      row_format = "("
+      do k = 1, m
+         row_format = row_format//trim(merge("i24      ", "es24.16e3", k == C_STEP))//",1x"//trim(merge(",", ")", k < m))
+      end do
       do i = 1, rows
          pos = 0
-         do k = 1, size(values, 2)
-            if (k == C_STEP) then
-               write (cell, "(i0)") nint(values(i, k))
-            else
-               write (cell, "(es24.16e3)") values(i, k)
-            end if
-            call put(cell)
+         if (m >= C_STEP) then
+            write (cells, row_format) values(i, :C_STEP - 1), nint(values(i, C_STEP)), values(i, C_STEP + 1:)
+         else
+            write (cells, row_format) values(i, :)
+         end if
+         do k = 1, m
+            call put(cells(25*(k - 1) + 1:25*k - 1))
          end do
          write (unit, "(a)", iostat=stat) line(:pos - 1)
          if (stat /= 0) bad = stat
