@@ -189,7 +189,7 @@ contains
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(in) :: azimuth(:)
       type(contact_print_t), intent(in) :: p
-      real(wp) :: w(3), r2, w_orb, nan
+      real(wp) :: w(3), r2, w_orb, nan, rot(3, 3)
       integer :: row, k, j, c
 
       if (.not. allocated(h%elements)) return
@@ -200,7 +200,8 @@ contains
          associate (cg => s%cage, ir => s%races(RACE_INNER), orr => s%races(RACE_OUTER))
             v(row, 1:3) = cg%position
             v(row, 4:6) = cg%velocity
-            v(row, 7:9) = matmul(quat_matrix(cg%attitude), cg%omega)
+            rot = quat_matrix(cg%attitude)    ! named: a function result inside matmul is a heap temporary
+            v(row, 7:9) = matmul(rot, cg%omega)
             v(row, 10) = orbit_speed(cg%position, cg%velocity)
             v(row, 11:13) = ir%position
             v(row, 14) = ir%omega(1)
@@ -210,7 +211,8 @@ contains
          c = N_BODY
          do k = 1, size(azimuth)
             associate (ball => s%elements(k))
-               w = matmul(quat_matrix(ball%attitude), ball%omega)
+               rot = quat_matrix(ball%attitude)
+               w = matmul(rot, ball%omega)
                r2 = ball%position(2)**2 + ball%position(3)**2
                w_orb = orbit_speed(ball%position, ball%velocity)
                v(row, c + 1) = azimuth(k)
