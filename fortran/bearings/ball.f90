@@ -345,17 +345,17 @@ contains
                call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
                                     pocket_wear, land_wear, cage_avg, &
-                                    lubricant_temperature=self%eom%lubricant_temperature)
+                                    lubricant_temperature=self%eom%lubricant_temperature, threads=self%eom%threads)
             else if (.not. th%have_field) then      ! before the first update: no field yet
                call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
                                     pocket_wear, land_wear, cage_avg, th%fluid, &
-                                    lubricant_temperature=self%eom%lubricant_temperature)
+                                    lubricant_temperature=self%eom%lubricant_temperature, threads=self%eom%threads)
             else
                call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
                                     pocket_wear, land_wear, cage_avg, th%fluid, th%field, &
-                                    self%eom%lubricant_temperature)
+                                    self%eom%lubricant_temperature, self%eom%threads)
             end if
          end associate
       end associate

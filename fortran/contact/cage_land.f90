@@ -116,12 +116,15 @@ contains
       type(cage_land_geometry_t), intent(out) :: c
       real(wp) :: ax(3), pa(3), ev(3), e_e(3), e_t(3), w_c(3), w_r(3), v_a(3), de(3), w_in, w_out, psidot, eps
       real(wp) :: epsdot, eps_max, f(2), couette(3), c_in(3), c_out(3), pt(3), u(3), q, f_in(3), tq_in(3), tq_out(3)
-      real(wp) :: v_in(3), v_out(3)
+      real(wp) :: v_in(3), v_out(3), race_rot(3, 3), cage_rot(3, 3)
 
-      ax = matmul(quat_matrix(race%attitude), [1.0_wp, 0.0_wp, 0.0_wp])
+      ! the attitude matrices named (a function result inside matmul is a heap temporary)
+      race_rot = quat_matrix(race%attitude)
+      cage_rot = quat_matrix(cage%attitude)
+      ax = matmul(race_rot, [1.0_wp, 0.0_wp, 0.0_wp])
       pa = race%position + dot_product(cage%position - race%position, ax)*ax
-      w_c = matmul(quat_matrix(cage%attitude), cage%omega)
-      w_r = matmul(quat_matrix(race%attitude), race%omega)
+      w_c = matmul(cage_rot, cage%omega)
+      w_r = matmul(race_rot, race%omega)
       v_a = race%velocity + cross(w_r, pa - race%position)
       if (p%race_is_journal) then
          c_in = pa

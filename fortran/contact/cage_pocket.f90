@@ -118,8 +118,8 @@ contains
       real(wp), intent(in) :: psi
       type(body_state_t), intent(in) :: ball, cage
       type(cage_pocket_geometry_t), intent(out) :: c
-      real(wp) :: rot(3, 3), b_rel(3), e_r(3), y_p(3), rho, n_b(3), w_b(3), w_c(3), u(3), u_far(3), p_far(3)
-      real(wp) :: w_total, h_near, h_far, delta, un
+      real(wp) :: rot(3, 3), ball_rot(3, 3), b_rel(3), e_r(3), y_p(3), rho, n_b(3), w_b(3), w_c(3), u(3), u_far(3)
+      real(wp) :: p_far(3), w_total, h_near, h_far, delta, un
 
       rot = quat_matrix(cage%attitude)
       b_rel = matmul(transpose(rot), ball%position - cage%position)
@@ -133,7 +133,8 @@ contains
       c%normal = matmul(rot, n_b)
       c%point = ball%position + 0.5_wp*p%d*c%normal
 
-      w_b = matmul(quat_matrix(ball%attitude), ball%omega)
+      ball_rot = quat_matrix(ball%attitude)     ! a named matrix: no heap temporary for matmul
+      w_b = matmul(ball_rot, ball%omega)
       w_c = matmul(rot, cage%omega)
       u = ball%velocity + cross(w_b, c%point - ball%position) - cage%velocity - cross(w_c, c%point - cage%position)
       un = dot_product(u, c%normal)

@@ -27,7 +27,7 @@ module adore_dynamics_ball_motion
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_model_condition, only: dof_constraints_t, body_dof_t, default_constraints
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, new_bearing_state, RACE_OUTER, RACE_INNER
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t, body_load_t, ball_bearing_loads, add_gyroscopic_restraint
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, body_load_t, ball_bearing_loads
    use adore_dynamics_cage_whirl, only: whirl_frame_acceleration
    implicit none
    private
@@ -76,6 +76,7 @@ contains
       real(wp), intent(in), optional :: whirl_blend
       type(dof_constraints_t) :: dof
       integer :: k
+      logical :: with_gyro
 
       if (present(constraints)) then
          dof = constraints
@@ -84,13 +85,20 @@ contains
          if (present(cage_spin_only)) dof = default_constraints(cage_spin_only)
       end if
 
-      call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
-                              land_film=land_film, rolling=rolling, lubricant_temperature=lubricant_temperature, &
-                              threads=threads)
-      if (allocated(error)) return
-      if (present(gyro_restraint)) then
-         if (gyro_restraint) call add_gyroscopic_restraint(s, b%moments(1, BODY_ELEMENT), loads)
+      with_gyro = .false.
+      if (present(gyro_restraint)) with_gyro = gyro_restraint
+      ! the gyroscopic restraint (add_gyroscopic_restraint) inside the force assembly: each
+      ! ball's moment on its thread, the races' reactions after the balls in ball order
+      if (with_gyro) then
+         call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
+                                 land_film=land_film, rolling=rolling, lubricant_temperature=lubricant_temperature, &
+                                 threads=threads, gyro_inertia=b%moments(1, BODY_ELEMENT))
+      else
+         call ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, damping=damping, &
+                                 land_film=land_film, rolling=rolling, lubricant_temperature=lubricant_temperature, &
+                                 threads=threads)
       end if
+      if (allocated(error)) return
       rates = new_bearing_state(size(s%elements))
       rates%time = 1.0_wp
       rates%temperature = 0.0_wp
@@ -132,12 +140,13 @@ contains
       type(body_load_t), intent(in) :: ld
       real(wp), intent(in) :: m, inertia(3)
       type(body_state_t) :: r
-      real(wp) :: m_b(3)
+      real(wp) :: m_b(3), rot(3, 3)
 
       r%position = body%velocity
       r%velocity = ld%force/m
       r%attitude = quat_rate(body%attitude, body%omega)
-      m_b = matmul(ld%moment, quat_matrix(body%attitude))   ! R**T M
+      rot = quat_matrix(body%attitude)     ! named: a function result inside matmul is a heap temporary
+      m_b = matmul(ld%moment, rot)         ! R**T M
       r%omega = (m_b - cross(body%omega, inertia*body%omega))/inertia
    end function body_rates
 

@@ -38,7 +38,7 @@ module adore_forces_ball_bearing
    use adore_contact_line_slices, only: contact_modulus
    use adore_tribology_film, only: dynamic_viscosity
    use adore_geometry_mounted, only: mounted_geometry_t
-   use adore_state_bearing_state, only: bearing_state_t, RACE_OUTER, RACE_INNER
+   use adore_state_bearing_state, only: bearing_state_t, body_state_t, RACE_OUTER, RACE_INNER
    use adore_contact_ball_race, only: ball_race_pair_t, ball_race_geometry_t, ball_race_contact, planar_contact
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_OUTER, SIDE_INNER, &
                                    contact_kinematics
@@ -190,26 +190,54 @@ contains
       type(bearing_state_t), intent(in) :: s
       real(wp), intent(in) :: j_ball
       type(ball_bearing_loads_t), intent(inout) :: loads
-      real(wp) :: w(3), m_g(3), r2, w_m, q_sum
-      integer :: k, j
+      real(wp) :: m_g(3)
+      integer :: k
+      logical :: found
 
       do k = 1, size(s%elements)
-         q_sum = loads%contacts(1, k)%load + loads%contacts(2, k)%load
-         if (.not. (q_sum > 0.0_wp)) cycle
-         associate (e => s%elements(k))
-            r2 = e%position(2)**2 + e%position(3)**2
-            if (.not. (r2 > 0.0_wp)) cycle
-            w_m = (e%position(2)*e%velocity(3) - e%position(3)*e%velocity(2))/r2
-            w = matmul(quat_matrix(e%attitude), e%omega)
-            m_g = j_ball*w_m*[0.0_wp, -w(3), w(2)]
-         end associate
+         call gyroscopic_moment(s%elements(k), quat_matrix(s%elements(k)%attitude), j_ball, loads%contacts(:, k), &
+                                m_g, found)
+         if (.not. found) cycle
          loads%elements(k)%moment = loads%elements(k)%moment + m_g
-         do j = 1, 2
-            if (loads%contacts(j, k)%load > 0.0_wp) &
-               loads%races(j)%moment = loads%races(j)%moment - m_g*loads%contacts(j, k)%load/q_sum
-         end do
+         call add_gyroscopic_reaction(loads, k, m_g)
       end do
    end subroutine add_gyroscopic_restraint
+
+   !> The gyroscopic moment m_g (N m) of ball e (attitude matrix ball_rot, moment of inertia
+   !> j_ball, kg m**2) resisted by its race contacts c (add_gyroscopic_restraint); found false
+   !> (m_g not set) when the ball touches no race or sits on the bearing axis.
+   pure subroutine gyroscopic_moment(e, ball_rot, j_ball, c, m_g, found)
+      type(body_state_t), intent(in) :: e
+      real(wp), intent(in) :: ball_rot(3, 3), j_ball
+      type(ball_race_geometry_t), intent(in) :: c(2)
+      real(wp), intent(out) :: m_g(3)
+      logical, intent(out) :: found
+      real(wp) :: w(3), r2, w_m
+
+      found = .false.
+      if (.not. (c(1)%load + c(2)%load > 0.0_wp)) return
+      r2 = e%position(2)**2 + e%position(3)**2
+      if (.not. (r2 > 0.0_wp)) return
+      w_m = (e%position(2)*e%velocity(3) - e%position(3)*e%velocity(2))/r2
+      w = matmul(ball_rot, e%omega)
+      m_g = j_ball*w_m*[0.0_wp, -w(3), w(2)]
+      found = .true.
+   end subroutine gyroscopic_moment
+
+   !> The races' reaction -m_g to ball k's gyroscopic moment m_g (N m), shared in proportion
+   !> to its contacts' normal loads (add_gyroscopic_restraint).
+   pure subroutine add_gyroscopic_reaction(loads, k, m_g)
+      type(ball_bearing_loads_t), intent(inout) :: loads
+      integer, intent(in) :: k
+      real(wp), intent(in) :: m_g(3)
+      real(wp) :: q_sum
+      integer :: j
+      q_sum = loads%contacts(1, k)%load + loads%contacts(2, k)%load
+      do j = 1, 2
+         if (loads%contacts(j, k)%load > 0.0_wp) &
+            loads%races(j)%moment = loads%races(j)%moment - m_g*loads%contacts(j, k)%load/q_sum
+      end do
+   end subroutine add_gyroscopic_reaction
 
    !> Loads on every body of ball bearing b (mounted geometry g) at state s (module
    !> header).  traction (default .true.): include the race contacts' traction and heat;
@@ -244,7 +272,7 @@ contains
    !> Input errors of the traction model (e.g. no EHD film) come back in error (the first
    !> ball's in ball order).
    subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference, damping, &
-                                 land_film, rolling, lubricant_temperature, threads)
+                                 land_film, rolling, lubricant_temperature, threads, gyro_inertia)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(bearing_state_t), intent(in) :: s
@@ -258,14 +286,17 @@ contains
       logical, intent(in), optional :: rolling
       real(wp), intent(in), optional :: lubricant_temperature(:)
       integer, intent(in), optional :: threads
+      real(wp), intent(in), optional :: gyro_inertia
       type(ball_race_pair_t) :: pairs(2)
       type(cage_pocket_pair_t) :: pp
       type(race_share_t) :: share(2, size(s%elements))
       type(ball_error_t) :: failed(size(s%elements))
+      real(wp) :: gyro(3, size(s%elements))
+      logical :: gyrating(size(s%elements))
       real(wp) :: rho, beta
       real(wp) :: t_lub(size(s%temperature)), race_rot(3, 3, 2)
       integer :: n, k, j, n_threads
-      logical :: with_traction, with_2d, with_reference, with_rolling, with_cage
+      logical :: with_traction, with_2d, with_reference, with_rolling, with_cage, with_gyro
 
       with_traction = .true.
       if (present(traction)) with_traction = traction
@@ -279,6 +310,7 @@ contains
       if (present(rolling)) with_rolling = rolling
       with_cage = .true.
       if (present(cage)) with_cage = cage
+      with_gyro = present(gyro_inertia)
       n_threads = 1
       if (present(threads)) n_threads = max(threads, 1)
       t_lub = s%temperature
@@ -350,8 +382,12 @@ contains
             end associate
          end do
       end do
-      if (.not. with_cage) return
-      call add_cage_contacts()
+      if (with_cage) call add_cage_contacts()
+      if (.not. with_gyro) return
+      ! the races' reactions to the balls' gyroscopic moments, in ball order
+      do k = 1, n
+         if (gyrating(k)) call add_gyroscopic_reaction(loads, k, gyro(:, k))
+      end do
 
    contains
 
@@ -362,9 +398,10 @@ contains
          integer, intent(in) :: k
          type(ball_race_contact_t) :: cj
          type(contact_traction_t) :: t
-         real(wp) :: f_n(3), f_t(3), m_t(3), sums(6), q_n, rate, ball_rot(3, 3)
+         real(wp) :: f_n(3), f_t(3), m_t(3), sums(6), q_n, rate, ball_rot(3, 3), arm(3)
          integer :: j
 
+         gyrating(k) = .false.
          ball_rot = quat_matrix(s%elements(k)%attitude)
          do j = 1, 2
             if (present(stiffness)) then
@@ -408,17 +445,24 @@ contains
                           sums(4)*cross(c%normal, c%transverse))
                r%tractive = .true.
                r%force_traction = f_t
-               r%arm_traction = cross(ball - race, f_t)
+               arm = ball - race      ! a named vector: the associated sections' difference is a heap temporary
+               r%arm_traction = cross(arm, f_t)
                r%moment_traction = m_t
                loads%elements(k)%force = loads%elements(k)%force - f_t
                loads%elements(k)%moment = loads%elements(k)%moment - m_t
             end associate
          end do
-         if (.not. with_cage) return
-         ! the ball in its pocket (pocket k at cage-frame azimuth 2 pi (k-1)/n)
-         call cage_pocket_contact(pp, 2.0_wp*pi*(k - 1)/n, s%elements(k), s%cage, loads%pockets(k))
-         loads%elements(k)%force = loads%elements(k)%force + loads%pockets(k)%force_ball
-         loads%elements(k)%moment = loads%elements(k)%moment + loads%pockets(k)%moment_ball
+         if (with_cage) then
+            ! the ball in its pocket (pocket k at cage-frame azimuth 2 pi (k-1)/n)
+            call cage_pocket_contact(pp, 2.0_wp*pi*(k - 1)/n, s%elements(k), s%cage, loads%pockets(k))
+            loads%elements(k)%force = loads%elements(k)%force + loads%pockets(k)%force_ball
+            loads%elements(k)%moment = loads%elements(k)%moment + loads%pockets(k)%moment_ball
+         end if
+         ! the ball's gyroscopic moment (add_gyroscopic_restraint), the races' reaction later
+         if (with_gyro) then
+            call gyroscopic_moment(s%elements(k), ball_rot, gyro_inertia, loads%contacts(:, k), gyro(:, k), gyrating(k))
+            if (gyrating(k)) loads%elements(k)%moment = loads%elements(k)%moment + gyro(:, k)
+         end if
       end subroutine ball_contacts
 
       !> Normal force q_n (N) of race contact c (race j, ball k): the Hertz load plus the

@@ -67,9 +67,11 @@ contains
    !> power loss, their share of it the Churning Loss Fraction), and field, the last solved
    !> temperature field (each ball's contact node, bulk temperature and HTC, the exit fluid,
    !> housing and shaft temperatures); lubricant_temperature as the force assembly's
-   !> (ball_contact_print).
+   !> (ball_contact_print); threads (default 1): the printed tribology's balls on that many
+   !> threads (ball_contact_print's, the same numbers).
    subroutine write_ball_step(unit, step, header, b, g, s, rates, loads, azimuth, axial_origin, wear, race_wear, &
-                              summary_avg, pocket_wear, land_wear, cage_avg, fluid, field, lubricant_temperature)
+                              summary_avg, pocket_wear, land_wear, cage_avg, fluid, field, lubricant_temperature, &
+                              threads)
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: header(4)
       type(bearing_t), intent(in) :: b
@@ -81,6 +83,7 @@ contains
       type(element_fluid_loss_t), intent(in), optional :: fluid(:)
       type(thermal_field_t), intent(in), optional :: field
       real(wp), intent(in), optional :: lubricant_temperature(:)
+      integer, intent(in), optional :: threads
 
       real(wp), parameter :: deg = rad_to_deg, rpm = rad_s_to_rpm
       real(wp), allocatable :: contact(:, :), motion(:, :), traction(:, :), thermal(:, :), re_cage(:, :)
@@ -94,7 +97,7 @@ contains
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
       n = b%n_elements
       allocate (contact(n, 11), motion(n, 11), traction(n, 11), thermal(n, 11), re_cage(n, 8))
-      call ball_contact_print(b, g, s, loads, tribology, lubricant_temperature=lubricant_temperature)
+      call ball_contact_print(b, g, s, loads, tribology, lubricant_temperature=lubricant_temperature, threads=threads)
       allocate (re_no(n), cage_code(n), cage_end(n))
       re_no = [(k, k=1, n)]
       motion = nan

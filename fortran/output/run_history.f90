@@ -189,7 +189,7 @@ contains
       type(ball_bearing_loads_t), intent(in) :: loads
       real(wp), intent(in) :: azimuth(:)
       type(contact_print_t), intent(in) :: p
-      real(wp) :: w(3), r2, w_orb, nan
+      real(wp) :: w(3), r2, w_orb, nan, rot(3, 3)
       integer :: row, k, j, c
 
       if (.not. allocated(h%elements)) return
@@ -200,7 +200,8 @@ contains
          associate (cg => s%cage, ir => s%races(RACE_INNER), orr => s%races(RACE_OUTER))
             v(row, 1:3) = cg%position
             v(row, 4:6) = cg%velocity
-            v(row, 7:9) = matmul(quat_matrix(cg%attitude), cg%omega)
+            rot = quat_matrix(cg%attitude)    ! named: a function result inside matmul is a heap temporary
+            v(row, 7:9) = matmul(rot, cg%omega)
             v(row, 10) = orbit_speed(cg%position, cg%velocity)
             v(row, 11:13) = ir%position
             v(row, 14) = ir%omega(1)
@@ -210,7 +211,8 @@ contains
          c = N_BODY
          do k = 1, size(azimuth)
             associate (ball => s%elements(k))
-               w = matmul(quat_matrix(ball%attitude), ball%omega)
+               rot = quat_matrix(ball%attitude)
+               w = matmul(rot, ball%omega)
                r2 = ball%position(2)**2 + ball%position(3)**2
                w_orb = orbit_speed(ball%position, ball%velocity)
                v(row, c + 1) = azimuth(k)
@@ -457,6 +459,7 @@ contains
       character(len=*), parameter :: lf = achar(10)
       character(len=:), allocatable :: header
       character(len=256) :: iomsg
+      real(wp), allocatable :: row(:)
       integer :: unit, stat, i, k, bad
       logical :: ok
 
@@ -481,8 +484,13 @@ contains
       end if
       write (unit, iostat=stat) header
       bad = stat
+      ! each row copied into a contiguous vector first: the same bytes, and libgfortran writes
+      ! a strided section value by value (~140 instructions a value, the run's second largest
+      ! serial cost after the integrator's linear algebra)
+      allocate (row(size(h%elements, 2)))
       do i = 1, h%rows
-         write (unit, iostat=stat) h%values(i, C_TIME), h%values(i, C_STEP), h%elements(i, :)
+         row = h%elements(i, :)
+         write (unit, iostat=stat) h%values(i, C_TIME), h%values(i, C_STEP), row
          if (stat /= 0) bad = stat
       end do
       close (unit, iostat=stat, iomsg=iomsg)
@@ -507,10 +515,9 @@ contains
       integer, intent(in) :: rows
       character(len=*), intent(in) :: path, what, incomplete
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: header, line
-      character(len=24) :: cell
+      character(len=:), allocatable :: header, line, cells, row_format
       character(len=256) :: iomsg
-      integer :: unit, stat, i, k, bad, pos
+      integer :: unit, stat, i, k, bad, pos, m
       logical :: ok
 
       open (newunit=unit, file=path//".part", status="replace", action="write", form="formatted", &
@@ -525,17 +532,26 @@ contains
       end do
       write (unit, "(a)", iostat=stat) header
       bad = stat
-      ! one line of at most 25 characters a value, filled in place and written at once
-      allocate (character(len=25*size(values, 2)) :: line)
+      ! one line of at most 25 characters a value, filled in place and written at once; the
+      ! row's values formatted by one internal write into 25-character cells (es24.16e3, the
+      ! step i24, each and a blank), then each cell's text without its blanks: the same text as
+      ! a write per value, a quarter fewer instructions (the per-value write statements'
+      ! set-up; the number conversions remain the file's cost)
+      m = size(values, 2)
+      allocate (character(len=25*m) :: line, cells)
+      row_format = "("
+      do k = 1, m
+         row_format = row_format//trim(merge("i24      ", "es24.16e3", k == C_STEP))//",1x"//trim(merge(",", ")", k < m))
+      end do
       do i = 1, rows
          pos = 0
-         do k = 1, size(values, 2)
-            if (k == C_STEP) then
-               write (cell, "(i0)") nint(values(i, k))
-            else
-               write (cell, "(es24.16e3)") values(i, k)
-            end if
-            call put(cell)
+         if (m >= C_STEP) then
+            write (cells, row_format) values(i, :C_STEP - 1), nint(values(i, C_STEP)), values(i, C_STEP + 1:)
+         else
+            write (cells, row_format) values(i, :)
+         end if
+         do k = 1, m
+            call put(cells(25*(k - 1) + 1:25*k - 1))
          end do
          write (unit, "(a)", iostat=stat) line(:pos - 1)
          if (stat /= 0) bad = stat

@@ -587,7 +587,9 @@ contains
    !> race shifted and misaligned, the cage turned) with 2-D traction, contact damping,
    !> rolling resistance and the cage contacts, the loads on 2 and 5 threads equal those on
    !> one bit for bit; with the lubricant near 0 K every contact's film fails and the error
-   !> names ball 1 on any number of threads (a serial loop stops there first).
+   !> names ball 1 on any number of threads (a serial loop stops there first).  The balls'
+   !> gyroscopic restraint taken inside the assembly (gyro_inertia, as the run takes it) equals
+   !> add_gyroscopic_restraint after it on 1, 2 and 5 threads.
    subroutine test_threads_same_loads(b, g, base)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
@@ -597,7 +599,6 @@ contains
       type(error_type), allocatable :: e1, en
       real(wp) :: cold(size(base%temperature))
       integer :: k, nt
-      logical :: same
 
       st = base
       do k = 1, size(st%elements)
@@ -617,22 +618,20 @@ contains
          call ball_bearing_loads(b, g, st, ln, en, two_d=.true., damping=2.5e-6_wp, rolling=.true., threads=nt)
          call check(.not. allocated(en), "threads: force assembly on several threads")
          if (allocated(en)) return
-         same = same_bits(l1%cage%force, ln%cage%force) .and. same_bits(l1%cage%moment, ln%cage%moment)
-         do k = 1, 2
-            same = same .and. same_bits(l1%races(k)%force, ln%races(k)%force) .and. &
-                   same_bits(l1%races(k)%moment, ln%races(k)%moment)
-         end do
-         do k = 1, size(st%elements)
-            same = same .and. same_bits(l1%elements(k)%force, ln%elements(k)%force) .and. &
-                   same_bits(l1%elements(k)%moment, ln%elements(k)%moment) .and. &
-                   same_bits(l1%contacts(:, k)%load, ln%contacts(:, k)%load) .and. &
-                   same_bits(l1%heat(:, k), ln%heat(:, k)) .and. &
-                   same_bits(l1%traction(:, k)%force, ln%traction(:, k)%force) .and. &
-                   same_bits(l1%pockets(k)%force_cage, ln%pockets(k)%force_cage)
-         end do
-         same = same .and. same_bits([l1%damping_power], [ln%damping_power]) .and. &
-                same_bits(l1%lands%power, ln%lands%power) .and. (l1%abnormal .eqv. ln%abnormal)
-         call check(same, "threads: the loads on 1 and "//achar(48 + nt)//" threads are the same bit for bit")
+         call check(same_loads(l1, ln), "threads: the loads on 1 and "//achar(48 + nt)//" threads are the same bit for bit")
+      end do
+      ! the gyroscopic restraint inside the assembly (gyro_inertia: each ball's moment on its
+      ! thread, the races' reactions after the balls) equals add_gyroscopic_restraint applied
+      ! to the loads afterwards, bit for bit, on 1, 2 and 5 threads
+      call add_gyroscopic_restraint(st, b%moments(1, BODY_ELEMENT), l1)
+      do k = 1, 3
+         nt = merge(1, merge(2, 5, k == 2), k == 1)      ! 1, 2, 5
+         call ball_bearing_loads(b, g, st, ln, en, two_d=.true., damping=2.5e-6_wp, rolling=.true., threads=nt, &
+                                 gyro_inertia=b%moments(1, BODY_ELEMENT))
+         call check(.not. allocated(en), "threads: force assembly with the gyroscopic restraint")
+         if (allocated(en)) return
+         call check(same_loads(l1, ln), "threads: the gyroscopic restraint inside the assembly on "//achar(48 + nt)// &
+                    " threads equals add_gyroscopic_restraint's bit for bit")
       end do
       cold = 1.0_wp
       call ball_bearing_loads(b, g, st, l1, e1, lubricant_temperature=cold)
@@ -641,7 +640,30 @@ contains
       if (.not. (allocated(e1) .and. allocated(en))) return
       call check(index(e1%message, "ball 1, outer race contact:") == 1 .and. e1%message == en%message, &
                  "threads: the error is ball 1's on any number of threads")
+
    end subroutine test_threads_same_loads
+
+   !> Every body's loads, every contact's load, heat and traction force, every pocket's and
+   !> land's force and power the same bit for bit in la and lb.
+   logical function same_loads(la, lb) result(same)
+      type(ball_bearing_loads_t), intent(in) :: la, lb
+      integer :: k
+      same = same_bits(la%cage%force, lb%cage%force) .and. same_bits(la%cage%moment, lb%cage%moment)
+      do k = 1, 2
+         same = same .and. same_bits(la%races(k)%force, lb%races(k)%force) .and. &
+                same_bits(la%races(k)%moment, lb%races(k)%moment)
+      end do
+      do k = 1, size(la%elements)
+         same = same .and. same_bits(la%elements(k)%force, lb%elements(k)%force) .and. &
+                same_bits(la%elements(k)%moment, lb%elements(k)%moment) .and. &
+                same_bits(la%contacts(:, k)%load, lb%contacts(:, k)%load) .and. &
+                same_bits(la%heat(:, k), lb%heat(:, k)) .and. &
+                same_bits(la%traction(:, k)%force, lb%traction(:, k)%force) .and. &
+                same_bits(la%pockets(k)%force_cage, lb%pockets(k)%force_cage)
+      end do
+      same = same .and. same_bits([la%damping_power], [lb%damping_power]) .and. &
+             same_bits(la%lands%power, lb%lands%power) .and. (la%abnormal .eqv. lb%abnormal)
+   end function same_loads
 
    !> Whether x and y hold the same values bit for bit (tells -0 from 0; a NaN equals itself).
    pure logical function same_bits(x, y)
