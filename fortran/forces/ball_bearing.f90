@@ -532,7 +532,7 @@ contains
          end if
          ! the film's traction of the load it carries (f Q at f p_H: the whole contact for a
          ! full film), then in mixed lubrication (boundary_lambda < film parameter <
-         ! full_film_lambda) the asperities' (1 - f) Q on the curve (docs/tribology.md)
+         ! full_film_lambda) blended with the curve's (docs/tribology.md, "Mixed films")
          if (with_2d) then
             call ehd_traction(b, t_lub, fluid_contact(cj, f), b_minor, race, h*phi, t, error, with_reference, tc)
          else

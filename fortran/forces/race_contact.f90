@@ -202,12 +202,12 @@ contains
       end if
    end function fluid_fraction
 
-   !> The fluid's share of race contact cj in mixed lubrication (docs/tribology.md, "Mixed
-   !> films"): the same contact (ellipse, kinematics) with the load f Q (N) the EHD film
-   !> carries at fluid fraction f, so its Hertz pressure is f p_H over the same ellipse -
-   !> the load sharing of Johnson, Greenwood & Poon (1972) and Gelinck & Schipper (2000):
-   !> the asperities carry (1 - f) Q, the film the rest at the pressure its viscosity sees.
-   !> f = 1 (a full film) or f = 0 (no film to shear): cj itself.
+   !> The film's share of race contact cj in mixed lubrication (docs/tribology.md, "Mixed
+   !> films"): the same contact (ellipse, kinematics) with the load f Q (N) at fluid fraction
+   !> f, so its Hertz pressure is f p_H over the same ellipse - the load sharing of Johnson,
+   !> Greenwood & Poon (1972) and Gelinck & Schipper (2000): the asperities carry (1 - f) Q,
+   !> the film the rest at the pressure its viscosity exp(alpha p) sees.  f = 1 (a full
+   !> film) or f = 0 (no film to shear): cj itself.
    pure function fluid_contact(cj, f) result(c)
       type(ball_race_contact_t), intent(in) :: cj
       real(wp), intent(in) :: f
@@ -217,25 +217,25 @@ contains
    end function fluid_contact
 
    !> The traction of a race contact in mixed lubrication (docs/tribology.md, "Mixed
-   !> films"): the EHD film's traction `fluid` of the fluid's share of the load
-   !> (fluid_contact(cj, f): f Q at f p_H) plus 1 - f times the deck curve's `boundary` at
-   !> the contact's load Q - the load-sharing traction F = F_fluid(f Q) + mu_b (1 - f) Q -
-   !> for every force, moment, the heat (W) and the sliding integral (N m/s); the
-   !> coefficient (net traction / Q) is f times the fluid's (its traction over f Q) plus
-   !> 1 - f times the curve's.  The kinematic fields (slips, speeds, spin, R_x, the
-   !> pure-rolling points) are the contact's own, taken from `fluid`.  Both tractions are
-   !> of the same contact (the same ellipse and slip).
+   !> films"): f (the fluid fraction, 0 < f < 1) times the EHD film's traction `fluid` of the
+   !> film's share of the load (fluid_contact: f Q at f p_H) plus 1 - f times the deck
+   !> curve's `boundary` at the contact's load Q, for every force, moment and the heat (W);
+   !> the coefficient is that force over Q (the film's own coefficient is over f Q); the
+   !> sliding integral (N m/s, |u| dQ) is the whole contact's (the film's over f Q plus the
+   !> curve's over the rest).  The weight f keeps the blend continuous with its slope where
+   !> the film appears (f = 0) and at the full film.  The kinematic fields (slips, speeds,
+   !> spin, R_x, the pure-rolling points) are the contact's own, taken from `fluid`.
    pure function mixed_traction(f, fluid, boundary) result(t)
       real(wp), intent(in) :: f
       type(contact_traction_t), intent(in) :: fluid, boundary
       type(contact_traction_t) :: t
       t = fluid
-      t%force = fluid%force + (1.0_wp - f)*boundary%force
-      t%force_cos = fluid%force_cos + (1.0_wp - f)*boundary%force_cos
-      t%force_sin = fluid%force_sin + (1.0_wp - f)*boundary%force_sin
-      t%cross_force = fluid%cross_force + (1.0_wp - f)*boundary%cross_force
-      t%coefficient = f*fluid%coefficient + (1.0_wp - f)*boundary%coefficient
-      t%power = fluid%power + (1.0_wp - f)*boundary%power
+      t%force = f*fluid%force + (1.0_wp - f)*boundary%force
+      t%force_cos = f*fluid%force_cos + (1.0_wp - f)*boundary%force_cos
+      t%force_sin = f*fluid%force_sin + (1.0_wp - f)*boundary%force_sin
+      t%cross_force = f*fluid%cross_force + (1.0_wp - f)*boundary%cross_force
+      t%coefficient = f*f*fluid%coefficient + (1.0_wp - f)*boundary%coefficient
+      t%power = f*fluid%power + (1.0_wp - f)*boundary%power
       t%sliding = fluid%sliding + (1.0_wp - f)*boundary%sliding
    end function mixed_traction
 

@@ -121,12 +121,12 @@ contains
                if (ehd) f = fluid_fraction(b, p%film(j, k), p%thermal_factor(j, k))
                if (f > 0.0_wp) then
                   h = p%film(j, k)*p%thermal_factor(j, k)
-                  ! the film's share of the load (f Q at f p_H), the asperities' (1 - f) Q added
+                  ! the film's share of the load (f Q at f p_H; the whole load for a full film)
                   if (with_flash) call ehd_flash(b, t_lub, fluid_contact(cj, f), b_minor, race, h, &
                                                  abs(tk%rolling_speed), p%temp_rise(j, k), error)
                   if (with_flash .and. f < 1.0_wp .and. .not. allocated(error)) then
                      call law_flash(b, cj, b_minor, p_h, race, abs(tk%rolling_speed), rise, error)
-                     p%temp_rise(j, k) = p%temp_rise(j, k) + (1.0_wp - f)*rise
+                     p%temp_rise(j, k) = f*p%temp_rise(j, k) + (1.0_wp - f)*rise
                   end if
                else if (with_flash) then
                   call law_flash(b, cj, b_minor, p_h, race, abs(tk%rolling_speed), p%temp_rise(j, k), error)
@@ -137,8 +137,9 @@ contains
                call printed_slip(b, t_lub, fluid_contact(cj, f), b_minor, race, h, h > 0.0_wp, p%slip(j, k), &
                                  p%coefficient(j, k))
                if (f > 0.0_wp .and. f < 1.0_wp) then
+                  ! the film's node coefficient is over its share f of the strip's load
                   call printed_slip(b, t_lub, cj, b_minor, race, h, .false., slip, coefficient)
-                  p%coefficient(j, k) = f*p%coefficient(j, k) + (1.0_wp - f)*coefficient
+                  p%coefficient(j, k) = f*f*p%coefficient(j, k) + (1.0_wp - f)*coefficient
                end if
             end associate
          end do

@@ -45,8 +45,9 @@ module adore_quasistatic_ball_kinematics
    !> The EHD film of a ball's two race contacts (outer first) for the minimum-dissipation
    !> search with traction model 3: rheology at the wall temperature, film h (m, the
    !> thermally reduced central film; 0: no film, the deck's curve), semi-minor axis b (m)
-   !> and the fluid fraction (mixed lubrication: the power is the EHD film's at fluid times
-   !> the load plus 1 - fluid times the curve's; 1: a full film; docs/tribology.md, "Mixed films"),
+   !> and the fluid fraction (mixed lubrication: the power is fluid times the EHD film's at
+   !> fluid times the load plus 1 - fluid times the curve's; 1: a full film; docs/tribology.md,
+   !> "Mixed films"),
    !> held fixed in the search.
    type :: ehd_films_t
       type(ehd_rheology_t) :: rheo(2)
@@ -182,8 +183,8 @@ contains
    !> Power (W) lost in the loaded race contacts (load > 0 and a > 0) of the ball state
    !> (beta, w_b, w_m): eq (4) with the traction law `law`, n_gauss points per slip zone; with
    !> the EHD film traction (model 3) instead when ehd is present (a contact with a film:
-   !> ehd_contact_traction_fast's power, its own quadrature; in mixed lubrication that power
-   !> at the fluid fraction of the load plus the rest of the law's).
+   !> ehd_contact_traction_fast's power, its own quadrature; in mixed lubrication its fluid
+   !> fraction of that power at the fluid's share of the load plus the rest of the law's).
    subroutine dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, law, n_gauss, beta, w_b, w_m, p, error, ehd)
       real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), beta, w_b, w_m
       type(traction_law_t), intent(in) :: law
@@ -208,8 +209,8 @@ contains
                ! 4 x 8 points the power jumped by up to 9 % where the zones split (two
                ! spurious minima 0.9 deg apart that the start flipped between;
                ! docs/operating-points.md, "Two pitch minima")
-               ! mixed lubrication: the film carries fluid x the load (at fluid x the Hertz
-               ! pressure), the asperities the rest on the law (docs/tribology.md, "Mixed
+               ! mixed lubrication: the film sheared at its share fluid x the load (fluid x
+               ! the Hertz pressure), blended with the law's power (docs/tribology.md, "Mixed
                ! films"; adore_forces_race_contact's fluid_contact and mixed_traction)
                cf = c(j)
                if (ehd%fluid(j) < 1.0_wp) cf%load = ehd%fluid(j)*c(j)%load
@@ -217,7 +218,7 @@ contains
                pj = t%power
                if (ehd%fluid(j) < 1.0_wp .and. .not. allocated(error)) then
                   call contact_power(c(j), law, 1.0_wp, n_gauss, pl, error)
-                  pj = pj + (1.0_wp - ehd%fluid(j))*pl
+                  pj = ehd%fluid(j)*pj + (1.0_wp - ehd%fluid(j))*pl
                end if
             else
                ! a contact without an EHD film: the deck's traction curve (docs/tribology.md)

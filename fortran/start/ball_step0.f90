@@ -360,12 +360,11 @@ contains
                   call ehd_flash(b, b%temperature, fluid_contact(c(j), f), b_minor(j), race, h, abs(t%rolling_speed), &
                                  s%temp_rise(j, k), error)
                   if (f < 1.0_wp .and. .not. allocated(error)) then
-                     ! mixed film: the film's traction plus the asperities' (1 - f) Q on the
-                     ! curve, and their flash rises added (eq 35 is linear in the heat;
-                     ! docs/tribology.md, "Mixed films")
+                     ! mixed film: the blend of the two tractions, and of their flash rises
+                     ! (eq 35 is linear in the heat; docs/tribology.md, "Mixed films")
                      t = mixed_traction(f, t, t_curve)
                      call law_flash(b, c(j), b_minor(j), p_h(j), race, abs(t%rolling_speed), rise, error)
-                     s%temp_rise(j, k) = s%temp_rise(j, k) + (1.0_wp - f)*rise
+                     s%temp_rise(j, k) = f*s%temp_rise(j, k) + (1.0_wp - f)*rise
                   end if
                else
                   call law_flash(b, c(j), b_minor(j), p_h(j), race, abs(t%rolling_speed), s%temp_rise(j, k), error)
@@ -377,8 +376,9 @@ contains
                call printed_slip(b, b%temperature, fluid_contact(c(j), f), b_minor(j), race, h, h > 0.0_wp, &
                                  s%slip(j, k), s%trac_coeff(j, k))
                if (f > 0.0_wp .and. f < 1.0_wp) then
+                  ! the film's node coefficient is over its share f of the strip's load
                   call printed_slip(b, b%temperature, c(j), b_minor(j), race, h, .false., slip, coefficient)
-                  s%trac_coeff(j, k) = f*s%trac_coeff(j, k) + (1.0_wp - f)*coefficient
+                  s%trac_coeff(j, k) = f*f*s%trac_coeff(j, k) + (1.0_wp - f)*coefficient
                end if
                s%spin_roll(j, k) = t%spin_roll
                s%loss(j, k) = t%power

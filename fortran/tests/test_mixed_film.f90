@@ -98,14 +98,14 @@ contains
 
    !> Appendix C at its step-0 state (race control), its thermally reduced films 0.45-0.53 um,
    !> with a mixed band of 0.40-0.60 um: every loaded contact is in the band.  The force
-   !> assembly's traction of each contact is then the load-sharing traction: the EHD film's
-   !> traction of the contact with f times its load (fluid_contact: f Q at f p_H, the same
-   !> ellipse, slip and film, computed here by ehd_traction) + (1 - f) x its curve traction
+   !> assembly's traction of each contact is then f x the EHD film's traction of the
+   !> contact with f times its load (fluid_contact: f Q at f p_H, the same ellipse, slip and
+   !> film, computed here by ehd_traction) + (1 - f) x its curve traction
    !> (a boundary film of 1 m: every contact on the curve) for the force, both moments and
    !> the heat alike, with f = fluid_fraction of the contact's own film (lubricant_film at
-   !> its kinematics): to 1e-12 of the contact's largest term.  The film's heat is below f x
-   !> the full-pressure film's (no band, the films sheared at Q): the viscosity exp(alpha p)
-   !> at f p_H.  And with ball 1 disturbed (spin, velocity), the blended
+   !> its kinematics): to 1e-12 of the contact's largest term.  The film's heat at f p_H is
+   !> below its heat at p_H (no band, the films sheared at Q), contact by contact: the
+   !> viscosity exp(alpha p).  And with ball 1 disturbed (spin, velocity), the blended
    !> traction loads' mechanical power on the balls and races is minus their heat (the power
    !> identity of test_forces' traction power, which holds for each traction and so for
    !> their blend).
@@ -172,8 +172,8 @@ contains
             cf = fluid_contact(cj, f)
             call check(cf%load == f*cj%load .and. cf%a == cj%a .and. cf%rho == cj%rho, &
                        "mixed film: the fluid's contact carries f Q on the same ellipse")
-            fluid_ratio = max(fluid_ratio, tf%power/(f*quantities(le, j, k)))
-            blend = [tf%force, tf%force_cos, tf%force_sin, tf%power] + (1.0_wp - f)*quantities(lc, j, k)
+            fluid_ratio = max(fluid_ratio, [tf%force, tf%force_cos, tf%force_sin, tf%power]/quantities(le, j, k))
+            blend = f*[tf%force, tf%force_cos, tf%force_sin, tf%power] + (1.0_wp - f)*quantities(lc, j, k)
             got = quantities(lm, j, k)
             scale = max(maxval(abs(quantities(le, j, k))), maxval(abs(quantities(lc, j, k))))
             worst = max(worst, maxval(abs(got - blend))/scale)
@@ -182,12 +182,12 @@ contains
       write (*, "(a,i0,a,2f8.4,a,es10.2)") "mixed film: ", n_mixed, " contacts in the band, fluid fraction ", &
          f_min, f_max, ", worst blend error ", worst
       call check(n_mixed == 2*size(base%elements), "mixed film: every loaded Appendix C contact in the band")
-      call check(worst <= 1.0e-12_wp, "mixed film: traction = EHD of f Q + (1 - f) curve with f of the contact's film")
-      write (*, "(a,es10.2)") "mixed film: largest heat of the film's share over f x the full-pressure film's ", &
+      call check(worst <= 1.0e-12_wp, "mixed film: traction = f EHD of f Q + (1 - f) curve with f of the contact's film")
+      write (*, "(a,es10.2)") "mixed film: largest heat of the film sheared at f p_H over its heat at p_H ", &
          fluid_ratio(4)
       ! the viscosity exp(alpha p) falls with the pressure: at f p_H the film's shear heat is
-      ! below f times the full-pressure film's (Appendix C's contacts: at most 0.61 of it)
-      call check(fluid_ratio(4) < 1.0_wp, "mixed film: the film's share sheared at f p_H, below f x the full film's heat")
+      ! below its heat at the full Hertz pressure, contact by contact
+      call check(fluid_ratio(4) < 1.0_wp, "mixed film: the film sheared at f p_H heats less than at p_H")
 
       ! the power identity with the blend
       st = base
