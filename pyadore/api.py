@@ -299,7 +299,7 @@ def parse_balance(note: str) -> dict | None:
 
 def parse_forced_steps(note: str) -> tuple[int, int] | None:
     """The run note's count of time steps accepted at the Rec 2.1 minimum step with their
-    error above the error limit (ADORE's rule; fortran/driver/run.f90 forced_steps_note) as
+    error above the error limit (ADORE's rule; fortran/driver/run.f90 add_forced_steps_note) as
     (forced, accepted); None when the note has none (no such step, or no time steps)."""
     import re
 

@@ -231,8 +231,7 @@ contains
       if (n_dynamic > 0 .and. it%stats%forced_at_h_min > 0) then
          ! ADORE's rule accepts a step at the Rec 2.1 minimum whatever its error
          ! (adore_dynamics_integrator's accept_at_h_min): say how many were (issue #28)
-         if (len(balance) > 0) balance = balance//"; "
-         balance = balance//forced_steps_note(it%stats%forced_at_h_min, it%stats%accepted)
+         call add_forced_steps_note(it%stats%forced_at_h_min, it%stats%accepted, balance)
       end if
       if (len(balance) > 0) then
          if (len(run_note) > 0) then
@@ -305,16 +304,19 @@ contains
          "time is beyond 1e12 time units of the echo's TIME scale")
    end subroutine run_end_time
 
-   !> The run note's clause on steps the integrator accepted at the Rec 2.1 minimum step with
-   !> their error estimate above the error limit (forced of accepted; ADORE's rule, report
-   !> 4.4.12's minimum step): such a run went on without error control, so its states and
-   !> balances are not resolved - a smaller minimum step (or a less stiff traction) is what
-   !> resolves it (docs/operating-points.md, "The last ten grid failures").
-   pure function forced_steps_note(forced, accepted) result(s)
+   !> Append to text ("; "-separated) the run note's clause on steps the integrator accepted
+   !> at the Rec 2.1 minimum step with their error estimate above the error limit (forced of
+   !> accepted; ADORE's rule, report 4.4.12's minimum step): such a run went on without
+   !> error control, so its states and balances are not resolved - a smaller minimum step
+   !> (or a less stiff traction) is what resolves it (docs/operating-points.md, "The last ten
+   !> grid failures").  A subroutine: a deferred-length function result would be static
+   !> storage (fortran/core/strings.f90).
+   pure subroutine add_forced_steps_note(forced, accepted, text)
       integer, intent(in) :: forced, accepted
-      character(len=:), allocatable :: s
-      s = itoa(forced)//" of "//itoa(accepted)//" time steps accepted at the minimum step (Rec 2.1) with their "// &
-          "error above the error limit: not resolved (docs/operating-points.md)"
-   end function forced_steps_note
+      character(len=:), allocatable, intent(inout) :: text
+      if (len(text) > 0) text = text//"; "
+      text = text//itoa(forced)//" of "//itoa(accepted)//" time steps accepted at the minimum step (Rec 2.1) "// &
+             "with their error above the error limit: not resolved (docs/operating-points.md)"
+   end subroutine add_forced_steps_note
 
 end module adore_driver_run
