@@ -30,8 +30,9 @@ fixed random choice: did the fix break what ran?); ``--merge`` writes such a re-
 into bench/operating_points_grid.csv in place of the same cases, marked in its ``rerun``
 column, and prints the before -> after transitions; ``--summarize`` prints a CSV's failures by message category,
 deck, speed, load and fit.  The measured grid and its diagnosis re-runs are kept in
-bench/operating_points_grid.csv (the last full grid, session 15; session 14's in
-bench/operating_points_grid_s14.csv, session 13's in bench/operating_points_grid_s13.csv,
+bench/operating_points_grid.csv (the last full grid, session 16; session 15's in
+bench/operating_points_grid_s15.csv, session 14's in bench/operating_points_grid_s14.csv,
+session 13's in bench/operating_points_grid_s13.csv,
 the one before in bench/operating_points_grid_before.csv) and bench/operating_points_diagnosis.csv
 (docs/operating-points.md, "The dynamic grid, all 14 decks").
 """
