@@ -19,8 +19,10 @@ counts by outcome and by message, written to bench/results/NAME.json (NAME: --ou
 
 Every case is also appended, as it ends, to bench/results/NAME.csv (deck, speed, load, fit,
 outcome, a message category, the message, seconds, and for a run that ran the balance line's
-revolutions in the window, drive power, dissipation, energy change, drive/dissipation, closure
-and the inner race's force residual as a fraction of its load), so a long grid
+revolutions in the window, drive power, dissipation, energy change, drive/dissipation, closure,
+the inner race's force residual as a fraction of its load and the number of time steps accepted
+at the minimum step with their error above the limit - a run that ran without error control,
+not resolved: pyadore.api.parse_forced_steps), so a long grid
 run killed part way keeps what it measured.  ``--rerun`` takes the failed cases of one or
 more earlier CSVs (e.g. after a fix, or with ``--extra`` engine options / ``--exe`` another
 executable to find a cause), ``--sample N`` adds N cases that ran in the first of them (a
@@ -28,8 +30,9 @@ fixed random choice: did the fix break what ran?); ``--merge`` writes such a re-
 into bench/operating_points_grid.csv in place of the same cases, marked in its ``rerun``
 column, and prints the before -> after transitions; ``--summarize`` prints a CSV's failures by message category,
 deck, speed, load and fit.  The measured grid and its diagnosis re-runs are kept in
-bench/operating_points_grid.csv (the last full grid, session 15; session 14's in
-bench/operating_points_grid_s14.csv, session 13's in bench/operating_points_grid_s13.csv,
+bench/operating_points_grid.csv (the last full grid, session 16; session 15's in
+bench/operating_points_grid_s15.csv, session 14's in bench/operating_points_grid_s14.csv,
+session 13's in bench/operating_points_grid_s13.csv,
 the one before in bench/operating_points_grid_before.csv) and bench/operating_points_diagnosis.csv
 (docs/operating-points.md, "The dynamic grid, all 14 decks").
 """
@@ -160,14 +163,17 @@ def _case(args) -> dict:
                               capture_output=True, text=True)
         row["seconds"] = round(time.perf_counter() - start, 3)
         if proc.returncode == 0:
-            return row | {"outcome": "ran"} | balance(proc.stderr)
+            from pyadore.api import parse_forced_steps
+
+            forced = parse_forced_steps(proc.stderr.replace("\n", " "))
+            return row | {"outcome": "ran", "forced_steps": forced[0] if forced else 0} | balance(proc.stderr)
         message = proc.stderr.strip().split("\n")[0].replace(str(path) + ": ", "")
         return row | {"outcome": "failed", "category": category(message), "message": message}
 
 
 FIELDS = ("deck", "speed_rpm", "load_N", "fit_m", "outcome", "category", "message", "seconds",
           "revolutions", "drive_W", "dissipation_W", "energy_rate_W", "drive_over_dissipation", "closure",
-          "inner_force_residual")
+          "inner_force_residual", "forced_steps")
 GRID = ROOT / "bench" / "operating_points_grid.csv"
 
 
@@ -211,6 +217,11 @@ def summarize(rows: list[dict]) -> None:
     """Print a grid's counts: outcomes, failures by category, deck, speed, load and fit."""
     print(f"{len(rows)} cases: {dict(collections.Counter(r['outcome'] for r in rows))}")
     bad = [r for r in rows if r["outcome"] != "ran"]
+    counted = [r for r in rows if r["outcome"] == "ran" and (r.get("forced_steps") or "") != ""]
+    if counted:
+        forced = [r for r in counted if int(r["forced_steps"]) > 0]
+        print(f"ran with steps forced at the minimum step (error above the limit, not resolved): "
+              f"{len(forced)} of {len(counted)} that ran and record it")
     for title, key in (("category", lambda r: category(r["message"])[:110]), ("deck", lambda r: r["deck"]),
                        ("speed (rpm)", lambda r: float(r["speed_rpm"])), ("load (N)", lambda r: float(r["load_N"]) if float(r["load_N"]) in LOADS else "C0"),
                        ("fit (um)", lambda r: round(float(r["fit_m"]) * 1e6))):

@@ -300,6 +300,16 @@ def parse_balance(note: str) -> dict | None:
             "closure": _closure(v[3], v[4], v[9], v[10])}
 
 
+def parse_forced_steps(note: str) -> tuple[int, int] | None:
+    """The run note's count of time steps accepted at the Rec 2.1 minimum step with their
+    error above the error limit (ADORE's rule; fortran/driver/run.f90 add_forced_steps_note) as
+    (forced, accepted); None when the note has none (no such step, or no time steps)."""
+    import re
+
+    m = re.search(r"(\d+) of (\d+) time steps accepted at the minimum step", note or "")
+    return (int(m.group(1)), int(m.group(2))) if m else None
+
+
 def _closure(drive: float, dissipation: float, rate: float, whirl_frame: float = 0.0) -> float:
     """(drive - dissipation - energy change - whirl frame) / max(|drive|, dissipation, 1 uW):
     0 up to the integration error (Newton-Euler, with the power of the terms a free cage's

@@ -260,10 +260,13 @@ def test_mixed_films_have_no_step_at_the_threshold(tmp_path):
     0.1 % below the thinnest to 0.1 % above takes those contacts from the film to the curve.
     Without the band (full_film_lambda = 0: session 13's step) the step-0 power loss (the
     time history's, full precision) jumps by more than 10 % (measured 3.487 -> 2.569 W);
-    with the band (full film at 2.5) it moves by less than 1e-3 of itself (measured 2.8e-4:
-    the band's lower end moved for every contact, f ~ 1e-6 at the crossing), under 1 % of
-    the step's jump.  The default (band 1-2) differs from the step on this deck, whose films
-    are in the band (3.359 W against 3.487 W)."""
+    with the band (full film at 2.5) it moves by under 1 % of the step's jump, and by what
+    the same move of boundary_lambda below the thinnest film, crossing nothing, moves it
+    (within 10 %; measured 4.95e-3 and 5.02e-3 W of 2.2 W: the band's lower end moves f of
+    every contact in the band, and since the film shears its share of the load at f p_H
+    (load sharing) the loss follows f more steeply than with the film at p_H, 2.8e-4 of
+    the loss then; f ~ 1e-6 at the crossing).  The default (band 1-2) differs from the step
+    on this deck, whose films are in the band (2.276 W against 3.487 W)."""
     balls, _ = _core.ball_step0_from_deck(ANGULAR)
     lam = np.concatenate([balls[f"film_{j}"][balls[f"q_{j}"] > 0.0] * balls[f"thermal_factor_{j}"][balls[f"q_{j}"] > 0.0]
                           for j in "oi"]) / 1e-7
@@ -279,8 +282,9 @@ def test_mixed_films_have_no_step_at_the_threshold(tmp_path):
     step = abs(loss("step_hi", boundary_lambda=hi, full_film_lambda=0) - step_lo)
     base = loss("blend_lo", boundary_lambda=lo, full_film_lambda=2.5)
     blend = abs(loss("blend_hi", boundary_lambda=hi, full_film_lambda=2.5) - base)
+    near = abs(base - loss("blend_below", boundary_lambda=0.997 * lam.min(), full_film_lambda=2.5))
     assert step > 0.1 * step_lo
-    assert blend < 1e-3 * base and blend < 0.01 * step
+    assert abs(blend - near) < 0.1 * near and blend < 0.01 * step
     assert loss("default") < 0.99 * loss("no_band", full_film_lambda=0)
 
 
@@ -372,7 +376,7 @@ def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
     start's equilibrium carries the applied load and the race's weight (1e-6 N); the run integrates its 300 steps
     with ball 4's pocket force below 1 N, the cage pockets take at most 1e-4 of the
     dissipation (nothing is lost in collisions), and the race contacts dissipate what the
-    start's contacts lose (the step-0 print's total power loss).  The run holds its cage
+    time history's power loss says over the balance window.  The run holds its cage
     centred (`cage="centred"`), the premise of "nothing lost in collisions": a free cage (the
     default for this deck's Rec 3.3) adds the work of its films (guide-land film on, pocket
     films) at 60 000 rpm to the cage work: 150 W of 8.2 kW, no metallic friction heat
@@ -396,11 +400,48 @@ def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
     result = pyadore.run(path, steps=300, out=tmp_path / "dgc.prt", history_element=4, cage="centred")
     assert result.steps_integrated == 300
     assert np.max(result.time_history["pocket4_force_N"]) < 1.0
-    # where the power goes: the race contacts (8.0 kW), not the cage pockets (the stopped run
-    # put 1e4 N on a pocket); the race contacts' dissipation is the start's (the print's
-    # step-0 total power loss, 8.1 kW) within 2 % over this short transient (1.4 % apart)
+    # where the power goes: the race contacts (6.5 kW), not the cage pockets (the stopped run
+    # put 1e4 N on a pocket); the balance's race-contact heat is the time history's total
+    # power loss averaged over the same window (measured 6 549.4 W against 6 549.36 W).
+    # (Until the mixed films' load sharing this compared with the step-0 print's loss, 2 %
+    # apart; the in-band contacts' transient now falls from 6 862 W at step 0 to 6 348 W at
+    # step 300, so the start's loss is not the window's: docs/operating-points.md.)
     bal = result.balance
     assert bal["cage_work_W"] <= 1e-4 * bal["dissipation_W"]
-    text = (tmp_path / "dgc.prt").read_text()
-    step0_loss = float(text.split("Total Power Loss       (W)")[1].split()[0])
-    assert bal["race_heat_W"] == pytest.approx(step0_loss, rel=0.02)
+    t = result.time_history.index.to_numpy()
+    loss = np.asarray(result.time_history["total_power_loss_W"])
+    window = (t >= bal["window_s"][0] * (1.0 - 1e-9)) & (t <= bal["window_s"][1] * (1.0 + 1e-9))
+    mean_loss = np.trapezoid(loss[window], t[window]) / (t[window][-1] - t[window][0])
+    assert bal["race_heat_W"] == pytest.approx(mean_loss, rel=1e-3)
+
+
+def test_mixed_films_at_the_static_capacity_run_resolved_and_balance(tmp_path):
+    """Appendix C at its static capacity (146 100 N, ISO 76's 4 200 MPa), 1 000 rpm, 0 um
+    fit: one of the grid's last ten failures ("outer race contact outside the Hertz model"
+    at step 44, docs/operating-points.md "The last ten grid failures").  Its films are
+    mixed (film parameters in the band 1-2) at 3-4 GPa; sheared at the full Hertz pressure
+    the film's traction slope eta exp(alpha p) / h was so steep that the integrator's error
+    test failed at every step down to the deck's minimum step, whose steps ADORE's rule
+    accepts anyway (18 of the first 20 with the films at the full pressure, below); the
+    run went on without error control until a trial stage left the Hertz model.  With the
+    film shearing its share f Q of the load at f p_H (load sharing, docs/tribology.md
+    "Mixed films") it runs its 300 steps with no step accepted that way (measured: every
+    step at the deck's largest, 0.3 tau), the inner race's contacts carry the applied load
+    and its weight (residual measured 0.004 N of 145 kN) and the drive power is the
+    dissipation (138.88 W against 138.94 W, closure 2.4e-6)."""
+    from pyadore.api import parse_forced_steps
+
+    path, force = _variant(tmp_path, BALL, "c0", speed=1000.0, load=146100.0, fit=0.0)
+    result = _runs_and_carries_its_load(path, force, tmp_path / "c0.prt")
+    assert parse_forced_steps(" ".join(result.notes)) is None
+    bal = result.balance
+    carried = np.linalg.norm(bal["inner_carried_N"])
+    assert bal["inner_residual_N"] <= 1e-5 * carried
+    assert bal["drive_ratio"] == pytest.approx(1.0, abs=0.01)
+    assert abs(bal["closure"]) <= 1e-3
+    # the film at the full Hertz pressure (no band: the step at boundary_lambda): the same
+    # point's first 20 steps are mostly accepted at the minimum step with their error above
+    # the limit, and the run note says so
+    stiff = pyadore.run(path, steps=20, out=tmp_path / "stiff.prt", full_film_lambda=0)
+    forced = parse_forced_steps(" ".join(stiff.notes))
+    assert forced is not None and forced[1] == 20 and forced[0] >= 10

@@ -14,6 +14,7 @@ module adore_driver_run
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_os, only: rename_file, delete_file
+   use adore_core_strings, only: itoa
    use adore_core_threads, only: run_threads
    use adore_deck_text, only: deck_text_t, read_deck_text
    use adore_deck_deck_type, only: deck_t
@@ -227,6 +228,11 @@ contains
          call run_time_loop(unit, sys, it, y, n_dynamic, hist, incomplete, run_error, progress, opts%substeps, &
                             balance=balance)
       end if
+      if (n_dynamic > 0 .and. it%stats%forced_at_h_min > 0) then
+         ! ADORE's rule accepts a step at the Rec 2.1 minimum whatever its error
+         ! (adore_dynamics_integrator's accept_at_h_min): say how many were (issue #28)
+         call add_forced_steps_note(it%stats%forced_at_h_min, it%stats%accepted, balance)
+      end if
       if (len(balance) > 0) then
          if (len(run_note) > 0) then
             run_note = run_note//"; "//balance
@@ -297,5 +303,20 @@ contains
       if (.not. duration/time_scale < 1.0e12_wp) call input_error(error, "run option duration: the simulated "// &
          "time is beyond 1e12 time units of the echo's TIME scale")
    end subroutine run_end_time
+
+   !> Append to text ("; "-separated) the run note's clause on steps the integrator accepted
+   !> at the Rec 2.1 minimum step with their error estimate above the error limit (forced of
+   !> accepted; ADORE's rule, report 4.4.12's minimum step): such a run went on without
+   !> error control, so its states and balances are not resolved - a smaller minimum step
+   !> (or a less stiff traction) is what resolves it (docs/operating-points.md, "The last ten
+   !> grid failures").  A subroutine: a deferred-length function result would be static
+   !> storage (fortran/core/strings.f90).
+   pure subroutine add_forced_steps_note(forced, accepted, text)
+      integer, intent(in) :: forced, accepted
+      character(len=:), allocatable, intent(inout) :: text
+      if (len(text) > 0) text = text//"; "
+      text = text//itoa(forced)//" of "//itoa(accepted)//" time steps accepted at the minimum step (Rec 2.1) "// &
+             "with their error above the error limit: not resolved (docs/operating-points.md)"
+   end subroutine add_forced_steps_note
 
 end module adore_driver_run

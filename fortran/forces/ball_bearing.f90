@@ -43,7 +43,8 @@ module adore_forces_ball_bearing
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, SIDE_OUTER, SIDE_INNER, &
                                    contact_kinematics
    use adore_forces_race_contact, only: PRINT_GAUSS, EHD_GAUSS, ehd_traction_model, lubricant_film, &
-                                           fluid_fraction, mixed_traction, ehd_traction, rolling_resistance
+                                           fluid_fraction, fluid_contact, mixed_traction, ehd_traction, &
+                                           rolling_resistance
    implicit none
    private
 
@@ -586,13 +587,15 @@ contains
                return
             end if
          end if
+         ! the film's traction of the load it carries (f Q at f p_H: the whole contact for a
+         ! full film), then in mixed lubrication (boundary_lambda < film parameter <
+         ! full_film_lambda) blended with the curve's (docs/tribology.md, "Mixed films")
          if (with_2d) then
-            call ehd_traction(b, t_lub, cj, b_minor, race, h*phi, t, error, with_reference, tc)
+            call ehd_traction(b, t_lub, fluid_contact(cj, f), b_minor, race, h*phi, t, error, with_reference, tc)
          else
-            call ehd_traction(b, t_lub, cj, b_minor, race, h*phi, t, error, with_reference)
+            call ehd_traction(b, t_lub, fluid_contact(cj, f), b_minor, race, h*phi, t, error, with_reference)
          end if
          if (allocated(error)) return
-         ! mixed lubrication (boundary_lambda < film parameter < full_film_lambda)
          if (f < 1.0_wp) t = mixed_traction(f, t, t_curve)
       end subroutine race_traction
 

@@ -29,7 +29,7 @@ module adore_forces_race_contact
 
    public :: ehd_traction_model, wall_temperature, wall_rheology, thermal_properties, lubricant_film, &
              ehd_film_present, ehd_traction, ehd_flash, law_flash, line_flash, printed_slip, &
-             rolling_resistance, fluid_fraction, mixed_traction
+             rolling_resistance, fluid_fraction, fluid_contact, mixed_traction
 
    !> Gauss points per slip zone of the printed contact tribology: the report's printed slip
    !> velocity is the largest |u| at the nodes of the 4-point rule (docs/tribology.md).
@@ -202,14 +202,29 @@ contains
       end if
    end function fluid_fraction
 
+   !> The film's share of race contact cj in mixed lubrication (docs/tribology.md, "Mixed
+   !> films"): the same contact (ellipse, kinematics) with the load f Q (N) at fluid fraction
+   !> f, so its Hertz pressure is f p_H over the same ellipse - the load sharing of Johnson,
+   !> Greenwood & Poon (1972) and Gelinck & Schipper (2000): the asperities carry (1 - f) Q,
+   !> the film the rest at the pressure its viscosity exp(alpha p) sees.  f = 1 (a full
+   !> film) or f = 0 (no film to shear): cj itself.
+   pure function fluid_contact(cj, f) result(c)
+      type(ball_race_contact_t), intent(in) :: cj
+      real(wp), intent(in) :: f
+      type(ball_race_contact_t) :: c
+      c = cj
+      if (f > 0.0_wp .and. f < 1.0_wp) c%load = f*cj%load
+   end function fluid_contact
+
    !> The traction of a race contact in mixed lubrication (docs/tribology.md, "Mixed
-   !> films"): f (the fluid fraction, 0 < f < 1) times the EHD film's traction `fluid` plus
-   !> 1 - f times the deck curve's `boundary` - the load-sharing blend mu = f mu_EHD +
-   !> (1 - f) mu_boundary - for every force, moment, the coefficient, the heat (W) and the
-   !> sliding integral (N m/s); the kinematic fields (slips, speeds, spin, R_x, the
-   !> pure-rolling points) are the contact's own, taken from `fluid`.  Both tractions are of
-   !> the same contact (the same load and slip), so the blend is the traction of the shared
-   !> load: f of it at the film's shear, 1 - f at the curve's.
+   !> films"): f (the fluid fraction, 0 < f < 1) times the EHD film's traction `fluid` of the
+   !> film's share of the load (fluid_contact: f Q at f p_H) plus 1 - f times the deck
+   !> curve's `boundary` at the contact's load Q, for every force, moment and the heat (W);
+   !> the coefficient is that force over Q (the film's own coefficient is over f Q); the
+   !> sliding integral (N m/s, |u| dQ) is the whole contact's (the film's over f Q plus the
+   !> curve's over the rest).  The weight f keeps the blend continuous with its slope where
+   !> the film appears (f = 0) and at the full film.  The kinematic fields (slips, speeds,
+   !> spin, R_x, the pure-rolling points) are the contact's own, taken from `fluid`.
    pure function mixed_traction(f, fluid, boundary) result(t)
       real(wp), intent(in) :: f
       type(contact_traction_t), intent(in) :: fluid, boundary
@@ -219,9 +234,9 @@ contains
       t%force_cos = f*fluid%force_cos + (1.0_wp - f)*boundary%force_cos
       t%force_sin = f*fluid%force_sin + (1.0_wp - f)*boundary%force_sin
       t%cross_force = f*fluid%cross_force + (1.0_wp - f)*boundary%cross_force
-      t%coefficient = f*fluid%coefficient + (1.0_wp - f)*boundary%coefficient
+      t%coefficient = f*f*fluid%coefficient + (1.0_wp - f)*boundary%coefficient
       t%power = f*fluid%power + (1.0_wp - f)*boundary%power
-      t%sliding = f*fluid%sliding + (1.0_wp - f)*boundary%sliding
+      t%sliding = fluid%sliding + (1.0_wp - f)*boundary%sliding
    end function mixed_traction
 
    !> EHD traction of one race contact cj (traction model 3, adore_tribology_ehd_traction):

@@ -15,8 +15,8 @@ module adore_output_ball_contact_print
    use adore_contact_ball_race, only: ball_race_pair_t, planar_contact
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_kinematics
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_race_pairs
-   use adore_forces_race_contact, only: ehd_traction_model, lubricant_film, fluid_fraction, printed_slip, &
-                                        ehd_flash, law_flash
+   use adore_forces_race_contact, only: ehd_traction_model, lubricant_film, fluid_fraction, fluid_contact, &
+                                        printed_slip, ehd_flash, law_flash
    implicit none
    private
 
@@ -121,8 +121,9 @@ contains
                if (ehd) f = fluid_fraction(b, p%film(j, k), p%thermal_factor(j, k))
                if (f > 0.0_wp) then
                   h = p%film(j, k)*p%thermal_factor(j, k)
-                  if (with_flash) call ehd_flash(b, t_lub, cj, b_minor, race, h, abs(tk%rolling_speed), &
-                                                 p%temp_rise(j, k), error)
+                  ! the film's share of the load (f Q at f p_H; the whole load for a full film)
+                  if (with_flash) call ehd_flash(b, t_lub, fluid_contact(cj, f), b_minor, race, h, &
+                                                 abs(tk%rolling_speed), p%temp_rise(j, k), error)
                   if (with_flash .and. f < 1.0_wp .and. .not. allocated(error)) then
                      call law_flash(b, cj, b_minor, p_h, race, abs(tk%rolling_speed), rise, error)
                      p%temp_rise(j, k) = f*p%temp_rise(j, k) + (1.0_wp - f)*rise
@@ -133,10 +134,12 @@ contains
                if (allocated(error)) p%temp_rise(j, k) = nan
                ! the printed node of the traction used: model 3's with a film, else the curve's,
                ! a mixed film's blend of the two
-               call printed_slip(b, t_lub, cj, b_minor, race, h, h > 0.0_wp, p%slip(j, k), p%coefficient(j, k))
+               call printed_slip(b, t_lub, fluid_contact(cj, f), b_minor, race, h, h > 0.0_wp, p%slip(j, k), &
+                                 p%coefficient(j, k))
                if (f > 0.0_wp .and. f < 1.0_wp) then
+                  ! the film's node coefficient is over its share f of the strip's load
                   call printed_slip(b, t_lub, cj, b_minor, race, h, .false., slip, coefficient)
-                  p%coefficient(j, k) = f*p%coefficient(j, k) + (1.0_wp - f)*coefficient
+                  p%coefficient(j, k) = f*f*p%coefficient(j, k) + (1.0_wp - f)*coefficient
                end if
             end associate
          end do

@@ -45,8 +45,9 @@ module adore_quasistatic_ball_kinematics
    !> The EHD film of a ball's two race contacts (outer first) for the minimum-dissipation
    !> search with traction model 3: rheology at the wall temperature, film h (m, the
    !> thermally reduced central film; 0: no film, the deck's curve), semi-minor axis b (m)
-   !> and the fluid fraction (mixed lubrication: the power is fluid times the EHD film's
-   !> plus 1 - fluid times the curve's; 1: a full film; docs/tribology.md, "Mixed films"),
+   !> and the fluid fraction (mixed lubrication: the power is fluid times the EHD film's at
+   !> fluid times the load plus 1 - fluid times the curve's; 1: a full film; docs/tribology.md,
+   !> "Mixed films"),
    !> held fixed in the search.
    type :: ehd_films_t
       type(ehd_rheology_t) :: rheo(2)
@@ -183,7 +184,7 @@ contains
    !> (beta, w_b, w_m): eq (4) with the traction law `law`, n_gauss points per slip zone; with
    !> the EHD film traction (model 3) instead when ehd is present (a contact with a film:
    !> ehd_contact_traction_fast's power, its own quadrature; in mixed lubrication its fluid
-   !> fraction of that power plus the rest of the law's).
+   !> fraction of that power at the fluid's share of the load plus the rest of the law's).
    subroutine dissipation(d, r_b, n_o, n_i, w_o, w_i, a, q, law, n_gauss, beta, w_b, w_m, p, error, ehd)
       real(wp), intent(in) :: d, r_b, n_o(2), n_i(2), w_o, w_i, a(2), q(2), beta, w_b, w_m
       type(traction_law_t), intent(in) :: law
@@ -191,7 +192,7 @@ contains
       real(wp), intent(out) :: p
       type(error_type), allocatable, intent(out) :: error
       type(ehd_films_t), intent(in), optional :: ehd
-      type(ball_race_contact_t) :: c(2)
+      type(ball_race_contact_t) :: c(2), cf
       type(contact_traction_t) :: t
       real(wp) :: pj, pl
       integer :: j
@@ -208,10 +209,14 @@ contains
                ! 4 x 8 points the power jumped by up to 9 % where the zones split (two
                ! spurious minima 0.9 deg apart that the start flipped between;
                ! docs/operating-points.md, "Two pitch minima")
-               call ehd_contact_traction_fast(c(j), ehd%rheo(j), ehd%h(j), ehd%b(j), t, error)
+               ! mixed lubrication: the film sheared at its share fluid x the load (fluid x
+               ! the Hertz pressure), blended with the law's power (docs/tribology.md, "Mixed
+               ! films"; adore_forces_race_contact's fluid_contact and mixed_traction)
+               cf = c(j)
+               if (ehd%fluid(j) < 1.0_wp) cf%load = ehd%fluid(j)*c(j)%load
+               call ehd_contact_traction_fast(cf, ehd%rheo(j), ehd%h(j), ehd%b(j), t, error)
                pj = t%power
                if (ehd%fluid(j) < 1.0_wp .and. .not. allocated(error)) then
-                  ! mixed lubrication: the shared load's power (docs/tribology.md, "Mixed films")
                   call contact_power(c(j), law, 1.0_wp, n_gauss, pl, error)
                   pj = ehd%fluid(j)*pj + (1.0_wp - ehd%fluid(j))*pl
                end if

@@ -24,8 +24,8 @@ module adore_start_ball_step0
                                                 ehd_films_t
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction
    use adore_forces_race_contact, only: PRINT_GAUSS, ehd_traction_model, wall_temperature, wall_rheology, &
-                                           lubricant_film, fluid_fraction, mixed_traction, ehd_traction, ehd_flash, &
-                                           law_flash, printed_slip
+                                           lubricant_film, fluid_fraction, fluid_contact, mixed_traction, &
+                                           ehd_traction, ehd_flash, law_flash, printed_slip
    use adore_quasistatic_ball_start, only: ball_start_t, solve_ball_start, is_loaded
    use adore_cage_step0, only: cage_step0_t, solve_cage_step0, POCKET_BALL
    use adore_life_lundberg_palmgren, only: life_params_t, bearing_life, life_hours
@@ -363,9 +363,12 @@ contains
                   h = s%film(j, k)*s%thermal_factor(j, k)
                   t_curve = t
                   ! the print's losses and tractions by the reference quadrature
-                  call ehd_traction(b, b%temperature, c(j), b_minor(j), race, h, t, error, reference=.true.)
+                  ! the film's share of the load (f Q at f p_H; the whole load for a full film)
+                  call ehd_traction(b, b%temperature, fluid_contact(c(j), f), b_minor(j), race, h, t, error, &
+                                    reference=.true.)
                   if (allocated(error)) return
-                  call ehd_flash(b, b%temperature, c(j), b_minor(j), race, h, abs(t%rolling_speed), s%temp_rise(j, k), error)
+                  call ehd_flash(b, b%temperature, fluid_contact(c(j), f), b_minor(j), race, h, abs(t%rolling_speed), &
+                                 s%temp_rise(j, k), error)
                   if (f < 1.0_wp .and. .not. allocated(error)) then
                      ! mixed film: the blend of the two tractions, and of their flash rises
                      ! (eq 35 is linear in the heat; docs/tribology.md, "Mixed films")
@@ -380,11 +383,12 @@ contains
                s%contact_temp(j, k) = wall_temperature(b%temperature, race)
                ! the printed node of the traction used: model 3's with a film, else the curve's,
                ! a mixed film's blend of the two
-               call printed_slip(b, b%temperature, c(j), b_minor(j), race, h, h > 0.0_wp, s%slip(j, k), &
-                                 s%trac_coeff(j, k))
+               call printed_slip(b, b%temperature, fluid_contact(c(j), f), b_minor(j), race, h, h > 0.0_wp, &
+                                 s%slip(j, k), s%trac_coeff(j, k))
                if (f > 0.0_wp .and. f < 1.0_wp) then
+                  ! the film's node coefficient is over its share f of the strip's load
                   call printed_slip(b, b%temperature, c(j), b_minor(j), race, h, .false., slip, coefficient)
-                  s%trac_coeff(j, k) = f*s%trac_coeff(j, k) + (1.0_wp - f)*coefficient
+                  s%trac_coeff(j, k) = f*f*s%trac_coeff(j, k) + (1.0_wp - f)*coefficient
                end if
                s%spin_roll(j, k) = t%spin_roll
                s%loss(j, k) = t%power

@@ -12,8 +12,10 @@ program test_mixed_film
    use adore_model_bearing, only: bearing_t, BODY_OUTER, BODY_INNER
    use adore_geometry_mounted, only: mounted_geometry_t
    use adore_state_bearing_state, only: bearing_state_t, RACE_OUTER
-   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads
-   use adore_forces_race_contact, only: MIN_EHD_FILM, fluid_fraction, lubricant_film
+   use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_race_pairs
+   use adore_forces_race_contact, only: MIN_EHD_FILM, fluid_fraction, fluid_contact, lubricant_film, ehd_traction
+   use adore_contact_ball_race, only: ball_race_pair_t, planar_contact
+   use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t
    use adore_start_ball_step0, only: ball_step0_t
    use adore_test_support, only: check, finish
    use adore_test_ball_fixture, only: step0_state, appendix_c_race_control, loads_power
@@ -96,13 +98,17 @@ contains
 
    !> Appendix C at its step-0 state (race control), its thermally reduced films 0.45-0.53 um,
    !> with a mixed band of 0.40-0.60 um: every loaded contact is in the band.  The force
-   !> assembly's traction of each contact is then f x its EHD traction (no band, the films
-   !> sheared) + (1 - f) x its curve traction (a boundary film of 1 m: every contact on the
-   !> curve) for the force, both moments and the heat alike, with f = fluid_fraction of the
-   !> contact's own film (lubricant_film at its kinematics): to 1e-12 of the contact's
-   !> largest term.  And with ball 1 disturbed (spin, velocity), the blended traction loads'
-   !> mechanical power on the balls and races is minus their heat (the power identity of
-   !> test_forces' traction power, which holds for each traction and so for their blend).
+   !> assembly's traction of each contact is then f x the EHD film's traction of the
+   !> contact with f times its load (fluid_contact: f Q at f p_H, the same ellipse, slip and
+   !> film, computed here by ehd_traction) + (1 - f) x its curve traction
+   !> (a boundary film of 1 m: every contact on the curve) for the force, both moments and
+   !> the heat alike, with f = fluid_fraction of the contact's own film (lubricant_film at
+   !> its kinematics): to 1e-12 of the contact's largest term.  The film's heat at f p_H is
+   !> below its heat at p_H (no band, the films sheared at Q), contact by contact: the
+   !> viscosity exp(alpha p).  And with ball 1 disturbed (spin, velocity), the blended
+   !> traction loads' mechanical power on the balls and races is minus their heat (the power
+   !> identity of test_forces' traction power, which holds for each traction and so for
+   !> their blend).
    subroutine test_blend_at_appendix_c_contacts(b, g, base)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
@@ -112,8 +118,11 @@ contains
       type(ball_bearing_loads_t) :: lm, le, lc, l0
       type(error_type), allocatable :: error
       real(wp) :: f, h, phi, scale, worst, f_min, f_max, p_mech, heat
-      real(wp) :: blend(4), got(4)
-      integer :: k, j, n_mixed
+      real(wp) :: blend(4), got(4), fluid_ratio(4)
+      type(ball_race_pair_t) :: pairs(2)
+      type(ball_race_contact_t) :: cj, cf
+      type(contact_traction_t) :: tf
+      integer :: k, j, n_mixed, race
 
       bm = b
       bm%boundary_film = 4.0e-7_wp
@@ -130,6 +139,8 @@ contains
          call check(.false., "mixed film: the loads: "//error%message)
          return
       end if
+      pairs = ball_race_pairs(bm, g)
+      fluid_ratio = 0.0_wp
       worst = 0.0_wp
       f_min = 1.0_wp
       f_max = 0.0_wp
@@ -150,7 +161,19 @@ contains
             if (f > 0.0_wp .and. f < 1.0_wp) n_mixed = n_mixed + 1
             f_min = min(f_min, f)
             f_max = max(f_max, f)
-            blend = f*quantities(le, j, k) + (1.0_wp - f)*quantities(lc, j, k)
+            race = merge(BODY_OUTER, BODY_INNER, j == RACE_OUTER)
+            cj = planar_contact(pairs(j), lm%contacts(j, k))
+            call ehd_traction(bm, base%temperature, fluid_contact(cj, f), lm%contacts(j, k)%ellipse%semi_minor, race, &
+                              h*phi, tf, error)
+            if (allocated(error)) then
+               call check(.false., "mixed film: the film's traction: "//error%message)
+               return
+            end if
+            cf = fluid_contact(cj, f)
+            call check(cf%load == f*cj%load .and. cf%a == cj%a .and. cf%rho == cj%rho, &
+                       "mixed film: the fluid's contact carries f Q on the same ellipse")
+            fluid_ratio = max(fluid_ratio, [tf%force, tf%force_cos, tf%force_sin, tf%power]/quantities(le, j, k))
+            blend = f*[tf%force, tf%force_cos, tf%force_sin, tf%power] + (1.0_wp - f)*quantities(lc, j, k)
             got = quantities(lm, j, k)
             scale = max(maxval(abs(quantities(le, j, k))), maxval(abs(quantities(lc, j, k))))
             worst = max(worst, maxval(abs(got - blend))/scale)
@@ -159,7 +182,12 @@ contains
       write (*, "(a,i0,a,2f8.4,a,es10.2)") "mixed film: ", n_mixed, " contacts in the band, fluid fraction ", &
          f_min, f_max, ", worst blend error ", worst
       call check(n_mixed == 2*size(base%elements), "mixed film: every loaded Appendix C contact in the band")
-      call check(worst <= 1.0e-12_wp, "mixed film: traction = f EHD + (1 - f) curve with f of the contact's film")
+      call check(worst <= 1.0e-12_wp, "mixed film: traction = f EHD of f Q + (1 - f) curve with f of the contact's film")
+      write (*, "(a,es10.2)") "mixed film: largest heat of the film sheared at f p_H over its heat at p_H ", &
+         fluid_ratio(4)
+      ! the viscosity exp(alpha p) falls with the pressure: at f p_H the film's shear heat is
+      ! below its heat at the full Hertz pressure, contact by contact
+      call check(fluid_ratio(4) < 1.0_wp, "mixed film: the film sheared at f p_H heats less than at p_H")
 
       ! the power identity with the blend
       st = base
