@@ -44,11 +44,12 @@ def _variant(tmp_path: Path, base: Path, name: str, speed=None, load=None, fit=N
     return path, force
 
 
-def _runs_and_carries_its_load(path: Path, force: np.ndarray, out: Path):
-    """Run path for 300 time steps; over the last half of the run the inner race's mean
-    contact force balances the applied load and the race's weight (Newton: the residual is
-    the race's mass times its mean acceleration) within 1 % of the load.  Returns the result."""
-    result = pyadore.run(path, steps=300, out=out)
+def _runs_and_carries_its_load(path: Path, force: np.ndarray, out: Path, **options):
+    """Run path for 300 time steps (run options as given); over the last half of the run the
+    inner race's mean contact force balances the applied load and the race's weight (Newton:
+    the residual is the race's mass times its mean acceleration) within 1 % of the load.
+    Returns the result."""
+    result = pyadore.run(path, steps=300, out=out, **options)
     assert result.steps_integrated == 300
     carried = np.linalg.norm(result.balance["inner_carried_N"])
     assert carried == pytest.approx(np.linalg.norm(force), rel=0.01)   # the load and the race weight
@@ -428,11 +429,14 @@ def test_mixed_films_at_the_static_capacity_run_resolved_and_balance(tmp_path):
     "Mixed films") it runs its 300 steps with no step accepted that way (measured: every
     step at the deck's largest, 0.3 tau), the inner race's contacts carry the applied load
     and its weight (residual measured 0.004 N of 145 kN) and the drive power is the
-    dissipation (138.88 W against 138.94 W, closure 2.4e-6)."""
+    dissipation (138.88 W against 138.94 W, closure 2.4e-6).  The cage is held centred: the
+    subject is the films, and the balance needs a steady run; the deck's free cage (the
+    default) is still spinning up over these 300 steps (measured 2026-11-27: energy change
+    17.9 W of 141.8 W dissipated, drive/dissipation 1.118, closure -0.76 %)."""
     from pyadore.api import parse_forced_steps
 
     path, force = _variant(tmp_path, BALL, "c0", speed=1000.0, load=146100.0, fit=0.0)
-    result = _runs_and_carries_its_load(path, force, tmp_path / "c0.prt")
+    result = _runs_and_carries_its_load(path, force, tmp_path / "c0.prt", cage="centred")
     assert parse_forced_steps(" ".join(result.notes)) is None
     bal = result.balance
     carried = np.linalg.norm(bal["inner_carried_N"])
