@@ -264,6 +264,11 @@ contains
             end if
          end if
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
+         if (s%cage .and. s%land_film .and. .not. s%cage_spin_only) then
+            write (buf, "(es10.3)") s%bearing%land_oil_layer
+            text = text//"; guide-land film where the gap is below the lands' oil layer of "//trim(adjustl(buf))// &
+                   " m (run option land_oil; docs/dynamics.md, starved land)"
+         end if
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
          if (s%rolling_resistance) text = text//"; EHD rolling resistance of the race contacts"

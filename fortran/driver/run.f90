@@ -130,6 +130,9 @@ contains
       bearing%boundary_film = opts%boundary_lambda*roughness%sigma_rms
       ! mixed films between it and the full film blend the two tractions ("Mixed films")
       bearing%full_film = opts%full_film_lambda*roughness%sigma_rms
+      ! the guide lands' lubricant layer (run option land_oil; docs/dynamics.md, "The guide-land
+      ! film where the report has none")
+      bearing%land_oil_layer = opts%land_oil
       table = len_trim(opts%traction_table) > 0
       if (table) then
          call read_traction_table(trim(opts%traction_table), bearing%race_traction, error)
