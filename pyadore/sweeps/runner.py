@@ -20,7 +20,7 @@ from ..deck import Deck, DeckError, format_deck, parse_text
 from . import store
 from .execute import run_dask, run_local
 from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_vary
-from .results import RESULT_COLUMNS, key_results
+from .results import RESULT_COLUMNS, key_results, mean_results
 
 __all__ = ["sweep", "run_sweep", "read_summary", "read_summary_file", "summary_csv", "dispatch_order"]
 
@@ -156,12 +156,16 @@ class _Sweep:
             if saved and saved.get("status") == "ok" and saved.get("params") == case.params and prt.exists():
                 self.entries[case.case_id] = saved
                 continue
-            if saved is None and prt.exists():
-                # killed between writing the (complete, renamed) print and its result.json
+            if saved is None and prt.exists() and not (cdir / store.CASE_RESULTS).exists():
+                # killed between writing the (complete, flushed, renamed) print and its result.json, or
+                # a power cut lost result.json (written without fsync): a case without time steps has
+                # every result in its print, as its worker took them; one with time steps (its netCDF
+                # file) has averages from its run's arrays: it runs again
                 try:
                     from ..printout import read_print
 
-                    results = key_results(read_print(prt))
+                    results = key_results(read_print(prt, frames=False, echo=False))
+                    results.update(mean_results(None))
                 except Exception:
                     continue
                 entry = self._entry(case, "ok", "", None, [], "", results)
