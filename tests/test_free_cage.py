@@ -222,3 +222,11 @@ def test_appendix_c_free_cage_to_step_2500(tmp_path, whirl):
     assert (step.table("re_cage")["contact_force_N"] == 0.0).all()
     assert abs(res.balance["cage_work_W"] - res.balance["cage_heat_W"]) < 0.05
     assert abs(res.balance["cage_heat_W"]) < 1.0
+    # section 3's cage row as the report prints it (test_roller_tribology's report-internal
+    # rule): the mass-centre acceleration is the printed force / mass plus gravity - not the
+    # whirl coordinates' own term, which no force causes (the report: (0, 0, -9.810) m/s**2)
+    mass = read_print(res.print_path).echo["inertial_parameters.cage[1]"]
+    loads, acc = step.table("loads").loc["Cage"], step.table("accelerations").loc["Cage"]
+    for f, g, a in zip((loads.force_x_N, loads.force_y_N, loads.force_z_N), (0.0, 0.0, -9.81),
+                       (acc.acc_x_m_s2, acc.acc_y_m_s2, acc.acc_z_m_s2)):
+        assert f / mass + g == pytest.approx(a, rel=2e-3, abs=2e-3)
