@@ -183,7 +183,7 @@ contains
          if (nr == 0) return
          do k = 1, nr
             self%e(:, k, b) = hg*self%bj(:, k, b)
-            call lu_solve(self%lu(:, :, b), self%piv(:, b), self%e(:, k, b))
+            call lu_solve(m, self%lu(:, :, b), self%piv(:, b), self%e(:, k, b))
          end do
          ! C_b E_b in matmul's order (each element summed from 0 over the block's unknowns)
          do k = 1, nr
@@ -205,7 +205,7 @@ contains
       m = self%m
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
-         call lu_solve(self%lu(:, :, b), self%piv(:, b), v(i0 + 1:i0 + m))
+         call lu_solve(m, self%lu(:, :, b), self%piv(:, b), v(i0 + 1:i0 + m))
       end do
       if (.not. self%bordered()) return
       nr = size(self%border)
@@ -219,7 +219,7 @@ contains
          end do
          r = r + self%hg*p
       end do
-      call lu_solve(self%slu, self%spiv, r)
+      call lu_solve(nr, self%slu, self%spiv, r)
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
          ! w_b + matmul(E_b, x_r), the product in matmul's order
@@ -314,14 +314,15 @@ contains
       end do
    end subroutine lu_factor
 
-   !> x := A**-1 x for the factors at (lu_factor's result, transposed) and interchanges piv.
-   pure subroutine lu_solve(at, piv, x)
-      real(wp), intent(in) :: at(:, :)
-      integer, intent(in) :: piv(:)
-      real(wp), intent(inout) :: x(:)
-      integer :: k, m
+   !> x := A**-1 x for the factors at (m x m, lu_factor's result, transposed) and interchanges
+   !> piv.  Explicit shapes (contiguous): the sums are dot_product's, from 0 in index order.
+   pure subroutine lu_solve(m, at, piv, x)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: at(m, m)
+      integer, intent(in) :: piv(m)
+      real(wp), intent(inout) :: x(m)
+      integer :: k, j
       real(wp) :: s
-      m = size(x)
       do k = 1, m
          if (piv(k) /= k) then
             s = x(k)
@@ -330,10 +331,18 @@ contains
          end if
       end do
       do k = 2, m
-         x(k) = x(k) - dot_product(at(1:k - 1, k), x(1:k - 1))
+         s = 0.0_wp
+         do j = 1, k - 1
+            s = s + at(j, k)*x(j)
+         end do
+         x(k) = x(k) - s
       end do
       do k = m, 1, -1
-         x(k) = (x(k) - dot_product(at(k + 1:m, k), x(k + 1:m)))/at(k, k)
+         s = 0.0_wp
+         do j = k + 1, m
+            s = s + at(j, k)*x(j)
+         end do
+         x(k) = (x(k) - s)/at(k, k)
       end do
    end subroutine lu_solve
 

@@ -30,9 +30,11 @@ contains
    !> The block Jacobian at (t, y), k(:, 1) = f(t, y): forward differences, column c of every
    !> block perturbed at once by sqrt(eps) max(|y_i|, scale_i).  A column whose perturbed
    !> evaluation is refused or not finite is left zero (any W keeps a W-method's order).
-   !> With a border: one more call at (t, y) for the blocks' border shares (deriv%border_shares,
-   !> differenced in the blocks' calls into C_b; zero when the derivative has none), and one
-   !> call per border unknown (B_b and D: that unknown perturbed alone).
+   !> With a border: the blocks' border shares at (t, y) (deriv%border_shares, differenced in
+   !> the blocks' calls into C_b; zero when the derivative has none) from the derivative's last
+   !> evaluation when that was at the step's start (shares_at_start: first_stage or the accepted
+   !> attempt's last call), else from one more call at (t, y); and one call per border unknown
+   !> (B_b and D: that unknown perturbed alone).
    module procedure block_jacobian
       real(wp) :: d(size(self%jac%first)), dr
       real(wp), allocatable :: share0(:, :), share(:, :)
