@@ -199,7 +199,7 @@ contains
    !> factor call; module header); the other unknowns unchanged (their W is the identity).
    subroutine solve(self, v)
       class(block_jacobian_t), intent(in) :: self
-      real(wp), intent(inout) :: v(:)
+      real(wp), intent(inout), contiguous :: v(:)
       integer :: b, i0, m, k, l, nr
       real(wp) :: r(border_size(self)), p(border_size(self))
       m = self%m
@@ -240,8 +240,8 @@ contains
    !> w := J v on the blocks' and the border's unknowns, 0 elsewhere (units of v per unit of t).
    subroutine multiply(self, v, w)
       class(block_jacobian_t), intent(in) :: self
-      real(wp), intent(in) :: v(:)
-      real(wp), intent(out) :: w(:)
+      real(wp), intent(in), contiguous :: v(:)
+      real(wp), intent(out), contiguous :: w(:)
       integer :: b, i0, m, k, nr
       real(wp) :: vr(border_size(self)), wr(border_size(self)), p(border_size(self)), q(self%m)
       m = self%m
