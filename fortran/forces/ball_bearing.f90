@@ -267,9 +267,10 @@ contains
    !> temperatures the race contacts' lubricant (film, EHD traction, rolling resistance) is
    !> evaluated at - the thermal model holds them at the initial ones, as ADORE 5.0 does
    !> (report 5.3, 7 rec. 1; docs/thermal.md, "Traction and the temperatures").
-   !> threads (default 1): the balls' contacts on that many OpenMP threads (run option
-   !> threads, adore_core_threads); every sum over the balls is taken afterwards in ball
-   !> order, so the loads are the same bit for bit on any number of threads.
+   !> threads (default 1): the balls' contacts and the cage's guide-land contacts on that many
+   !> OpenMP threads (run option threads, adore_core_threads); every sum over the balls and
+   !> the lands is taken afterwards in ball and land order, so the loads are the same bit for
+   !> bit on any number of threads.
    !> Input errors of the traction model (e.g. no EHD film) come back in error (the first
    !> ball's in ball order).
    subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference, damping, &
@@ -353,20 +354,12 @@ contains
       if (n_threads > 1) then
          !$omp parallel do num_threads(n_threads) schedule(static, 1) default(shared) private(k)
          do k = 1, n + n_lands
-            if (k <= n) then
-               call ball_contacts(k)
-            else
-               call guide_land(k - n)
-            end if
+            call loop_item(k)
          end do
          !$omp end parallel do
       else
          do k = 1, n + n_lands
-            if (k <= n) then
-               call ball_contacts(k)
-            else
-               call guide_land(k - n)
-            end if
+            call loop_item(k)
          end do
       end if
       ! the first failed ball in ball order (as a serial loop would stop there)
@@ -536,6 +529,16 @@ contains
 
       !> The cage's sums over the pockets (ball order) and the guide-land contacts (module
       !> header); the pockets' contacts themselves are each ball's (ball_contacts).
+      !> Item k of the loop over the contacts: ball k's (k <= n), else guide land k - n's.
+      subroutine loop_item(k)
+         integer, intent(in) :: k
+         if (k <= n) then
+            call ball_contacts(k)
+         else
+            call guide_land(k - n)
+         end if
+      end subroutine loop_item
+
       !> Guide land k's contact of cage and race (adore_contact_cage_land) into loads%lands(k).
       !> Run by one thread per land, after the balls.
       subroutine guide_land(k)
