@@ -167,6 +167,7 @@ contains
       self%time_scale = self%eom%time_scale
       self%eom%rolling_resistance = self%options%rolling_resistance
       self%eom%threads = run_threads(self%options%threads)
+      it%jac%threads = self%eom%threads      ! the integrator's block factors on the same team
       ! the run's degrees of freedom are the condition's from now on (report 4.4.6)
       self%condition%constraints = default_constraints(self%eom%cage_spin_only)
       self%eom%constraints = self%condition%constraints

@@ -48,6 +48,10 @@ module adore_dynamics_block_jacobian
       real(wp), allocatable :: e(:, :, :)     !< (m, nr, nb) E_b = (I - hg A_b)**-1 hg B_b
       real(wp), allocatable :: slu(:, :)      !< (nr, nr) LU factors of the Schur complement S, transposed
       integer, allocatable :: spiv(:)         !< (nr) its row interchanges
+      !> threads of factor's per-block work (OpenMP; the run option threads, adore_core_threads):
+      !> every block's factors, E_b and C_b E_b into its own slots, S summed after them in block
+      !> order, so the factors are the same bit for bit on any number of threads
+      integer :: threads = 1
    contains
       procedure :: setup
       procedure :: factor
@@ -115,40 +119,41 @@ contains
 
    !> LU factors (partial pivoting) of I - hg A_b of every block (hg = h gamma, unit of t) and,
    !> with a border, E_b and the factors of the Schur complement S (module header);
-   !> ok = .false. when a block or S is singular.
+   !> ok = .false. when a block or S is singular.  The blocks on self%threads threads.
    subroutine factor(self, hg, ok)
       class(block_jacobian_t), intent(inout) :: self
       real(wp), intent(in) :: hg
       logical, intent(out) :: ok
-      integer :: b, i, m, nr, k
-      real(wp) :: a(self%m, self%m)
-      real(wp), allocatable :: s(:, :)
-      m = self%m
-      ok = .true.
-      do b = 1, size(self%first)
-         a = -hg*self%j(:, :, b)
-         do i = 1, m
-            a(i, i) = a(i, i) + 1.0_wp
+      integer :: b, i, nr, nb
+      logical :: ok_b(size(self%first))
+      real(wp), allocatable :: s(:, :), ce(:, :, :)
+      nb = size(self%first)
+      nr = 0
+      if (self%bordered()) nr = size(self%border)
+      allocate (ce(nr, nr, nb))
+      if (self%threads > 1) then
+         !$omp parallel do num_threads(self%threads) schedule(static, 1) default(shared) private(b)
+         do b = 1, nb
+            call factor_block(b)
          end do
-         call lu_factor(a, self%piv(:, b), ok)
-         if (.not. ok) then
-            self%hg = -1.0_wp
-            return
-         end if
-         self%lu(:, :, b) = transpose(a)      ! rows of the factors contiguous for solve
-      end do
+         !$omp end parallel do
+      else
+         do b = 1, nb
+            call factor_block(b)
+         end do
+      end if
+      ok = all(ok_b)
+      if (.not. ok) then
+         self%hg = -1.0_wp
+         return
+      end if
       if (self%bordered()) then
-         nr = size(self%border)
          s = -hg*self%dj
          do i = 1, nr
             s(i, i) = s(i, i) + 1.0_wp
          end do
-         do b = 1, size(self%first)
-            do k = 1, nr
-               self%e(:, k, b) = hg*self%bj(:, k, b)
-               call lu_solve(self%lu(:, :, b), self%piv(:, b), self%e(:, k, b))
-            end do
-            s = s - hg*matmul(self%cj(:, :, b), self%e(:, :, b))
+         do b = 1, nb
+            s = s - hg*ce(:, :, b)
          end do
          call lu_factor(s, self%spiv, ok)
          if (.not. ok) then
@@ -158,30 +163,76 @@ contains
          self%slu = transpose(s)
       end if
       self%hg = hg
+
+   contains
+
+      !> Block b: the LU factors of I - hg A_b (transposed, into lu(:, :, b)) and with a
+      !> border E_b and C_b E_b (into ce(:, :, b)); ok_b(b).  One thread per block.
+      subroutine factor_block(b)
+         integer, intent(in) :: b
+         real(wp) :: a(self%m, self%m)
+         integer :: i, k, l, m
+         m = self%m
+         a = -hg*self%j(:, :, b)
+         do i = 1, m
+            a(i, i) = a(i, i) + 1.0_wp
+         end do
+         call lu_factor(a, self%piv(:, b), ok_b(b))
+         if (.not. ok_b(b)) return
+         self%lu(:, :, b) = transpose(a)      ! rows of the factors contiguous for solve
+         if (nr == 0) return
+         do k = 1, nr
+            self%e(:, k, b) = hg*self%bj(:, k, b)
+            call lu_solve(m, self%lu(:, :, b), self%piv(:, b), self%e(:, k, b))
+         end do
+         ! C_b E_b in matmul's order (each element summed from 0 over the block's unknowns)
+         do k = 1, nr
+            ce(:, k, b) = 0.0_wp
+            do l = 1, m
+               ce(:, k, b) = ce(:, k, b) + self%cj(:, l, b)*self%e(l, k, b)
+            end do
+         end do
+      end subroutine factor_block
    end subroutine factor
 
    !> v := (I - hg J)**-1 v on the blocks' and the border's unknowns (the factors of the last
    !> factor call; module header); the other unknowns unchanged (their W is the identity).
    subroutine solve(self, v)
       class(block_jacobian_t), intent(in) :: self
-      real(wp), intent(inout) :: v(:)
-      integer :: b, i0, m
-      real(wp), allocatable :: r(:)
+      real(wp), intent(inout), contiguous :: v(:)
+      integer :: b, i0, m, k, l, nr
+      real(wp) :: r(border_size(self)), p(border_size(self))
       m = self%m
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
-         call lu_solve(self%lu(:, :, b), self%piv(:, b), v(i0 + 1:i0 + m))
+         call lu_solve(m, self%lu(:, :, b), self%piv(:, b), v(i0 + 1:i0 + m))
       end do
       if (.not. self%bordered()) return
+      nr = size(self%border)
       r = v(self%border)
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
-         r = r + self%hg*matmul(self%cj(:, :, b), v(i0 + 1:i0 + m))
+         ! r + hg matmul(C_b, w_b), the product in matmul's order
+         p = 0.0_wp
+         do l = 1, m
+            p = p + self%cj(:, l, b)*v(i0 + l)
+         end do
+         r = r + self%hg*p
       end do
-      call lu_solve(self%slu, self%spiv, r)
+      call lu_solve(nr, self%slu, self%spiv, r)
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
-         v(i0 + 1:i0 + m) = v(i0 + 1:i0 + m) + matmul(self%e(:, :, b), r)
+         ! w_b + matmul(E_b, x_r), the product in matmul's order
+         associate (x => v(i0 + 1:i0 + m))
+            block
+               real(wp) :: q(m)
+               q = 0.0_wp
+               do k = 1, nr
+                  q = q + self%e(:, k, b)*r(k)
+               end do
+               x = x + q
+            end block
+         end associate
       end do
       v(self%border) = r
    end subroutine solve
@@ -189,10 +240,10 @@ contains
    !> w := J v on the blocks' and the border's unknowns, 0 elsewhere (units of v per unit of t).
    subroutine multiply(self, v, w)
       class(block_jacobian_t), intent(in) :: self
-      real(wp), intent(in) :: v(:)
-      real(wp), intent(out) :: w(:)
-      integer :: b, i0, m, k
-      real(wp), allocatable :: vr(:), wr(:)
+      real(wp), intent(in), contiguous :: v(:)
+      real(wp), intent(out), contiguous :: w(:)
+      integer :: b, i0, m, k, nr
+      real(wp) :: vr(border_size(self)), wr(border_size(self)), p(border_size(self)), q(self%m)
       m = self%m
       w = 0.0_wp
       do b = 1, size(self%first)
@@ -203,15 +254,35 @@ contains
          end do
       end do
       if (.not. self%bordered()) return
+      nr = size(self%border)
       vr = v(self%border)
-      wr = matmul(self%dj, vr)
+      ! the products below in matmul's order (each element summed from 0, column by column)
+      wr = 0.0_wp
+      do k = 1, nr
+         wr = wr + self%dj(:, k)*vr(k)
+      end do
       do b = 1, size(self%first)
          i0 = self%first(b) - 1
-         w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + matmul(self%bj(:, :, b), vr)
-         wr = wr + matmul(self%cj(:, :, b), v(i0 + 1:i0 + m))
+         q = 0.0_wp
+         do k = 1, nr
+            q = q + self%bj(:, k, b)*vr(k)
+         end do
+         w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + q
+         p = 0.0_wp
+         do k = 1, m
+            p = p + self%cj(:, k, b)*v(i0 + k)
+         end do
+         wr = wr + p
       end do
       w(self%border) = wr
    end subroutine multiply
+
+   !> The number of border unknowns (0 without a border).
+   pure integer function border_size(self) result(nr)
+      class(block_jacobian_t), intent(in) :: self
+      nr = 0
+      if (allocated(self%border)) nr = size(self%border)
+   end function border_size
 
    !> In-place LU factorisation with partial pivoting of the square a (unit lower L below the
    !> diagonal, U on and above), row interchanges in piv; ok = .false. when a is singular.
@@ -243,14 +314,15 @@ contains
       end do
    end subroutine lu_factor
 
-   !> x := A**-1 x for the factors at (lu_factor's result, transposed) and interchanges piv.
-   pure subroutine lu_solve(at, piv, x)
-      real(wp), intent(in) :: at(:, :)
-      integer, intent(in) :: piv(:)
-      real(wp), intent(inout) :: x(:)
-      integer :: k, m
+   !> x := A**-1 x for the factors at (m x m, lu_factor's result, transposed) and interchanges
+   !> piv.  Explicit shapes (contiguous): the sums are dot_product's, from 0 in index order.
+   pure subroutine lu_solve(m, at, piv, x)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: at(m, m)
+      integer, intent(in) :: piv(m)
+      real(wp), intent(inout) :: x(m)
+      integer :: k, j
       real(wp) :: s
-      m = size(x)
       do k = 1, m
          if (piv(k) /= k) then
             s = x(k)
@@ -259,10 +331,18 @@ contains
          end if
       end do
       do k = 2, m
-         x(k) = x(k) - dot_product(at(1:k - 1, k), x(1:k - 1))
+         s = 0.0_wp
+         do j = 1, k - 1
+            s = s + at(j, k)*x(j)
+         end do
+         x(k) = x(k) - s
       end do
       do k = m, 1, -1
-         x(k) = (x(k) - dot_product(at(k + 1:m, k), x(k + 1:m)))/at(k, k)
+         s = 0.0_wp
+         do j = k + 1, m
+            s = s + at(j, k)*x(j)
+         end do
+         x(k) = (x(k) - s)/at(k, k)
       end do
    end subroutine lu_solve
 

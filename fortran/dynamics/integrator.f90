@@ -134,6 +134,11 @@ module adore_dynamics_integrator
       real(wp), allocatable :: y_fsal(:)      !< the state at which k(:, 1) = f(t_fsal, y_fsal)
       real(wp) :: t_fsal = 0.0_wp
       logical :: fsal_valid = .false.
+      !> The derivative's last evaluation by this integrator was at (t_fsal, y_fsal), so its
+      !> border shares belong to the step's start (block_jacobian reuses them: one call less)
+      logical :: shares_at_start = .false.
+      logical :: evaluated_new = .false.      !< the last evaluation was end_of_attempt's, at (t_new, y_new)
+      real(wp) :: t_new = 0.0_wp              !< the time of that evaluation
       real(wp) :: err_old = err_floor         !< previous accepted error (PI controller)
       real(wp) :: alpha = 0.0_wp, beta = 0.0_wp  !< PI exponents
       logical :: ready = .false.
@@ -316,6 +321,8 @@ contains
       class(integrator_t), intent(inout) :: self
       real(wp), intent(in), optional :: h
       self%fsal_valid = .false.
+      self%shares_at_start = .false.
+      self%evaluated_new = .false.
       self%err_old = err_floor
       self%jac_age = -1
       if (present(h)) self%h_next = min(max(h, self%settings%h_min), self%settings%h_max)
@@ -455,6 +462,7 @@ contains
       end if
       y = self%y_new
       self%k(:, 1) = self%k(:, self%last)
+      self%shares_at_start = self%evaluated_new .and. t == self%t_new
       if (self%jac_age >= 0) self%jac_age = self%jac_age + 1
       self%y_fsal = y
       self%t_fsal = t
@@ -501,6 +509,8 @@ contains
       end if
       call deriv%eval(t, y, self%k(:, 1), flag)
       self%stats%derivative_calls = self%stats%derivative_calls + 1
+      self%evaluated_new = .false.
+      self%shares_at_start = .false.
       if (flag == DERIV_FAIL) then
          call stop_error(self, error, "the derivative failed", t, self%h_next, deriv=deriv)
       else if (flag == DERIV_REJECT_STEP) then
@@ -515,6 +525,7 @@ contains
       self%y_fsal = y
       self%t_fsal = t
       self%fsal_valid = .true.
+      self%shares_at_start = .true.
    end subroutine first_stage
 
    !> One attempt of size h from (t, y), k(:, 1) given: stages 2..s, y_new, the weighted error
@@ -538,6 +549,8 @@ contains
             end do
             call deriv%eval(t + tab%c(i)*h, ys, k(:, i), flag)
             self%stats%derivative_calls = self%stats%derivative_calls + 1
+            self%evaluated_new = .false.
+            self%shares_at_start = .false.
             if (flag /= DERIV_OK) return
             if (.not. (all(ieee_is_finite(k(:, i))) .and. all(ieee_is_finite(ys)))) then
                err = ieee_value(err, ieee_positive_inf)

@@ -30,9 +30,11 @@ contains
    !> The block Jacobian at (t, y), k(:, 1) = f(t, y): forward differences, column c of every
    !> block perturbed at once by sqrt(eps) max(|y_i|, scale_i).  A column whose perturbed
    !> evaluation is refused or not finite is left zero (any W keeps a W-method's order).
-   !> With a border: one more call at (t, y) for the blocks' border shares (deriv%border_shares,
-   !> differenced in the blocks' calls into C_b; zero when the derivative has none), and one
-   !> call per border unknown (B_b and D: that unknown perturbed alone).
+   !> With a border: the blocks' border shares at (t, y) (deriv%border_shares, differenced in
+   !> the blocks' calls into C_b; zero when the derivative has none) from the derivative's last
+   !> evaluation when that was at the step's start (shares_at_start: first_stage or the accepted
+   !> attempt's last call), else from one more call at (t, y); and one call per border unknown
+   !> (B_b and D: that unknown perturbed alone).
    module procedure block_jacobian
       real(wp) :: d(size(self%jac%first)), dr
       real(wp), allocatable :: share0(:, :), share(:, :)
@@ -44,8 +46,14 @@ contains
       if (self%jac%bordered()) then
          nr = size(self%jac%border)
          allocate (share0(nr, size(self%jac%first)), share(nr, size(self%jac%first)))
-         ! the shares at (t, y) itself (the system's last evaluation may be another state's)
-         call jacobian_call(t, y, flag)
+         ! the shares at (t, y) itself: the system's last evaluation when that was the step's
+         ! first stage (first_stage or the accepted attempt's last call), else one call more
+         flag = DERIV_OK
+         if (.not. (self%shares_at_start .and. self%fsal_valid .and. t == self%t_fsal)) then
+            call jacobian_call(t, y, flag)
+         else if (any(y /= self%y_fsal)) then
+            call jacobian_call(t, y, flag)
+         end if
          if (allocated(error)) return
          if (flag == DERIV_OK) call deriv%border_shares(share0, shares_ok)
          if (shares_ok) shares_ok = all(ieee_is_finite(share0))
@@ -114,6 +122,8 @@ contains
          integer, intent(out) :: flag
          call deriv%eval(tc, ys, self%k(:, 2), flag)
          self%stats%derivative_calls = self%stats%derivative_calls + 1
+         self%evaluated_new = .false.
+         self%shares_at_start = .false.
          self%stats%jacobian_calls = self%stats%jacobian_calls + 1
          if (flag == DERIV_FAIL) &
             call self%stop_error(error, "the derivative failed (Jacobian)", t, self%h_next, deriv=deriv)
@@ -226,6 +236,9 @@ contains
       if (.not. (err <= 1.0_wp .or. accept) .or. .not. ieee_is_finite(err)) return
       call deriv%eval(t + h, self%y_new, self%k(:, self%last), flag)
       self%stats%derivative_calls = self%stats%derivative_calls + 1
+      self%evaluated_new = flag == DERIV_OK
+      self%shares_at_start = .false.
+      self%t_new = t + h
       if (flag /= DERIV_OK) return
       if (.not. all(ieee_is_finite(self%k(:, self%last)))) err = ieee_value(err, ieee_positive_inf)
    end subroutine end_of_attempt
@@ -242,6 +255,8 @@ contains
       logical, intent(out) :: ok
       call deriv%eval(t, ys, f_out, flag)
       self%stats%derivative_calls = self%stats%derivative_calls + 1
+      self%evaluated_new = .false.
+      self%shares_at_start = .false.
       ok = flag == DERIV_OK
       if (ok) ok = all(ieee_is_finite(f_out)) .and. all(ieee_is_finite(ys))
    end subroutine eval_stage

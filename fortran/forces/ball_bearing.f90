@@ -271,9 +271,10 @@ contains
    !> temperatures the race contacts' lubricant (film, EHD traction, rolling resistance) is
    !> evaluated at - the thermal model holds them at the initial ones, as ADORE 5.0 does
    !> (report 5.3, 7 rec. 1; docs/thermal.md, "Traction and the temperatures").
-   !> threads (default 1): the balls' contacts on that many OpenMP threads (run option
-   !> threads, adore_core_threads); every sum over the balls is taken afterwards in ball
-   !> order, so the loads are the same bit for bit on any number of threads.
+   !> threads (default 1): the balls' contacts and the cage's guide-land contacts on that many
+   !> OpenMP threads (run option threads, adore_core_threads); every sum over the balls and
+   !> the lands is taken afterwards in ball and land order, so the loads are the same bit for
+   !> bit on any number of threads.
    !> Input errors of the traction model (e.g. no EHD film) come back in error (the first
    !> ball's in ball order).
    subroutine ball_bearing_loads(b, g, s, loads, error, traction, cage, stiffness, two_d, reference, damping, &
@@ -300,7 +301,8 @@ contains
       logical :: gyrating(size(s%elements))
       real(wp) :: rho, beta
       real(wp) :: t_lub(size(s%temperature)), race_rot(3, 3, 2)
-      integer :: n, k, j, n_threads
+      type(cage_land_pair_t), allocatable :: lp(:)
+      integer :: n, k, j, n_threads, n_lands
       logical :: with_traction, with_2d, with_reference, with_rolling, with_cage, with_gyro
 
       with_traction = .true.
@@ -337,22 +339,31 @@ contains
       do j = 1, 2
          race_rot(:, :, j) = quat_matrix(s%races(j)%attitude)
       end do
+      n_lands = 0
       if (with_cage) then
          pp = ball_pocket_pair(b, g, s%temperature)
          allocate (loads%pockets(n))
+         lp = guide_land_pairs(b, g, s%temperature)
+         if (present(land_film)) then
+            if (.not. land_film) lp%viscosity = 0.0_wp       ! metallic contact only
+         end if
+         n_lands = size(lp)
+         allocate (loads%lands(n_lands))
       end if
       ! every ball's race and pocket contacts, each ball's into its own slots (its loads, its
-      ! contacts, its share of the races' loads, its error): on n_threads threads (run option
-      ! threads, adore_core_threads) or without OpenMP on one, the same numbers bit for bit
+      ! contacts, its share of the races' loads, its error), and the cage's guide-land contacts
+      ! (after the balls, each into its own slot; they depend on the cage and the races only):
+      ! on n_threads threads (run option threads, adore_core_threads) or without OpenMP on one,
+      ! the same numbers bit for bit
       if (n_threads > 1) then
          !$omp parallel do num_threads(n_threads) schedule(static, 1) default(shared) private(k)
-         do k = 1, n
-            call ball_contacts(k)
+         do k = 1, n + n_lands
+            call loop_item(k)
          end do
          !$omp end parallel do
       else
-         do k = 1, n
-            call ball_contacts(k)
+         do k = 1, n + n_lands
+            call loop_item(k)
          end do
       end if
       ! the first failed ball in ball order (as a serial loop would stop there)
@@ -522,8 +533,27 @@ contains
 
       !> The cage's sums over the pockets (ball order) and the guide-land contacts (module
       !> header); the pockets' contacts themselves are each ball's (ball_contacts).
+      !> Item k of the loop over the contacts: ball k's (k <= n), else guide land k - n's.
+      subroutine loop_item(k)
+         integer, intent(in) :: k
+         if (k <= n) then
+            call ball_contacts(k)
+         else
+            call guide_land(k - n)
+         end if
+      end subroutine loop_item
+
+      !> Guide land k's contact of cage and race (adore_contact_cage_land) into loads%lands(k).
+      !> Run by one thread per land, after the balls.
+      subroutine guide_land(k)
+         integer, intent(in) :: k
+         integer :: j
+         j = b%lands(k)%guide        ! GUIDE_OUTER/INNER = RACE_OUTER/INNER
+         call cage_land_contact(lp(k), s%cage, s%races(j), loads%lands(k))
+      end subroutine guide_land
+
+      !> The pockets' and the guide lands' loads on the cage and the races, in ball and land order.
       subroutine add_cage_contacts()
-         type(cage_land_pair_t), allocatable :: lp(:)
          integer :: k, j
 
          do k = 1, n
@@ -533,14 +563,8 @@ contains
                loads%abnormal = loads%abnormal .or. c%abnormal
             end associate
          end do
-         lp = guide_land_pairs(b, g, s%temperature)
-         if (present(land_film)) then
-            if (.not. land_film) lp%viscosity = 0.0_wp       ! metallic contact only
-         end if
-         allocate (loads%lands(size(lp)))
-         do k = 1, size(lp)
+         do k = 1, n_lands
             j = b%lands(k)%guide        ! GUIDE_OUTER/INNER = RACE_OUTER/INNER
-            call cage_land_contact(lp(k), s%cage, s%races(j), loads%lands(k))
             associate (c => loads%lands(k))
                loads%cage%force = loads%cage%force + c%force_cage
                loads%cage%moment = loads%cage%moment + c%moment_cage
