@@ -130,6 +130,8 @@ contains
       bearing%boundary_film = opts%boundary_lambda*roughness%sigma_rms
       ! mixed films between it and the full film blend the two tractions ("Mixed films")
       bearing%full_film = opts%full_film_lambda*roughness%sigma_rms
+      ! the EHD film's elasticity (run option; docs/tribology.md, "The film's elasticity")
+      bearing%film_shear_modulus = opts%film_shear_modulus
       table = len_trim(opts%traction_table) > 0
       if (table) then
          call read_traction_table(trim(opts%traction_table), bearing%race_traction, error)
