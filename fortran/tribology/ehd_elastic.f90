@@ -39,6 +39,13 @@ module adore_tribology_ehd_elastic
    integer, parameter, public :: ELASTIC_INTERVALS = 64
    !> Below this Lambda at the strip's centre the ratio is 1 (its change is below 1e-8)
    real(wp), parameter :: LAMBDA_NEGLIGIBLE = 1.0e-10_wp
+   integer :: k_
+   !> cos(psi) at the midpoints of the inlet half's intervals and their widths in x / b'
+   real(wp), parameter :: MID_COS(ELASTIC_INTERVALS/2) = [(cos(-0.5_wp*pi + (k_ - 0.5_wp)*pi/ELASTIC_INTERVALS), &
+                                                         k_ = 1, ELASTIC_INTERVALS/2)]
+   real(wp), parameter :: MID_DX(ELASTIC_INTERVALS/2) = [(sin(-0.5_wp*pi + k_*pi/ELASTIC_INTERVALS) &
+                                                        - sin(-0.5_wp*pi + (k_ - 1)*pi/ELASTIC_INTERVALS), &
+                                                        k_ = 1, ELASTIC_INTERVALS/2)]
 
 contains
 
@@ -61,47 +68,64 @@ contains
       end if
    end function elastic_strip_ratio
 
-   !> elastic_strip_ratio on ni intervals.
+   !> elastic_strip_ratio on ni intervals (even: the strip's two halves mirror each other).
    pure function strip_march(aa, z, thermal, lam0, ni) result(ratio)
       real(wp), intent(in) :: aa, z, lam0
       logical, intent(in) :: thermal
       integer, intent(in) :: ni
       real(wp) :: ratio
       integer :: k, m
-      real(wp) :: lam(ni), dx(ni), t_in, num, den, mm, c1, c2, e, h, lo, hi
+      real(wp) :: cmid((ni + 1)/2), dx((ni + 1)/2), lam((ni + 1)/2), mm((ni + 1)/2), e((ni + 1)/2), &
+                  c1((ni + 1)/2), c2((ni + 1)/2), t_in, num, den, h
 
       ratio = 1.0_wp
       if (lam0*secant(aa) < LAMBDA_NEGLIGIBLE) return
-      h = pi/ni
       m = (ni + 1)/2
-      ! the intervals' midpoint Lambda (symmetric) and widths in x / b'
-      do k = 1, m
-         lo = -0.5_wp*pi + (k - 1)*h
-         hi = lo + h
-         lam(k) = lam0*secant(aa*cos(lo + 0.5_wp*h))
-         dx(k) = sin(hi) - sin(lo)
-         lam(ni + 1 - k) = lam(k)
-         dx(ni + 1 - k) = dx(k)
-      end do
+      if (ni == ELASTIC_INTERVALS) then
+         cmid = MID_COS
+         dx = MID_DX
+      else
+         h = pi/ni
+         do k = 1, m
+            cmid(k) = cos(-0.5_wp*pi + (k - 0.5_wp)*h)
+            dx(k) = sin(-0.5_wp*pi + k*h) - sin(-0.5_wp*pi + (k - 1)*h)
+         end do
+      end if
+      ! the intervals' midpoint Lambda of the inlet half (the outlet half mirrors it), then
+      ! m = dx / Lambda, e = exp(-m), c1 = (1 - e) / m, c2 = (m - 1 + e) / m**2 (series below
+      ! m = 0.05: no cancellation), as array operations
+      lam = lam0*secant(aa*cmid)
+      mm = dx/lam
+      e = exp(-min(mm, 700.0_wp))
+      where (mm >= 0.05_wp)
+         c1 = (1.0_wp - e)/mm
+         c2 = (mm - 1.0_wp + e)/(mm*mm)
+      elsewhere
+         c1 = 1.0_wp + mm*(-1.0_wp/2 + mm*(1.0_wp/6 + mm*(-1.0_wp/24 + mm*(1.0_wp/120 + mm*(-1.0_wp/720 &
+              + mm*(1.0_wp/5040 + mm*(-1.0_wp/40320)))))))
+         c2 = 1.0_wp/2 + mm*(-1.0_wp/6 + mm*(1.0_wp/24 + mm*(-1.0_wp/120 + mm*(1.0_wp/720 + mm*(-1.0_wp/5040 &
+              + mm*(1.0_wp/40320 + mm*(-1.0_wp/362880)))))))
+      end where
+      ! T = tau / s0 (units of b'): T_out = T_in e + dx c1, its integral T_in dx c1 + dx**2 c2
       t_in = 0.0_wp
       num = 0.0_wp
-      den = 0.0_wp
-      do k = 1, ni
-         ! T = tau / s0 (units of b'): T_out = T_in e + dx c1, integral T_in dx c1 + dx**2 c2,
-         ! m = dx / Lambda, e = exp(-m), c1 = (1 - e) / m, c2 = (m - 1 + e) / m**2
-         mm = dx(k)/lam(k)
-         call relax(mm, e, c1, c2)
-         num = num + t_in*dx(k)*c1 + dx(k)*dx(k)*c2
-         t_in = t_in*e + dx(k)*c1
-         den = den + lam(k)*dx(k)
+      do k = 1, m
+         num = num + t_in*dx(k)*c1(k) + dx(k)*dx(k)*c2(k)
+         t_in = t_in*e(k) + dx(k)*c1(k)
       end do
+      do k = ni - m, 1, -1
+         num = num + t_in*dx(k)*c1(k) + dx(k)*dx(k)*c2(k)
+         t_in = t_in*e(k) + dx(k)*c1(k)
+      end do
+      den = 2.0_wp*sum(lam*dx)
+      if (2*m /= ni) den = den - lam(m)*dx(m)
       ratio = num/den
 
    contains
 
       !> eta_a / eta_w at the centre-pressure exponent x = A cos psi: E**2 (isothermal) or
       !> E**2 asinh(Z E) / (Z E sqrt(1 + (Z E)**2))
-      pure real(wp) function secant(x)
+      elemental real(wp) function secant(x)
          real(wp), intent(in) :: x
          real(wp) :: ee, w
          ee = exp(x)
@@ -116,34 +140,5 @@ contains
       end function secant
 
    end function strip_march
-
-   !> For m >= 0: e = exp(-m), c1 = (1 - e) / m, c2 = (m - 1 + e) / m**2 (1 and 1/2 at m = 0),
-   !> by their series below m = 0.05 (no cancellation).
-   pure subroutine relax(m, e, c1, c2)
-      real(wp), intent(in) :: m
-      real(wp), intent(out) :: e, c1, c2
-      real(wp) :: tk
-      integer :: k
-      if (m > 700.0_wp) then
-         e = 0.0_wp
-         c1 = 1.0_wp/m
-         c2 = (m - 1.0_wp)/(m*m)
-      else if (m >= 0.05_wp) then
-         e = exp(-m)
-         c1 = (1.0_wp - e)/m
-         c2 = (m - 1.0_wp + e)/(m*m)
-      else
-         e = exp(-m)
-         ! c1 = sum (-m)**k / (k + 1)!, c2 = sum (-m)**k / (k + 2)!, k = 0..8
-         c1 = 0.0_wp
-         c2 = 0.0_wp
-         tk = 1.0_wp
-         do k = 0, 8
-            c1 = c1 + tk/real(k + 1, wp)
-            c2 = c2 + tk/real((k + 1)*(k + 2), wp)
-            tk = -tk*m/real(k + 1, wp)
-         end do
-      end if
-   end subroutine relax
 
 end module adore_tribology_ehd_elastic
