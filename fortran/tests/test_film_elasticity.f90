@@ -212,6 +212,9 @@ contains
       write (*, "(a,2es12.4,a,es10.2)") "elastic film (G = 1 GPa), power and force at Appendix C's ball-1 outer contact: ", &
          t%power, t%force, ";  fast/reference - 1:", tf%power/t%power - 1.0_wp
       write (*, "(a,2es12.4)") "  the viscous film's:", t0%power, t0%force
+      write (*, "(a,f7.2,a,es10.3,a,f8.2,a)") "  entraining speed", u_e, " m/s; De at the centre (small slip)", &
+         u_e*rheo%eta_w*exp(rheo%alpha*1.5_wp*c%load/(pi*c%a*B))/(r%shear_modulus*2.0_wp*B), "; p_H", &
+         1.5e-9_wp*c%load/(pi*c%a*B), " GPa"
       call check(abs(tf%power/t%power - 1.0_wp) < 1.0e-6_wp .and. abs(tf%force - t%force) < 1.0e-5_wp*abs(t%force), &
                  "elastic film: fast traction has the reference quadrature's limit")
       call check(t%power < t0%power, "elastic film: less traction power than the viscous film")
