@@ -39,13 +39,6 @@ module adore_tribology_ehd_elastic
    integer, parameter, public :: ELASTIC_INTERVALS = 64
    !> Below this Lambda at the strip's centre the ratio is 1 (its change is below 1e-8)
    real(wp), parameter :: LAMBDA_NEGLIGIBLE = 1.0e-10_wp
-   integer :: k_
-   !> cos(psi) at the midpoints of the inlet half's intervals and their widths in x / b'
-   real(wp), parameter :: MID_COS(ELASTIC_INTERVALS/2) = [(cos(-0.5_wp*pi + (k_ - 0.5_wp)*pi/ELASTIC_INTERVALS), &
-                                                         k_ = 1, ELASTIC_INTERVALS/2)]
-   real(wp), parameter :: MID_DX(ELASTIC_INTERVALS/2) = [(sin(-0.5_wp*pi + k_*pi/ELASTIC_INTERVALS) &
-                                                        - sin(-0.5_wp*pi + (k_ - 1)*pi/ELASTIC_INTERVALS), &
-                                                        k_ = 1, ELASTIC_INTERVALS/2)]
 
 contains
 
@@ -77,6 +70,13 @@ contains
       integer :: k, m
       real(wp) :: cmid((ni + 1)/2), dx((ni + 1)/2), lam((ni + 1)/2), mm((ni + 1)/2), e((ni + 1)/2), &
                   c1((ni + 1)/2), c2((ni + 1)/2), t_in, num, den, h
+      integer :: k_
+      !> cos(psi) at the midpoints of the inlet half's intervals and their widths in x / b'
+      real(wp), parameter :: MID_COS(ELASTIC_INTERVALS/2) = [(cos(-0.5_wp*pi + (k_ - 0.5_wp)*pi/ELASTIC_INTERVALS), &
+                                                            k_ = 1, ELASTIC_INTERVALS/2)]
+      real(wp), parameter :: MID_DX(ELASTIC_INTERVALS/2) = [(sin(-0.5_wp*pi + k_*pi/ELASTIC_INTERVALS) &
+                                                           - sin(-0.5_wp*pi + (k_ - 1)*pi/ELASTIC_INTERVALS), &
+                                                           k_ = 1, ELASTIC_INTERVALS/2)]
 
       ratio = 1.0_wp
       if (lam0*secant(aa) < LAMBDA_NEGLIGIBLE) return
