@@ -492,3 +492,101 @@ def test_the_sweep_client_starts_without_numpy():
     proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.strip() == "[]"
+
+
+def test_write_atomic_writes_the_whole_file_or_nothing(tmp_path, monkeypatch):
+    """store.write_atomic (every file of a sweep folder): the exact bytes, an ordinary file's
+    permissions (0o666 less the umask, as open() gives), the old file replaced whole, no
+    temporary left; a temporary name that is taken is passed over (O_EXCL), never reused; a
+    write that fails leaves the old file and no temporary."""
+    from pyadore.sweeps import store
+
+    path = tmp_path / "f.json"
+    store.write_atomic(path, "é\r\nline\n")  # newline="" of the text stream it replaced: bytes as given
+    assert path.read_bytes() == "é\r\nline\n".encode("utf-8")
+    mask = os.umask(0)
+    os.umask(mask)
+    assert path.stat().st_mode & 0o777 == 0o666 & ~mask
+    store.write_atomic(path, b"\x00bytes", durable=False)
+    assert path.read_bytes() == b"\x00bytes"
+    taken = tmp_path / f".f.json{store._TMP_TAG}{os.getpid()}-{next(store._counter) + 1}"
+    taken.write_text("someone else's")
+    store.write_atomic(path, "new")
+    assert path.read_text() == "new" and taken.read_text() == "someone else's"
+    taken.unlink()
+
+    def full(fd, data):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(store.os, "write", full)
+    with pytest.raises(OSError, match="No space"):
+        store.write_atomic(path, "lost")
+    monkeypatch.undo()
+    assert path.read_text() == "new"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f.json"]
+
+
+def test_the_manifest_lists_every_case_as_encoded_when_it_last_changed(tmp_path):
+    """manifest.json's case lines are encoded once per entry (the client rewrites it after the
+    cases while the workers run; docs/sweeps.md, "Scaling"): its text after cases finish,
+    finish again (a new entry) and stay pending is the text of every case's current entry."""
+    from pyadore.deck import parse_text
+    from pyadore.sweeps.runner import _Sweep
+
+    text = ROLLER.read_text()
+    base, _ = parse_text(text, str(ROLLER))
+    varied = [parse_vary("applied_force_z=500,750,1000", base)]
+    cases = make_cases(varied)
+    run = _Sweep(ROLLER, text, varied, cases, tmp_path / "s", 0, False, {}, base_deck=base)
+    run.open_folder()
+    for case in cases:
+        assert run.prepare(case) is not None  # its folder and deck
+
+    def expected() -> str:
+        rows = [run.entries.get(c.case_id) or {"case": c.case_id, "params": c.params, "status": "pending",
+                                               "duration_s": None, "error": "", "notes": [], "worker": "",
+                                               "finished_at": None, "results": {}} for c in cases]
+        written = json.loads((tmp_path / "s" / "manifest.json").read_text())
+        counts: dict = {}
+        for r in rows:
+            counts[r["status"]] = counts.get(r["status"], 0) + 1
+        head = json.dumps({"sweep": run.definition, "updated_at": written["updated_at"], "counts": counts}, indent=1)
+        return head[:-2] + ',\n "cases": [\n  ' + ",\n  ".join(json.dumps(r) for r in rows) + "\n ]\n}"
+
+    run.write_manifest()
+    assert (tmp_path / "s" / "manifest.json").read_text() == expected()
+    run.record(cases[1], "engine-failure", error="no convergence", duration=0.5, worker="w:1")
+    run.write_manifest()
+    assert (tmp_path / "s" / "manifest.json").read_text() == expected()
+    run.record(cases[1], "ok", duration=0.25, worker="w:2", results={"total_power_loss_W": 12.5},
+               print_text="print")
+    run.record(cases[2], "invalid", error="bad deck")
+    run.write_manifest(durable=False)
+    manifest = (tmp_path / "s" / "manifest.json").read_text()
+    assert manifest == expected()
+    assert [e["status"] for e in json.loads(manifest)["cases"]] == ["pending", "ok", "invalid"]
+
+
+def test_a_result_json_lost_to_a_power_cut_is_recovered_from_the_print(tmp_path):
+    """result.json is written without fsync (docs/sweeps.md, "Resume"): the print it vouches for
+    was flushed to the disk before it, so a result.json that a power cut left empty or never
+    wrote reads as absent and a resume takes the case's results from its print - the same
+    results its worker gave (the step-0 case has no time averages: NaN) - without running it
+    again; the summary is the same."""
+    folder = tmp_path / "s"
+    grid = {"applied_force_z": [500, 750, 1000]}
+    pyadore.sweep(ROLLER, grid, folder, steps=0, workers=1, progress=False)
+    summary = (folder / "summary.csv").read_text()
+    events = (folder / "events.log").read_text()
+    before = {c: json.loads((folder / "cases" / c / "result.json").read_text())
+              for c in ("case_0001", "case_0002")}
+    (folder / "cases" / "case_0001" / "result.json").write_text("")  # a power cut: renamed, data lost
+    (folder / "cases" / "case_0002" / "result.json").unlink()        # or the rename lost
+    frame = pyadore.sweep(ROLLER, grid, folder, steps=0, workers=1, progress=False)
+    assert list(frame["status"]) == ["ok"] * 3
+    assert (folder / "events.log").read_text() == events, "nothing ran again"
+    assert (folder / "summary.csv").read_text() == summary
+    for case, old in before.items():
+        new = json.loads((folder / "cases" / case / "result.json").read_text())
+        assert new["recovered"] is True and new["status"] == "ok"
+        assert new["results"] == old["results"] and new["params"] == old["params"]

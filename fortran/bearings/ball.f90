@@ -264,6 +264,11 @@ contains
             end if
          end if
          if (s%cage .and. .not. s%land_film) text = text//"; guide-land film off (metallic land contact only)"
+         if (s%cage .and. s%land_film .and. .not. s%cage_spin_only) then
+            write (buf, "(es10.3)") s%bearing%land_oil_layer
+            text = text//"; guide-land film where the gap is below the lands' oil layer of "//trim(adjustl(buf))// &
+                   " m (run option land_oil; docs/dynamics.md, starved land)"
+         end if
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"
          if (s%rolling_resistance) text = text//"; EHD rolling resistance of the race contacts"
@@ -329,8 +334,17 @@ contains
       integer, intent(in) :: unit, step
       real(wp), intent(in) :: t, mean(:)
       real(wp) :: time, header(4), life, cage_avg(3)
+      type(bearing_state_t) :: rates
       integer :: n
       time = t*self%time_scale
+      ! Section 3's cage MC acceleration is force / mass (plus gravity), as the report prints it
+      ! (Appendix C step 2500: (0, 0, -9.810) m/s**2 on its whirl); in ADORE's whirl coordinates
+      ! the state's rate adds whirl_frame_acceleration, which no force causes (docs/dynamics.md)
+      rates = self%eom%rates
+      if (self%eom%cage .and. self%eom%adore_whirl .and. .not. self%eom%cage_spin_only) &
+         rates%cage%velocity(2:3) = rates%cage%velocity(2:3) - &
+                                    whirl_frame_acceleration(self%eom%state%cage%position(2:3), &
+                                                             self%eom%state%cage%velocity(2:3), self%eom%whirl_blend)
       associate (b => self%bearing, th => self%thermal)
          n = b%n_elements
          header = [t, time, b%speed_outer*time/(2.0_wp*pi), b%speed_inner*time/(2.0_wp*pi)]
@@ -342,17 +356,17 @@ contains
                     pocket_wear => mean(AVG_BALL_WEAR + n:AVG_BALL_WEAR + 2*n - 1), &
                     land_wear => mean(AVG_BALL_WEAR + 2*n:))
             if (th%mode == THERMAL_OFF) then
-               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
                                     pocket_wear, land_wear, cage_avg, &
                                     lubricant_temperature=self%eom%lubricant_temperature, threads=self%eom%threads)
             else if (.not. th%have_field) then      ! before the first update: no field yet
-               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
                                     pocket_wear, land_wear, cage_avg, th%fluid, &
                                     lubricant_temperature=self%eom%lubricant_temperature, threads=self%eom%threads)
             else
-               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, self%eom%rates, &
+               call write_ball_step(unit, step, header, b, self%eom%geometry, self%eom%state, rates, &
                                     self%eom%loads, self%azimuth, self%axial_origin, ball_wear, race_wear, summary, &
                                     pocket_wear, land_wear, cage_avg, th%fluid, th%field, &
                                     self%eom%lubricant_temperature, self%eom%threads)

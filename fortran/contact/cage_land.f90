@@ -30,6 +30,17 @@
 !> e x F (Hamrock: the torques on journal and bearing differ by W e sin(phi)): action =
 !> reaction holds in force and moment.  The film is taken at eps <= 1 - h_crit/c (Gupta 1979,
 !> Part III: hydrodynamic or metallic switched at a critical film thickness h_crit).
+!> Starved land (the lubricant layer h_oil): the gap is filled only where the local
+!> clearance h(theta) is below the thickness of the oil layer the surfaces carry (the
+!> fractional film content h_oil/h of starved films, Chevalier, Lubrecht, Cann, Colin &
+!> Dalmaz 1998, J. Tribol. 120, 126; the film of a starved journal bearing begins where the
+!> gap equals the supplied layer, Artiles & Heshmat 1985, J. Tribol. 107, 1): the wetted arc
+!> |theta| < theta_w, cos theta_w = (1 - h_oil/c)/eps.  Pressure and shear act on that arc
+!> only (the short-bearing pressure is local in theta, so the arc's pressure is Ocvirk's),
+!> the Couette torque becomes eta R**3 L dw/c J, J = int_{-theta_w}^{theta_w}
+!> dtheta/(1 - eps cos theta) = 4/sqrt(1 - eps**2) atan(sqrt((1 + eps)/(1 - eps)) tan(theta_w/2)).
+!> Gap c - e >= h_oil: no film, no force, no loss; h_oil >= c (1 + eps): the flooded film.
+!> The film's loss (film_loss) is what its loads take from the two bodies (viscous heat).
 !> Metallic contact when e > c: delta = e - c, Palmgren's line contact over the land width
 !> (adore_contact_line_slices palmgren_load, scaled in E*), along -e_e on the journal at
 !> P = C_inner + R e_e, and Coulomb friction (Rec 10.5.2B A, 0.05 in both decks; the report's
@@ -47,7 +58,7 @@ module adore_contact_cage_land
    private
 
    public :: cage_land_pair_t, cage_land_geometry_t
-   public :: cage_land_contact, land_energy, short_bearing_force
+   public :: cage_land_contact, land_energy, short_bearing_force, wetted_half_angle, couette_integral
 
    real(wp), parameter, public :: LAND_ABNORMAL_FRACTION = 0.25_wp
    integer, parameter :: N_PANELS = 8, N_GAUSS = 24
@@ -63,6 +74,7 @@ module adore_contact_cage_land
       real(wp) :: viscosity = 0.0_wp         !< lubricant dynamic viscosity (0: dry)
       real(wp) :: critical_film = 1.0e-6_wp  !< h_crit (m)
       real(wp) :: slip_reg = 1.0e-3_wp       !< friction regularisation speed (m/s)
+      real(wp) :: oil_layer = huge(1.0_wp)   !< h_oil: lubricant layer on the land (m); huge: flooded
    end type cage_land_pair_t
 
    !> The land contact at one state.  Vectors inertial.
@@ -74,6 +86,7 @@ module adore_contact_cage_land
       real(wp) :: metallic_load = 0.0_wp     !< (N)
       real(wp) :: friction_force(3) = 0.0_wp !< metallic friction on the journal (N)
       real(wp) :: power = 0.0_wp             !< friction power loss of the metallic contact (W)
+      real(wp) :: film_loss = 0.0_wp         !< viscous loss of the film (W): minus its loads' power on both bodies
       real(wp) :: force_cage(3) = 0.0_wp, moment_cage(3) = 0.0_wp   !< about the cage mass centre
       real(wp) :: force_race(3) = 0.0_wp, moment_race(3) = 0.0_wp   !< about the race mass centre
       logical :: abnormal = .false.
@@ -81,14 +94,44 @@ module adore_contact_cage_land
 
 contains
 
+   !> Half-angle theta_w (rad) of the wetted arc of pair p at eccentricity ratio eps (module
+   !> header): pi flooded (h_oil >= c (1 + eps)), 0 dry (gap c - e >= h_oil), else
+   !> acos((1 - h_oil/c)/eps).
+   pure real(wp) function wetted_half_angle(p, eps) result(tw)
+      type(cage_land_pair_t), intent(in) :: p
+      real(wp), intent(in) :: eps
+      real(wp) :: kappa
+      tw = pi
+      if (p%oil_layer >= p%clearance*(1.0_wp + eps)) return
+      tw = 0.0_wp
+      if (.not. eps > 0.0_wp) return
+      kappa = (1.0_wp - p%oil_layer/p%clearance)/eps
+      if (kappa >= 1.0_wp) return
+      tw = acos(max(kappa, -1.0_wp))
+   end function wetted_half_angle
+
+   !> J = int_{-tw}^{tw} dtheta / (1 - eps cos theta) (module header; 0 <= eps < 1,
+   !> 0 <= tw <= pi): the Couette torque's factor, 2 pi / sqrt(1 - eps**2) flooded.
+   pure real(wp) function couette_integral(eps, tw) result(j)
+      real(wp), intent(in) :: eps, tw
+      real(wp) :: r
+      r = sqrt(1.0_wp - eps**2)
+      if (tw >= pi) then
+         j = 2.0_wp*pi/r
+      else
+         j = 4.0_wp/r*atan(sqrt((1.0_wp + eps)/(1.0_wp - eps))*tan(0.5_wp*tw))
+      end if
+   end function couette_integral
+
    !> Short-bearing film force (N) on the journal in (e_e, e_t) components, for the pair p
    !> at eccentricity ratio eps, mean surface speed wbar minus whirl psidot (rad/s) and
-   !> epsdot (1/s) (module header).
+   !> epsdot (1/s) (module header): the positive pressure over its half (beta + pi,
+   !> beta + 2 pi) intersected with the wetted arc |theta| < theta_w of the oil layer.
    pure function short_bearing_force(p, eps, wbar_minus_whirl, epsdot) result(f)
       type(cage_land_pair_t), intent(in) :: p
       real(wp), intent(in) :: eps, wbar_minus_whirl, epsdot
-      real(wp) :: f(2), a, bb, r0, beta, x(N_GAUSS), w(N_GAUSS), lo, hw, th, s
-      integer :: i, k
+      real(wp) :: f(2), a, bb, r0, beta, x(N_GAUSS), w(N_GAUSS), lo, hi, tw
+      integer :: k
 
       f = 0.0_wp
       a = eps*wbar_minus_whirl
@@ -96,17 +139,42 @@ contains
       r0 = hypot(a, bb)
       if (.not. r0 > 0.0_wp .or. p%viscosity <= 0.0_wp) return
       beta = atan2(bb, a)
+      tw = wetted_half_angle(p, eps)
+      if (.not. tw > 0.0_wp) return
       call gauss_legendre(N_GAUSS, x, w)
-      hw = 0.5_wp*pi/N_PANELS
-      do k = 1, N_PANELS
-         lo = beta + pi + (k - 1)*2.0_wp*hw
-         do i = 1, N_GAUSS
-            th = lo + hw*(1.0_wp + x(i))
-            s = r0*sin(th - beta)        ! S/c < 0 on (beta + pi, beta + 2 pi)
-            f = f + hw*w(i)*s/(1.0_wp - eps*cos(th))**3*[cos(th), sin(th)]
+      if (tw >= pi) then
+         f = arc(beta + pi, pi)
+      else
+         ! the positive half, shifted into [0, 3 pi), against the wetted arcs about 0 and 2 pi
+         lo = modulo(beta + pi, 2.0_wp*pi)
+         hi = lo + pi
+         do k = 0, 1
+            if (min(hi, tw + 2.0_wp*pi*k) > max(lo, -tw + 2.0_wp*pi*k)) &
+               f = f + arc(max(lo, -tw + 2.0_wp*pi*k), min(hi, tw + 2.0_wp*pi*k) - max(lo, -tw + 2.0_wp*pi*k))
          end do
-      end do
+      end if
       f = f*p%viscosity*p%radius*p%width**3/p%clearance**2
+
+   contains
+
+      !> int over (t0, t0 + len) of (S/c) / (1 - eps cos theta)**3 (cos theta, sin theta)
+      !> dtheta (S/c < 0 there), N_PANELS Gauss-Legendre panels
+      pure function arc(t0, len) result(g)
+         real(wp), intent(in) :: t0, len
+         real(wp) :: g(2), hw, th, s, lo_k
+         integer :: i, kk
+         g = 0.0_wp
+         hw = 0.5_wp*len/N_PANELS
+         do kk = 1, N_PANELS
+            lo_k = t0 + (kk - 1)*2.0_wp*hw
+            do i = 1, N_GAUSS
+               th = lo_k + hw*(1.0_wp + x(i))
+               s = r0*sin(th - beta)
+               g = g + hw*w(i)*s/(1.0_wp - eps*cos(th))**3*[cos(th), sin(th)]
+            end do
+         end do
+      end function arc
+
    end function short_bearing_force
 
    !> The land contact of cage with race for the pair p (module header).
@@ -116,7 +184,7 @@ contains
       type(cage_land_geometry_t), intent(out) :: c
       real(wp) :: ax(3), pa(3), ev(3), e_e(3), e_t(3), w_c(3), w_r(3), v_a(3), de(3), w_in, w_out, psidot, eps
       real(wp) :: epsdot, eps_max, f(2), couette(3), c_in(3), c_out(3), pt(3), u(3), q, f_in(3), tq_in(3), tq_out(3)
-      real(wp) :: v_in(3), v_out(3), race_rot(3, 3), cage_rot(3, 3)
+      real(wp) :: v_in(3), v_out(3), race_rot(3, 3), cage_rot(3, 3), tw
 
       ! the attitude matrices named (a function result inside matmul is a heap temporary)
       race_rot = quat_matrix(race%attitude)
@@ -169,12 +237,25 @@ contains
          if (c%eccentricity > 0.0_wp) psidot = dot_product(ax, cross(ev, de))/c%eccentricity**2
          epsdot = dot_product(de, e_e)/p%clearance
          eps = min(eps, eps_max)
-         f = short_bearing_force(p, eps, 0.5_wp*(w_in + w_out) - psidot, epsdot)
-         c%hydro_force = f(1)*e_e + f(2)*e_t
-         couette = -2.0_wp*pi*p%viscosity*p%radius**3*p%width*(w_in - w_out)/(p%clearance*sqrt(1.0_wp - eps**2))*ax
-         f_in = c%hydro_force
-         tq_in = couette - 0.5_wp*cross(ev, c%hydro_force)
-         tq_out = -couette - 0.5_wp*cross(ev, c%hydro_force)
+         tw = wetted_half_angle(p, eps)
+         if (tw > 0.0_wp) then
+            f = short_bearing_force(p, eps, 0.5_wp*(w_in + w_out) - psidot, epsdot)
+            c%hydro_force = f(1)*e_e + f(2)*e_t
+            if (tw >= pi) then
+               couette = -2.0_wp*pi*p%viscosity*p%radius**3*p%width*(w_in - w_out)/(p%clearance*sqrt(1.0_wp - eps**2))*ax
+            else
+               couette = -p%viscosity*p%radius**3*p%width*(w_in - w_out)/p%clearance*couette_integral(eps, tw)*ax
+            end if
+            f_in = c%hydro_force
+            tq_in = couette - 0.5_wp*cross(ev, c%hydro_force)
+            tq_out = -couette - 0.5_wp*cross(ev, c%hydro_force)
+            ! the film's viscous loss: minus the power of its loads on journal and bearing
+            if (p%race_is_journal) then
+               c%film_loss = -(dot_product(f_in, v_in - v_out) + dot_product(tq_in, w_r) + dot_product(tq_out, w_c))
+            else
+               c%film_loss = -(dot_product(f_in, v_in - v_out) + dot_product(tq_in, w_c) + dot_product(tq_out, w_r))
+            end if
+         end if
       end if
       ! on the journal through its centre: F_in; on the bearing: -F_in through its centre
       call add_loads(c, f_in, c_in, c_out, tq_in, tq_out)

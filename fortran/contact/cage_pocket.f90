@@ -155,7 +155,8 @@ contains
       ! Coulomb friction of the metallic contact only: a full film carries its load without
       ! it (Gupta 1979: hydrodynamic or metallic); the film's viscous drag is not modelled
       c%friction_force = -p%friction*c%metallic_load*c%slip/sqrt(dot_product(c%slip, c%slip) + p%slip_reg**2)
-      c%power = -dot_product(c%friction_force, c%slip)
+      ! 0 - (...): a contact without friction loses +0 W, not the -0 that a negation of 0 prints
+      c%power = 0.0_wp - dot_product(c%friction_force, c%slip)
 
       c%force_ball = -w_total*c%normal + c%friction_force
       c%moment_ball = cross(c%point - ball%position, c%friction_force)

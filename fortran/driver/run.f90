@@ -132,6 +132,9 @@ contains
       bearing%full_film = opts%full_film_lambda*roughness%sigma_rms
       ! the EHD film's elasticity (run option; docs/tribology.md, "The film's elasticity")
       bearing%film_shear_modulus = opts%film_shear_modulus
+      ! the guide lands' lubricant layer (run option land_oil; docs/dynamics.md, "The guide-land
+      ! film where the report has none")
+      bearing%land_oil_layer = opts%land_oil
       table = len_trim(opts%traction_table) > 0
       if (table) then
          call read_traction_table(trim(opts%traction_table), bearing%race_traction, error)

@@ -209,7 +209,7 @@ contains
             call cage_land_contact(self%lands(k), cage, outer, lc)
             self%land(k) = lc
             self%land_torque = self%land_torque + lc%moment_cage(1)
-            self%land_power = self%land_power + lc%power - lc%moment_cage(1)*(y(c0 + 2) - outer%omega(1))
+            self%land_power = self%land_power + lc%power + lc%film_loss
             if (self%cage_free) cage_force = cage_force + lc%force_cage
             if (self%cage_free) cage_moment = cage_moment + lc%moment_cage
             if (self%lands(k)%race_is_journal) race_force = race_force + lc%force_race

@@ -137,7 +137,7 @@ contains
    !> The guide-land pairs of bearing b (Rec 7.0/7.2.n) in mounted geometry g: radial
    !> clearance = half the effective play of adore_cage_step0 with the guiding race's
    !> raceway growth (mounting plus thermal), lubricant at the cage temperature, friction of
-   !> Rec 10.5.2B.
+   !> Rec 10.5.2B, the lubricant layer b%land_oil_layer (run option land_oil).
    pure function guide_land_pairs(b, g, temperature) result(p)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
@@ -163,17 +163,21 @@ contains
                                           b%material(race_body)%modulus, b%material(race_body)%poisson)
             p(k)%viscosity = cage_viscosity(b, temperature)
             p(k)%friction = b%cage_friction(2)
+            p(k)%oil_layer = b%land_oil_layer
          end associate
       end do
    end function guide_land_pairs
 
    !> Total power loss (W) of the loads of one evaluation: the race contacts' heat plus the
-   !> friction power of the pocket and guide-land contacts when the cage contacts are on.
+   !> friction power of the pocket and guide-land contacts and the guide-land films' viscous
+   !> loss when the cage contacts are on (the report's total counts its cage contacts' loss:
+   !> Appendix D step 0, docs/dynamics.md).
    pure real(wp) function total_power_loss(loads)
       type(ball_bearing_loads_t), intent(in) :: loads
       total_power_loss = sum(loads%heat)
       if (allocated(loads%pockets)) total_power_loss = total_power_loss + sum(loads%pockets%power)
-      if (allocated(loads%lands)) total_power_loss = total_power_loss + sum(loads%lands%power)
+      if (allocated(loads%lands)) total_power_loss = total_power_loss + sum(loads%lands%power) + &
+                                                     sum(loads%lands%film_loss)
    end function total_power_loss
 
    !> The balls' gyroscopic moments resisted by friction without sliding (Jones 1960; Harris &

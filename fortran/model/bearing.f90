@@ -148,6 +148,10 @@ module adore_model_bearing
       !> for a model not read from a deck).  Coefficients B, C, D of those records (0 in both
       !> decks) are not used.
       real(wp) :: cage_friction(2) = 0.05_wp
+      !> lubricant layer on the guide lands (m; run option land_oil): the land film exists where
+      !> the local gap is below it (adore_contact_cage_land, starved land; docs/dynamics.md,
+      !> "The guide-land film where the report has none"); huge: flooded
+      real(wp) :: land_oil_layer = 1.0e-4_wp
       !> Rec 3.3's eleven flags as the deck gives them.  Their positions are not identified
       !> (docs/dynamics.md, "The cage's degrees of freedom"); the run option cage=deck reads
       !> them through adore_model_condition's deck_constraints (all zero: nothing constrained).

@@ -105,6 +105,11 @@ module adore_model_run_options
       !> interactions keeps its whirl circle) or "inertial" (Newton's: the centripetal and
       !> Coriolis accelerations of the whirl included)
       character(len=16) :: cage_whirl = "adore"
+      !> the lubricant layer on the cage's guide lands (m): the land film exists where the local
+      !> gap is below it (docs/dynamics.md, "The guide-land film where the report has none");
+      !> default 10 um, pyadore's choice (the report prints no land force at gaps of 0.12 mm
+      !> and more); 0: dry lands (metallic contact only); a value above the clearance: flooded
+      real(wp) :: land_oil = 1.0e-4_wp
       !> the thermal model (docs/thermal.md, "The wiring"): "off" (the default: bulk
       !> temperatures fixed at Rec 2.7's; with the boundaries the report states, the model
       !> moves Appendix C's final step further from the report, docs/thermal.md), "deck" (on,
@@ -145,7 +150,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 26
+   integer, parameter :: N_OPTIONS = 27
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -207,6 +212,9 @@ module adore_model_run_options
       option_spec_t("cage_whirl", OPTION_CHOICE, "adore", 0, "", "NAME", "adore,inertial", &
                     "a free cage's mass centre: ADORE's whirl coordinates (report 4.4.4: a cage free of "// &
                     "interactions keeps its whirl circle) or Newton's inertial equations"), &
+      option_spec_t("land_oil", OPTION_REAL, "0.0001", 0, "", "M", "", &
+                    "lubricant layer on the cage's guide lands (m): the land film acts where the gap is below "// &
+                    "it (starved land; 0: dry, metallic contact only; 1: flooded)"), &
       option_spec_t("thermal", OPTION_CHOICE, "off", 0, "", "MODE", "off,deck,temperatures,geometry", &
                     "thermal model (report 2.10, 5.3): off, the deck's (geometry updated when Rec 2.5 gives an "// &
                     "averaging interval), temperatures only, or temperatures and geometry"), &
@@ -345,6 +353,8 @@ contains
          if (len_trim(value) > 0) opts%thermal_field = trim(adjustl(value))
       case ("housing_htc")
          opts%housing_htc = x
+      case ("land_oil")
+         opts%land_oil = x
       case ("thermal_transient")
          opts%thermal_transient = flag
       case ("boundary_lambda")

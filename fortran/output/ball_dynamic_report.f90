@@ -266,10 +266,11 @@ contains
    !> (N; the hydrodynamic film force is not in it), Con Ang THETA / PHI and Contact Pos X /
    !> Z as adore_cage_step0 defines them from the ball centre in the pocket frame, Contact
    !> Loss = the friction power (W), code 1 with metallic contact, 0 without; per guide land
-   !> Geo Int = gap (m), Force = metallic load (N), Effective Dia Play = twice the land's
-   !> radial clearance (m), Contact Loss (W).  Wear rates and the land's contact and
-   !> attitude angles are not computed (NaN).  Everything NaN / not computed when the loads
-   !> have no cage contacts.
+   !> Geo Int = gap (m), Force = the land's force on the cage in the plane normal to the
+   !> race axis (film and metal, N), Con Angle and Att Angle (land_angles, 0 without force),
+   !> Effective Dia Play = twice the land's radial clearance (m), Contact Loss = metallic
+   !> friction plus the film's viscous loss (W).  Wear rates are filled by the caller.
+   !> Everything NaN / not computed when the loads have no cage contacts.
    subroutine cage_contact_tables(b, g, s, loads, code, re_cage, land_code, race_cage)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
@@ -278,7 +279,7 @@ contains
       integer, intent(out) :: code(:), land_code(:)
       real(wp), intent(out) :: re_cage(:, :), race_cage(:, :)
       type(cage_land_pair_t), allocatable :: lp(:)
-      real(wp) :: nan, n_p(2), r
+      real(wp) :: nan, n_p(2), r, f_r(3)
       integer :: k
 
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -308,18 +309,28 @@ contains
          do k = 1, min(size(loads%lands), size(race_cage, 1))
             associate (c => loads%lands(k))
                race_cage(k, 1) = c%gap
-               race_cage(k, 2) = c%metallic_load
+               f_r = c%force_cage - dot_product(c%force_cage, lp_axis(s, b%lands(k)%guide))*lp_axis(s, b%lands(k)%guide)
+               race_cage(k, 2) = norm2(f_r)
                race_cage(k, 5) = 2.0_wp*lp(k)%clearance
-               race_cage(k, 6) = c%power
+               race_cage(k, 6) = c%power + c%film_loss
                land_code(k) = merge(1, 0, c%metallic_load > 0.0_wp)
-               race_cage(k, 3:4) = 0.0_wp                 ! no contact: 0, as step 0 prints
-               if (c%metallic_load > 0.0_wp) race_cage(k, 3:4) = land_angles(c)
+               race_cage(k, 3:4) = 0.0_wp                 ! no force: 0, as step 0 prints
+               if (race_cage(k, 2) > 0.0_wp) race_cage(k, 3:4) = land_angles(c)
             end associate
          end do
       end if
    end subroutine cage_contact_tables
 
-   !> A guide land's [contact angle, attitude angle] (deg) of a metallic contact c: the
+   !> The race axis (inertial unit vector) of the race that guides a land of guide type
+   !> `guide` (GUIDE_OUTER / GUIDE_INNER = RACE_OUTER / RACE_INNER) at state s.
+   pure function lp_axis(s, guide) result(ax)
+      type(bearing_state_t), intent(in) :: s
+      integer, intent(in) :: guide
+      real(wp) :: ax(3)
+      ax = matmul(quat_matrix(s%races(guide)%attitude), [1.0_wp, 0.0_wp, 0.0_wp])
+   end function lp_axis
+
+   !> A guide land's [contact angle, attitude angle] (deg) of a land force c: the
    !> azimuth of its eccentricity direction e_e (from +z towards -y in [0, 360), as the
    !> pockets' and the races' azimuths), and the attitude angle of journal-bearing theory:
    !> the angle in the radial plane from the load line (the force of the land on the cage,

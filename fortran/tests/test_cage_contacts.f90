@@ -8,8 +8,13 @@
 !>   and the ball system's derivative refuses the step;
 !> * the short-bearing film force against Ocvirk's closed form (Hamrock 1991) for pure
 !>   rotation, and zero at the half-frequency whirl;
+!> * the starved land (lubricant layer h_oil): no force, torque or loss at gaps >= h_oil,
+!>   force and torque continuous at the threshold, the flooded limit = Ocvirk and Petroff,
+!>   the wetted-arc force and Couette factor against brute-force quadratures, the film's
+!>   loss = its closed form and = minus the power of its loads on both bodies;
 !> * a centred cage, balls on their pocket axes moving with the cage: zero cage force, the
-!>   cage moment the lands' Couette (Petroff) torque;
+!>   cage moment the lands' Couette (Petroff) torque (flooded lands), none with the
+!>   default oil layer;
 !> * at the step-0 state of Appendix C (race control) the pocket and land interactions equal
 !>   adore_cage_step0's Geo Int values.
 !> Run by `meson test` with the decks/ directory as argument.
@@ -24,7 +29,7 @@ program test_cage_contacts
    use adore_contact_cage_pocket, only: cage_pocket_pair_t, cage_pocket_geometry_t, cage_pocket_pair, &
                                         cage_pocket_contact, pocket_energy
    use adore_contact_cage_land, only: cage_land_pair_t, cage_land_geometry_t, cage_land_contact, land_energy, &
-                                      short_bearing_force
+                                      short_bearing_force, wetted_half_angle, couette_integral
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads, ball_pocket_pair, guide_land_pairs
    use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state
    use adore_dynamics_integrator, only: DERIV_OK, DERIV_REJECT_STEP
@@ -44,6 +49,7 @@ program test_cage_contacts
    call test_pushed_back_and_abnormal()
    call test_pocket_against_hertz()
    call test_short_bearing_closed_form()
+   call test_starved_land()
 
    call appendix_c_race_control("cage contacts", b, g, s0)
    call test_step0_geometry()
@@ -377,6 +383,121 @@ contains
       call check(norm2(cl%hydro_force) < 1.0e-12_wp*hypot(fe, ft), "short bearing: no film force at half-frequency whirl")
    end subroutine test_short_bearing_closed_form
 
+   !> The starved land film (adore_contact_cage_land header): the film exists where the local
+   !> gap h = c (1 - eps cos theta) is below the oil layer h_oil.
+   subroutine test_starved_land()
+      type(cage_land_pair_t) :: p, pf
+      type(body_state_t) :: cage, race
+      type(cage_land_geometry_t) :: cl, cf
+      real(wp) :: eps, w, f(2), ref(2), th, dth, h, sc, tw, jnum, worst_f, worst_j, fprev, kf, loss_ref, pw, wbar
+      real(wp) :: gaps(4), fmag(4)
+      real(wp), parameter :: eps_list(3) = [0.85_wp, 0.9_wp, 0.97_wp]
+      integer :: i, k, n
+
+      w = 1500.0_wp
+      p = test_land(4.0e-3_wp, 0.05_wp, .true.)
+      p%oil_layer = 5.0e-5_wp                      ! 50 um of oil in c = 300 um
+      ! 1. brute force: the Ocvirk pressure's resultant over {h < h_oil, S < 0} (midpoint rule
+      !    over the whole circle, 4e6 cells: the wetted edges resolved to ~1e-5 of the arc)
+      !    and J = int over h < h_oil of dtheta / (1 - eps cos theta), against the routines
+      worst_f = 0.0_wp
+      worst_j = 0.0_wp
+      n = 4000000
+      dth = 2.0_wp*pi/n
+      do k = 1, 3
+         eps = eps_list(k)
+         ref = 0.0_wp
+         jnum = 0.0_wp
+         do i = 1, n
+            th = -pi + (i - 0.5_wp)*dth
+            h = 1.0_wp - eps*cos(th)
+            if (h*p%clearance >= p%oil_layer) cycle
+            jnum = jnum + dth/h
+            sc = eps*0.5_wp*w*sin(th) - 0.1_wp*w*cos(th)     ! S/c with a squeeze rate epsdot = 0.1 w
+            if (sc < 0.0_wp) ref = ref + dth*sc/h**3*[cos(th), sin(th)]
+         end do
+         ref = ref*p%viscosity*p%radius*p%width**3/p%clearance**2
+         f = short_bearing_force(p, eps, 0.5_wp*w, 0.1_wp*w)
+         worst_f = max(worst_f, norm2(f - ref)/norm2(ref))
+         tw = wetted_half_angle(p, eps)
+         worst_j = max(worst_j, abs(couette_integral(eps, tw) - jnum)/jnum)
+      end do
+      write (*, "(a,2es10.2)") "starved land vs brute-force quadrature: force, Couette factor (relative) ", &
+         worst_f, worst_j
+      call check(worst_f < 1.0e-4_wp, "starved land: wetted-arc force = the Ocvirk pressure over h < h_oil")
+      call check(worst_j < 1.0e-4_wp, "starved land: Couette factor J = the closed form")
+
+      ! 2. zero beyond the threshold, continuous at it (the wetted arc, and the torque with it,
+      !    opens as sqrt(h_oil - gap)): race journal 1000 rad/s, cage 500 rad/s
+      race%omega = [1000.0_wp, 0.0_wp, 0.0_wp]
+      cage%omega = [500.0_wp, 0.0_wp, 0.0_wp]
+      gaps = p%oil_layer*[1.5_wp, 1.0_wp, 1.0_wp - 1.0e-10_wp, 1.0_wp - 1.0e-2_wp]
+      do k = 1, 4
+         cage%position = [0.0_wp, 0.0_wp, p%clearance - gaps(k)]
+         call cage_land_contact(p, cage, race, cl)
+         fmag(k) = norm2(cl%force_cage) + abs(cl%moment_cage(1))/p%radius + abs(cl%film_loss)
+      end do
+      write (*, "(a,4es10.2)") "starved land, |F| + |T|/R + loss at gap/h_oil 1.5, 1, 1 - 1e-10, 1 - 1e-2: ", fmag
+      call check(fmag(1) == 0.0_wp .and. fmag(2) == 0.0_wp, "starved land: no force, torque or loss at gap >= h_oil")
+      call check(fmag(3) > 0.0_wp .and. fmag(3) < 1.0e-3_wp*fmag(4), "starved land: continuous at the threshold")
+      fprev = 0.0_wp
+      do k = 1, 20                                 ! the force grows as the gap closes
+         cage%position = [0.0_wp, 0.0_wp, p%clearance - p%oil_layer*(1.0_wp - 0.05_wp*k)]
+         call cage_land_contact(p, cage, race, cl)
+         call check(norm2(cl%hydro_force) > fprev, "starved land: the film force grows as the gap closes")
+         fprev = norm2(cl%hydro_force)
+      end do
+
+      ! 3. flooded limit: h_oil >= c (1 + eps) gives Ocvirk's force and Petroff's torque
+      pf = p
+      pf%oil_layer = 2.0_wp*p%clearance
+      eps = 0.6_wp
+      cage%position = [0.0_wp, 0.0_wp, eps*p%clearance]
+      cage%velocity = 0.0_wp
+      call cage_land_contact(pf, cage, race, cf)
+      kf = pf%viscosity*1500.0_wp*pf%radius*pf%width**3/pf%clearance**2
+      ref = [-kf*eps**2/(1.0_wp - eps**2)**2, pi*kf*eps/(4.0_wp*(1.0_wp - eps**2)**1.5_wp)]
+      worst_f = abs(norm2(cf%hydro_force) - norm2(ref))/norm2(ref)
+      sc = -2.0_wp*pi*pf%viscosity*pf%radius**3*pf%width*(-500.0_wp)/(pf%clearance*sqrt(1.0_wp - eps**2))
+      ! the couples on journal (race) and bearing (cage) differ by e x F; their half-difference
+      ! is the Couette (Petroff) torque on the cage
+      worst_j = abs(0.5_wp*(cf%moment_cage(1) - cf%moment_race(1)) - sc)/abs(sc)
+      write (*, "(a,2es10.2)") "flooded land vs Ocvirk force, Petroff torque (relative) ", worst_f, worst_j
+      call check(worst_f < 1.0e-12_wp .and. worst_j < 1.0e-12_wp, "flooded land: Ocvirk force and Petroff torque")
+      ! (the dry sliver at theta = pi closes as sqrt of the margin: 1e-13 leaves ~1e-6 rad)
+      p%oil_layer = (1.0_wp + eps)*p%clearance*(1.0_wp - 1.0e-13_wp)
+      call cage_land_contact(p, cage, race, cl)
+      write (*, "(a,2es10.2)") "starved land just below the flooded limit: force, torque vs flooded (relative) ", &
+         norm2(cl%force_cage - cf%force_cage)/norm2(cf%force_cage), &
+         abs(cl%moment_cage(1) - cf%moment_cage(1))/abs(cf%moment_cage(1))
+      call check(norm2(cl%force_cage - cf%force_cage) < 1.0e-6_wp*norm2(cf%force_cage) .and. &
+                 abs(cl%moment_cage(1) - cf%moment_cage(1)) < 1.0e-6_wp*abs(cf%moment_cage(1)), &
+                 "starved land: continuous at the flooded limit")
+
+      ! 4. the film's loss: pure rotation at fixed e, loss = e F_t wbar + eta R**3 L J dw**2 / c
+      !    (F_t the tangential film force on the journal), and = minus the power of its loads
+      p%oil_layer = 1.0e-4_wp
+      eps = 0.9_wp
+      cage%position = [0.0_wp, 0.0_wp, eps*p%clearance]
+      call cage_land_contact(p, cage, race, cl)
+      wbar = 750.0_wp
+      tw = wetted_half_angle(p, eps)
+      f = short_bearing_force(p, eps, wbar, 0.0_wp)
+      loss_ref = eps*p%clearance*f(2)*wbar + p%viscosity*p%radius**3*p%width*couette_integral(eps, tw)*500.0_wp**2/p%clearance
+      write (*, "(a,2es12.4)") "starved land loss, closed form (W) ", cl%film_loss, loss_ref
+      call check(cl%film_loss > 0.0_wp .and. abs(cl%film_loss - loss_ref) < 1.0e-12_wp*loss_ref, &
+                 "starved land: loss = e F_t wbar + Couette")
+      ! whirling and squeezing: the loss is what the loads take from cage and race
+      cage%velocity = [0.0_wp, 0.05_wp, -0.02_wp]
+      race%velocity = [0.0_wp, 0.0_wp, 0.01_wp]
+      call cage_land_contact(p, cage, race, cl)
+      pw = dot_product(cl%force_cage, cage%velocity) + dot_product(cl%moment_cage, cage%omega) + &
+           dot_product(cl%force_race, race%velocity) + dot_product(cl%moment_race, race%omega)
+      write (*, "(a,2es12.4)") "starved land whirling: film loss, minus the loads' power (W) ", cl%film_loss, -pw
+      call check(cl%film_loss > 0.0_wp .and. abs(cl%film_loss + pw) < 1.0e-12_wp*cl%film_loss, &
+                 "starved land: loss = minus the power of the film's loads")
+   end subroutine test_starved_land
+
    !> At the step-0 state (initial_ball_state) the pocket and land interactions equal the
    !> step-0 cage geometry (adore_cage_step0 Geo Int).
    subroutine test_step0_geometry()
@@ -420,9 +541,11 @@ contains
    end subroutine test_friction_from_deck
 
    !> Cage centred on the guiding (inner) race, spinning at its initial angular speed
-   !> without whirl, every ball on its pocket axis moving with the cage: no cage force; the
-   !> cage moment about x is the lands' Couette torque -2 pi eta R**3 L (w_c - w_r) / c.
+   !> without whirl, every ball on its pocket axis moving with the cage: no cage force; with
+   !> flooded lands the cage moment about x is the lands' Couette torque
+   !> -2 pi eta R**3 L (w_c - w_r) / c, with the default oil layer none.
    subroutine test_centred_cage()
+      type(bearing_t) :: bf
       type(bearing_state_t) :: st
       type(ball_bearing_loads_t) :: ld
       type(cage_land_pair_t), allocatable :: lp(:)
@@ -442,10 +565,20 @@ contains
          st%elements(k)%position = st%cage%position + matmul(rot, rp*[0.0_wp, -sin(psi), cos(psi)])
          st%elements(k)%velocity = cross(w, st%elements(k)%position - st%cage%position)
       end do
+      ! the default oil layer (10 um) leaves the centred cage's 0.72 mm gaps dry
       call ball_bearing_loads(b, g, st, ld, error, traction=.false.)
       call check(.not. allocated(error), "loads at the centred cage")
       if (allocated(error)) return
-      lp = guide_land_pairs(b, g, st%temperature)
+      call check(all(ld%lands%film_loss == 0.0_wp) .and. all(ld%lands%moment_cage(1) == 0.0_wp) .and. &
+                 all(ld%lands%force_cage(2) == 0.0_wp) .and. all(ld%lands%force_cage(3) == 0.0_wp), &
+                 "centred cage, default oil layer: no land film (force, torque, loss)")
+      ! flooded lands: the Couette torque
+      bf = b
+      bf%land_oil_layer = huge(1.0_wp)
+      call ball_bearing_loads(bf, g, st, ld, error, traction=.false.)
+      call check(.not. allocated(error), "loads at the centred cage")
+      if (allocated(error)) return
+      lp = guide_land_pairs(bf, g, st%temperature)
       ref = 0.0_wp
       do k = 1, size(lp)
          ref = ref - 2.0_wp*pi*lp(k)%viscosity*lp(k)%radius**3*lp(k)%width*(st%cage%omega(1) - &

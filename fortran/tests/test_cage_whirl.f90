@@ -106,6 +106,7 @@ program test_cage_whirl
    call check(.not. allocated(error), "step 0 of Appendix C")
    if (allocated(error)) call finish("cage whirl")
    cage%lands = guide_land_pairs(b, g, b%temperature)
+   cage%lands%oil_layer = huge(1.0_wp)        ! the flooded film is these tests' subject
    cage%mass = b%mass(BODY_CAGE)
    cage%w_race = b%speed_inner
    cage%w_cage = s0%cage%state%angular_speed

@@ -281,6 +281,7 @@ contains
       call check(size(sys%lands) == 2 .and. .not. any(sys%lands%race_is_journal), &
                  "Appendix D: two outer-race guide lands")
       sys%lands%viscosity = eta
+      sys%lands%oil_layer = huge(1.0_wp)       ! flooded: the closed form's film
       allocate (dydt(size(y)))
       g0 = ROLLER_SIZE*sys%n + CAGE_POS_OFFSET
       w = y(ROLLER_SIZE*sys%n + CAGE_OFFSET + 2)

@@ -20,7 +20,7 @@ from ..deck import Deck, DeckError, format_deck, parse_text
 from . import store
 from .execute import run_dask, run_local
 from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_vary
-from .results import RESULT_COLUMNS, key_results
+from .results import RESULT_COLUMNS, key_results, mean_results
 
 __all__ = ["sweep", "run_sweep", "read_summary", "read_summary_file", "summary_csv", "dispatch_order"]
 
@@ -97,6 +97,8 @@ class _Sweep:
         self._manifest_written = 0.0
         self._manifest_cost = 0.0      # how long the last manifest rewrite took (s)
         self._events: list[str] = []   # events.log lines of cases the manifest does not list yet
+        #: case id -> (its entry when encoded, or None while pending; its manifest line; its status)
+        self._manifest_lines: dict[str, tuple] = {}
 
     # -- folder -------------------------------------------------------------------------------
     def case_dir(self, case_id: str) -> Path:
@@ -154,12 +156,16 @@ class _Sweep:
             if saved and saved.get("status") == "ok" and saved.get("params") == case.params and prt.exists():
                 self.entries[case.case_id] = saved
                 continue
-            if saved is None and prt.exists():
-                # killed between writing the (complete, renamed) print and its result.json
+            if saved is None and prt.exists() and not (cdir / store.CASE_RESULTS).exists():
+                # killed between writing the (complete, flushed, renamed) print and its result.json, or
+                # a power cut lost result.json (written without fsync): a case without time steps has
+                # every result in its print, as its worker took them; one with time steps (its netCDF
+                # file) has averages from its run's arrays: it runs again
                 try:
                     from ..printout import read_print
 
-                    results = key_results(read_print(prt))
+                    results = key_results(read_print(prt, frames=False, echo=False))
+                    results.update(mean_results(None))
                 except Exception:
                     continue
                 entry = self._entry(case, "ok", "", None, [], "", results)
@@ -205,7 +211,10 @@ class _Sweep:
             elif path.exists():
                 path.unlink()  # of an earlier failed run of this case
         entry = self._entry(case, status, error, duration, notes, worker, results or {})
-        store.write_atomic(cdir / store.CASE_RESULT, json.dumps(entry, indent=1))
+        # not flushed to the disk: the print it vouches for is (fsync above), and a result.json a
+        # power cut left empty reads as absent, so a resume recovers the case from its print
+        # (_load_finished) or runs it again; about 0.5 ms of the client's CPU a case (docs/sweeps.md)
+        store.write_atomic(cdir / store.CASE_RESULT, json.dumps(entry, indent=1), durable=False)
         self.entries[case.case_id] = entry
         dur = "-" if duration is None or not math.isfinite(duration) else f"{duration:.3f}s"
         self._events.append(f"{entry['finished_at']} {case.case_id} {status} {dur} {worker}".rstrip())
@@ -222,17 +231,19 @@ class _Sweep:
         competes with the workers (docs/sweeps.md, "Scaling").  Whole or absent all the same:
         written atomically."""
         self._manifest_written = time.monotonic()
-        rows = []
+        lines = []
+        counts: dict[str, int] = {}
         for case in self.cases:
             e = self.entries.get(case.case_id)
-            if e is None:
-                e = {"case": case.case_id, "params": case.params, "status": "pending", "duration_s": None,
-                     "error": "", "notes": [], "worker": "", "finished_at": None, "results": {}}
-            rows.append(e)
-        counts: dict[str, int] = {}
-        for e in rows:
-            counts[e["status"]] = counts.get(e["status"], 0) + 1
-        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, rows),
+            cached = self._manifest_lines.get(case.case_id)
+            if cached is None or cached[0] is not e:  # each case's line encoded once per entry
+                row = e if e is not None else {
+                    "case": case.case_id, "params": case.params, "status": "pending", "duration_s": None,
+                    "error": "", "notes": [], "worker": "", "finished_at": None, "results": {}}
+                cached = self._manifest_lines[case.case_id] = (e, json.dumps(row), row["status"])
+            lines.append(cached[1])
+            counts[cached[2]] = counts.get(cached[2], 0) + 1
+        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, lines),
                            durable=durable)
         if self._events:
             store.append_event(self.root, "\n".join(self._events))
@@ -337,14 +348,16 @@ def summary_csv(columns: list[str], rows: list[dict]) -> str:
     return buffer.getvalue()
 
 
-def _manifest_text(definition: dict, updated_at: str, counts: dict, rows: list[dict]) -> str:
+def _manifest_text(definition: dict, updated_at: str, counts: dict, lines: list[str]) -> str:
     """manifest.json's text: the sweep's definition, when, the counts by status, then the
-    cases one a line.  Each line is encoded by json's C encoder (an indented dump takes the
-    pure-Python one, five times slower: the manifest is rewritten while the cases run, by
-    the client that shares the cores with the workers; docs/sweeps.md, "Scaling")."""
+    cases one a line (``lines``: each case's entry as ``json.dumps`` encodes it).  Each line
+    is encoded by json's C encoder (an indented dump takes the pure-Python one, five times
+    slower), once per entry (:meth:`_Sweep.write_manifest` keeps them): the manifest is
+    rewritten while the cases run, by the client that shares the cores with the workers
+    (docs/sweeps.md, "Scaling")."""
     head = json.dumps({"sweep": definition, "updated_at": updated_at, "counts": counts}, indent=1)
-    cases = ",\n  ".join(json.dumps(row) for row in rows)
-    return f'{head[:-2]},\n "cases": [\n  {cases}\n ]\n}}' if rows else f'{head[:-2]},\n "cases": []\n}}'
+    cases = ",\n  ".join(lines)
+    return f'{head[:-2]},\n "cases": [\n  {cases}\n ]\n}}' if lines else f'{head[:-2]},\n "cases": []\n}}'
 
 
 def _progress(total: int, enabled: bool | None):

@@ -23,6 +23,7 @@ A killed sweep leaves at most temporary files (``.<name>.tmp-*``), removed by th
 
 from __future__ import annotations
 
+import itertools
 import json
 import os
 import tempfile
@@ -59,17 +60,23 @@ _MODE = 0o666 & ~_umask()
 
 def write_atomic(path: Path, text: str | bytes, durable: bool = True) -> None:
     """Write ``text`` (or bytes) to ``path`` so that ``path`` is either the old file or the
-    whole new one; ``durable``: flushed to the disk (fsync) before it replaces the old file."""
+    whole new one; ``durable``: flushed to the disk (fsync) before it replaces the old file.
+    The temporary file (``.<name>.tmp-<pid>-<n>`` beside it, created exclusively with the
+    ordinary files' permissions) is written by one ``os.write`` loop, without a text stream,
+    a random name or a chmod: the sweep's client writes three files a case while it shares the
+    cores with the workers (docs/sweeps.md, "Scaling")."""
     path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}{_TMP_TAG}", dir=path.parent)
+    data = text if isinstance(text, bytes) else text.encode("utf-8")
+    fd, tmp = _create_temporary(path)
     try:
-        binary = isinstance(text, bytes)
-        with os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""})) as fh:
-            fh.write(text)
-            fh.flush()
+        try:
+            view = memoryview(data)
+            while view:
+                view = view[os.write(fd, view):]
             if durable:
-                os.fsync(fh.fileno())
-        os.chmod(tmp, _MODE)
+                os.fsync(fd)
+        finally:
+            os.close(fd)
         os.replace(tmp, path)
     except BaseException:
         try:
@@ -77,6 +84,26 @@ def write_atomic(path: Path, text: str | bytes, durable: bool = True) -> None:
         except OSError:
             pass
         raise
+
+
+_FLAGS = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0) | getattr(os, "O_BINARY", 0)
+_counter = itertools.count()
+
+
+def _create_temporary(path: Path) -> tuple[int, str]:
+    """A new temporary file beside ``path`` (its descriptor and name), with the permissions of
+    an ordinary file (0o666 less the umask), never one that exists (O_EXCL; a name taken, e.g.
+    by a process of the same pid in another container, is passed over)."""
+    folder = os.fspath(path.parent)
+    for _ in range(100):
+        tmp = os.path.join(folder, f".{path.name}{_TMP_TAG}{os.getpid()}-{next(_counter)}")
+        try:
+            return os.open(tmp, _FLAGS, 0o666), tmp
+        except FileExistsError:
+            continue
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}{_TMP_TAG}", dir=folder)
+    os.chmod(tmp, _MODE)
+    return fd, tmp
 
 
 def read_json(path: Path):

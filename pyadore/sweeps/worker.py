@@ -21,6 +21,7 @@ client starts one process a slot).
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import signal
@@ -87,13 +88,21 @@ def main(argv: list[str] | None = None) -> int:
         channel = os.fdopen(os.dup(1), "w", encoding="utf-8")
     os.dup2(2, 1)
     sys.stdout = sys.stderr
+    # no cyclic garbage collection while the boot imports (its collections walk every object
+    # the imports made, several times: serial CPU before the first case); the modules' objects
+    # then go to the collector's permanent generation before the workers are forked, so that
+    # no worker's collections touch - and copy - the pages they share (Python's gc.freeze)
+    gc.disable()
     warm()
     # the boot's CPU time (this process's, or the fork server's until it forks) and its end
     boot = {"boot_cpu_s": time.process_time(), "booted_at": time.time()}
+    gc.freeze()
     if not slots:
+        gc.enable()
         serve(sys.stdin, channel, boot)
         return 0
     if not sys.platform.startswith("linux"):
+        gc.enable()
         serve(*_open(slots[0]), boot)  # one slot a process (the client starts one each)
         return 0
     # Linux: this warm process forks one worker per slot and waits for them (a fork server: it
@@ -102,6 +111,7 @@ def main(argv: list[str] | None = None) -> int:
         pid = os.fork()
         if pid == 0:  # the worker of slot k
             code = 0
+            gc.enable()
             try:
                 for other in slots[k + 1:]:  # (those of the slots before are closed already)
                     for fd in other:
