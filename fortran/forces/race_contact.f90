@@ -74,7 +74,8 @@ contains
       th = [b%material(body)%density, b%material(body)%heat_capacity, b%material(body)%conductivity]
    end function thermal_properties
 
-   !> The lubricant's traction rheology at the wall temperature of a race contact.
+   !> The lubricant's traction rheology at the wall temperature of a race contact, with the
+   !> film's shear modulus of the run (b%film_shear_modulus; 0: the viscous film).
    function wall_rheology(b, temperature, race) result(rheo)
       type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: temperature(:)
@@ -83,7 +84,8 @@ contains
       real(wp) :: t_w
       t_w = wall_temperature(temperature, race)
       rheo = ehd_rheology_t(eta_w=traction_viscosity(b%lubricant, t_w), alpha=b%lubricant%alpha_t, &
-                            beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity)
+                            beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity, &
+                            shear_modulus=b%film_shear_modulus)
    end function wall_rheology
 
    !> Film of one race contact (report 2.6): Hamrock-Dowson isothermal central film

@@ -136,6 +136,9 @@ module adore_model_bearing
       !> deck's curve by the fluid fraction (run option full_film_lambda times the composite
       !> RMS roughness; docs/tribology.md, "Mixed films"); at or below boundary_film: no blend
       real(wp) :: full_film = 0.0_wp
+      !> elastic shear modulus G (Pa) of the EHD film (run option film_shear_modulus): > 0 makes
+      !> traction model 3's film a Maxwell film (docs/tribology.md, "The film's elasticity"); 0: off
+      real(wp) :: film_shear_modulus = 0.0_wp
       type(lubricant_t) :: lubricant
       !> the coolant and the thermal times (Rec 2.4, 2.5)
       type(coolant_data_t) :: coolant

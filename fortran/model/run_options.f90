@@ -76,6 +76,10 @@ module adore_model_run_options
       real(wp) :: boundary_friction = 0.0_wp
       !> slip speed u_b (m/s) over which the boundary friction rises to its coefficient
       real(wp) :: boundary_slip = 1.0e-2_wp
+      !> elastic shear modulus G (Pa) of traction model 3's EHD film: > 0 makes it a Maxwell
+      !> film (Johnson & Tevaarwerk 1977; docs/tribology.md, "The film's elasticity"; not in
+      !> ADORE 5.0); 0 (default): the viscous film
+      real(wp) :: film_shear_modulus = 0.0_wp
       !> the coordinates of the balls in the integrated state: "orbit" (the report's eq 54:
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
@@ -146,7 +150,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 26
+   integer, parameter :: N_OPTIONS = 27
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -187,6 +191,9 @@ module adore_model_run_options
       option_spec_t("boundary_slip", OPTION_REAL, "0.01", 0, "", "M/S", "", &
                     "slip speed (m/s, > 0) over which boundary_friction rises to its coefficient: "// &
                     "mu (1 - exp(-|u| / boundary_slip))"), &
+      option_spec_t("film_shear_modulus", OPTION_REAL, "0", 0, "", "PA", "", &
+                    "elastic shear modulus G (Pa) of the EHD (model 3) film: a Maxwell film (Johnson & "// &
+                    "Tevaarwerk), not in ADORE 5.0; 0: the viscous film"), &
       option_spec_t("duration", OPTION_REAL, "0", 0, "", "SECONDS", "", &
                     "simulated time to integrate (s): the run ends exactly there, its last step printed "// &
                     "(instead of a step count)"), &
@@ -358,6 +365,8 @@ contains
          opts%boundary_friction = x
       case ("boundary_slip")
          opts%boundary_slip = x
+      case ("film_shear_modulus")
+         opts%film_shear_modulus = x
       case ("duration")
          opts%duration = x
       case ("revolutions")

@@ -27,6 +27,7 @@ module adore_tribology_ehd_traction
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_quadrature, only: gauss_legendre
    use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
+   use adore_tribology_ehd_elastic, only: elastic_strip_ratio
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
                                    interior_extremum, contact_kinematics, rolling_zones, axis_nodes, cross_slip
    implicit none
@@ -53,6 +54,9 @@ module adore_tribology_ehd_traction
       real(wp) :: alpha = 0.0_wp         !< traction pressure-viscosity coefficient (1/Pa)
       real(wp) :: beta = 0.0_wp          !< temperature-viscosity coefficient (1/K); 0: isothermal
       real(wp) :: conductivity = 0.0_wp  !< lubricant thermal conductivity (W/m/K)
+      !> elastic shear modulus G of the film (Pa; run option film_shear_modulus): > 0 makes it
+      !> a Maxwell film (adore_tribology_ehd_elastic); 0: the viscous film of ADORE's model 3
+      real(wp) :: shear_modulus = 0.0_wp
    end type ehd_rheology_t
 
 contains
@@ -158,6 +162,7 @@ contains
    !> points for A beyond the table); n_strip >= 1: Gauss on psi in [0, pi/2] of
    !> y = b' sin(psi) with n_strip points.  Same outputs as ehd_contact_traction (force,
    !> force_cos, force_sin, power, sliding, max_slip, kinematics); input error for bad data.
+   !> rheo%shear_modulus > 0: each strip times its Maxwell film's ratio (adore_tribology_ehd_elastic).
    !> transverse (m/s), when given: the two-dimensional traction as ehd_contact_traction's
    !> (each strip's integral at the slip vector's |u|, its traction along (u, u_m) / |u|,
    !> t%cross_force), on the same nodes: the zones and their grading follow the pure-rolling
@@ -183,7 +188,7 @@ contains
       real(wp), parameter :: Z_MIN = exp(STRIP_L_MIN)
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
-      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2
+      real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2, ue
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
 
       nm = EHD_FAST_MAJOR
@@ -340,6 +345,13 @@ contains
       if (nq > 0) then
          do j = 1, n
             if (ns /= EHD_STRIP_TABLE .or. aa(j) > STRIP_A_MAX) f(j) = b*cphi(j)*strip_rule_integral(aa(j), us(j))
+         end do
+      end if
+      ! the film's elasticity: each strip's Maxwell-film ratio (half width b' = b cos(phi))
+      if (rheo%shear_modulus > 0.0_wp) then
+         ue = abs(t%rolling_speed)*rheo%eta_w/(rheo%shear_modulus*b)
+         do j = 1, n
+            if (cphi(j) > 0.0_wp) f(j) = f(j)*elastic_strip_ratio(aa(j), zeta*us(j), rheo%beta > 0.0_wp, ue/cphi(j))
          end do
       end if
       ! force, its moments cos(s / rho) = cos(theta - alpha), sin(s / rho), heat (eq 4), sliding
@@ -575,13 +587,15 @@ contains
    !> Traction f (N/m) and load q (N/m) of the strip across the Hertz ellipse at node s (m)
    !> of the major axis, slip u (m/s), folded strip rule (y, wy): tau h = amp E
    !> shear_shape(zeta |u| E), E = exp(alpha p / 2) (module header with eta_w(p) =
-   !> eta_w E**2); Newtonian tau = eta_w E**2 |u| / h when beta = 0.
+   !> eta_w E**2); Newtonian tau = eta_w E**2 |u| / h when beta = 0; times the Maxwell film's
+   !> ratio (adore_tribology_ehd_elastic) when rheo%shear_modulus > 0.
    pure subroutine strip_traction(c, rheo, h, b, y, wy, s, u, f, q)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
       real(wp), intent(in) :: h, b, y(:), wy(:), s, u
       real(wp), intent(out) :: f, q
       real(wp) :: xi2, half, p0, p, e_half, tau, amp, zeta
+      type(contact_traction_t) :: kin
       integer :: i
 
       p0 = 1.5_wp*c%load/(pi*c%a*b)
@@ -601,6 +615,12 @@ contains
          f = f + half*wy(i)*tau
          q = q + half*wy(i)*p
       end do
+      if (rheo%shear_modulus > 0.0_wp .and. half > 0.0_wp) then
+         ! the Maxwell film (adore_tribology_ehd_elastic) at the contact's entraining speed
+         call contact_kinematics(c, kin)
+         f = f*elastic_strip_ratio(0.5_wp*rheo%alpha*p0*sqrt(1.0_wp - xi2), zeta*abs(u), rheo%beta > 0.0_wp, &
+                                   abs(kin%rolling_speed)*rheo%eta_w/(rheo%shear_modulus*half))
+      end if
    end subroutine strip_traction
 
 end module adore_tribology_ehd_traction
