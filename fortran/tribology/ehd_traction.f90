@@ -189,6 +189,7 @@ contains
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
       real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2, ue
+      real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
 
       nm = EHD_FAST_MAJOR
@@ -228,6 +229,8 @@ contains
       ! film's shear saturates within |u| ~ 1 / (zeta E) of it); one between two rolling
       ! points is halved first
       nsub = 0
+      s_last = huge(1.0_wp)
+      k_last = 0.0_wp
       do z = 1, nz
          lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
          hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
@@ -404,9 +407,15 @@ contains
             call add_graded(pf, pr, 0.0_wp, rule)
             return
          end if
-         th = c%alpha + s_r/c%rho
-         dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
-         call add_graded(pf, pr, zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr), rule)
+         ! the zones on both sides of a rolling point (and the halves of a zone between two)
+         ! meet there in turn: its layer width once, for both
+         if (s_r /= s_last) then
+            th = c%alpha + s_r/c%rho
+            dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
+            s_last = s_r
+            k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr)
+         end if
+         call add_graded(pf, pr, k_last, rule)
       end subroutine add_sub
 
       !> A sub-zone of phi from pf (free end) to pr, graded at pr with the inverse layer
