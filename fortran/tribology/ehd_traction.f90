@@ -189,6 +189,7 @@ contains
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
       real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2, ue
+      real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
       real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
 
@@ -206,7 +207,7 @@ contains
       call gauss_legendre(nm, xq(1:nm, 1), wq(1:nm, 1))
       call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
       call contact_kinematics(c, t)
-      call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points)
+      call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points, polar)
       p0 = 1.5_wp*c%load/(pi*c%a*b)
       call film_constants(rheo, h, amp, zeta)
       rs = c%race_speed
@@ -390,7 +391,7 @@ contains
       end if
       t%sliding = 0.75_wp*c%load/c%a*sliding    ! Hertz strip load
       t%max_slip = max(t%max_slip, maxval(us(1:n)))
-      call interior_extremum(c, t%max_slip)
+      call interior_extremum(c, t%max_slip, polar)
       t%coefficient = t%force/c%load
 
    contains
