@@ -189,6 +189,7 @@ contains
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
       real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2, ue
+      real(wp) :: umax
       real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
       real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
@@ -390,7 +391,12 @@ contains
          sliding = sum(us(1:n)*cphi(1:n)**2*wn(1:n))
       end if
       t%sliding = 0.75_wp*c%load/c%a*sliding    ! Hertz strip load
-      t%max_slip = max(t%max_slip, maxval(us(1:n)))
+      ! the largest |u| (exact in any order: a loop gcc vectorises, where maxval is scalar)
+      umax = t%max_slip
+      do j = 1, n
+         umax = max(umax, us(j))
+      end do
+      t%max_slip = umax
       call interior_extremum(c, t%max_slip, polar)
       t%coefficient = t%force/c%load
 
