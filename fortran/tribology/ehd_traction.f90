@@ -256,8 +256,9 @@ contains
       n = 0
       do z = 1, nsub
          associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => sub_rule(z))
-            vmax = asinh(kp*abs(pf - pr))
             m = merge(nm, nh, r == 1)
+            vmax = 0.0_wp                       ! a plain sub-zone (kp = 0): no asinh
+            if (kp > 0.0_wp) vmax = asinh(kp*abs(pf - pr))
             if (kp > 0.0_wp .and. vmax > 1.0_wp) then
                ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2;
                ! the Gauss nodes pair up (x_(m+1-j) = -x_j), so e**v of the upper half is
