@@ -189,6 +189,9 @@ contains
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
       real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2, ue
+      real(wp) :: umax
+      real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
+      real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
 
       nm = EHD_FAST_MAJOR
@@ -205,7 +208,7 @@ contains
       call gauss_legendre(nm, xq(1:nm, 1), wq(1:nm, 1))
       call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
       call contact_kinematics(c, t)
-      call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points)
+      call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points, polar)
       p0 = 1.5_wp*c%load/(pi*c%a*b)
       call film_constants(rheo, h, amp, zeta)
       rs = c%race_speed
@@ -228,6 +231,8 @@ contains
       ! film's shear saturates within |u| ~ 1 / (zeta E) of it); one between two rolling
       ! points is halved first
       nsub = 0
+      s_last = huge(1.0_wp)
+      k_last = 0.0_wp
       do z = 1, nz
          lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
          hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
@@ -251,8 +256,9 @@ contains
       n = 0
       do z = 1, nsub
          associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => sub_rule(z))
-            vmax = asinh(kp*abs(pf - pr))
             m = merge(nm, nh, r == 1)
+            vmax = 0.0_wp                       ! a plain sub-zone (kp = 0): no asinh
+            if (kp > 0.0_wp) vmax = asinh(kp*abs(pf - pr))
             if (kp > 0.0_wp .and. vmax > 1.0_wp) then
                ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2;
                ! the Gauss nodes pair up (x_(m+1-j) = -x_j), so e**v of the upper half is
@@ -386,8 +392,13 @@ contains
          sliding = sum(us(1:n)*cphi(1:n)**2*wn(1:n))
       end if
       t%sliding = 0.75_wp*c%load/c%a*sliding    ! Hertz strip load
-      t%max_slip = max(t%max_slip, maxval(us(1:n)))
-      call interior_extremum(c, t%max_slip)
+      ! the largest |u| (exact in any order: a loop gcc vectorises, where maxval is scalar)
+      umax = t%max_slip
+      do j = 1, n
+         umax = max(umax, us(j))
+      end do
+      t%max_slip = umax
+      call interior_extremum(c, t%max_slip, polar)
       t%coefficient = t%force/c%load
 
    contains
@@ -404,9 +415,15 @@ contains
             call add_graded(pf, pr, 0.0_wp, rule)
             return
          end if
-         th = c%alpha + s_r/c%rho
-         dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
-         call add_graded(pf, pr, zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr), rule)
+         ! the zones on both sides of a rolling point (and the halves of a zone between two)
+         ! meet there in turn: its layer width once, for both
+         if (s_r /= s_last) then
+            th = c%alpha + s_r/c%rho
+            dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
+            s_last = s_r
+            k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr)
+         end if
+         call add_graded(pf, pr, k_last, rule)
       end subroutine add_sub
 
       !> A sub-zone of phi from pf (free end) to pr, graded at pr with the inverse layer

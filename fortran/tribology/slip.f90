@@ -71,10 +71,13 @@ contains
 
    !> Pure-rolling points s (m) of the contact: roots of u(s) strictly inside (-a, a),
    !> ascending (at most two: u is a shifted sinusoid in s / rho with period >> 2 a).
-   pure subroutine pure_rolling_points(c, n, s)
+   !> polar, when given: u(s) + race_speed r_b = r cos(theta - delta) as [r (m/s), delta
+   !> (rad)], delta 0 when r = 0 (interior_extremum takes it instead of recomputing it).
+   pure subroutine pure_rolling_points(c, n, s, polar)
       type(ball_race_contact_t), intent(in) :: c
       integer, intent(out) :: n
       real(wp), intent(out) :: s(2)
+      real(wp), intent(out), optional :: polar(2)
       real(wp) :: aa, bb, cc, r, delta, gam, cand, psi
       integer :: k, m
 
@@ -84,9 +87,14 @@ contains
       bb = -c%side*c%rho*c%omega(2)
       cc = -c%race_speed*c%r_b
       r = hypot(aa, bb)
+      if (present(polar)) polar = [r, 0.0_wp]
       if (r <= 0.0_wp) return
+      if (present(polar)) then
+         delta = atan2(bb, aa)
+         polar(2) = delta
+      end if
       if (abs(cc) > r) return
-      delta = atan2(bb, aa)
+      if (.not. present(polar)) delta = atan2(bb, aa)
       gam = acos(-cc/r)
       do k = 1, 2
          cand = delta + merge(gam, -gam, k == 1)
@@ -275,14 +283,16 @@ contains
    end subroutine check_law_contact
 
    !> The slip zones of contact c's major axis: edges(1:nz+1) from -a to a (m), split at
-   !> its pure-rolling points (n_rolling of them, at points(1:n_rolling), m; report 2.1).
-   pure subroutine rolling_zones(c, edges, nz, n_rolling, points)
+   !> its pure-rolling points (n_rolling of them, at points(1:n_rolling), m; report 2.1);
+   !> polar: as pure_rolling_points'.
+   pure subroutine rolling_zones(c, edges, nz, n_rolling, points, polar)
       type(ball_race_contact_t), intent(in) :: c
       real(wp), intent(out) :: edges(4), points(2)
       integer, intent(out) :: nz, n_rolling
+      real(wp), intent(out), optional :: polar(2)
 
       edges = 0.0_wp
-      call pure_rolling_points(c, n_rolling, points)
+      call pure_rolling_points(c, n_rolling, points, polar)
       edges(1) = -c%a
       edges(2:n_rolling + 1) = points(1:n_rolling)
       edges(n_rolling + 2) = c%a
@@ -333,17 +343,24 @@ contains
       end do
    end subroutine print_slip_node
 
-   !> Raise umax to |u| at the extremum of u(s) when it lies inside (-a, a).
-   pure subroutine interior_extremum(c, umax)
+   !> Raise umax to |u| at the extremum of u(s) when it lies inside (-a, a).  polar, when
+   !> given: pure_rolling_points' [r, delta] of the same contact (not recomputed).
+   pure subroutine interior_extremum(c, umax, polar)
       type(ball_race_contact_t), intent(in) :: c
       real(wp), intent(inout) :: umax
+      real(wp), intent(in), optional :: polar(2)
       real(wp) :: aa, bb, delta, psi
       integer :: m
 
-      aa = c%side*c%rho*(c%omega(1) - c%race_speed)
-      bb = -c%side*c%rho*c%omega(2)
-      if (hypot(aa, bb) <= 0.0_wp) return
-      delta = atan2(bb, aa)                 ! u' = 0 where theta = delta (+ k pi)
+      if (present(polar)) then
+         if (polar(1) <= 0.0_wp) return
+         delta = polar(2)
+      else
+         aa = c%side*c%rho*(c%omega(1) - c%race_speed)
+         bb = -c%side*c%rho*c%omega(2)
+         if (hypot(aa, bb) <= 0.0_wp) return
+         delta = atan2(bb, aa)              ! u' = 0 where theta = delta (+ k pi)
+      end if
       do m = -3, 3
          psi = delta + pi*m - c%alpha
          if (abs(psi*c%rho) < c%a) umax = max(umax, abs(contact_slip(c, psi*c%rho)))
