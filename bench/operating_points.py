@@ -15,6 +15,7 @@ counts by outcome and by message, written to bench/results/NAME.json (NAME: --ou
         [--speeds 0,10] [--loads 1,C0] [--fits 0] [--out NAME] [--rerun a.csv[,b.csv]] [--sample N]
         [--extra '--traction-table t.txt'] [--exe other/adore]
     .venv/bin/python bench/operating_points.py --summarize bench/operating_points_grid.csv
+    .venv/bin/python bench/operating_points.py --compare bench/operating_points_grid_s16.csv,bench/operating_points_grid.csv
     .venv/bin/python bench/operating_points.py --merge bench/results/NAME.csv --mark s15
 
 Every case is also appended, as it ends, to bench/results/NAME.csv (deck, speed, load, fit,
@@ -230,6 +231,72 @@ def summarize(rows: list[dict]) -> None:
             print(f"  {n:4d}  {k}")
 
 
+def _table(title: str, counts: list[tuple[str, collections.Counter]]) -> None:
+    """Print counters side by side (one column a grid) under title, the keys sorted."""
+    keys = sorted(set().union(*(c for _, c in counts)), key=lambda k: (isinstance(k, str), k))
+    print(f"{title}: " + " | ".join(name for name, _ in counts))
+    for k in keys:
+        print(f"  {k!s:>40}  " + " | ".join(f"{c[k]:5d}" for _, c in counts))
+
+
+def compare(grids: list[tuple[str, list[dict]]]) -> None:
+    """Print grids side by side (e.g. session 16's CSV and a new one): outcomes; failures by
+    message class, deck, speed, load and fit; runs with steps forced at the minimum step by
+    speed; runs whose closure (drive - dissipation - energy change) / max(|drive|, dissipation)
+    is within 1 % and 10 %, all and among the resolved runs (no forced step); and how the
+    cases moved from the first grid to each other one."""
+    def load(r):
+        return float(r["load_N"]) if float(r["load_N"]) in LOADS else "C0"
+
+    def closure(r):
+        try:
+            return abs(float(r["closure"]))
+        except (KeyError, TypeError, ValueError):
+            return float("nan")
+
+    def forced(r):
+        return r["outcome"] == "ran" and int(r.get("forced_steps") or 0) > 0
+
+    _table("outcomes", [(n, collections.Counter(r["outcome"] for r in rows)) for n, rows in grids])
+    for title, key in (("failures by message", lambda r: category(r["message"])[:90]),
+                       ("failures by deck", lambda r: r["deck"]),
+                       ("failures by speed (rpm)", lambda r: float(r["speed_rpm"])),
+                       ("failures by load (N)", load), ("failures by fit (um)", lambda r: round(float(r["fit_m"]) * 1e6))):
+        _table(title, [(n, collections.Counter(key(r) for r in rows if r["outcome"] != "ran")) for n, rows in grids])
+    _table("runs with forced steps by speed (rpm)",
+           [(n, collections.Counter(float(r["speed_rpm"]) for r in rows if forced(r))) for n, rows in grids])
+    _table("runs with forced steps by load (N)", [(n, collections.Counter(load(r) for r in rows if forced(r)))
+                                                  for n, rows in grids])
+    _table("forced steps in all, by speed (rpm)",
+           [(n, collections.Counter({s: sum(int(r.get("forced_steps") or 0) for r in rows
+                                           if r["outcome"] == "ran" and float(r["speed_rpm"]) == s)
+                                     for s in SPEEDS})) for n, rows in grids])
+    for bound in (0.01, 0.1):
+        _table(f"closure within {bound:.0%}: all runs / resolved runs",
+               [(n, collections.Counter({"all": sum(closure(r) <= bound for r in rows if r["outcome"] == "ran"),
+                                         "resolved": sum(closure(r) <= bound for r in rows
+                                                         if r["outcome"] == "ran" and not forced(r))}))
+                for n, rows in grids])
+    _table("closure within 1 % by speed (rpm), all runs",
+           [(n, collections.Counter(float(r["speed_rpm"]) for r in rows if r["outcome"] == "ran" and closure(r) <= 0.01))
+            for n, rows in grids])
+    first_name, first = grids[0]
+    before = {_key(r): r for r in first}
+    for name, rows in grids[1:]:
+        moves = collections.Counter()
+        for r in rows:
+            b = before.get(_key(r))
+            if b is None:
+                continue
+            tb = "forced" if forced(b) else _short(b)
+            ta = "forced" if forced(r) else _short(r)
+            if tb != ta:
+                moves[(tb, ta)] += 1
+        print(f"moved {first_name} -> {name} (ran: no forced step; forced: ran with forced steps):")
+        for (tb, ta), n in sorted(moves.items(), key=lambda kv: -kv[1]):
+            print(f"  {n:4d}  {tb}  ->  {ta}")
+
+
 def _floats(text: str) -> tuple:
     return tuple("C0" if v.strip() == "C0" else float(v) for v in text.split(","))
 
@@ -250,7 +317,16 @@ def main() -> int:
     ap.add_argument("--exe", default=os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore")))
     ap.add_argument("--extra", default="", help="further engine options, e.g. '--traction-table t.txt' (diagnosis)")
     ap.add_argument("--summarize", default="", help="a CSV of an earlier run: print its counts and stop")
+    ap.add_argument("--compare", default="", help="CSVs (comma-separated, the first the reference): print them "
+                                                  "side by side and stop")
     a = ap.parse_args()
+    if a.compare:
+        grids = []
+        for name in a.compare.split(","):
+            with open(name, newline="") as f:
+                grids.append((Path(name).stem, list(csv.DictReader(f))))
+        compare(grids)
+        return 0
     if a.summarize:
         with open(a.summarize, newline="") as f:
             summarize(list(csv.DictReader(f)))
