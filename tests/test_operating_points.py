@@ -423,7 +423,7 @@ def test_mixed_films_at_the_static_capacity_run_resolved_and_balance(tmp_path):
     mixed (film parameters in the band 1-2) at 3-4 GPa; sheared at the full Hertz pressure
     the film's traction slope eta exp(alpha p) / h was so steep that the integrator's error
     test failed at every step down to the deck's minimum step, whose steps ADORE's rule
-    accepts anyway (18 of the first 20 with the films at the full pressure, below); the
+    accepts anyway (7 of the first 12 with the films at the full pressure, below); the
     run went on without error control until a trial stage left the Hertz model.  With the
     film shearing its share f Q of the load at f p_H (load sharing, docs/tribology.md
     "Mixed films") it runs its 300 steps with no step accepted that way (measured: every
@@ -444,14 +444,17 @@ def test_mixed_films_at_the_static_capacity_run_resolved_and_balance(tmp_path):
     assert bal["drive_ratio"] == pytest.approx(1.0, abs=0.01)
     assert abs(bal["closure"]) <= 1e-3
     # the film at the full Hertz pressure (no band: the step at boundary_lambda): the same
-    # point's first 20 steps are mostly accepted at the minimum step with their error above
-    # the limit, and the run note says so.  The cage held centred here too: steps accepted
-    # without error control follow no trajectory, and with the deck's free cage on starved
-    # lands (land_oil's default, 2026-11-27) a trial stage at step 15 leaves the Hertz model
-    # (measured: flooded lands, --land-oil 1, or the centred cage reach step 20, 15 forced)
-    stiff = pyadore.run(path, steps=20, out=tmp_path / "stiff.prt", full_film_lambda=0, cage="centred")
+    # point's first steps are mostly accepted at the minimum step with their error above the
+    # limit, and the run note says so (measured 7 of the first 12).  Run with the deck's own
+    # (free) cage: steps accepted without error control follow no trajectory, and such a run
+    # stops within 15-25 steps whatever the cage does - a trial stage puts an outer contact
+    # beyond the Hertz model (measured 2026-11-27, 60 steps: the deck's free cage on starved
+    # lands at step 15, also with fits of +-1e-12 to +-1e-9 m and --cage free; flooded lands
+    # or the centred cage at step 25; docs/operating-points.md "The grid on session 18's
+    # main").  12 steps end before the earliest of these.
+    stiff = pyadore.run(path, steps=12, out=tmp_path / "stiff.prt", full_film_lambda=0)
     forced = parse_forced_steps(" ".join(stiff.notes))
-    assert forced is not None and forced[1] == 20 and forced[0] >= 10
+    assert forced is not None and forced[1] == 12 and forced[0] >= 6
 
 
 def test_elastic_film_resolves_the_slip_at_60000_rpm(tmp_path):
