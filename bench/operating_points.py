@@ -13,7 +13,7 @@ counts by outcome and by message, written to bench/results/NAME.json (NAME: --ou
 
     .venv/bin/python bench/operating_points.py [--steps 300] [--workers 2] [--decks a.inp,b.inp]
         [--speeds 0,10] [--loads 1,C0] [--fits 0] [--out NAME] [--rerun a.csv[,b.csv]] [--sample N]
-        [--extra '--traction-table t.txt'] [--exe other/adore]
+        [--extra '--traction-table t.txt'] [--set 2.1:step_min=5e-4] [--exe other/adore]
     .venv/bin/python bench/operating_points.py --summarize bench/operating_points_grid.csv
     .venv/bin/python bench/operating_points.py --compare bench/operating_points_grid_s16.csv,bench/operating_points_grid.csv
     .venv/bin/python bench/operating_points.py --merge bench/results/NAME.csv --mark s15
@@ -74,10 +74,15 @@ def _ball_decks() -> list[Path]:
     return decks
 
 
-def _variant(base: Path, out: Path, speed: float, load: float, fit: float) -> Path:
+def _variant(base: Path, out: Path, speed: float, load: float, fit: float, sets: tuple = ()) -> Path:
+    """The deck at base with the shaft speed (rpm), the applied load's magnitude (N, the deck's
+    direction) and the inner race fit (m) replaced, and further fields set: sets holds
+    (record, field, value) triples (--set)."""
     from pyadore.deck import read_deck
 
     deck = read_deck(base)
+    for record, field, value in sets:
+        deck.set(record, field, value)
     force = np.array([deck.lookup(f"applied_force_{c}") for c in "xyz"], dtype=float)
     force = force / np.linalg.norm(force) * load
     for c, v in zip("xyz", force):
@@ -147,11 +152,11 @@ def balance(stderr: str) -> dict:
 
 
 def _case(args) -> dict:
-    base, speed, load, fit, steps, exe, extra = args
+    base, speed, load, fit, steps, exe, extra, sets = args
     from pyadore.deck import check_deck
 
     with tempfile.TemporaryDirectory() as tmp:
-        path = _variant(Path(base), Path(tmp) / "case.inp", speed, load, fit)
+        path = _variant(Path(base), Path(tmp) / "case.inp", speed, load, fit, sets)
         _, problems = check_deck(path)
         problems = [p for p in problems if p.kind != "warning"]
         row = {"deck": Path(base).name, "speed_rpm": speed, "load_N": load, "fit_m": fit}
@@ -317,6 +322,8 @@ def main() -> int:
     ap.add_argument("--out", default="operating_points", help="name of the results in bench/results/")
     ap.add_argument("--exe", default=os.environ.get("ADORE_EXE", str(ROOT / "build" / "native" / "adore")))
     ap.add_argument("--extra", default="", help="further engine options, e.g. '--traction-table t.txt' (diagnosis)")
+    ap.add_argument("--set", default="", help="deck fields set in every case, comma-separated RECORD:FIELD=VALUE, "
+                                              "e.g. '2.1:step_min=5e-4' (diagnosis)")
     ap.add_argument("--summarize", default="", help="a CSV of an earlier run: print its counts and stop")
     ap.add_argument("--compare", default="", help="CSVs (comma-separated, the first the reference): print them "
                                                   "side by side and stop")
@@ -336,6 +343,8 @@ def main() -> int:
         merge(Path(a.merge), a.mark)
         return 0
     extra = a.extra.split()
+    sets = tuple((item.split(":", 1)[0], item.split(":", 1)[1].split("=", 1)[0], float(item.split("=", 1)[1]))
+                 for item in a.set.split(",") if item)
     decks = [Path(d) for d in a.decks.split(",")] if a.decks else _ball_decks()
     speeds = _floats(a.speeds) if a.speeds else SPEEDS
     loads = _floats(a.loads) if a.loads else LOADS
@@ -354,7 +363,7 @@ def main() -> int:
                 old |= {ran[j]: {} for j in sorted(pick)}
         by_name = {d.name: d for d in _ball_decks()}
         for deck, speed, load, fit in old:
-            cases.append((str(by_name[deck]), speed, load, fit, a.steps, a.exe, extra))
+            cases.append((str(by_name[deck]), speed, load, fit, a.steps, a.exe, extra, sets))
     else:
         cache = ROOT / "bench" / "results" / "static_capacity.json"
         known = json.loads(cache.read_text()) if cache.exists() else {}
@@ -367,7 +376,7 @@ def main() -> int:
             cache.write_text(json.dumps(known | capacities, indent=1) + "\n")
         for d in decks:
             for s, L, f in itertools.product(speeds, loads, fits):
-                cases.append((str(d), s, capacities[d.name] if L == "C0" else L, f, a.steps, a.exe, extra))
+                cases.append((str(d), s, capacities[d.name] if L == "C0" else L, f, a.steps, a.exe, extra, sets))
     # a fixed random order: a run stopped part way is a sample of the whole grid
     order = np.random.default_rng(28).permutation(len(cases))
     cases = [cases[k] for k in order]
