@@ -76,6 +76,7 @@ module adore_bearings_ball
       logical :: tribology_current = .false.
    contains
       procedure :: eval => ball_eval
+      procedure :: border_shares => ball_border_shares
       procedure :: solve_start => ball_solve_start
       procedure :: write_start => ball_write_start
       procedure :: dynamic_steps => ball_dynamic_steps
@@ -109,6 +110,15 @@ contains
       call self%eom%eval(t, y, dydt, flag)
       call adopt_failure(self, self%eom)
    end subroutine ball_eval
+
+   !> The equations of motion's border shares of the last evaluation (ball_system_t's: the
+   !> integrator's border rows of the arrowhead Jacobian, docs/dynamics.md "The arrowhead").
+   subroutine ball_border_shares(self, shares, ok)
+      class(ball_kind_t), intent(in) :: self
+      real(wp), intent(out) :: shares(:, :)
+      logical, intent(out) :: ok
+      call self%eom%border_shares(shares, ok)
+   end subroutine ball_border_shares
 
    !> Step 0: mounting, equilibrium, ball speeds (the options' start hypothesis, report
    !> 4.4.7; moment equilibrium when asked), tribology, life, cage.
