@@ -286,6 +286,35 @@ def test_run_steps_0_imports_no_table_or_figure_library(ball_deck, tmp_path):
     assert "importlib.metadata" not in imported                           # --version only when asked
 
 
+def test_run_command_ends_without_the_interpreter_clean_up_with_its_files_complete(short_ball_deck, tmp_path):
+    """`pyadore run` ends by os._exit once its output is flushed (pyadore/__main__.py,
+    _exit_now; docs/sweeps.md "Start-up"): its print, plot-data and netCDF files are those
+    of the same run through the API, byte for byte, its stdout lines are all there through a
+    pipe, and a refused run still exits 1 with its message."""
+    import subprocess
+    import sys
+
+    out = tmp_path / "cli.prt"
+    res = subprocess.run([sys.executable, "-m", "pyadore", "run", str(short_ball_deck), "-o", str(out)],
+                         capture_output=True, text=True, timeout=600)
+    assert res.returncode == 0, res.stderr[-2000:]
+    api = pyadore.run(short_ball_deck, out=tmp_path / "api.prt", progress=False)
+    assert res.stdout.splitlines() == [f"print file written: {out}",
+                                       f"plot-data file written: {out.with_suffix('.hist.csv')}",
+                                       f"results written: {out.with_suffix('.nc')} (netCDF; docs/results.md)"]
+    assert out.read_bytes() == api.print_path.read_bytes()
+    assert out.with_suffix(".hist.csv").read_bytes() == api.history_path.read_bytes()
+    cli_nc, api_nc = out.with_suffix(".nc").read_bytes(), api.results_path.read_bytes()
+    assert len(cli_nc) == len(api_nc) > 1000
+    import xarray as xr
+
+    with xr.open_dataset(out.with_suffix(".nc")) as a, xr.open_dataset(api.results_path) as b:
+        assert a.equals(b)
+    bad = subprocess.run([sys.executable, "-m", "pyadore", "run", str(tmp_path / "nope.inp"), "-o",
+                          str(tmp_path / "n.prt")], capture_output=True, text=True, timeout=600)
+    assert bad.returncode == 1 and "pyadore: error:" in bad.stderr
+
+
 def test_sweep_takes_a_deck_object_and_a_range(tmp_path):
     deck = read_deck(RADIAL)
     deck.set("applied_force_z", 2000.0)
