@@ -48,6 +48,41 @@ def _alive(pid: int) -> bool:
     return state not in (b"Z", b"X")
 
 
+def _wait_for(proc, timeout: float | None, what: str):
+    """Wait until ``proc`` (a :class:`_Forked` or :class:`_Child`) has ended: blocked on a
+    descriptor of its pid (Linux's pidfd, readable once the process has ended) rather than
+    polled, so that the sweep's end - its workers', then its fork server's exit - is seen at
+    once, not at the next of 1 ms polls (docs/sweeps.md, "Scaling"); polled where there is no
+    pidfd.  Its returncode; subprocess.TimeoutExpired after ``timeout`` s."""
+    deadline = None if timeout is None else time.monotonic() + timeout
+    fd = None
+    if proc.pid is not None and hasattr(os, "pidfd_open"):
+        try:
+            fd = os.pidfd_open(proc.pid)
+        except OSError:  # ended and reaped already (poll says so), or no pidfd in this kernel
+            fd = None
+    try:
+        while proc.pid is not None and proc.poll() is None:
+            left = None if deadline is None else deadline - time.monotonic()
+            if left is not None and left <= 0:
+                import subprocess
+
+                raise subprocess.TimeoutExpired(f"{what} {proc.pid}", timeout)
+            if fd is not None:
+                import select
+
+                select.select([fd], [], [], left)
+                if proc.poll() is None:  # readable, yet not seen ended: the state lags; poll on
+                    os.close(fd)
+                    fd = None
+            else:
+                time.sleep(0.001)
+    finally:
+        if fd is not None:
+            os.close(fd)
+    return proc.returncode
+
+
 class _Forked:
     """A worker forked by the first worker of its group (:mod:`.worker`): not a child of this
     process, so known by its pid (from its ready line) and polled through /proc."""
@@ -71,14 +106,7 @@ class _Forked:
                 pass
 
     def wait(self, timeout: float | None = None):
-        deadline = None if timeout is None else time.monotonic() + timeout
-        while self.pid is not None and self.poll() is None:
-            if deadline is not None and time.monotonic() > deadline:
-                import subprocess
-
-                raise subprocess.TimeoutExpired(f"worker {self.pid}", timeout)
-            time.sleep(0.001)
-        return self.returncode
+        return _wait_for(self, timeout, "worker")
 
 
 class _Child:
@@ -101,14 +129,7 @@ class _Child:
         return self.returncode
 
     def wait(self, timeout: float | None = None):
-        deadline = None if timeout is None else time.monotonic() + timeout
-        while self.poll() is None:
-            if deadline is not None and time.monotonic() > deadline:
-                import subprocess
-
-                raise subprocess.TimeoutExpired(f"fork server {self.pid}", timeout)
-            time.sleep(0.001)
-        return self.returncode
+        return _wait_for(self, timeout, "fork server")
 
     def kill(self) -> None:
         import signal

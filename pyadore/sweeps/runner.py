@@ -222,14 +222,16 @@ class _Sweep:
         if since >= min(MANIFEST_INTERVAL, MANIFEST_COST_FACTOR * self._manifest_cost):
             self.write_manifest(durable=False)
 
-    def write_manifest(self, durable: bool = True) -> None:
+    def write_manifest(self, durable: bool = True, summary: bool = False) -> None:
         """Write manifest.json - every case with its parameters, status, duration and error -
         then the events.log lines of the cases finished since the last one.  ``durable``: flushed
         to the disk first (fsync: the sweep's start and end); the rewrites while the cases run
         are progress (a resume reads each case's result.json, never the manifest) and skip the
         fsync, as events.log's appends do: about 0.6 ms of the client's CPU a case, which
         competes with the workers (docs/sweeps.md, "Scaling").  Whole or absent all the same:
-        written atomically."""
+        written atomically.  ``summary`` (the sweep's end, :meth:`write_end`): summary.csv is
+        written with it, both flushed at the same time (:func:`store.write_atomic_many`), the
+        manifest renamed first."""
         self._manifest_written = time.monotonic()
         lines = []
         counts: dict[str, int] = {}
@@ -243,8 +245,12 @@ class _Sweep:
                 cached = self._manifest_lines[case.case_id] = (e, json.dumps(row), row["status"])
             lines.append(cached[1])
             counts[cached[2]] = counts.get(cached[2], 0) + 1
-        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, lines),
-                           durable=durable)
+        text = _manifest_text(self.definition, _now(), counts, lines)
+        if summary:
+            store.write_atomic_many([(self.root / store.MANIFEST, text),
+                                     (self.root / store.SUMMARY, summary_csv(*self.summary_rows()))])
+        else:
+            store.write_atomic(self.root / store.MANIFEST, text, durable=durable)
         if self._events:
             store.append_event(self.root, "\n".join(self._events))
             self._events = []
@@ -274,6 +280,11 @@ class _Sweep:
     def write_summary(self) -> None:
         """Write summary.csv (:func:`summary_csv`: pandas' text, without pandas)."""
         store.write_atomic(self.root / store.SUMMARY, summary_csv(*self.summary_rows()))
+
+    def write_end(self) -> None:
+        """The sweep's end: manifest.json, then summary.csv, flushed to the disk together
+        (:meth:`write_manifest`), then the events of the cases the manifest added."""
+        self.write_manifest(summary=True)
 
     def status_counts(self) -> dict[str, int]:
         """How many cases have each status, the most frequent first (as pandas' value_counts)."""
@@ -498,8 +509,7 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
     finally:
         if bar is not None:
             bar.close()
-        run.write_manifest()
-        run.write_summary()
+        run.write_end()
     return run
 
 
