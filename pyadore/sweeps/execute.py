@@ -271,12 +271,16 @@ class _Worker:
 
     def serve(self, jobs, results, once: bool = False) -> None:
         """Run jobs from the queue ``jobs`` until a None; each result, then a None, to ``results``.
-        After :meth:`kill` (the sweep was interrupted) it ends quietly: the process it was
-        waiting on is gone on purpose, not a crash to report, and none is started again.
-        ``once`` (a pool of one sweep): at the None the worker is told to end (its job channel
-        closed), so it exits while the client records the last results."""
+        A result's next job is written to the worker before the result is decoded and handed
+        over (the worker idles only while its result and the next job cross the pipes, not
+        while this thread decodes the result and the client's thread takes it; docs/sweeps.md,
+        "Scaling").  After :meth:`kill` (the sweep was interrupted) it ends quietly: the
+        process it was waiting on is gone on purpose, not a crash to report, and none is
+        started again.  ``once`` (a pool of one sweep): at the None the worker is told to end
+        (its job channel closed), so it exits while the client records the last results."""
+        job = jobs.get()
+        sent = False  # whether ``job`` went to the worker already, ahead of the previous result
         while True:
-            job = jobs.get()
             if job is None and once and self.ready:
                 try:
                     self.jobs.close()
@@ -284,17 +288,19 @@ class _Worker:
                     pass
             if job is None or self.interrupted.is_set():
                 break
-            proc = None
+            proc = self.proc if sent else None
             try:
-                self.start()
-                proc = self.proc  # kill() may set self.proc to None from the client's thread
-                if not self.ready:
-                    self._await_ready()
-                self.jobs.write(json.dumps(list(job)) + "\n")
-                self.jobs.flush()
+                if not sent:
+                    self.start()
+                    proc = self.proc  # kill() may set self.proc to None from the client's thread
+                    if not self.ready:
+                        self._await_ready()
+                    self.jobs.write(json.dumps(list(job)) + "\n")
+                    self.jobs.flush()
                 line = self.results.readline()
             except (OSError, ValueError, AttributeError, KeyError, TypeError):
                 line = ""
+            sent = False
             if self.interrupted.is_set():
                 break
             if not line:  # the process died on this job: report it, go on with a fresh one
@@ -303,7 +309,16 @@ class _Worker:
                                           f"{'unknown' if code is None or code == -1 else code}): a crash of "
                                           f"the engine"))
                 self.stop()
+                job = jobs.get()
                 continue
+            job = jobs.get()  # the next job, to the worker at once (a failed write: sent with a fresh one)
+            if job is not None and not self.interrupted.is_set():
+                try:
+                    self.jobs.write(json.dumps(list(job)) + "\n")
+                    self.jobs.flush()
+                    sent = True
+                except (OSError, ValueError, AttributeError):
+                    sent = False
             results.put(json.loads(line))
         results.put(None)
 
