@@ -54,9 +54,9 @@ def _exit_now(code) -> None:
     """End the ``pyadore sweep`` or ``pyadore run`` command with exit status ``code`` (as
     SystemExit takes it) once its output is flushed, without the interpreter's clean-up:
     freeing the modules (a sweep's client: about 0.06 s of CPU; a run, which has numpy and the
-    engine extension loaded: 35-65 ms of CPU and 55-130 ms of wall at load 3-4, docs/sweeps.md
-    "Start-up") is time the user waits for and nothing else.  Every file is written and closed
-    by then: a sweep's each atomically, its workers and their fork server ended; a run's print
+    engine extension loaded: 35-65 ms of CPU and 55-130 ms of wall at load 3-4; docs/sweeps.md,
+    "Scaling, eighteenth session") is time the user waits for and nothing else.  Every file is
+    written and closed by then: a sweep's each atomically, its workers and their fork server ended; a run's print
     read back by the API once the engine closed it (the engine writes nothing to the standard
     streams: its messages come back as notes), its plot-data and netCDF files written and
     closed.  pyadore registers no atexit handler.  A stop signal or an unexpected exception

@@ -288,7 +288,7 @@ def test_run_steps_0_imports_no_table_or_figure_library(ball_deck, tmp_path):
 
 def test_run_command_ends_without_the_interpreter_clean_up_with_its_files_complete(short_ball_deck, tmp_path):
     """`pyadore run` ends by os._exit once its output is flushed (pyadore/__main__.py,
-    _exit_now; docs/sweeps.md "Start-up"): its print, plot-data and netCDF files are those
+    _exit_now; docs/sweeps.md "Scaling, eighteenth session"): its print, plot-data and netCDF files are those
     of the same run through the API, byte for byte, its stdout lines are all there through a
     pipe, and a refused run still exits 1 with its message."""
     import subprocess
