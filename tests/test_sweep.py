@@ -567,6 +567,43 @@ def test_write_atomic_many_flushes_every_file_before_any_replaces_its_old_one(tm
     assert sorted(p.name for p in tmp_path.iterdir()) == ["manifest.json", "summary.csv"]
 
 
+def test_the_path_to_the_first_job_flushes_nothing_and_sweep_json_precedes_every_case(tmp_path, monkeypatch):
+    """The sweep's start writes sweep.json, the pending manifest and the case decks without
+    fsync (the path to the first job is serial; docs/sweeps.md, "Scaling, eighteenth
+    session"); sweep.json is flushed before the first case's print, every print before its
+    result.json replaces anything, and the end flushes the manifest and the summary."""
+    from pyadore.deck import parse_text
+    from pyadore.sweeps import store
+    from pyadore.sweeps.runner import _Sweep
+
+    flushed: list = []
+    fsync = store.os.fsync
+
+    def logged(fd):
+        fsync(fd)
+        flushed.append(Path(os.readlink(f"/proc/self/fd/{fd}")).name)
+
+    monkeypatch.setattr(store.os, "fsync", logged)
+    text = ROLLER.read_text()
+    base, _ = parse_text(text, str(ROLLER))
+    varied = [parse_vary("applied_force_z=500,750", base)]
+    cases = make_cases(varied)
+    run = _Sweep(ROLLER, text, varied, cases, tmp_path / "s", 0, False, {}, base_deck=base)
+    run.open_folder()
+    run.load_finished()
+    run.write_manifest(durable=False)
+    for case in cases:
+        run.prepare(case)
+    assert flushed == [] and (tmp_path / "s" / "sweep.json").is_file()
+    run.record(cases[0], "ok", duration=0.1, worker="w:1", print_text="print 1")
+    run.record(cases[1], "ok", duration=0.1, worker="w:1", print_text="print 2")
+    assert [f.split(".tmp-")[0] for f in flushed] == ["sweep.json", ".case.prt", ".case.prt"]
+    flushed.clear()
+    run.write_end()
+    assert sorted(f.split(".tmp-")[0] for f in flushed) == [".manifest.json", ".summary.csv"]
+    assert json.loads((tmp_path / "s" / "sweep.json").read_text()) == run.definition
+
+
 def test_the_pool_waits_for_its_processes_on_their_pidfd(monkeypatch):
     """The pool's end waits for its workers and their fork server blocked on a descriptor of
     each pid (execute._wait_for), not by 1 ms polls: a child that sleeps 0.3 s is seen ended

@@ -99,6 +99,7 @@ class _Sweep:
         self._events: list[str] = []   # events.log lines of cases the manifest does not list yet
         #: case id -> (its entry when encoded, or None while pending; its manifest line; its status)
         self._manifest_lines: dict[str, tuple] = {}
+        self._unflushed: Path | None = None  # sweep.json, written and not flushed yet
 
     # -- folder -------------------------------------------------------------------------------
     def case_dir(self, case_id: str) -> Path:
@@ -126,7 +127,18 @@ class _Sweep:
                 raise SweepError(f"{self.root} holds another sweep (of {old.get('deck')}; it differs in {what}): "
                                  f"rerun the same command to resume it, or give another -o DIR")
         else:
-            store.write_atomic(path, json.dumps(self.definition, indent=1))
+            # flushed to the disk before the first case is recorded (record), not here: the path
+            # to the first job is the sweep's serial start (docs/sweeps.md, "Scaling, eighteenth
+            # session"); a case file is never durable before the folder's definition
+            store.write_atomic(path, json.dumps(self.definition, indent=1), durable=False)
+            self._unflushed = path
+
+    def flush_definition(self) -> None:
+        """Flush sweep.json to the disk if :meth:`open_folder` wrote it (without fsync): before
+        the first case's files are recorded, or at the end."""
+        if self._unflushed is not None:
+            store.flush_file(self._unflushed)
+            self._unflushed = None
 
     def load_finished(self) -> None:
         """Take every case already finished (``ok`` with its print) from the folder.  A case
@@ -170,6 +182,7 @@ class _Sweep:
                     continue
                 entry = self._entry(case, "ok", "", None, [], "", results)
                 entry["recovered"] = True
+                self.flush_definition()
                 store.write_atomic(cdir / store.CASE_RESULT, json.dumps(entry, indent=1))
                 self.entries[case.case_id] = entry
 
@@ -189,6 +202,7 @@ class _Sweep:
         (MANIFEST_INTERVAL)."""
         import base64
 
+        self.flush_definition()
         cdir = self.case_dir(case.case_id)
         prt = cdir / store.CASE_PRINT
         kept = {store.CASE_HISTORY: history_text if status == "ok" else None,
@@ -283,7 +297,9 @@ class _Sweep:
 
     def write_end(self) -> None:
         """The sweep's end: manifest.json, then summary.csv, flushed to the disk together
-        (:meth:`write_manifest`), then the events of the cases the manifest added."""
+        (:meth:`write_manifest`), then the events of the cases the manifest added; sweep.json
+        flushed first if no case flushed it."""
+        self.flush_definition()
         self.write_manifest(summary=True)
 
     def status_counts(self) -> dict[str, int]:
@@ -501,7 +517,7 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
             yield (case.case_id, text, steps, options)
 
     try:
-        run.write_manifest()
+        run.write_manifest(durable=False)  # every case pending; flushed with the summary at the end
         if scheduler is not None:
             run_dask(jobs(), scheduler, on_result)
         else:

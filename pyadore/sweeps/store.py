@@ -31,7 +31,7 @@ from pathlib import Path
 
 __all__ = ["SWEEP_FILE", "MANIFEST", "SUMMARY", "EVENTS", "CASES", "CASE_DECK", "CASE_PRINT", "CASE_HISTORY",
            "CASE_RESULTS", "CASE_RESULT", "CASE_INCOMPLETE", "CASE_INCOMPLETE_HISTORY", "write_atomic", "write_atomic_many",
-           "read_json", "remove_stale_temporaries", "append_event"]
+           "flush_file", "read_json", "remove_stale_temporaries", "append_event"]
 
 SWEEP_FILE = "sweep.json"
 MANIFEST = "manifest.json"
@@ -160,6 +160,19 @@ def _create_temporary(path: Path) -> tuple[int, str]:
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}{_TMP_TAG}", dir=folder)
     os.chmod(tmp, _MODE)
     return fd, tmp
+
+
+def flush_file(path: Path) -> None:
+    """Flush ``path``'s content to the disk (fsync), e.g. a file :func:`write_atomic` wrote
+    with ``durable=False``.  A file that is gone is left so."""
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_CLOEXEC", 0))
+    except FileNotFoundError:
+        return
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
 
 
 def read_json(path: Path):
