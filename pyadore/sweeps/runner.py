@@ -239,7 +239,7 @@ class _Sweep:
     def write_manifest(self, durable: bool = True, summary: bool = False) -> None:
         """Write manifest.json - every case with its parameters, status, duration and error -
         then the events.log lines of the cases finished since the last one.  ``durable``: flushed
-        to the disk first (fsync: the sweep's start and end); the rewrites while the cases run
+        to the disk first (fsync); the rewrites while the cases run, and the pending one at the start,
         are progress (a resume reads each case's result.json, never the manifest) and skip the
         fsync, as events.log's appends do: about 0.6 ms of the client's CPU a case, which
         competes with the workers (docs/sweeps.md, "Scaling").  Whole or absent all the same:
