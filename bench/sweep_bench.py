@@ -87,7 +87,7 @@ def cpu_budget(trace: dict, wall: float, cpu: float, launch: float) -> dict:
         "client: interpreter start (to pyadore's entry)": cpu0,
         "client: launch to pyadore's entry, wall (with the editable install's ninja check)": t0 - launch,
         "client: entry to first job (click, options, runner, deck, first case deck)": first_cpu - cpu0,
-        "fork server: boot (numpy, engine, deck checker, print reader)": boot.get("boot_cpu_s", float("nan")),
+        "fork server: boot (the engine, deck checker, print reader)": boot.get("boot_cpu_s", float("nan")),
         "cases: sum of their CPU": sum(cases),
         "cases: mean": statistics.mean(cases),
         "cases: longest": max(cases),
@@ -180,7 +180,7 @@ def bench_budget(workers=(1, 2), repeats: int = 2) -> dict:
         # the client's CPU that competes with two workers: every case's records, and the case decks
         # it prepares after the first job only for what exceeds its idle wait for the fork server's
         # boot (its core is free until then: the boot is the longer of the two start paths)
-        idle = max(0.0, b["fork server: boot (numpy, engine, deck checker, print reader)"]
+        idle = max(0.0, b["fork server: boot (the engine, deck checker, print reader)"]
                    - b["client: entry to first job (click, options, runner, deck, first case deck)"])
         c = (b["client: first result to last recorded (records, manifest), a case"] * 32
              + max(0.0, b["client: first job to first result (the other case decks, the threads)"] - idle))

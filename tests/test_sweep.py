@@ -526,6 +526,18 @@ def test_write_atomic_writes_the_whole_file_or_nothing(tmp_path, monkeypatch):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["f.json"]
 
 
+def _roller_sweep(folder: Path, vary: str):
+    """A sweep's state (runner._Sweep, no folder made yet) over Appendix D with one --vary, and its cases."""
+    from pyadore.deck import parse_text
+    from pyadore.sweeps.runner import _Sweep
+
+    text = ROLLER.read_text()
+    base, _ = parse_text(text, str(ROLLER))
+    varied = [parse_vary(vary, base)]
+    cases = make_cases(varied)
+    return _Sweep(ROLLER, text, varied, cases, folder, 0, False, {}, base_deck=base), cases
+
+
 def test_write_atomic_many_flushes_every_file_before_any_replaces_its_old_one(tmp_path, monkeypatch):
     """store.write_atomic_many (the sweep's end: manifest.json and summary.csv flushed at the
     same time): the exact bytes of each, every file flushed (fsync) before the first rename,
@@ -572,9 +584,7 @@ def test_the_path_to_the_first_job_flushes_nothing_and_sweep_json_precedes_every
     fsync (the path to the first job is serial; docs/sweeps.md, "Scaling, eighteenth
     session"); sweep.json is flushed before the first case's print, every print before its
     result.json replaces anything, and the end flushes the manifest and the summary."""
-    from pyadore.deck import parse_text
     from pyadore.sweeps import store
-    from pyadore.sweeps.runner import _Sweep
 
     flushed: list = []
     fsync = store.os.fsync
@@ -584,11 +594,7 @@ def test_the_path_to_the_first_job_flushes_nothing_and_sweep_json_precedes_every
         flushed.append(Path(os.readlink(f"/proc/self/fd/{fd}")).name)
 
     monkeypatch.setattr(store.os, "fsync", logged)
-    text = ROLLER.read_text()
-    base, _ = parse_text(text, str(ROLLER))
-    varied = [parse_vary("applied_force_z=500,750", base)]
-    cases = make_cases(varied)
-    run = _Sweep(ROLLER, text, varied, cases, tmp_path / "s", 0, False, {}, base_deck=base)
+    run, cases = _roller_sweep(tmp_path / "s", "applied_force_z=500,750")
     run.open_folder()
     run.load_finished()
     run.write_manifest(durable=False)
@@ -630,14 +636,7 @@ def test_the_manifest_lists_every_case_as_encoded_when_it_last_changed(tmp_path)
     """manifest.json's case lines are encoded once per entry (the client rewrites it after the
     cases while the workers run; docs/sweeps.md, "Scaling"): its text after cases finish,
     finish again (a new entry) and stay pending is the text of every case's current entry."""
-    from pyadore.deck import parse_text
-    from pyadore.sweeps.runner import _Sweep
-
-    text = ROLLER.read_text()
-    base, _ = parse_text(text, str(ROLLER))
-    varied = [parse_vary("applied_force_z=500,750,1000", base)]
-    cases = make_cases(varied)
-    run = _Sweep(ROLLER, text, varied, cases, tmp_path / "s", 0, False, {}, base_deck=base)
+    run, cases = _roller_sweep(tmp_path / "s", "applied_force_z=500,750,1000")
     run.open_folder()
     for case in cases:
         assert run.prepare(case) is not None  # its folder and deck
