@@ -34,6 +34,12 @@ _REAL = ctypes.POINTER(ctypes.c_double)
 _PROGRESS = ctypes.CFUNCTYPE(None, _INT, _INT, _REAL, _REAL, _INT)
 
 
+def _blank(n: int):
+    """A character result's buffer of ``n`` blanks (what a routine leaves unwritten reads as
+    blank, as Fortran's own blank padding does)."""
+    return ctypes.create_string_buffer(b" " * n, n)
+
+
 class LiteEngine:
     """The four routines, with the f2py module's argument lists and results (character
     results as the bytes the routine wrote, blank-padded, as f2py gives them)."""
@@ -60,7 +66,7 @@ class LiteEngine:
         """Run a deck file, write its print: (integrated, history_rows, note, status, message)."""
         deck, out, opts = os.fsencode(deck_path), os.fsencode(out_path), options.encode("utf-8")
         integrated, rows, status = ctypes.c_int(), ctypes.c_int(), ctypes.c_int()
-        note, message = ctypes.create_string_buffer(_NOTE), ctypes.create_string_buffer(_MESSAGE)
+        note, message = _blank(_NOTE), _blank(_MESSAGE)
         self._run(deck, out, opts, ctypes.byref(integrated), ctypes.byref(rows), note, ctypes.byref(status), message,
                   len(deck), len(out), len(opts), _NOTE, _MESSAGE)
         return integrated.value, rows.value, note.raw, status.value, message.raw
@@ -83,7 +89,7 @@ class LiteEngine:
         callback = _PROGRESS(step)
         deck, out, opts = os.fsencode(deck_path), os.fsencode(out_path), options.encode("utf-8")
         integrated, rows, status = ctypes.c_int(), ctypes.c_int(), ctypes.c_int()
-        note, message = ctypes.create_string_buffer(_NOTE), ctypes.create_string_buffer(_MESSAGE)
+        note, message = _blank(_NOTE), _blank(_MESSAGE)
         self._run_progress(deck, out, opts, ctypes.byref(integrated), ctypes.byref(rows), note, ctypes.byref(status),
                            message, callback, len(deck), len(out), len(opts), _NOTE, _MESSAGE)
         if raised:
@@ -97,14 +103,14 @@ class LiteEngine:
         flags = (ctypes.c_int * k)(*[int(h) for h in have])
         fields, warning = (ctypes.c_int * nmax)(), (ctypes.c_int * nmax)()
         n, status = ctypes.c_int(), ctypes.c_int()
-        messages, message = ctypes.create_string_buffer(_MESSAGES), ctypes.create_string_buffer(_CHECK_MESSAGE)
+        messages, message = _blank(_MESSAGES), _blank(_CHECK_MESSAGE)
         self._checks(ctypes.byref(ctypes.c_int(k)), vals, flags, ctypes.byref(ctypes.c_int(nmax)), ctypes.byref(n),
                      fields, warning, messages, ctypes.byref(status), message, _MESSAGES, _CHECK_MESSAGE)
         return n.value, list(fields), list(warning), messages.raw, status.value, message.raw
 
     def adore_deck_cross_check_names(self, what: int) -> bytes:
         """The fields the cross-field checks read (1) or their rules (2), one a line."""
-        text = ctypes.create_string_buffer(_NAMES)
+        text = _blank(_NAMES)
         self._names(ctypes.byref(ctypes.c_int(what)), text, _NAMES)
         return text.raw
 
