@@ -189,7 +189,7 @@ contains
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
       real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2, ue
-      real(wp) :: umax
+      real(wp) :: umax, ce, se, u_end(2)
       real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
       real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
@@ -221,11 +221,21 @@ contains
          cy(1:nq) = cos(0.25_wp*pi*(1.0_wp + yg(1:nq)))
          wy(1:nq) = 2.0_wp*0.25_wp*pi*wy(1:nq)*cy(1:nq)
       end if
+      ! the slips at the ends s = -a, a (contact_slip, cross_slip there): cos and sin of
+      ! alpha -+ a / rho by angle addition from those of alpha and a / rho (one sincos
+      ! instead of four; equal to round-off)
+      ca = cos(c%alpha)
+      sa = sin(c%alpha)
+      x = c%a/c%rho
+      ce = cos(x)
+      se = sin(x)
+      u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
+              - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
       if (present(transverse)) then
-         t%max_slip = max(hypot(contact_slip(c, -c%a), cross_slip(transverse, -c%a/c%rho)), &
-                          hypot(contact_slip(c, c%a), cross_slip(transverse, c%a/c%rho)))
+         t%max_slip = max(hypot(u_end(1), transverse(1) + transverse(2)*ce - transverse(3)*se), &
+                          hypot(u_end(2), transverse(1) + transverse(2)*ce + transverse(3)*se))
       else
-         t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
+         t%max_slip = max(abs(u_end(1)), abs(u_end(2)))
       end if
       ! sub-zones in phi: a zone that ends at a pure-rolling point is graded there (the
       ! film's shear saturates within |u| ~ 1 / (zeta E) of it); one between two rolling
@@ -295,8 +305,6 @@ contains
       ! cos, sin of psi = s / rho (|psi| < a / rho < 1) by their Taylor series (Horner in psi**2
       ! to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1),
       ! and of the angle theta = alpha + psi by angle addition: multiply-adds, no sin/cos calls
-      ca = cos(c%alpha)
-      sa = sin(c%alpha)
       do j = 1, n
          x = phi(j)
          x2 = x*x
