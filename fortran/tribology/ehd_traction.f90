@@ -221,22 +221,6 @@ contains
          cy(1:nq) = cos(0.25_wp*pi*(1.0_wp + yg(1:nq)))
          wy(1:nq) = 2.0_wp*0.25_wp*pi*wy(1:nq)*cy(1:nq)
       end if
-      ! the slips at the ends s = -a, a (contact_slip, cross_slip there): cos and sin of
-      ! alpha -+ a / rho by angle addition from those of alpha and a / rho (one sincos
-      ! instead of four; equal to round-off)
-      ca = cos(c%alpha)
-      sa = sin(c%alpha)
-      x = c%a/c%rho
-      ce = cos(x)
-      se = sin(x)
-      u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
-              - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
-      if (present(transverse)) then
-         t%max_slip = max(hypot(u_end(1), transverse(1) + transverse(2)*ce - transverse(3)*se), &
-                          hypot(u_end(2), transverse(1) + transverse(2)*ce + transverse(3)*se))
-      else
-         t%max_slip = max(abs(u_end(1)), abs(u_end(2)))
-      end if
       ! sub-zones in phi: a zone that ends at a pure-rolling point is graded there (the
       ! film's shear saturates within |u| ~ 1 / (zeta E) of it); one between two rolling
       ! points is halved first
@@ -305,6 +289,22 @@ contains
       ! cos, sin of psi = s / rho (|psi| < a / rho < 1) by their Taylor series (Horner in psi**2
       ! to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1),
       ! and of the angle theta = alpha + psi by angle addition: multiply-adds, no sin/cos calls
+      ca = cos(c%alpha)
+      sa = sin(c%alpha)
+      ! the slips at the ends s = -a, a (contact_slip, cross_slip there): cos and sin of
+      ! alpha -+ a / rho by angle addition from those of alpha and a / rho (one sincos
+      ! instead of four; equal to round-off).  Here, after the loop of sin(phi): computed
+      ! before it, gcc no longer vectorises that loop ("latch block not empty")
+      ce = cos(c%a/c%rho)
+      se = sin(c%a/c%rho)
+      u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
+              - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
+      if (present(transverse)) then
+         t%max_slip = max(hypot(u_end(1), transverse(1) + transverse(2)*ce - transverse(3)*se), &
+                          hypot(u_end(2), transverse(1) + transverse(2)*ce + transverse(3)*se))
+      else
+         t%max_slip = max(abs(u_end(1)), abs(u_end(2)))
+      end if
       do j = 1, n
          x = phi(j)
          x2 = x*x
