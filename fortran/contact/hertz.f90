@@ -16,8 +16,19 @@ module adore_contact_hertz
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
    use adore_core_elliptic, only: elliptic_ke
+   use, intrinsic :: iso_c_binding, only: c_double
    implicit none
    private
+
+   interface
+      !> C99's cube root (libm), within 1 ulp; x**(1.0_wp/3.0_wp) is libm's pow, about three
+      !> times its instructions (issue #30)
+      pure function cbrt(x) result(y) bind(c, name="cbrt")
+         import :: c_double
+         real(c_double), value, intent(in) :: x
+         real(c_double) :: y
+      end function cbrt
+   end interface
 
    public :: hertz_geometry_t, hertz_contact_t
    public :: hertz_geometry, hertz_contact, hertz_load, curvature_difference
@@ -123,7 +134,7 @@ contains
 
       k2 = geo%kappa**2
       ! one cube root: b* = a* / kappa, delta* = (2 K / pi) / a*
-      geo%a_star = (2.0_wp*k2*e/pi)**(1.0_wp/3.0_wp)
+      geo%a_star = cbrt(2.0_wp*k2*e/pi)
       geo%b_star = geo%a_star/geo%kappa
       geo%delta_star = (2.0_wp*k/pi)/geo%a_star
       ! delta = delta* (3 Q c / (2 S))**(2/3) S/2  =>  Q = K_n delta**1.5 (y**1.5 = y sqrt(y))
@@ -219,7 +230,7 @@ contains
 
       c%load = max(q, 0.0_wp)
       if (c%load <= 0.0_wp) return
-      scale = (1.5_wp*c%load*geo%compliance/geo%curvature_sum)**(1.0_wp/3.0_wp)
+      scale = cbrt(1.5_wp*c%load*geo%compliance/geo%curvature_sum)
       c%semi_major = geo%a_star*scale
       c%semi_minor = geo%b_star*scale
       c%deflection = geo%delta_star*scale**2*0.5_wp*geo%curvature_sum
