@@ -34,7 +34,7 @@ module adore_tribology_ehd_traction
    private
 
    public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_strip_traction
-   public :: ehd_contact_traction_fast, ehd_contact_power
+   public :: ehd_contact_traction_fast, ehd_contact_power, series_sin
 
    !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
    !> zone in the angle phi of s = a sin(phi) along the major axis, and across each strip
@@ -277,10 +277,11 @@ contains
             n = n + m
          end associate
       end do
-      ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, log, exp, one
-      ! call each; cos and sin of s / rho by their series), the sums below in node order
+      ! the strips at the nodes: loops the compiler vectorises (libmvec's log and exp, one call
+      ! each; sin(phi) and cos, sin of s / rho by their series), the sums below in node order.
+      ! sin(phi) by taylor_sin (ten multiply-adds a node instead of libmvec's sin; issue #30)
       do j = 1, n
-         sp = sin(phi(j))                                     ! sin(phi) = s / a
+         sp = taylor_sin(phi(j))                              ! sin(phi) = s / a
          cphi(j) = sqrt((1.0_wp - sp)*(1.0_wp + sp))          ! cos(phi) >= 0 on [-pi/2, pi/2]
          phi(j) = c%a*sp/c%rho                                ! now the angle psi = s / rho
          wn(j) = wn(j)*c%a*cphi(j)                            ! ds = a cos(phi) dphi
@@ -511,6 +512,28 @@ contains
       end function strip_rule_integral
 
    end subroutine ehd_contact_traction_fast
+
+   !> sin(x) (-) for |x| <= pi/2 (rad) as the fast traction computes it at every node
+   !> (taylor_sin; public for its test).
+   elemental real(wp) function series_sin(x) result(y)
+      real(wp), intent(in) :: x
+      y = taylor_sin(x)
+   end function series_sin
+
+   !> sin(x) (-) for |x| <= pi/2 (rad) by its Taylor series to x**21 / 21! (Horner in x**2;
+   !> truncation below (pi/2)**23 / 23! < 1.2e-18): ten multiply-adds, which gcc inlines and
+   !> vectorises (private: a public procedure is not inlined under -fPIC), for the fast
+   !> traction's sin(phi) at every node (issue #30); within 2.3e-16 of libm's sin there
+   !> (test_traction_fast).
+   elemental real(wp) function taylor_sin(x) result(y)
+      real(wp), intent(in) :: x
+      integer :: q_
+      real(wp), parameter :: C(10) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 2.0_wp), q_ = 1, 10)]
+      real(wp) :: x2
+      x2 = x*x
+      y = x + x*x2*(C(1) + x2*(C(2) + x2*(C(3) + x2*(C(4) + x2*(C(5) + x2*(C(6) + x2*(C(7) + x2*(C(8) &
+          + x2*(C(9) + x2*C(10))))))))))
+   end function taylor_sin
 
    !> Power (W) of contact c with the EHD film: ehd_contact_traction's t%power, the same
    !> nodes and sums bit for bit, without the other integrals (the minimum-dissipation
