@@ -251,8 +251,10 @@ contains
       do z = 1, nsub
          associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => sub_rule(z))
             m = merge(nm, nh, r == 1)
-            vmax = 0.0_wp                       ! a plain sub-zone (kp = 0): no asinh
-            if (kp > 0.0_wp) vmax = asinh(kp*abs(pf - pr))
+            ! vmax = asinh(kp |pf - pr|) by its logarithm (kp |pf - pr| <= 2 LAYER: add_graded),
+            ! equal to round-off where it is used (vmax > 1); a plain sub-zone (kp = 0): none
+            vmax = 0.0_wp
+            if (kp > 0.0_wp) vmax = log(kp*abs(pf - pr) + sqrt(1.0_wp + (kp*abs(pf - pr))**2))
             if (kp > 0.0_wp .and. vmax > 1.0_wp) then
                ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2;
                ! the Gauss nodes pair up (x_(m+1-j) = -x_j), so e**v of the upper half is
