@@ -228,8 +228,11 @@ contains
       s_last = huge(1.0_wp)
       k_last = 0.0_wp
       do z = 1, nz
-         lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
-         hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
+         ! the ends -a, a: asin(-1), asin(1) = -pi/2, pi/2 (libm's are the doubles nearest)
+         lo = -0.5_wp*pi
+         hi = 0.5_wp*pi
+         if (z > 1) lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
+         if (z < nz) hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
          if (z > 1 .and. z < nz) then
             call add_sub((lo + hi)*0.5_wp, lo, edges(z), 2)
             call add_sub((lo + hi)*0.5_wp, hi, edges(z + 1), 2)
