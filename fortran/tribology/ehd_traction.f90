@@ -207,7 +207,9 @@ contains
       nh = max(1, (nm + 1)/2)             ! a half of a zone between two rolling points
       call gauss_legendre(nm, xq(1:nm, 1), wq(1:nm, 1))
       call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
-      call contact_kinematics(c, t)
+      ca = cos(c%alpha)
+      sa = sin(c%alpha)
+      call contact_kinematics(c, t, [sa, ca])
       call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points, polar)
       p0 = 1.5_wp*c%load/(pi*c%a*b)
       call film_constants(rheo, h, amp, zeta)
@@ -295,8 +297,6 @@ contains
       ! cos, sin of psi = s / rho (|psi| < a / rho < 1) by their Taylor series (Horner in psi**2
       ! to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1),
       ! and of the angle theta = alpha + psi by angle addition: multiply-adds, no sin/cos calls
-      ca = cos(c%alpha)
-      sa = sin(c%alpha)
       ! the slips at the ends s = -a, a (contact_slip, cross_slip there): cos and sin of
       ! alpha -+ a / rho by angle addition from those of alpha and a / rho (no sincos
       ! instead of four; equal to round-off).  Here, after the loop of sin(phi): computed

@@ -116,13 +116,20 @@ contains
    end subroutine pure_rolling_points
 
    !> Centre kinematics (no traction): spin (rad/s), entraining speed (m/s), R_x (m),
-   !> spin/roll ratio and centre slip, filled into t.
-   pure subroutine contact_kinematics(c, t)
+   !> spin/roll ratio and centre slip, filled into t; sin_cos: sin and cos of the contact
+   !> angle when the caller has computed them.
+   pure subroutine contact_kinematics(c, t, sin_cos)
       type(ball_race_contact_t), intent(in) :: c
       type(contact_traction_t), intent(inout) :: t
+      !> [sin(c%alpha), cos(c%alpha)] when the caller has them (the same libm values)
+      real(wp), intent(in), optional :: sin_cos(2)
       real(wp) :: n(2), u_ball, u_race, r_race
 
-      n = c%side*[sin(c%alpha), cos(c%alpha)]
+      if (present(sin_cos)) then
+         n = c%side*sin_cos
+      else
+         n = c%side*[sin(c%alpha), cos(c%alpha)]
+      end if
       u_ball = c%rho*(c%omega(1)*n(2) - c%omega(2)*n(1))
       r_race = c%r_b + c%rho*n(2)
       u_race = c%race_speed*r_race
