@@ -29,7 +29,8 @@ module adore_tribology_ehd_traction
    use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
    use adore_tribology_ehd_elastic, only: elastic_strip_ratio
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
-                                   interior_extremum, contact_kinematics, rolling_zones, axis_nodes, cross_slip
+                                   interior_extremum, contact_kinematics, rolling_zones, axis_nodes, cross_slip, &
+                                  take_kinematics
    implicit none
    private
 
@@ -166,11 +167,12 @@ contains
    !> transverse (m/s), when given: the two-dimensional traction as ehd_contact_traction's
    !> (each strip's integral at the slip vector's |u|, its traction along (u, u_m) / |u|,
    !> t%cross_force), on the same nodes: the zones and their grading follow the pure-rolling
-   !> points of the rolling slip u(s), where the traction turns fastest.  A contact without
+   !> points of the rolling slip u(s), where the traction turns fastest.  kinematics, when
+   !> given: contact_kinematics(c) (its centre kinematics are taken from it).  A contact without
    !> pure-rolling point whose |u| dips inside (two rolling points merged or just apart, as
    !> under race control) is split and graded at the dip (slip_minimum): plain Gauss in phi
    !> missed that layer by up to 4e-3 of the force (docs/dynamics.md).
-   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse)
+   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse, kinematics)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
       real(wp), intent(in) :: h, b
@@ -178,6 +180,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: n_major, n_strip
       real(wp), intent(in), optional :: transverse(3)
+      !> contact_kinematics of c, when the caller has it (its fields are taken, not recomputed)
+      type(contact_traction_t), intent(in), optional :: kinematics
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
       integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
@@ -209,7 +213,11 @@ contains
       call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
       ca = cos(c%alpha)
       sa = sin(c%alpha)
-      call contact_kinematics(c, t, [sa, ca])
+      if (present(kinematics)) then
+         call take_kinematics(kinematics, t)
+      else
+         call contact_kinematics(c, t, [sa, ca])
+      end if
       call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points, polar)
       p0 = 1.5_wp*c%load/(pi*c%a*b)
       call film_constants(rheo, h, amp, zeta)

@@ -28,7 +28,8 @@ module adore_tribology_slip
 
    public :: ball_race_contact_t, contact_traction_t, SIDE_OUTER, SIDE_INNER
    public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
-             major_axis_nodes, print_slip_node, contact_power, rolling_zones, axis_nodes, cross_slip
+             major_axis_nodes, print_slip_node, contact_power, rolling_zones, axis_nodes, cross_slip, &
+             take_kinematics
 
 
    !> Integrated contact quantities.
@@ -141,6 +142,19 @@ contains
       t%spin_roll = 0.0_wp
       if (t%rolling_speed /= 0.0_wp) t%spin_roll = t%spin*t%rx/t%rolling_speed
    end subroutine contact_kinematics
+
+   !> The centre kinematics that contact_kinematics fills (centre slip, entraining speed,
+   !> spin, R_x, spin/roll), copied from k into t: for a caller that has them for the same
+   !> contact already.
+   pure subroutine take_kinematics(k, t)
+      type(contact_traction_t), intent(in) :: k
+      type(contact_traction_t), intent(inout) :: t
+      t%centre_slip = k%centre_slip
+      t%rolling_speed = k%rolling_speed
+      t%spin = k%spin
+      t%rx = k%rx
+      t%spin_roll = k%spin_roll
+   end subroutine take_kinematics
 
    !> Traction, power loss and kinematics of the contact (report eqs 1, 3, 4): traction
    !> law (the deck's curve or a traction-slip table, `adore_tribology_traction_law`), each zone between pure-rolling points
