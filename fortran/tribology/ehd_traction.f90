@@ -306,15 +306,11 @@ contains
       ! to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1),
       ! and of the angle theta = alpha + psi by angle addition: multiply-adds, no sin/cos calls
       ! the slips at the ends s = -a, a (contact_slip, cross_slip there): cos and sin of
-      ! alpha -+ a / rho by angle addition from those of alpha and a / rho (no sincos
+      ! alpha -+ a / rho by angle addition from those of alpha and a / rho (one sincos
       ! instead of four; equal to round-off).  Here, after the loop of sin(phi): computed
       ! before it, gcc no longer vectorises that loop ("latch block not empty")
-      x = c%a/c%rho             ! < 1: cos and sin by the long series of the nodes below
-      x2 = x*x
-      ce = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
-           + x2*(COS_C(6) + x2*(COS_C(7) + x2*(COS_C(8) + x2*COS_C(9)))))))))
-      se = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
-           + x2*(SIN_C(6) + x2*(SIN_C(7) + x2*SIN_C(8))))))))
+      ce = cos(c%a/c%rho)
+      se = sin(c%a/c%rho)
       u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
               - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
       if (present(transverse)) then
@@ -451,7 +447,7 @@ contains
       subroutine add_sub(pf, pr, s_r, rule)
          real(wp), intent(in) :: pf, pr, s_r
          integer, intent(in) :: rule
-         real(wp) :: th, dudx, cpr
+         real(wp) :: th, dudx
          if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) then
             call add_graded(pf, pr, 0.0_wp, rule)
             return
@@ -462,9 +458,7 @@ contains
             th = c%alpha + s_r/c%rho
             dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
             s_last = s_r
-            ! cos(pr) = sqrt(1 - (s_r / a)**2): pr = asin(s_r / a), the rolling point's phi
-            cpr = sqrt(max((1.0_wp - s_r/c%a)*(1.0_wp + s_r/c%a), 0.0_wp))
-            k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cpr)*c%a*cpr
+            k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr)
          end if
          call add_graded(pf, pr, k_last, rule)
       end subroutine add_sub
