@@ -207,8 +207,9 @@ def _startup_rows(exe):
     STARTUP_BUDGET, and the heavy modules the command imported (python -X importtime); the
     same for a first run with STARTUP_STEPS time steps in a fresh interpreter (it also writes
     the time history and the netCDF results: no xarray, pandas or scipy.io expected), and the
-    boot of a sweep worker (`python -m pyadore.sweeps.worker` with no job: interpreter,
-    numpy, the engine, the deck checker and print reader; docs/sweeps.md "Scaling").  The
+    boot of a sweep worker (`python -m pyadore.sweeps.worker` with no job: interpreter, the
+    engine's shared object without numpy (pyadore/_core/lite.py), the deck checker and print
+    reader; docs/sweeps.md "Scaling").  The
     commands alternate, so that a drift of the machine's speed does not favour one."""
     deck = DECKS[0]
     with tempfile.TemporaryDirectory() as tmp:

@@ -87,7 +87,7 @@ def cpu_budget(trace: dict, wall: float, cpu: float, launch: float) -> dict:
         "client: interpreter start (to pyadore's entry)": cpu0,
         "client: launch to pyadore's entry, wall (with the editable install's ninja check)": t0 - launch,
         "client: entry to first job (click, options, runner, deck, first case deck)": first_cpu - cpu0,
-        "fork server: boot (numpy, engine, deck checker, print reader)": boot.get("boot_cpu_s", float("nan")),
+        "fork server: boot (the engine, deck checker, print reader)": boot.get("boot_cpu_s", float("nan")),
         "cases: sum of their CPU": sum(cases),
         "cases: mean": statistics.mean(cases),
         "cases: longest": max(cases),
@@ -109,22 +109,70 @@ def cpu_budget(trace: dict, wall: float, cpu: float, launch: float) -> dict:
     return out
 
 
+def timeline(trace: dict, wall: float, launch: float) -> dict:
+    """Where the wall time of one traced cold sweep goes, worker by worker (bench/sweep_trace.py's
+    stamps; ``wall`` and ``launch`` from outside, s): the start (launch to each worker's first
+    case), the cases' wall time in each worker and their CPU time, the worker's idle time between
+    its cases (the result's way to the client and the next job's way back), the tail (the worker
+    that ends first idles until the other's last case ends) and the end (the last case's end to
+    the command's exit).  For the worker that ends last, start + cases + gaps + end = wall."""
+    res = trace["results"]
+    by: dict = {}
+    for r in res:
+        by.setdefault(r["worker"], []).append(r)
+    workers = []
+    for rs in by.values():
+        rs.sort(key=lambda r: r["timing"]["start"])
+        workers.append({
+            "first case starts": rs[0]["timing"]["start"] - launch,
+            "cases": len(rs),
+            "cases' wall": sum(r["timing"]["end"] - r["timing"]["start"] for r in rs),
+            "cases' CPU": sum(r["timing"]["cpu_s"] for r in rs),
+            "idle between cases": sum(b["timing"]["start"] - a["timing"]["end"] for a, b in zip(rs, rs[1:])),
+            "first case's CPU": rs[0]["timing"]["cpu_s"],
+            "last case ends": rs[-1]["timing"]["end"] - launch})
+    workers.sort(key=lambda w: w["last case ends"])
+    last = workers[-1]["last case ends"]
+    boot = trace["boot"][0] if trace["boot"] else {}
+    return {"workers": workers, "wall": wall,
+            "launch to entry": trace["main"][0] - launch,
+            "entry to first job (client)": trace["first_job"][0] - trace["main"][0],
+            "launch to boot's end (fork server)": boot.get("booted_at", float("nan")) - launch,
+            "tail (first worker idle at the end)": last - workers[0]["last case ends"],
+            "last case's end to summary written": trace["summary"][0] - launch - last,
+            "summary written to exit": wall - (trace["summary"][0] - launch)}
+
+
+def print_timeline(tl: dict, label: str = "") -> None:
+    """One traced sweep's timeline (:func:`timeline`) as a table, ms."""
+    ws = tl["workers"]
+    print(f"timeline of a traced cold sweep{label} (ms; wall {1000 * tl['wall']:.0f}):")
+    for k in ("launch to entry", "entry to first job (client)", "launch to boot's end (fork server)",
+              "tail (first worker idle at the end)", "last case's end to summary written", "summary written to exit"):
+        print(f"  {k:44s} {1000 * tl[k]:8.1f}")
+    for k in ws[0]:
+        print(f"  {'worker: ' + k:44s} " + " ".join(f"{(v if k == 'cases' else 1000 * v):8.1f}"
+                                                   for v in (w[k] for w in ws)))
+
+
 def bench_budget(workers=(1, 2), repeats: int = 2) -> dict:
     """Traced cold sweeps (least total CPU of ``repeats`` each) and the bound their CPU times put on
     the 2-over-1 speedup on two free cores: wall(1) = S + W, wall(2) = S + (W + C) / 2, S the serial
     CPU, W the cases' CPU, C the client's CPU during the cases (it competes with two workers, not
     with one)."""
-    rows = {}
+    rows, lines = {}, {}
     with tempfile.TemporaryDirectory() as tmp:
         for r in range(repeats):
             for n in workers:
                 trace = Path(tmp) / f"trace-{n}-{r}.json"
                 wall, cpu, launch = _cli_sweep(n, Path(tmp) / f"t{n}-{r}", trace=trace)
-                b = cpu_budget(json.loads(trace.read_text()), wall, cpu, launch)
+                marks = json.loads(trace.read_text())
+                b = cpu_budget(marks, wall, cpu, launch)
                 if n not in rows or b["whole command, CPU (RUSAGE_CHILDREN)"] < \
                         rows[n]["whole command, CPU (RUSAGE_CHILDREN)"]:
                     rows[n] = b
-    out = {"rows": rows}
+                    lines[n] = timeline(marks, wall, launch)
+    out = {"rows": rows, "timelines": lines}
     if 1 in rows and 2 in rows:
         b = rows[2]
         s = b["serial (start path + end)"]
@@ -132,7 +180,7 @@ def bench_budget(workers=(1, 2), repeats: int = 2) -> dict:
         # the client's CPU that competes with two workers: every case's records, and the case decks
         # it prepares after the first job only for what exceeds its idle wait for the fork server's
         # boot (its core is free until then: the boot is the longer of the two start paths)
-        idle = max(0.0, b["fork server: boot (numpy, engine, deck checker, print reader)"]
+        idle = max(0.0, b["fork server: boot (the engine, deck checker, print reader)"]
                    - b["client: entry to first job (click, options, runner, deck, first case deck)"])
         c = (b["client: first result to last recorded (records, manifest), a case"] * 32
              + max(0.0, b["client: first job to first result (the other case decks, the threads)"] - idle))
@@ -146,6 +194,8 @@ def print_cpu_budget(result: dict) -> None:
     print(f"{'cold pyadore sweep, CPU (s)':72s} " + " ".join(f"{f'{n} worker(s)':>12s}" for n in rows))
     for k in keys:
         print(f"{k:72s} " + " ".join(f"{rows[n][k]:12.4f}" for n in rows))
+    for n, tl in result.get("timelines", {}).items():
+        print_timeline(tl, f", {n} worker(s)")
     if "bound" in result:
         print(f"sweep CPU bound on 2 free cores: serial S = {result['serial']:.3f} s, cases W = {result['cases']:.3f} s, "
               f"client amid the cases C = {result['client']:.3f} s: (S + W) / (S + (W + C) / 2) = "

@@ -47,17 +47,17 @@ def run_local(jobs, pool, on_result, count):
 
     from pyadore.sweeps import runner  # imported by now: it called this
 
-    write_summary = runner._Sweep.write_summary
+    write_end = runner._Sweep.write_end  # the manifest and summary.csv at the sweep's end
 
     def summary_then_marks(self):
-        write_summary(self)
+        write_end(self)
         MARKS["summary"] = _stamp()
         MARKS["heavy"] = sorted(m for m in ("numpy", "pandas", "xarray", "pyadore._engine", "tqdm")
                                 if m in sys.modules)  # what the client imported
         with open(sys.argv[0], "w", encoding="utf-8") as fh:
             json.dump(MARKS, fh)
 
-    runner._Sweep.write_summary = summary_then_marks
+    runner._Sweep.write_end = summary_then_marks
     try:
         _run_local(timed_jobs(), pool, timed_result, count)
     finally:

@@ -173,8 +173,9 @@ def test_whirl_frame_power_closes_the_free_cage_balance(tmp_path):
 
 def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
     """The deep-groove deck at its own Rec 2.1 (error limit 1e-4, maximum step 0.3 tau),
-    0.1 revolutions: the drive power misses the dissipation plus the energy change by about
-    its own size, and the note says so (closure above 0.01).  The same run with a maximum
+    0.1 revolutions: the drive power misses the dissipation plus the energy change, and the
+    note says so (closure above 0.01: -0.023 measured in session 18; 0.49 before the
+    arrowhead Jacobian's border rows reached the runs, docs/dynamics.md).  The same run with a maximum
     step of 0.03 tau closes within 1 % (docs/operating-points.md, "What misses at the
     deck's settings"); against it the long steps' drive power is off far more than their
     dissipation: the drive torque is what they do not resolve.  Both runs shear the deck's
@@ -193,7 +194,7 @@ def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
                                  r"1 uW\)\s+(\S+),",
                               note).group(1))
     assert printed == pytest.approx(loose.balance["closure"], rel=1e-3, abs=1e-3)
-    assert abs(loose.balance["closure"]) > 0.1 and "do not resolve the drive torque" in note
+    assert abs(loose.balance["closure"]) > 0.01 and "do not resolve the drive torque" in note
     assert abs(short.balance["closure"]) <= 0.01
     assert not any("do not resolve the drive torque" in n for n in short.notes)
     # the long steps' error is in the drive torque: relative to the resolved run the drive

@@ -526,18 +526,117 @@ def test_write_atomic_writes_the_whole_file_or_nothing(tmp_path, monkeypatch):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["f.json"]
 
 
-def test_the_manifest_lists_every_case_as_encoded_when_it_last_changed(tmp_path):
-    """manifest.json's case lines are encoded once per entry (the client rewrites it after the
-    cases while the workers run; docs/sweeps.md, "Scaling"): its text after cases finish,
-    finish again (a new entry) and stay pending is the text of every case's current entry."""
+def _roller_sweep(folder: Path, vary: str):
+    """A sweep's state (runner._Sweep, no folder made yet) over Appendix D with one --vary, and its cases."""
     from pyadore.deck import parse_text
     from pyadore.sweeps.runner import _Sweep
 
     text = ROLLER.read_text()
     base, _ = parse_text(text, str(ROLLER))
-    varied = [parse_vary("applied_force_z=500,750,1000", base)]
+    varied = [parse_vary(vary, base)]
     cases = make_cases(varied)
-    run = _Sweep(ROLLER, text, varied, cases, tmp_path / "s", 0, False, {}, base_deck=base)
+    return _Sweep(ROLLER, text, varied, cases, folder, 0, False, {}, base_deck=base), cases
+
+
+def test_write_atomic_many_flushes_every_file_before_any_replaces_its_old_one(tmp_path, monkeypatch):
+    """store.write_atomic_many (the sweep's end: manifest.json and summary.csv flushed at the
+    same time): the exact bytes of each, every file flushed (fsync) before the first rename,
+    renamed in the order given, no temporary left; a flush that fails renames none, leaves the
+    old files and removes every temporary."""
+    from pyadore.sweeps import store
+
+    a, b = tmp_path / "manifest.json", tmp_path / "summary.csv"
+    a.write_text("old a")
+    b.write_text("old b")
+    events: list = []
+    fsync, replace = store.os.fsync, store.os.replace
+
+    def logged_fsync(fd):
+        fsync(fd)
+        events.append(("fsync", fd))
+
+    def logged_replace(src, dst):
+        events.append(("replace", Path(dst).name))
+        replace(src, dst)
+
+    monkeypatch.setattr(store.os, "fsync", logged_fsync)
+    monkeypatch.setattr(store.os, "replace", logged_replace)
+    store.write_atomic_many([(a, "é new a\n"), (b, b"new b\n")])
+    assert a.read_bytes() == "é new a\n".encode("utf-8") and b.read_bytes() == b"new b\n"
+    assert [e[0] for e in events] == ["fsync", "fsync", "replace", "replace"]
+    assert [e[1] for e in events[2:]] == ["manifest.json", "summary.csv"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["manifest.json", "summary.csv"]
+    monkeypatch.undo()
+
+    def failing(fd):
+        raise OSError(5, "Input/output error")
+
+    monkeypatch.setattr(store.os, "fsync", failing)
+    with pytest.raises(OSError, match="Input/output"):
+        store.write_atomic_many([(a, "lost a"), (b, "lost b")])
+    monkeypatch.undo()
+    assert a.read_bytes() == "é new a\n".encode("utf-8") and b.read_bytes() == b"new b\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["manifest.json", "summary.csv"]
+
+
+def test_the_path_to_the_first_job_flushes_nothing_and_sweep_json_precedes_every_case(tmp_path, monkeypatch):
+    """The sweep's start writes sweep.json, the pending manifest and the case decks without
+    fsync (the path to the first job is serial; docs/sweeps.md, "Scaling, eighteenth
+    session"); sweep.json is flushed before the first case's print, every print before its
+    result.json replaces anything, and the end flushes the manifest and the summary."""
+    from pyadore.sweeps import store
+
+    flushed: list = []
+    fsync = store.os.fsync
+
+    def logged(fd):
+        fsync(fd)
+        flushed.append(Path(os.readlink(f"/proc/self/fd/{fd}")).name)
+
+    monkeypatch.setattr(store.os, "fsync", logged)
+    run, cases = _roller_sweep(tmp_path / "s", "applied_force_z=500,750")
+    run.open_folder()
+    run.load_finished()
+    run.write_manifest(durable=False)
+    for case in cases:
+        run.prepare(case)
+    assert flushed == [] and (tmp_path / "s" / "sweep.json").is_file()
+    run.record(cases[0], "ok", duration=0.1, worker="w:1", print_text="print 1")
+    run.record(cases[1], "ok", duration=0.1, worker="w:1", print_text="print 2")
+    assert [f.split(".tmp-")[0] for f in flushed] == ["sweep.json", ".case.prt", ".case.prt"]
+    flushed.clear()
+    run.write_end()
+    assert sorted(f.split(".tmp-")[0] for f in flushed) == [".manifest.json", ".summary.csv"]
+    assert json.loads((tmp_path / "s" / "sweep.json").read_text()) == run.definition
+
+
+def test_the_pool_waits_for_its_processes_on_their_pidfd(monkeypatch):
+    """The pool's end waits for its workers and their fork server blocked on a descriptor of
+    each pid (execute._wait_for), not by 1 ms polls: a child that sleeps 0.3 s is seen ended
+    after one wait, without sleeps in between; a timeout raises TimeoutExpired."""
+    import subprocess
+    import sys
+
+    from pyadore.sweeps import execute
+
+    if not hasattr(os, "pidfd_open"):
+        pytest.skip("no pidfd on this system")
+    sleeps: list = []
+    monkeypatch.setattr(execute.time, "sleep", lambda s: sleeps.append(s))
+    proc = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(0.3)"])
+    child = execute._Child(proc.pid)
+    with pytest.raises(subprocess.TimeoutExpired):
+        child.wait(timeout=0.01)
+    assert child.wait(timeout=60) == 0
+    assert sleeps == []
+    proc.returncode = 0  # reaped by the child's waitpid: Popen must not wait for it again
+
+
+def test_the_manifest_lists_every_case_as_encoded_when_it_last_changed(tmp_path):
+    """manifest.json's case lines are encoded once per entry (the client rewrites it after the
+    cases while the workers run; docs/sweeps.md, "Scaling"): its text after cases finish,
+    finish again (a new entry) and stay pending is the text of every case's current entry."""
+    run, cases = _roller_sweep(tmp_path / "s", "applied_force_z=500,750,1000")
     run.open_folder()
     for case in cases:
         assert run.prepare(case) is not None  # its folder and deck

@@ -270,9 +270,10 @@ def test_sweep_axes_in_scaled_si_units_with_field_names():
 
 # -- imports on demand --------------------------------------------------------------------------------
 def test_run_steps_0_imports_no_table_or_figure_library(ball_deck, tmp_path):
-    """`pyadore run --steps 0` needs the engine (and numpy under it), click and pyadore's own
-    modules: pandas, matplotlib, xarray and scipy are imported only by what uses them
-    (the start-up time is measured in bench/run_bench.py, `startup`)."""
+    """`pyadore run --steps 0` needs the engine, click and pyadore's own modules: the engine's
+    shared object is called without numpy (pyadore/_core/lite.py), and pandas, matplotlib,
+    xarray and scipy are imported only by what uses them (the start-up time is measured in
+    bench/run_bench.py, `startup`)."""
     import subprocess
     import sys
 
@@ -280,10 +281,40 @@ def test_run_steps_0_imports_no_table_or_figure_library(ball_deck, tmp_path):
                           "-o", str(tmp_path / "x.prt")], capture_output=True, text=True, timeout=600)
     assert res.returncode == 0, res.stderr[-2000:]
     imported = {line.split("|")[-1].strip() for line in res.stderr.splitlines() if line.startswith("import time:")}
-    assert "pyadore._engine" in imported and "pyadore.api" in imported     # the trace is the run's
-    heavy = sorted(m for m in imported if m.split(".")[0] in ("pandas", "matplotlib", "xarray", "scipy"))
+    assert "pyadore._core.lite" in imported and "pyadore.api" in imported  # the trace is the run's
+    assert (tmp_path / "x.prt").is_file()
+    heavy = sorted(m for m in imported if m.split(".")[0] in ("pandas", "matplotlib", "xarray", "scipy", "numpy"))
     assert heavy == []
     assert "importlib.metadata" not in imported                           # --version only when asked
+
+
+def test_run_command_ends_without_the_interpreter_clean_up_with_its_files_complete(short_ball_deck, tmp_path):
+    """`pyadore run` ends by os._exit once its output is flushed (pyadore/__main__.py,
+    _exit_now; docs/sweeps.md "Scaling, eighteenth session"): its print, plot-data and netCDF files are those
+    of the same run through the API, byte for byte, its stdout lines are all there through a
+    pipe, and a refused run still exits 1 with its message."""
+    import subprocess
+    import sys
+
+    out = tmp_path / "cli.prt"
+    res = subprocess.run([sys.executable, "-m", "pyadore", "run", str(short_ball_deck), "-o", str(out)],
+                         capture_output=True, text=True, timeout=600)
+    assert res.returncode == 0, res.stderr[-2000:]
+    api = pyadore.run(short_ball_deck, out=tmp_path / "api.prt", progress=False)
+    assert res.stdout.splitlines() == [f"print file written: {out}",
+                                       f"plot-data file written: {out.with_suffix('.hist.csv')}",
+                                       f"results written: {out.with_suffix('.nc')} (netCDF; docs/results.md)"]
+    assert out.read_bytes() == api.print_path.read_bytes()
+    assert out.with_suffix(".hist.csv").read_bytes() == api.history_path.read_bytes()
+    cli_nc, api_nc = out.with_suffix(".nc").read_bytes(), api.results_path.read_bytes()
+    assert len(cli_nc) == len(api_nc) > 1000
+    import xarray as xr
+
+    with xr.open_dataset(out.with_suffix(".nc")) as a, xr.open_dataset(api.results_path) as b:
+        assert a.equals(b)
+    bad = subprocess.run([sys.executable, "-m", "pyadore", "run", str(tmp_path / "nope.inp"), "-o",
+                          str(tmp_path / "n.prt")], capture_output=True, text=True, timeout=600)
+    assert bad.returncode == 1 and "pyadore: error:" in bad.stderr
 
 
 def test_sweep_takes_a_deck_object_and_a_range(tmp_path):

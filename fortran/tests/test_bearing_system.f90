@@ -297,6 +297,29 @@ contains
       end if
    end subroutine test_run_options_text
 
+   !> The ball kind hands the integrator its equations' border shares (the arrowhead
+   !> Jacobian's border rows C_b, docs/dynamics.md "The arrowhead"): after a step they are
+   !> available, not all zero, and those of ball_system_t's own border_shares bit for bit
+   !> (before session 18 the kind did not forward them and every run had C_b = 0).
+   subroutine check_border_shares_forwarded(sys, n)
+      class(bearing_system_t), intent(in) :: sys
+      integer, intent(in) :: n
+      real(wp), allocatable :: s_kind(:, :), s_eom(:, :)
+      logical :: ok_kind, ok_eom
+      select type (sys)
+      type is (ball_kind_t)
+         allocate (s_kind(size(sys%eom%jacobian_border), n), s_eom(size(sys%eom%jacobian_border), n))
+         s_kind = 0.0_wp
+         call sys%border_shares(s_kind, ok_kind)
+         call sys%eom%border_shares(s_eom, ok_eom)
+         call check(ok_kind .and. ok_eom, "ball: the kind's border shares available to the integrator")
+         call check(all(s_kind == s_eom) .and. any(s_kind /= 0.0_wp), &
+                    "ball: the kind's border shares are its equations' (nonzero)")
+      class default
+         call check(.false., "ball: border shares of the ball kind")
+      end select
+   end subroutine check_border_shares_forwarded
+
    !> Appendix C: after 20 steps the outer race gets 30 K warmer through set_condition.  The
    !> system is mounted at the new temperatures (geometry bit for bit mount_geometry's, the
    !> state's temperatures in y), the integrator restarted: its next step equals, bit for bit,
@@ -338,6 +361,7 @@ contains
          call it%step(sys, t, y, error)
       end do
       call check(.not. allocated(error), "ball: 20 steps")
+      call check_border_shares_forwarded(sys, b%n_elements)
 
       ! an unchanged condition: nothing happens (no restart, no extra evaluation)
       allocate (untold, source=sys)

@@ -7,7 +7,9 @@ only what the package and bench/ call (fortran/api/_engine.pyf); the engine's ot
 blocks, which only the tests call, are the test-only extension ``pyadore._probes``
 (fortran/api/probes/) with its own layer in tests/probes/.  One module per engine concept
 (base, deck, model, quasistatic, tribology), everything re-exported here:
-``from pyadore import _core; _core.lubricant(...)``.
+``from pyadore import _core; _core.lubricant(...)``.  A run and the deck's cross-field checks
+call the extension's shared object through ctypes, without numpy, while the module is not
+imported (:mod:`.lite`).
 """
 
 from .base import check, run_option_table, run_file, RunOutput, engine_version  # noqa: F401

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import sys
 
 from ..errors import (
     STATUS_ENGINE,
@@ -14,7 +15,16 @@ from ..errors import (
 )
 
 
-def _engine():
+def _engine(lite: bool = False):
+    """The engine extension module; ``lite`` (a run, the deck's cross-field checks): while the
+    module is not imported, its shared object loaded without numpy (:mod:`.lite`; the module
+    where that cannot be done), which offers those routines only."""
+    if lite and "pyadore._engine" not in sys.modules:
+        from .lite import lite_engine
+
+        engine = lite_engine()
+        if engine is not None:
+            return engine
     try:
         from .. import _engine as engine
     except ImportError as exc:  # the package was installed without its extension
@@ -78,9 +88,11 @@ def run_file(deck_path: str | os.PathLike, out_path: str | os.PathLike, options:
     progress: ``None``, or a function ``progress(step, n_steps, tau, time_s) -> int`` the
     engine calls after every accepted time step; a non-zero return stops the run there
     (incomplete).  It must not raise.  With a progress function the call holds the GIL
-    (the function is Python); without one it releases it (threads run at once).
+    (the function is Python); without one it releases it (threads run at once).  A process that
+    has not imported the engine extension calls it without importing numpy (:mod:`.lite`; the
+    engine then runs without the GIL between the progress function's calls).
     """
-    engine = _engine()
+    engine = _engine(lite=True)
     args = (os.fspath(deck_path), os.fspath(out_path), options)
     if progress is None:
         out = engine.adore_run_file(*args)

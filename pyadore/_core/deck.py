@@ -1,4 +1,5 @@
-"""The engine's cross-field deck checks (fortran/model/checks.f90; pyadore.deck.validate)."""
+"""The engine's cross-field deck checks (fortran/model/checks.f90; pyadore.deck.validate): without
+numpy while the engine extension is not imported (:mod:`.lite`)."""
 
 from __future__ import annotations
 
@@ -6,7 +7,7 @@ from .base import _engine, _text, check
 
 
 def _names(what: int) -> tuple[str, ...]:
-    return tuple(line for line in _text(_engine().adore_deck_cross_check_names(what)).split("\n") if line)
+    return tuple(line for line in _text(_engine(lite=True).adore_deck_cross_check_names(what)).split("\n") if line)
 
 
 def cross_field_fields() -> tuple[str, ...]:
@@ -34,7 +35,7 @@ def cross_field_problems(values: dict[str, object]) -> list[tuple[str, str, bool
     nums = [values.get(n) for n in names]
     have = [int(isinstance(v, (int, float)) and not isinstance(v, bool)) for v in nums]
     vals = [float(v) if h else 0.0 for v, h in zip(nums, have)]
-    n, fields, warning, messages, status, message = _engine().adore_deck_cross_checks(vals, have, len(names) + 8)
+    n, fields, warning, messages, status, message = _engine(lite=True).adore_deck_cross_checks(vals, have, len(names) + 8)
     check(int(status), message)
     texts = _text(messages).split("\n") if n else []
     return [(names[fields[i] - 1], texts[i], bool(warning[i])) for i in range(int(n))]

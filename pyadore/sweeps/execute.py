@@ -48,6 +48,41 @@ def _alive(pid: int) -> bool:
     return state not in (b"Z", b"X")
 
 
+def _wait_for(proc, timeout: float | None, what: str):
+    """Wait until ``proc`` (a :class:`_Forked` or :class:`_Child`) has ended: blocked on a
+    descriptor of its pid (Linux's pidfd, readable once the process has ended) rather than
+    polled, so that the sweep's end - its workers', then its fork server's exit - is seen at
+    once, not at the next of 1 ms polls (docs/sweeps.md, "Scaling"); polled where there is no
+    pidfd.  Its returncode; subprocess.TimeoutExpired after ``timeout`` s."""
+    deadline = None if timeout is None else time.monotonic() + timeout
+    fd = None
+    if proc.pid is not None and hasattr(os, "pidfd_open"):
+        try:
+            fd = os.pidfd_open(proc.pid)
+        except OSError:  # ended and reaped already (poll says so), or no pidfd in this kernel
+            fd = None
+    try:
+        while proc.pid is not None and proc.poll() is None:
+            left = None if deadline is None else deadline - time.monotonic()
+            if left is not None and left <= 0:
+                import subprocess
+
+                raise subprocess.TimeoutExpired(f"{what} {proc.pid}", timeout)
+            if fd is not None:
+                import select
+
+                select.select([fd], [], [], left)
+                if proc.poll() is None:  # readable, yet not seen ended: the state lags; poll on
+                    os.close(fd)
+                    fd = None
+            else:
+                time.sleep(0.001)
+    finally:
+        if fd is not None:
+            os.close(fd)
+    return proc.returncode
+
+
 class _Forked:
     """A worker forked by the first worker of its group (:mod:`.worker`): not a child of this
     process, so known by its pid (from its ready line) and polled through /proc."""
@@ -71,14 +106,7 @@ class _Forked:
                 pass
 
     def wait(self, timeout: float | None = None):
-        deadline = None if timeout is None else time.monotonic() + timeout
-        while self.pid is not None and self.poll() is None:
-            if deadline is not None and time.monotonic() > deadline:
-                import subprocess
-
-                raise subprocess.TimeoutExpired(f"worker {self.pid}", timeout)
-            time.sleep(0.001)
-        return self.returncode
+        return _wait_for(self, timeout, "worker")
 
 
 class _Child:
@@ -101,14 +129,7 @@ class _Child:
         return self.returncode
 
     def wait(self, timeout: float | None = None):
-        deadline = None if timeout is None else time.monotonic() + timeout
-        while self.poll() is None:
-            if deadline is not None and time.monotonic() > deadline:
-                import subprocess
-
-                raise subprocess.TimeoutExpired(f"fork server {self.pid}", timeout)
-            time.sleep(0.001)
-        return self.returncode
+        return _wait_for(self, timeout, "fork server")
 
     def kill(self) -> None:
         import signal
@@ -250,12 +271,16 @@ class _Worker:
 
     def serve(self, jobs, results, once: bool = False) -> None:
         """Run jobs from the queue ``jobs`` until a None; each result, then a None, to ``results``.
-        After :meth:`kill` (the sweep was interrupted) it ends quietly: the process it was
-        waiting on is gone on purpose, not a crash to report, and none is started again.
-        ``once`` (a pool of one sweep): at the None the worker is told to end (its job channel
-        closed), so it exits while the client records the last results."""
+        A result's next job is written to the worker before the result is decoded and handed
+        over (the worker idles only while its result and the next job cross the pipes, not
+        while this thread decodes the result and the client's thread takes it; docs/sweeps.md,
+        "Scaling").  After :meth:`kill` (the sweep was interrupted) it ends quietly: the
+        process it was waiting on is gone on purpose, not a crash to report, and none is
+        started again.  ``once`` (a pool of one sweep): at the None the worker is told to end
+        (its job channel closed), so it exits while the client records the last results."""
+        job = jobs.get()
+        sent = False  # whether ``job`` went to the worker already, ahead of the previous result
         while True:
-            job = jobs.get()
             if job is None and once and self.ready:
                 try:
                     self.jobs.close()
@@ -263,17 +288,19 @@ class _Worker:
                     pass
             if job is None or self.interrupted.is_set():
                 break
-            proc = None
+            proc = self.proc if sent else None
             try:
-                self.start()
-                proc = self.proc  # kill() may set self.proc to None from the client's thread
-                if not self.ready:
-                    self._await_ready()
-                self.jobs.write(json.dumps(list(job)) + "\n")
-                self.jobs.flush()
+                if not sent:
+                    self.start()
+                    proc = self.proc  # kill() may set self.proc to None from the client's thread
+                    if not self.ready:
+                        self._await_ready()
+                    self.jobs.write(json.dumps(list(job)) + "\n")
+                    self.jobs.flush()
                 line = self.results.readline()
             except (OSError, ValueError, AttributeError, KeyError, TypeError):
                 line = ""
+            sent = False
             if self.interrupted.is_set():
                 break
             if not line:  # the process died on this job: report it, go on with a fresh one
@@ -282,7 +309,16 @@ class _Worker:
                                           f"{'unknown' if code is None or code == -1 else code}): a crash of "
                                           f"the engine"))
                 self.stop()
+                job = jobs.get()
                 continue
+            job = jobs.get()  # the next job, to the worker at once (a failed write: sent with a fresh one)
+            if job is not None and not self.interrupted.is_set():
+                try:
+                    self.jobs.write(json.dumps(list(job)) + "\n")
+                    self.jobs.flush()
+                    sent = True
+                except (OSError, ValueError, AttributeError):
+                    sent = False
             results.put(json.loads(line))
         results.put(None)
 

@@ -99,6 +99,7 @@ class _Sweep:
         self._events: list[str] = []   # events.log lines of cases the manifest does not list yet
         #: case id -> (its entry when encoded, or None while pending; its manifest line; its status)
         self._manifest_lines: dict[str, tuple] = {}
+        self._unflushed: Path | None = None  # sweep.json, written and not flushed yet
 
     # -- folder -------------------------------------------------------------------------------
     def case_dir(self, case_id: str) -> Path:
@@ -126,7 +127,18 @@ class _Sweep:
                 raise SweepError(f"{self.root} holds another sweep (of {old.get('deck')}; it differs in {what}): "
                                  f"rerun the same command to resume it, or give another -o DIR")
         else:
-            store.write_atomic(path, json.dumps(self.definition, indent=1))
+            # flushed to the disk before the first case is recorded (record), not here: the path
+            # to the first job is the sweep's serial start (docs/sweeps.md, "Scaling, eighteenth
+            # session"); a case file is never durable before the folder's definition
+            store.write_atomic(path, json.dumps(self.definition, indent=1), durable=False)
+            self._unflushed = path
+
+    def flush_definition(self) -> None:
+        """Flush sweep.json to the disk if :meth:`open_folder` wrote it (without fsync): before
+        the first case's files are recorded, or at the end."""
+        if self._unflushed is not None:
+            store.flush_file(self._unflushed)
+            self._unflushed = None
 
     def load_finished(self) -> None:
         """Take every case already finished (``ok`` with its print) from the folder.  A case
@@ -170,6 +182,7 @@ class _Sweep:
                     continue
                 entry = self._entry(case, "ok", "", None, [], "", results)
                 entry["recovered"] = True
+                self.flush_definition()
                 store.write_atomic(cdir / store.CASE_RESULT, json.dumps(entry, indent=1))
                 self.entries[case.case_id] = entry
 
@@ -189,6 +202,7 @@ class _Sweep:
         (MANIFEST_INTERVAL)."""
         import base64
 
+        self.flush_definition()
         cdir = self.case_dir(case.case_id)
         prt = cdir / store.CASE_PRINT
         kept = {store.CASE_HISTORY: history_text if status == "ok" else None,
@@ -222,14 +236,16 @@ class _Sweep:
         if since >= min(MANIFEST_INTERVAL, MANIFEST_COST_FACTOR * self._manifest_cost):
             self.write_manifest(durable=False)
 
-    def write_manifest(self, durable: bool = True) -> None:
+    def write_manifest(self, durable: bool = True, summary: bool = False) -> None:
         """Write manifest.json - every case with its parameters, status, duration and error -
         then the events.log lines of the cases finished since the last one.  ``durable``: flushed
-        to the disk first (fsync: the sweep's start and end); the rewrites while the cases run
+        to the disk first (fsync); the rewrites while the cases run, and the pending one at the start,
         are progress (a resume reads each case's result.json, never the manifest) and skip the
         fsync, as events.log's appends do: about 0.6 ms of the client's CPU a case, which
         competes with the workers (docs/sweeps.md, "Scaling").  Whole or absent all the same:
-        written atomically."""
+        written atomically.  ``summary`` (the sweep's end, :meth:`write_end`): summary.csv is
+        written with it, both flushed at the same time (:func:`store.write_atomic_many`), the
+        manifest renamed first."""
         self._manifest_written = time.monotonic()
         lines = []
         counts: dict[str, int] = {}
@@ -243,8 +259,12 @@ class _Sweep:
                 cached = self._manifest_lines[case.case_id] = (e, json.dumps(row), row["status"])
             lines.append(cached[1])
             counts[cached[2]] = counts.get(cached[2], 0) + 1
-        store.write_atomic(self.root / store.MANIFEST, _manifest_text(self.definition, _now(), counts, lines),
-                           durable=durable)
+        text = _manifest_text(self.definition, _now(), counts, lines)
+        if summary:
+            store.write_atomic_many([(self.root / store.MANIFEST, text),
+                                     (self.root / store.SUMMARY, summary_csv(*self.summary_rows()))])
+        else:
+            store.write_atomic(self.root / store.MANIFEST, text, durable=durable)
         if self._events:
             store.append_event(self.root, "\n".join(self._events))
             self._events = []
@@ -274,6 +294,13 @@ class _Sweep:
     def write_summary(self) -> None:
         """Write summary.csv (:func:`summary_csv`: pandas' text, without pandas)."""
         store.write_atomic(self.root / store.SUMMARY, summary_csv(*self.summary_rows()))
+
+    def write_end(self) -> None:
+        """The sweep's end: manifest.json, then summary.csv, flushed to the disk together
+        (:meth:`write_manifest`), then the events of the cases the manifest added; sweep.json
+        flushed first if no case flushed it."""
+        self.flush_definition()
+        self.write_manifest(summary=True)
 
     def status_counts(self) -> dict[str, int]:
         """How many cases have each status, the most frequent first (as pandas' value_counts)."""
@@ -490,7 +517,7 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
             yield (case.case_id, text, steps, options)
 
     try:
-        run.write_manifest()
+        run.write_manifest(durable=False)  # every case pending; flushed with the summary at the end
         if scheduler is not None:
             run_dask(jobs(), scheduler, on_result)
         else:
@@ -498,8 +525,7 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
     finally:
         if bar is not None:
             bar.close()
-        run.write_manifest()
-        run.write_summary()
+        run.write_end()
     return run
 
 

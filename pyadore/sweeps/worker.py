@@ -10,7 +10,7 @@ stray print) can mix into a channel.  A fresh interpreter: nothing of the client
 
 Without ``--slots`` the channels are stdin and the original stdout: one worker.  With
 ``--slots`` (POSIX: the client passes the pipes' file descriptors), on Linux, the process is
-a fork server: once warm (the engine extension, numpy, the deck checker and the print reader
+a fork server: once warm (the engine, the deck checker and the print reader
 imported, nothing run) it forks one worker per slot and waits for them.  N workers cost one
 interpreter start, not N, and every worker's first case costs what the others do
 (docs/sweeps.md, "Scaling").  The fork is of this fresh, single-threaded process (a
@@ -29,15 +29,19 @@ import sys
 import time
 
 def warm() -> None:
-    """Import now what every case needs - the engine extension, numpy, the deck checker,
-    the print reader - so that the worker's first case costs what the others do: the
-    worker boots while the client prepares the cases, and stays warm for the whole sweep.
+    """Import now what every case needs - the engine, the deck checker, the print reader -
+    so that the worker's first case costs what the others do: the worker boots while the
+    client prepares the cases, and stays warm for the whole sweep.  The engine is its shared
+    object loaded without numpy (:mod:`pyadore._core.lite`: a case's run and its deck's
+    cross-field checks; numpy was 70-110 ms of the boot's 130-150 ms of CPU, docs/sweeps.md
+    "Scaling, eighteenth session"); a case with time steps imports numpy for its arrays.
     Neither pandas nor xarray: a case reads its print's key results into plain tables
     (read_print(frames=False)), and a run with time steps writes its netCDF file and takes
     its averages from numpy arrays (:attr:`pyadore.Result.arrays`).  pandas was 60 % of the
     boot (about 0.6 s of CPU), xarray with dask about 2 s: serial costs that do not shrink
-    with more workers (docs/sweeps.md, "Scaling").  Nothing of the engine runs here: a
-    process forked after this holds no state of a run."""
+    with more workers (docs/sweeps.md, "Scaling").  Nothing of the engine runs here but the
+    lite binding's check (the names of the cross-field checks' fields): a process forked
+    after this holds no state of a run."""
     import tempfile  # noqa: F401  (each case's private folder)
 
     from .. import _core
@@ -47,7 +51,7 @@ def warm() -> None:
     from .case import run_case  # noqa: F401
     from .results import key_results, mean_results  # noqa: F401
 
-    _core.base._engine()
+    _core.base._engine(lite=True)
 
 
 def serve(jobs, channel, boot: dict | None = None) -> None:
