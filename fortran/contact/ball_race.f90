@@ -25,7 +25,7 @@
 !> models (report eq 1).  Units SI.
 module adore_contact_ball_race
    use adore_core_kinds, only: wp
-   use adore_core_rotation, only: quat_matrix, cross
+   use adore_core_rotation, only: quat_matrix
    use adore_contact_hertz, only: hertz_geometry_t, hertz_contact_t, hertz_geometry, hertz_contact
    use adore_state_bearing_state, only: body_state_t
    use adore_contact_ball_race_kinematics, only: ball_race_contact_t, SIDE_OUTER, SIDE_INNER
@@ -114,7 +114,10 @@ contains
       else
          rot = quat_matrix(race%attitude)
       end if
-      b_rel = matmul(transpose(rot), ball%position - race%position)
+      ! R^T (B - c) written out (matmul of a transpose is a libgfortran call, ~250 instructions)
+      dv = ball%position - race%position
+      b_rel = [rot(1, 1)*dv(1) + rot(2, 1)*dv(2) + rot(3, 1)*dv(3), rot(1, 2)*dv(1) + rot(2, 2)*dv(2) + rot(3, 2)*dv(3), &
+               rot(1, 3)*dv(1) + rot(2, 3)*dv(2) + rot(3, 3)*dv(3)]
       ! the ball's azimuth phi' = atan2(-b_2, b_3): e_r = (0, -sin phi', cos phi') and
       ! e_t = (0, -cos phi', -sin phi') from b' itself (no trigonometric call)
       c%ball_radius = hypot(b_rel(2), b_rel(3))
@@ -158,18 +161,26 @@ contains
          w_b = matmul(quat_matrix(ball%attitude), ball%omega)
       end if
       w_r = matmul(rot, race%omega)
-      v_ball = ball%velocity + cross(w_b, c%point - ball%position)
-      v_race = race%velocity + cross(w_r, c%point - race%position)
+      v_ball = ball%velocity + cross3(w_b, c%point - ball%position)
+      v_race = race%velocity + cross3(w_r, c%point - race%position)
       u = v_ball - v_race
       c%tangent_slip = u - dot_product(u, c%normal)*c%normal
-      dv = ball%velocity - race%velocity - cross(w_r, ball%position - race%position)
+      dv = ball%velocity - race%velocity - cross3(w_r, ball%position - race%position)
       dw = w_b - w_r
-      c%slip_coeff = [dot_product(c%rolling, dv), 0.5_wp*p%d*dot_product(c%rolling, cross(dw, c%normal)), &
-                      0.5_wp*p%d*dot_product(c%rolling, cross(dw, c%transverse))]
+      c%slip_coeff = [dot_product(c%rolling, dv), 0.5_wp*p%d*dot_product(c%rolling, cross3(dw, c%normal)), &
+                      0.5_wp*p%d*dot_product(c%rolling, cross3(dw, c%transverse))]
       ! e_m(psi) . (dv + dw x D/2 n(psi)) with n(psi) x e_m(psi) = n x e_m for every psi
-      c%transverse_coeff = [0.5_wp*p%d*dot_product(dw, cross(c%normal, c%transverse)), &
+      c%transverse_coeff = [0.5_wp*p%d*dot_product(dw, cross3(c%normal, c%transverse)), &
                             dot_product(c%transverse, dv), -dot_product(c%normal, dv)]
    end subroutine ball_race_contact
+
+   !> a x b, as adore_core_rotation's cross (the same operations, so the same bits), here so
+   !> that gcc inlines it into ball_race_contact (6 calls a contact; no link-time optimisation)
+   pure function cross3(a, b) result(c)
+      real(wp), intent(in) :: a(3), b(3)
+      real(wp) :: c(3)
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross3
 
    !> The planar contact (adore_tribology_slip) whose rolling slip along the major axis
    !> equals that of the 3-D contact c of pair p: same side, angle, radii, semi-major axis

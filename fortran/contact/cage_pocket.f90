@@ -122,7 +122,10 @@ contains
       real(wp) :: p_far(3), w_total, h_near, h_far, delta, un
 
       rot = quat_matrix(cage%attitude)
-      b_rel = matmul(transpose(rot), ball%position - cage%position)
+      ! R^T (B - c) written out (matmul of a transpose is a libgfortran call; issue #30)
+      u = ball%position - cage%position
+      b_rel = [rot(1, 1)*u(1) + rot(2, 1)*u(2) + rot(3, 1)*u(3), rot(1, 2)*u(1) + rot(2, 2)*u(2) + rot(3, 2)*u(3), &
+               rot(1, 3)*u(1) + rot(2, 3)*u(2) + rot(3, 3)*u(3)]
       e_r = [0.0_wp, -sin(psi), cos(psi)]
       y_p = [0.0_wp, cos(psi), sin(psi)]
       c%q = [b_rel(1), dot_product(b_rel, y_p), dot_product(b_rel, e_r) - p%pocket_radius]

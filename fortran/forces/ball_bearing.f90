@@ -619,9 +619,11 @@ contains
          ! full film), then in mixed lubrication (boundary_lambda < film parameter <
          ! full_film_lambda) blended with the curve's (docs/tribology.md, "Mixed films")
          if (with_2d) then
-            call ehd_traction(b, t_lub, fluid_contact(cj, f), b_minor, race, h*phi, t, error, with_reference, tc)
+            call ehd_traction(b, t_lub, fluid_contact(cj, f), b_minor, race, h*phi, t, error, with_reference, tc, &
+                              kinematics=tk)
          else
-            call ehd_traction(b, t_lub, fluid_contact(cj, f), b_minor, race, h*phi, t, error, with_reference)
+            call ehd_traction(b, t_lub, fluid_contact(cj, f), b_minor, race, h*phi, t, error, with_reference, &
+                              kinematics=tk)
          end if
          if (allocated(error)) return
          if (f < 1.0_wp) t = mixed_traction(f, t, t_curve)

@@ -247,8 +247,9 @@ contains
    !> (ehd_contact_traction_fast, default) or, with reference = .true., by the reference
    !> quadrature of EHD_GAUSS x EHD_STRIP points (the step-0 print's).  transverse (m/s),
    !> when given: the two-dimensional traction of the slip along and across the rolling
-   !> direction (u_m(psi) = m1 + m2 cos psi + m3 sin psi; report eq 5), t%cross_force.
-   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, reference, transverse)
+   !> direction (u_m(psi) = m1 + m2 cos psi + m3 sin psi; report eq 5), t%cross_force;
+   !> kinematics, when given: contact_kinematics(cj), for the fast traction to take.
+   subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, reference, transverse, kinematics)
       type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: temperature(:)
       type(ball_race_contact_t), intent(in) :: cj
@@ -258,6 +259,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in), optional :: reference
       real(wp), intent(in), optional :: transverse(3)
+      type(contact_traction_t), intent(in), optional :: kinematics
       logical :: ref
       ref = .false.
       if (present(reference)) ref = reference
@@ -266,7 +268,7 @@ contains
                                    transverse)
       else
          call ehd_contact_traction_fast(cj, wall_rheology(b, temperature, race), h, b_minor, t, error, &
-                                        transverse=transverse)
+                                        transverse=transverse, kinematics=kinematics)
       end if
    end subroutine ehd_traction
 

@@ -7,7 +7,8 @@
 !> * a ball pushed into its pocket wall is pushed back; deep interference is abnormal (4.4.12)
 !>   and the ball system's derivative refuses the step;
 !> * the short-bearing film force against Ocvirk's closed form (Hamrock 1991) for pure
-!>   rotation, and zero at the half-frequency whirl;
+!>   rotation, and zero at the half-frequency whirl; equal to round-off to its nodes with
+!>   sin and cos called at each (the angle-addition cut of issue #30);
 !> * the starved land (lubricant layer h_oil): no force, torque or loss at gaps >= h_oil,
 !>   force and torque continuous at the threshold, the flooded limit = Ocvirk and Petroff,
 !>   the wetted-arc force and Couette factor against brute-force quadratures, the film's
@@ -35,6 +36,7 @@ program test_cage_contacts
    use adore_dynamics_integrator, only: DERIV_OK, DERIV_REJECT_STEP
    use adore_start_ball_step0, only: ball_step0_t
    use adore_test_ball_fixture, only: appendix_c_race_control
+   use adore_core_quadrature, only: gauss_legendre
    use adore_test_support, only: check, finish
    implicit none
 
@@ -49,6 +51,7 @@ program test_cage_contacts
    call test_pushed_back_and_abnormal()
    call test_pocket_against_hertz()
    call test_short_bearing_closed_form()
+   call test_short_bearing_direct_form()
    call test_starved_land()
 
    call appendix_c_race_control("cage contacts", b, g, s0)
@@ -382,6 +385,96 @@ contains
          norm2(cl%hydro_force)/hypot(fe, ft)
       call check(norm2(cl%hydro_force) < 1.0e-12_wp*hypot(fe, ft), "short bearing: no film force at half-frequency whirl")
    end subroutine test_short_bearing_closed_form
+
+   !> The short-bearing force (its nodes' cos and sin by angle addition) against the same
+   !> panels with sin(theta - beta), cos(theta), sin(theta) called at every node (the form
+   !> before issue #30's cut): equal to round-off over eps 0.02 .. 0.98, squeeze and whirl
+   !> of either sign, flooded and starved lands (the difference relative to the larger of
+   !> the force and the flooded land's: a starved arc's force can be a sliver of its integrand).
+   subroutine test_short_bearing_direct_form()
+      type(cage_land_pair_t) :: p, pf
+      real(wp) :: f(2), fd(2), flooded(2), worst, eps, wb, ed
+      real(wp), parameter :: oil(3) = [huge(1.0_wp), 3.0e-4_wp, 1.5e-4_wp]
+      integer :: i, j, k, n
+      worst = 0.0_wp
+      n = 0
+      p = test_land(4.0e-3_wp, 0.05_wp, .true.)
+      do k = 1, 3
+         p%oil_layer = oil(k)
+         do i = 0, 24
+            eps = 0.02_wp + 0.04_wp*i
+            do j = -3, 3
+               wb = 800.0_wp*(1.0_wp + 0.3_wp*j)
+               ed = 400.0_wp*j
+               f = short_bearing_force(p, eps, wb, ed)
+               fd = direct_short_bearing(p, eps, wb, ed)
+               pf = p
+               pf%oil_layer = huge(1.0_wp)
+               flooded = direct_short_bearing(pf, eps, wb, ed)
+               if (norm2(fd) > 0.0_wp) then
+                  worst = max(worst, norm2(f - fd)/max(norm2(fd), norm2(flooded)))
+                  n = n + 1
+               else
+                  call check(norm2(f) == 0.0_wp, "short bearing: no force where the direct form has none")
+               end if
+            end do
+         end do
+      end do
+      write (*, "(a,i0,a,es10.2)") "short bearing vs the direct-node form (", n, &
+         " states), worst relative to max(|F|, |F flooded|) ", worst
+      call check(n > 400, "short bearing: the direct-form comparison covers the states")
+      call check(worst < 1.0e-13_wp, "short bearing: angle-addition nodes = direct sin/cos to round-off")
+   end subroutine test_short_bearing_direct_form
+
+   !> short_bearing_force with every node's sin(theta - beta), cos(theta), sin(theta) called
+   !> (the reference of test_short_bearing_direct_form; 8 panels of 24 Gauss points).
+   function direct_short_bearing(p, eps, wbar_minus_whirl, epsdot) result(f)
+      type(cage_land_pair_t), intent(in) :: p
+      real(wp), intent(in) :: eps, wbar_minus_whirl, epsdot
+      integer, parameter :: NG = 24
+      real(wp) :: f(2), a, bb, r0, beta, x(NG), w(NG), lo, hi, tw
+      integer :: k
+      f = 0.0_wp
+      a = eps*wbar_minus_whirl
+      bb = epsdot
+      r0 = hypot(a, bb)
+      if (.not. r0 > 0.0_wp .or. p%viscosity <= 0.0_wp) return
+      beta = atan2(bb, a)
+      tw = wetted_half_angle(p, eps)
+      if (.not. tw > 0.0_wp) return
+      call gauss_legendre(NG, x, w)
+      if (tw >= pi) then
+         f = direct_arc(beta + pi, pi, r0, beta, eps, x, w)
+      else
+         lo = modulo(beta + pi, 2.0_wp*pi)
+         hi = lo + pi
+         do k = 0, 1
+            if (min(hi, tw + 2.0_wp*pi*k) > max(lo, -tw + 2.0_wp*pi*k)) &
+               f = f + direct_arc(max(lo, -tw + 2.0_wp*pi*k), min(hi, tw + 2.0_wp*pi*k) - max(lo, -tw + 2.0_wp*pi*k), &
+                                  r0, beta, eps, x, w)
+         end do
+      end if
+      f = f*p%viscosity*p%radius*p%width**3/p%clearance**2
+   end function direct_short_bearing
+
+   !> The arc (t0, t0 + len) of direct_short_bearing: sin(theta - beta), cos and sin of
+   !> theta called at each of NP x NG nodes (x, w: the NG-point rule).
+   function direct_arc(t0, len, r0, beta, eps, x, w) result(g)
+      real(wp), intent(in) :: t0, len, r0, beta, eps, x(:), w(:)
+      integer, parameter :: NP = 8
+      real(wp) :: g(2), hw, th, s, lo_k
+      integer :: i, kk
+      g = 0.0_wp
+      hw = 0.5_wp*len/NP
+      do kk = 1, NP
+         lo_k = t0 + (kk - 1)*2.0_wp*hw
+         do i = 1, size(x)
+            th = lo_k + hw*(1.0_wp + x(i))
+            s = r0*sin(th - beta)
+            g = g + hw*w(i)*s/(1.0_wp - eps*cos(th))**3*[cos(th), sin(th)]
+         end do
+      end do
+   end function direct_arc
 
    !> The starved land film (adore_contact_cage_land header): the film exists where the local
    !> gap h = c (1 - eps cos theta) is below the oil layer h_oil.

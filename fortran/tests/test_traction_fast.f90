@@ -2,7 +2,7 @@
 !> test_forces): the fast one- and two-dimensional traction against the reference
 !> quadrature at every Appendix C race contact, at the step-0 state and at states slipping
 !> across the rolling direction; hertz_geometry's Newton ellipticity against a quad-precision
-!> root.  Run by `meson test` with the decks/ directory as argument.
+!> root; the fast traction's series sin(phi) against libm's sin and quadruple precision.  Run by `meson test` with the decks/ directory as argument.
 program test_traction_fast
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
@@ -11,7 +11,8 @@ program test_traction_fast
    use adore_state_bearing_state, only: bearing_state_t
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, ball_bearing_loads
    use adore_start_ball_step0, only: ball_step0_t
-   use adore_contact_hertz, only: hertz_geometry_t, hertz_geometry
+   use adore_contact_hertz, only: hertz_geometry_t, hertz_geometry, hertz_contact_t, hertz_contact
+   use adore_tribology_ehd_traction, only: series_sin
    use adore_test_support, only: check, finish
    use adore_test_ball_fixture, only: step0_state, appendix_c_race_control
    implicit none
@@ -26,6 +27,7 @@ program test_traction_fast
    call appendix_c_race_control("fast traction", b, g, s0)
    call test_fast_two_dimensional_traction(b, g, step0_state(b, s0))
    call test_hertz_bisection_shortcut()
+   call test_series_sin()
    call finish("fast traction")
 
 contains
@@ -108,7 +110,8 @@ contains
    !> curvatures of Appendix C's ball (D = 19.05 mm, dm = 125 mm) at contact angles
    !> 0 .. 60 deg and groove factors 0.501 .. 0.6 (ellipticities 2 .. 40, the dynamics'
    !> range): kappa within 5e-14 relative, and a*, b*, delta*, stiffness within 5e-14 of the
-   !> exhaustive bisection's.  Curvature ratios R_y/R_x from 1 + 1e-9 to 1e5 (ellipticities
+   !> exhaustive bisection's, the loaded semi-major axis a* (1.5 Q c / S)**(1/3) within 5e-14
+   !> of its cube root in quadruple precision.  Curvature ratios R_y/R_x from 1 + 1e-9 to 1e5 (ellipticities
    !> 1 .. 844): kappa within 8 times F's conditioning, eps max(1, 1/(kappa**2 - 1)) /
    !> |dF/dlog(kappa)| (F's rounding over its slope; measured: Newton <= 3.3 times, the
    !> exhaustive bisection <= 11 times).
@@ -143,6 +146,25 @@ contains
                  "Hertz ellipse: Newton's ellipticity within its bounds of the quad-precision root")
    end subroutine test_hertz_bisection_shortcut
 
+   !> The fast traction's sin(phi) at its nodes (series_sin, Taylor to phi**21 / 21!) over
+   !> the whole range of phi, [-pi/2, pi/2] (200 001 points): within 2.3e-16 of libm's sin
+   !> (its ulp at 1 is 2.2e-16) and within 2 ulp of sin in quadruple precision.
+   subroutine test_series_sin()
+      real(wp) :: x, worst_libm, worst_ulp
+      integer :: i
+      worst_libm = 0.0_wp
+      worst_ulp = 0.0_wp
+      do i = -100000, 100000
+         x = 0.5_wp*acos(-1.0_wp)*real(i, wp)/100000.0_wp
+         worst_libm = max(worst_libm, abs(series_sin(x) - sin(x)))
+         if (x /= 0.0_wp) worst_ulp = max(worst_ulp, real(abs(real(series_sin(x), QP) - sin(real(x, QP))), wp) &
+                                                      /spacing(abs(sin(x))))
+      end do
+      write (*, "(a,es10.2,a,f5.2)") "series sin(phi) on [-pi/2, pi/2]: worst against libm's sin", worst_libm, &
+         ", against quad precision (ulp)", worst_ulp
+      call check(worst_libm <= 2.3e-16_wp .and. worst_ulp <= 2.0_wp, "series sin = sin to round-off on [-pi/2, pi/2]")
+   end subroutine test_series_sin
+
    !> Count one more comparison in n; same stays true while both ellipses of curvatures rho
    !> (1/m, steel on steel) exist.  ball: worst(1) the largest relative error of kappa
    !> against the quad-precision root, worst(2) of a*, b*, delta*, stiffness against the
@@ -154,8 +176,11 @@ contains
       real(wp), intent(inout) :: worst(3)
       logical, intent(in) :: ball
       type(hertz_geometry_t) :: fast, full
+      type(hertz_contact_t) :: ell
       logical :: ok1, ok2
-      real(QP) :: kq, slope, err
+      real(QP) :: kq, slope, err, sq
+      real(wp) :: q
+      integer :: i
       call hertz_geometry(rho, 2.0e11_wp, 0.3_wp, 2.0e11_wp, 0.3_wp, fast, ok1)
       call hertz_geometry(rho, 2.0e11_wp, 0.3_wp, 2.0e11_wp, 0.3_wp, full, ok2, exhaustive=.true.)
       n = n + 1
@@ -167,6 +192,13 @@ contains
          worst(1) = max(worst(1), real(err, wp))
          worst(2) = max(worst(2), abs(fast%a_star/full%a_star - 1.0_wp), abs(fast%b_star/full%b_star - 1.0_wp), &
                         abs(fast%delta_star/full%delta_star - 1.0_wp), abs(fast%stiffness/full%stiffness - 1.0_wp))
+         ! the loaded ellipse's cube root (libm cbrt) against quadruple precision, 1 mN .. 100 kN
+         do i = -3, 5
+            q = 10.0_wp**i
+            ell = hertz_contact(fast, q)
+            sq = (1.5_QP*real(q, QP)*real(fast%compliance, QP)/real(fast%curvature_sum, QP))**(1.0_QP/3.0_QP)
+            worst(2) = max(worst(2), real(abs(real(ell%semi_major, QP)/(real(fast%a_star, QP)*sq) - 1.0_QP), wp))
+         end do
       else
          slope = abs(f_qp(kq*exp(1.0e-12_QP)) - f_qp(kq*exp(-1.0e-12_QP)))/2.0e-12_QP
          worst(3) = max(worst(3), real(err*slope/(epsilon(1.0_wp)*max(1.0_QP, 1.0_QP/(kq**2 - 1.0_QP))), wp))

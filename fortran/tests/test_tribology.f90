@@ -204,7 +204,62 @@ contains
                  "thermal factor: 1 at zero thermal loading")
       call check(thermal_reduction_factor(1.0e9_wp, 2.2e11_wp, 5.0_wp, 0.1_wp) < &
                  thermal_reduction_factor(1.0e9_wp, 2.2e11_wp, 5.0_wp, 0.0_wp), "thermal factor: falls with slip")
+      call test_film_powers()
    end subroutine test_film
+
+   !> The film and the thermal factor (their powers as exp of logarithms, issue #30) against
+   !> the formulas written with `**` (libm pow), over the decks' range and beyond: R_x 2 ..
+   !> 30 mm, k 1.5 .. 60, u 0.1 .. 200 m/s, Q 1 .. 3e4 N, eta0 1e-3 .. 0.1 Pa s, alpha 5e-9
+   !> .. 3e-8 1/Pa; p_h 0.3 .. 4 GPa, L 0 .. 100, S 0 .. 3: equal to round-off.
+   subroutine test_film_powers()
+      type(error_type), allocatable :: error
+      real(wp) :: rx, k, u, q, eta0, al, h, hp, su, sg, sw, worst_h, worst_phi, ph, l, sr, phi, phip
+      integer :: i1, i2, i3, i4, i5, n
+      real(wp), parameter :: EP = 2.2e11_wp
+      worst_h = 0.0_wp
+      n = 0
+      do i1 = 0, 3
+         rx = 2.0e-3_wp*15.0_wp**(i1/3.0_wp)
+         do i2 = 0, 3
+            k = 1.5_wp*40.0_wp**(i2/3.0_wp)
+            do i3 = 0, 4
+               u = 0.1_wp*2000.0_wp**(i3/4.0_wp)
+               do i4 = 0, 4
+                  q = 3.0e4_wp**(i4/4.0_wp)
+                  do i5 = 0, 3
+                     eta0 = 1.0e-3_wp*100.0_wp**(i5/3.0_wp)
+                     al = 5.0e-9_wp*6.0_wp**(mod(i1 + i5, 4)/3.0_wp)
+                     call central_film_thickness(rx, k, u, q, EP, eta0, al, h, error)
+                     su = eta0*u/(EP*rx)
+                     sg = al*EP
+                     sw = q/(EP*rx*rx)
+                     hp = rx*2.69_wp*su**0.67_wp*sg**0.53_wp*sw**(-0.067_wp)*(1.0_wp - 0.61_wp*exp(-0.73_wp*k))
+                     worst_h = max(worst_h, abs(h/hp - 1.0_wp))
+                     n = n + 1
+                  end do
+               end do
+            end do
+         end do
+      end do
+      worst_phi = 0.0_wp
+      do i1 = 0, 6
+         ph = 0.3e9_wp*(4.0_wp/0.3_wp)**(i1/6.0_wp)
+         do i2 = 0, 20
+            l = merge(0.0_wp, 1.0e-3_wp*1.0e5_wp**((i2 - 1)/19.0_wp), i2 == 0)
+            do i3 = 0, 10
+               sr = merge(0.0_wp, 1.0e-3_wp*3000.0_wp**((i3 - 1)/9.0_wp), i3 == 0)
+               phi = thermal_reduction_factor(ph, EP, l, sr)
+               phip = max((1.0_wp - 13.2_wp*(ph/EP)*l**0.42_wp)/(1.0_wp + 0.213_wp*(1.0_wp + 2.23_wp*sr**0.83_wp)* &
+                                                                   l**0.64_wp), 0.0_wp)
+               ! the factor's scale is 1 (its value at L = 0): differences relative to max(phi, 1e-3)
+               worst_phi = max(worst_phi, abs(phi - phip)/max(phip, 1.0e-3_wp))
+            end do
+         end do
+      end do
+      write (*, "(a,i0,a,es9.2,a,es9.2)") "film powers by exp(log): film (", n, " points) worst relative ", worst_h, &
+         ", thermal factor ", worst_phi
+      call check(worst_h < 1.0e-13_wp .and. worst_phi < 1.0e-13_wp, "film: exp(log) powers = pow to round-off")
+   end subroutine test_film_powers
 
    !> MIL-L-7808 is the report's echoed library entry; beta matches a central difference;
    !> an unknown code is an input error.

@@ -29,12 +29,13 @@ module adore_tribology_ehd_traction
    use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
    use adore_tribology_ehd_elastic, only: elastic_strip_ratio
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
-                                   interior_extremum, contact_kinematics, rolling_zones, axis_nodes, cross_slip
+                                   interior_extremum, contact_kinematics, rolling_zones, axis_nodes, cross_slip, &
+                                  take_kinematics
    implicit none
    private
 
    public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_strip_traction
-   public :: ehd_contact_traction_fast, ehd_contact_power
+   public :: ehd_contact_traction_fast, ehd_contact_power, series_sin
 
    !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
    !> zone in the angle phi of s = a sin(phi) along the major axis, and across each strip
@@ -166,11 +167,12 @@ contains
    !> transverse (m/s), when given: the two-dimensional traction as ehd_contact_traction's
    !> (each strip's integral at the slip vector's |u|, its traction along (u, u_m) / |u|,
    !> t%cross_force), on the same nodes: the zones and their grading follow the pure-rolling
-   !> points of the rolling slip u(s), where the traction turns fastest.  A contact without
+   !> points of the rolling slip u(s), where the traction turns fastest.  kinematics, when
+   !> given: contact_kinematics(c) (its centre kinematics are taken from it).  A contact without
    !> pure-rolling point whose |u| dips inside (two rolling points merged or just apart, as
    !> under race control) is split and graded at the dip (slip_minimum): plain Gauss in phi
    !> missed that layer by up to 4e-3 of the force (docs/dynamics.md).
-   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse)
+   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse, kinematics)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
       real(wp), intent(in) :: h, b
@@ -178,6 +180,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: n_major, n_strip
       real(wp), intent(in), optional :: transverse(3)
+      !> contact_kinematics of c, when the caller has it (its fields are taken, not recomputed)
+      type(contact_traction_t), intent(in), optional :: kinematics
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
       integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
@@ -189,7 +193,7 @@ contains
       real(wp) :: xq(MAX_FAST, 2), wq(MAX_FAST, 2), yg(MAX_FAST), wy(MAX_FAST), cy(MAX_FAST), evs(MAX_FAST)
       real(wp), dimension(MAX_NODES) :: phi, wn, cphi, ct, st, u, f, aa, zz, lz, g, us, um, cps, sps
       real(wp) :: edges(4), p0, amp, zeta, lo, hi, rs, sub(3, 8), vmax, ev, fac, pe, kp, sp, fr, fm, sliding, ca, sa, x, x2, ue
-      real(wp) :: umax
+      real(wp) :: umax, ce, se, u_end(2)
       real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
       real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
@@ -207,7 +211,13 @@ contains
       nh = max(1, (nm + 1)/2)             ! a half of a zone between two rolling points
       call gauss_legendre(nm, xq(1:nm, 1), wq(1:nm, 1))
       call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
-      call contact_kinematics(c, t)
+      ca = cos(c%alpha)
+      sa = sin(c%alpha)
+      if (present(kinematics)) then
+         call take_kinematics(kinematics, t)
+      else
+         call contact_kinematics(c, t, [sa, ca])
+      end if
       call rolling_zones(c, edges, nz, t%n_rolling, t%rolling_points, polar)
       p0 = 1.5_wp*c%load/(pi*c%a*b)
       call film_constants(rheo, h, amp, zeta)
@@ -221,12 +231,6 @@ contains
          cy(1:nq) = cos(0.25_wp*pi*(1.0_wp + yg(1:nq)))
          wy(1:nq) = 2.0_wp*0.25_wp*pi*wy(1:nq)*cy(1:nq)
       end if
-      if (present(transverse)) then
-         t%max_slip = max(hypot(contact_slip(c, -c%a), cross_slip(transverse, -c%a/c%rho)), &
-                          hypot(contact_slip(c, c%a), cross_slip(transverse, c%a/c%rho)))
-      else
-         t%max_slip = max(abs(contact_slip(c, -c%a)), abs(contact_slip(c, c%a)))
-      end if
       ! sub-zones in phi: a zone that ends at a pure-rolling point is graded there (the
       ! film's shear saturates within |u| ~ 1 / (zeta E) of it); one between two rolling
       ! points is halved first
@@ -234,8 +238,11 @@ contains
       s_last = huge(1.0_wp)
       k_last = 0.0_wp
       do z = 1, nz
-         lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
-         hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
+         ! the ends -a, a: asin(-1), asin(1) = -pi/2, pi/2 (libm's are the doubles nearest)
+         lo = -0.5_wp*pi
+         hi = 0.5_wp*pi
+         if (z > 1) lo = asin(max(-1.0_wp, min(1.0_wp, edges(z)/c%a)))
+         if (z < nz) hi = asin(max(-1.0_wp, min(1.0_wp, edges(z + 1)/c%a)))
          if (z > 1 .and. z < nz) then
             call add_sub((lo + hi)*0.5_wp, lo, edges(z), 2)
             call add_sub((lo + hi)*0.5_wp, hi, edges(z + 1), 2)
@@ -257,8 +264,10 @@ contains
       do z = 1, nsub
          associate (pf => sub(1, z), pr => sub(2, z), kp => sub(3, z), r => sub_rule(z))
             m = merge(nm, nh, r == 1)
-            vmax = 0.0_wp                       ! a plain sub-zone (kp = 0): no asinh
-            if (kp > 0.0_wp) vmax = asinh(kp*abs(pf - pr))
+            ! vmax = asinh(kp |pf - pr|) by its logarithm (kp |pf - pr| <= 2 LAYER: add_graded),
+            ! equal to round-off where it is used (vmax > 1); a plain sub-zone (kp = 0): none
+            vmax = 0.0_wp
+            if (kp > 0.0_wp) vmax = log(kp*abs(pf - pr) + sqrt(1.0_wp + (kp*abs(pf - pr))**2))
             if (kp > 0.0_wp .and. vmax > 1.0_wp) then
                ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2;
                ! the Gauss nodes pair up (x_(m+1-j) = -x_j), so e**v of the upper half is
@@ -283,10 +292,11 @@ contains
             n = n + m
          end associate
       end do
-      ! the strips at the nodes: loops the compiler vectorises (libmvec's sin, log, exp, one
-      ! call each; cos and sin of s / rho by their series), the sums below in node order
+      ! the strips at the nodes: loops the compiler vectorises (libmvec's log and exp, one call
+      ! each; sin(phi) and cos, sin of s / rho by their series), the sums below in node order.
+      ! sin(phi) by taylor_sin (ten multiply-adds a node instead of libmvec's sin; issue #30)
       do j = 1, n
-         sp = sin(phi(j))                                     ! sin(phi) = s / a
+         sp = taylor_sin(phi(j))                              ! sin(phi) = s / a
          cphi(j) = sqrt((1.0_wp - sp)*(1.0_wp + sp))          ! cos(phi) >= 0 on [-pi/2, pi/2]
          phi(j) = c%a*sp/c%rho                                ! now the angle psi = s / rho
          wn(j) = wn(j)*c%a*cphi(j)                            ! ds = a cos(phi) dphi
@@ -295,18 +305,45 @@ contains
       ! cos, sin of psi = s / rho (|psi| < a / rho < 1) by their Taylor series (Horner in psi**2
       ! to psi**18 / 18! and psi**17 / 17!: truncation below 1 / 19! < 8.3e-18 for |psi| < 1),
       ! and of the angle theta = alpha + psi by angle addition: multiply-adds, no sin/cos calls
-      ca = cos(c%alpha)
-      sa = sin(c%alpha)
-      do j = 1, n
-         x = phi(j)
-         x2 = x*x
-         cps(j) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
-                  + x2*(COS_C(6) + x2*(COS_C(7) + x2*(COS_C(8) + x2*COS_C(9)))))))))
-         sps(j) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
-                  + x2*(SIN_C(6) + x2*(SIN_C(7) + x2*SIN_C(8))))))))
-         ct(j) = ca*cps(j) - sa*sps(j)
-         st(j) = sa*cps(j) + ca*sps(j)
-      end do
+      ! the slips at the ends s = -a, a (contact_slip, cross_slip there): cos and sin of
+      ! alpha -+ a / rho by angle addition from those of alpha and a / rho (one sincos
+      ! instead of four; equal to round-off).  Here, after the loop of sin(phi): computed
+      ! before it, gcc no longer vectorises that loop ("latch block not empty")
+      ce = cos(c%a/c%rho)
+      se = sin(c%a/c%rho)
+      u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
+              - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
+      if (present(transverse)) then
+         t%max_slip = max(hypot(u_end(1), transverse(1) + transverse(2)*ce - transverse(3)*se), &
+                          hypot(u_end(2), transverse(1) + transverse(2)*ce + transverse(3)*se))
+      else
+         t%max_slip = max(abs(u_end(1)), abs(u_end(2)))
+      end if
+      if (c%a <= 0.4_wp*c%rho) then
+         ! |psi| <= 0.4 (the decks' balls: a / rho <= 0.3): to psi**14 / 14! and psi**13 / 13!,
+         ! truncation below 0.4**16 / 16! < 2.1e-20 and 0.4**15 / 15! < 8.2e-19 (< 0.01 ulp)
+         do j = 1, n
+            x = phi(j)
+            x2 = x*x
+            cps(j) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
+                     + x2*(COS_C(6) + x2*COS_C(7)))))))
+            sps(j) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
+                     + x2*SIN_C(6))))))
+            ct(j) = ca*cps(j) - sa*sps(j)
+            st(j) = sa*cps(j) + ca*sps(j)
+         end do
+      else
+         do j = 1, n
+            x = phi(j)
+            x2 = x*x
+            cps(j) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
+                     + x2*(COS_C(6) + x2*(COS_C(7) + x2*(COS_C(8) + x2*COS_C(9)))))))))
+            sps(j) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
+                     + x2*(SIN_C(6) + x2*(SIN_C(7) + x2*SIN_C(8))))))))
+            ct(j) = ca*cps(j) - sa*sps(j)
+            st(j) = sa*cps(j) + ca*sps(j)
+         end do
+      end if
       if (present(transverse)) then
          ! the slip vector's length (sqrt: slips in m/s, far from over- or underflow)
          do j = 1, n
@@ -503,6 +540,28 @@ contains
       end function strip_rule_integral
 
    end subroutine ehd_contact_traction_fast
+
+   !> sin(x) (-) for |x| <= pi/2 (rad) as the fast traction computes it at every node
+   !> (taylor_sin; public for its test).
+   elemental real(wp) function series_sin(x) result(y)
+      real(wp), intent(in) :: x
+      y = taylor_sin(x)
+   end function series_sin
+
+   !> sin(x) (-) for |x| <= pi/2 (rad) by its Taylor series to x**21 / 21! (Horner in x**2;
+   !> truncation below (pi/2)**23 / 23! < 1.2e-18): ten multiply-adds, which gcc inlines and
+   !> vectorises (private: a public procedure is not inlined under -fPIC), for the fast
+   !> traction's sin(phi) at every node (issue #30); within 2.3e-16 of libm's sin there
+   !> (test_traction_fast).
+   elemental real(wp) function taylor_sin(x) result(y)
+      real(wp), intent(in) :: x
+      integer :: q_
+      real(wp), parameter :: C(10) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 2.0_wp), q_ = 1, 10)]
+      real(wp) :: x2
+      x2 = x*x
+      y = x + x*x2*(C(1) + x2*(C(2) + x2*(C(3) + x2*(C(4) + x2*(C(5) + x2*(C(6) + x2*(C(7) + x2*(C(8) &
+          + x2*(C(9) + x2*C(10))))))))))
+   end function taylor_sin
 
    !> Power (W) of contact c with the EHD film: ehd_contact_traction's t%power, the same
    !> nodes and sums bit for bit, without the other integrals (the minimum-dissipation

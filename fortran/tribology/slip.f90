@@ -28,7 +28,8 @@ module adore_tribology_slip
 
    public :: ball_race_contact_t, contact_traction_t, SIDE_OUTER, SIDE_INNER
    public :: contact_slip, pure_rolling_points, contact_traction, contact_kinematics, interior_extremum, &
-             major_axis_nodes, print_slip_node, contact_power, rolling_zones, axis_nodes, cross_slip
+             major_axis_nodes, print_slip_node, contact_power, rolling_zones, axis_nodes, cross_slip, &
+             take_kinematics
 
 
    !> Integrated contact quantities.
@@ -116,13 +117,20 @@ contains
    end subroutine pure_rolling_points
 
    !> Centre kinematics (no traction): spin (rad/s), entraining speed (m/s), R_x (m),
-   !> spin/roll ratio and centre slip, filled into t.
-   pure subroutine contact_kinematics(c, t)
+   !> spin/roll ratio and centre slip, filled into t; sin_cos: sin and cos of the contact
+   !> angle when the caller has computed them.
+   pure subroutine contact_kinematics(c, t, sin_cos)
       type(ball_race_contact_t), intent(in) :: c
       type(contact_traction_t), intent(inout) :: t
+      !> [sin(c%alpha), cos(c%alpha)] when the caller has them (the same libm values)
+      real(wp), intent(in), optional :: sin_cos(2)
       real(wp) :: n(2), u_ball, u_race, r_race
 
-      n = c%side*[sin(c%alpha), cos(c%alpha)]
+      if (present(sin_cos)) then
+         n = c%side*sin_cos
+      else
+         n = c%side*[sin(c%alpha), cos(c%alpha)]
+      end if
       u_ball = c%rho*(c%omega(1)*n(2) - c%omega(2)*n(1))
       r_race = c%r_b + c%rho*n(2)
       u_race = c%race_speed*r_race
@@ -134,6 +142,19 @@ contains
       t%spin_roll = 0.0_wp
       if (t%rolling_speed /= 0.0_wp) t%spin_roll = t%spin*t%rx/t%rolling_speed
    end subroutine contact_kinematics
+
+   !> The centre kinematics that contact_kinematics fills (centre slip, entraining speed,
+   !> spin, R_x, spin/roll), copied from k into t: for a caller that has them for the same
+   !> contact already.
+   pure subroutine take_kinematics(k, t)
+      type(contact_traction_t), intent(in) :: k
+      type(contact_traction_t), intent(inout) :: t
+      t%centre_slip = k%centre_slip
+      t%rolling_speed = k%rolling_speed
+      t%spin = k%spin
+      t%rx = k%rx
+      t%spin_roll = k%spin_roll
+   end subroutine take_kinematics
 
    !> Traction, power loss and kinematics of the contact (report eqs 1, 3, 4): traction
    !> law (the deck's curve or a traction-slip table, `adore_tribology_traction_law`), each zone between pure-rolling points
