@@ -165,7 +165,7 @@ def _case(args) -> dict:
             message = problems[0].format().split("\n")[0].replace(str(path), "deck")
             return row | {"outcome": "refused", "category": category(message), "message": message}
         start = time.perf_counter()
-        # one thread a case: the pool's workers share the cores (docs/dynamics.md, "Threads")
+        # one thread a case: the pool's workers share the cores (docs/performance.md, "Threads")
         proc = subprocess.run([exe, str(path), str(Path(tmp) / "case.prt"), "--steps", str(steps), "--threads", "1",
                                *extra],
                               capture_output=True, text=True)

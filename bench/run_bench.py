@@ -26,7 +26,7 @@ interpreter against the engine, and a sweep worker's boot.  The roller dynamics 
 Appendix D run (the deck's 4000 steps; budget ROLLER_BUDGET s wall, goal 1 s) standalone and f2py, as the ball
 dynamics' rows, and once the run to the report's simulated time (`--duration ROLLER_REPORT_DURATION`, the report's
 tau 76.18).  Every run takes the default threads (run option threads: OMP_NUM_THREADS, else the
-cores, at most 4; docs/dynamics.md, "Threads"), and the executable's full runs once more with `--threads 1`.
+cores, at most 4; docs/performance.md, "Threads"), and the executable's full runs once more with `--threads 1`.
 Results are printed, and written to bench/results/latest.json.
 """
 

@@ -127,7 +127,7 @@ def _case(args) -> dict:
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "case.inp"
         deck.save(path)
-        # one thread a case: the pool's workers share the cores (docs/dynamics.md, "Threads")
+        # one thread a case: the pool's workers share the cores (docs/performance.md, "Threads")
         cmd = [exe, str(path), str(Path(tmp) / "case.prt"), "--revolutions", str(revolutions), "--threads", "1"]
         if rolling:
             cmd.append("--rolling-resistance")

@@ -17,11 +17,11 @@ from .errors import AdoreEngineError, AdoreError, AdoreInputError, AdoreInterrup
 
 # The engine's threads (run option threads) sleep between its parallel loops instead of
 # spinning, unless the environment says otherwise: OpenMP's run-time reads this when the
-# engine extension loads it (docs/dynamics.md, "Threads"; fortran/app/wait_policy.c for adore)
+# engine extension loads it (docs/performance.md, "Threads"; fortran/app/wait_policy.c for adore)
 os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 #: the process that imported pyadore: a run in a child forked from it takes one thread unless
 #: told otherwise (OpenMP's run-time of GCC, libgomp, does not survive a fork: a child's
-#: first parallel loop after the parent ran one waits forever; docs/dynamics.md, "Threads")
+#: first parallel loop after the parent ran one waits forever; docs/performance.md, "Threads")
 _IMPORT_PID = os.getpid()
 
 __all__ = ["run", "sweep", "read_traction_table", "Result", "BALL_STARTS", "AdoreError", "AdoreInputError",

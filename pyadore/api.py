@@ -48,7 +48,7 @@ class Result:
     #: ``cage_heat_W`` (the cage contacts' friction heat, part of the print's power loss),
     #: ``energy_rate_W`` (mechanical energy's mean rate), ``whirl_frame_W`` (the power of the
     #: centripetal and Coriolis terms a free cage's ADORE whirl coordinates omit, 0 by
-    #: Newton's equations: docs/dynamics.md, "The cage's whirl frame"),
+    #: Newton's equations: docs/cage.md, "The cage's whirl frame"),
     #: ``drive_ratio`` (drive / dissipation), ``inner_force_N`` and ``inner_carried_N``
     #: (the inner race's mean contact force and the applied load plus its weight),
     #: ``inner_residual_N``, ``outer_force_N``, ``outer_expected_N``, ``outer_residual_N``,

@@ -2,7 +2,7 @@
 debug`: a debug `adore` (-O0, run-time checks) beside the release f2py extension).
 
 The release build's vectorised loops call glibc's libmvec exp/log/sin/cos, the -O0 build the
-scalar functions: the two differ in round-off (docs/dynamics.md, "Cost of a derivative call"),
+scalar functions: the two differ in round-off (docs/performance.md, "Cost of a derivative call"),
 so their prints can differ by one unit of a printed digit where a value sits on a rounding
 boundary.
 """

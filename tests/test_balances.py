@@ -121,7 +121,7 @@ def test_dynamic_run_reports_closed_balances(tmp_path, base, revolutions):
 def test_axial_deck_balances_at_its_own_error_limit(tmp_path):
     """The deep-groove axial deck at its own Rec 2.1 (error limit 1e-4), one revolution: the
     drive power equals the dissipation plus the energy change within 1 % (issue #28).  Before
-    the inner race joined the implicit part (the arrowhead Jacobian, docs/dynamics.md "The
+    the inner race joined the implicit part (the arrowhead Jacobian, docs/integrator.md "The
     stiff-aware method") every ball zigzagged on its contacts from step to step and the
     contact damping dissipated 27 mW of 66 mW (closure -42 %); measured now with the
     default free cage -0.032 %, the contact damping 3.6e-10 W (centred: -0.016 %, 2.7e-8 W)."""

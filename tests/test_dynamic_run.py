@@ -228,7 +228,7 @@ def test_explicit_steps_override_the_deck(runs):
     assert STEP_MIN <= st["minimum_step_size"] <= st["last_step_size"] <= st["maximum_step_size"] <= STEP_MAX
     assert N * st["minimum_step_size"] <= tau <= N * st["maximum_step_size"] * 1.00001
     assert 0 < st["max_truncation"]
-    # the deck's method (ARK4(3)6L[2]SA, docs/dynamics.md "The stiff-aware method"): 1 call at
+    # the deck's method (ARK4(3)6L[2]SA, docs/integrator.md "The stiff-aware method"): 1 call at
     # the start, 6 per accepted step (5 stages and the call at the new state), 5 per attempt
     # rejected by its error, per arrowhead Jacobian 9 ball columns and 6 inner-race unknowns
     # plus, after a rejection, 1 at the state (at a step's start the state's own call gives

@@ -184,7 +184,7 @@ def test_appendix_c_free_cage_to_step_2500(tmp_path, whirl):
     the report's whirl/cage speed ratio (its time-averaged section 4 ratios) within 2 %, and
     step 2500's total power loss and basic life are within 10 % of the report's.  By
     Newton's equations (``inertial``) the same cage whips on its land films: near-contact
-    all the time (docs/dynamics.md, "The cage's whirl frame")."""
+    all the time (docs/cage.md, "The cage's whirl frame")."""
     # Appendix C as written: the default cage is the deck's (Rec 3.3 all zeros: free)
     res = pyadore.run(ROOT / "decks" / "appendix_c_ball.inp", out=tmp_path / f"{whirl}.prt", cage_whirl=whirl,
                       progress=False)
@@ -207,7 +207,7 @@ def test_appendix_c_free_cage_to_step_2500(tmp_path, whirl):
     gold = _golden_2500().table("performance").iloc[0]
     for col in ("total_power_loss_W", "basic_fatigue_life_hours"):
         assert run[col] == pytest.approx(gold[col], rel=0.10), col
-    # the starved lands (land_oil's default 100 um; docs/dynamics.md, "The guide-land film
+    # the starved lands (land_oil's default 100 um; docs/cage.md, "The guide-land film
     # where the report has none"): as the report's prints at open gaps, no land force or
     # loss at step 2500 (its gaps stay above the oil layer), and over the second half the
     # land film engages rarely and lightly - which 2 500-step trajectory a build follows is

@@ -2,7 +2,7 @@
 Appendix D print.
 
 The report's step 4000 is at tau = 76.18 (5.453 ms); the engine's steps are its own (the
-deck's INT METHOD 5 is the IMEX ARK4 here, docs/dynamics.md "Roller dynamics"), so its step
+deck's INT METHOD 5 is the IMEX ARK4 here, docs/rollers.md "Roller dynamics"), so its step
 4000 is at another time and its rollers at other azimuths.  The comparison with the report is
 made at the report's simulated time (`--duration 5.453e-3`), where every roller sits within
 0.2 deg of the golden roller's azimuth: contact loads (5 %), orbital speeds (1 %) and the
@@ -147,7 +147,7 @@ def test_full_appendix_d_run(tmp_path, adore_exe):
     """The one full run, its cage held centred: the deck's 4000 steps end in Normal
     termination with at most ADORE's derivative calls, every printed step (Rec 1: every 500)
     with its section 1a.  (The free cage, the default, is integrated by ROS34PW2 with a
-    block Jacobian every step: 62 509 calls for the 4000 steps, docs/dynamics.md, "The
+    block Jacobian every step: 62 509 calls for the 4000 steps, docs/cage.md, "The
     cage's whirl frame".)"""
     out = tmp_path / "full.prt"
     proc = subprocess.run([str(adore_exe), str(DECK), str(out), "--cage", "centred"], capture_output=True, text=True,
@@ -166,7 +166,7 @@ def test_full_appendix_d_run(tmp_path, adore_exe):
 def free_report_time_run(tmp_path_factory, adore_exe):
     """Appendix D with its cage as the deck's Rec 3.3 says (free: `--cage deck`) to the
     report's time; a free roller cage under the deck's INT METHOD 5 is integrated by
-    ROS34PW2 (docs/dynamics.md, "The free roller cage's pocket episode")."""
+    ROS34PW2 (docs/rollers.md, "The free roller cage's pocket episode")."""
     out = tmp_path_factory.mktemp("roller_free_report_time") / "f.prt"
     proc = subprocess.run([str(adore_exe), str(DECK), str(out), "--cage", "deck", "--duration", str(REPORT_TIME)],
                           capture_output=True, text=True, timeout=600)
@@ -176,7 +176,7 @@ def free_report_time_run(tmp_path_factory, adore_exe):
 
 
 def test_free_cage_at_the_report_time_meets_the_golden_gates(free_report_time_run):
-    """The report's runs had a free cage (Rec 3.3, docs/dynamics.md "The cage's degrees of
+    """The report's runs had a free cage (Rec 3.3, docs/cage.md "The cage's degrees of
     freedom"): with it, the gates of the centred run above - orbital speeds 1 %, outer
     loads 5 %, inner loads 5 % (the load zone's edge, the known deviation, 10 %), total
     power loss 15 % - and fewer derivative calls than ADORE."""
@@ -256,7 +256,7 @@ def test_free_roller_cage_starts_on_the_deck_whirl_and_touches_its_dry_lands_onl
     eccentricity about the (fixed) outer race exceeds the radial clearance (metal), never
     inside it.  By Newton's equations (cage_whirl=inertial) the cage rides its lands (land
     force in some steps); in ADORE's whirl coordinates it moves inside the clearance without
-    touching them over these 300 steps (docs/dynamics.md, "The cage's whirl frame")."""
+    touching them over these 300 steps (docs/cage.md, "The cage's whirl frame")."""
     run = free_cage_run if whirl == "adore" else _free_cage(tmp_path / "i.prt", whirl, adore_exe)
     text = run.read_text()
     assert "Normal termination: Last Step Number =     300" in text

@@ -1,4 +1,4 @@
-"""The flanged example deck (issue #26 item 2; docs/dynamics.md "Flanges"): the NUP-type
+"""The flanged example deck (issue #26 item 2; docs/rollers.md "Flanges"): the NUP-type
 cylindrical roller bearing under 5 kN radial + 0.5 kN axial load runs step 0 and its time
 steps with the roller end / flange contacts, the cylindrical pocket variant (kPocType -1)
 runs, and what the flange model cannot honour is an input error.  The hand calculations
@@ -79,7 +79,7 @@ def test_roller_extension_record_on_a_ball_deck_is_an_input_error(tmp_path, ador
 
 
 def test_flanged_deck_step0_carries_the_axial_load(tmp_path, adore_exe):
-    """Step 0 of the flanged deck (docs/dynamics.md, "Flanges at step 0"): the quasi-static
+    """Step 0 of the flanged deck (docs/rollers.md, "Flanges at step 0"): the quasi-static
     start puts the flange contacts into the equilibrium, so section 3's roller force on the
     inner race has the axial component -500 N against the applied 500 N (it printed 0 before),
     and the block after step 0 lists each roller's flange loads, whose axial components

@@ -1,4 +1,4 @@
-"""The run option ``threads`` (docs/dynamics.md, "Threads"): the rolling elements' contacts of
+"""The run option ``threads`` (docs/performance.md, "Threads"): the rolling elements' contacts of
 every derivative call on an OpenMP team, the sums over the elements in element order, so a
 run's files are the same bit for bit on any number of threads - the print apart from its
 listing line naming the threads.  Also: the default count (OMP_NUM_THREADS, else the

@@ -1,4 +1,4 @@
-/* The OpenMP wait policy of the standalone `adore` program (docs/dynamics.md, "Threads"):
+/* The OpenMP wait policy of the standalone `adore` program (docs/performance.md, "Threads"):
  * OMP_WAIT_POLICY=PASSIVE unless the environment sets it.  Between the derivative calls'
  * parallel loops libgomp's default lets its threads spin (300 000 rounds) instead of
  * sleeping; on a machine whose cores are busy with other work a spinning thread holds a

@@ -167,7 +167,7 @@ contains
    end subroutine ball_eval
 
    !> The equations of motion's border shares of the last evaluation (ball_system_t's: the
-   !> integrator's border rows of the arrowhead Jacobian, docs/dynamics.md "The arrowhead").
+   !> integrator's border rows of the arrowhead Jacobian, docs/integrator.md "The arrowhead").
    subroutine ball_border_shares(self, shares, ok)
       class(ball_kind_t), intent(in) :: self
       real(wp), intent(out) :: shares(:, :)

@@ -207,7 +207,7 @@ contains
       method = run_int_method(self%options%integrator, self%bearing%controls%int_method)
       ! a free cage under the deck's INT METHOD 5: the Rosenbrock-W ROS34PW2, not the IMEX
       ! ARK4, which at the deck's error limit holds pocket contacts the accurate integrations
-      ! do not have (docs/dynamics.md, "The free roller cage's pocket episode")
+      ! do not have (docs/rollers.md, "The free roller cage's pocket episode")
       if (cage_free .and. self%options%integrator == "deck" .and. method == INT_METHOD_ARK436) &
          method = INT_METHOD_ROS34PW2
       associate (s => self%step0, e => self%step0%equilibrium)

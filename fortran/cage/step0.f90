@@ -237,7 +237,7 @@ contains
    !> state of rigid bodies in contact has; report 4.4.12 rejects such a contact as abnormal),
    !> the centre's offset from the guiding race is scaled down, direction kept, to the largest
    !> factor that leaves every gap open (bisection to 1e-12; s%start_scale), the speeds from
-   !> that centre (a free cage's dynamic start; docs/dynamics.md, "The cage's degrees of
+   !> that centre (a free cage's dynamic start; docs/cage.md, "The cage's degrees of
    !> freedom").
    subroutine solve_cage_step0(inp, re_centre, azimuth, mean_orbital, d, pocket_kind, &
                                pocket_clearance, cage_od, cage_id, lands, race_centre, race_growth, s, error, &

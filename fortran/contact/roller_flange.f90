@@ -1,5 +1,5 @@
 !> Roller end / race flange contact of a cylindrical roller bearing (issue #26 item 2;
-!> docs/dynamics.md, "Flanges"): the spherical roller end against a flange face, a Hertz
+!> docs/rollers.md, "Flanges"): the spherical roller end against a flange face, a Hertz
 !> point contact.
 !>
 !> Geometry (report Appendix A's guide flange data kFlngInd, flngHt, flngAng, flngCls and

@@ -1,4 +1,4 @@
-!> The threads of a run's derivative (run option `threads`, docs/dynamics.md, "Threads"):
+!> The threads of a run's derivative (run option `threads`, docs/performance.md, "Threads"):
 !> the rolling elements' contact work of every derivative call is shared by an OpenMP team,
 !> each element's loads in its own slot and every sum over the elements taken afterwards in
 !> a fixed order, so that a run's results are the same bit for bit on any number of threads.

@@ -132,7 +132,7 @@ contains
       bearing%full_film = opts%full_film_lambda*roughness%sigma_rms
       ! the EHD film's elasticity (run option; docs/tribology.md, "The film's elasticity")
       bearing%film_shear_modulus = opts%film_shear_modulus
-      ! the guide lands' lubricant layer (run option land_oil; docs/dynamics.md, "The guide-land
+      ! the guide lands' lubricant layer (run option land_oil; docs/cage.md, "The guide-land
       ! film where the report has none")
       bearing%land_oil_layer = opts%land_oil
       table = len_trim(opts%traction_table) > 0

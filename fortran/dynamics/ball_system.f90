@@ -37,7 +37,7 @@ module adore_dynamics_ball_system
    !> The columns of each ball's block of the Jacobian of the linearly implicit methods (of its
    !> 13 state values): position and velocity, where the race contacts' normal stiffness and
    !> damping act, and angular velocity, where the traction's slip damping acts
-   !> (docs/dynamics.md, "The stiff-aware method")
+   !> (docs/integrator.md, "The stiff-aware method")
    integer, parameter :: BALL_JACOBIAN_COLUMNS(9) = [1, 2, 3, 4, 5, 6, 11, 12, 13]
 
    !> The ball bearing's equations of motion dy/dtau (integrator's derivative_t).
@@ -49,12 +49,12 @@ module adore_dynamics_ball_system
       !> pocket and guide-land contacts on (default): the pockets keep the balls' spacing
       !> (without them the balls bunch and the ball set's rotating unbalance distorts the
       !> load distribution); the guide lands' metallic contact is on, their short-bearing film
-      !> only with land_film (docs/dynamics.md, "Cage dynamics")
+      !> only with land_film (docs/cage.md, "Cage dynamics")
       logical :: cage = .true.
       !> the guide lands' hydrodynamic (Ocvirk) film.  Off by default: with it the Appendix C
       !> cage ends in the film's half-frequency whirl (oil whip, ~700 N of film force on the
       !> inner race), which the report's figures 21-22 and step-2500 print do not show
-      !> (docs/dynamics.md, "Cage dynamics")
+      !> (docs/cage.md, "Cage dynamics")
       logical :: land_film = .false.
       !> normal damping of the ball/race contacts, beta (s) of ball_bearing_loads' damping:
       !> Kraemer's stiffness-proportional rolling-bearing damping at its lower end (docs/
@@ -62,7 +62,7 @@ module adore_dynamics_ball_system
       real(wp) :: contact_damping = 2.5e-6_wp
       !> the cage's degrees of freedom (report 4.4.6): .true. (default) constrains its
       !> translation and tilt - it stays centred on the bearing axis and turns about its own
-      !> axis, driven by its pockets; .false. frees all six (docs/dynamics.md, "Cage dynamics":
+      !> axis, driven by its pockets; .false. frees all six (docs/cage.md, "Cage dynamics":
       !> the free cage of Appendix C either whips on its land films or rides its lands)
       logical :: cage_spin_only = .true.
       !> a free cage's mass centre in ADORE's whirl coordinates (adore_dynamics_cage_whirl;
@@ -71,7 +71,7 @@ module adore_dynamics_ball_system
       !> (m) within it of the bearing axis ADORE's whirl terms fade to Newton's
       !> (whirl_frame_acceleration's r_blend; the whirl angle is undefined on the axis): a
       !> tenth of the smallest guide land's radial clearance, else of the pockets' (set by
-      !> start_ball_dynamics; docs/dynamics.md, "The cage's whirl frame")
+      !> start_ball_dynamics; docs/cage.md, "The cage's whirl frame")
       real(wp) :: whirl_blend = 0.0_wp
       !> the bodies' degrees of freedom (adore_model_condition; the bearing kind sets them
       !> from its operating condition); not allocated: those of cage_spin_only
@@ -109,7 +109,7 @@ module adore_dynamics_ball_system
       type(error_type), allocatable :: failure   !< why the last evaluation returned DERIV_FAIL
       !> the border of the integrator's arrowhead Jacobian (packed indices; set by
       !> start_ball_dynamics: the inner race's translation and a free cage's unknowns), whose
-      !> rows border_shares gives per ball (docs/dynamics.md, "The stiff-aware method")
+      !> rows border_shares gives per ball (docs/integrator.md, "The stiff-aware method")
       integer, allocatable :: jacobian_border(:)
    contains
       procedure :: eval => ball_system_eval
@@ -336,7 +336,7 @@ contains
 
    !> The integration method of the ball dynamics for the deck's Rec 1 int_method (INT METHOD):
    !> 5, the value of both of the report's decks, is the additive (IMEX) Runge-Kutta method
-   !> ARK4(3)6L[2]SA with the balls' blocks of the Jacobian taken implicitly (docs/dynamics.md,
+   !> ARK4(3)6L[2]SA with the balls' blocks of the Jacobian taken implicitly (docs/integrator.md,
    !> "INT METHOD"); other codes as the integrator reads them.
    pure integer function ball_int_method(deck_code) result(method)
       integer, intent(in) :: deck_code
@@ -435,7 +435,7 @@ contains
       end associate
       if (present(int_method)) settings%int_method = int_method
       if (settings%int_method == INT_METHOD_ARK436) then
-         ! the IMEX method's tuning (docs/dynamics.md, "The stiff-aware method"): a new arrowhead
+         ! the IMEX method's tuning (docs/integrator.md, "The stiff-aware method"): a new arrowhead
          ! Jacobian every 10 steps (and after a rejected step; with the inner race in the border
          ! a stale J lets the radial deck's balls oscillate on their contacts: 27 mW of contact
          ! damping at 20, 0.2 mW at 10, 27 mW before the border); safety factor 0.8 (0.9 rejected 29 % of the attempts)
@@ -454,7 +454,7 @@ contains
       ! implicit too).  A free cage stays explicit: bordered too (13 more columns), the deep-
       ! groove radial deck's 3 revolutions took 38 272 calls with 96 mW of contact damping and
       ! closure -28 % against 24 597, 0.22 mW and -0.45 % without; Appendix C 23 398 calls
-      ! against 19 496 (docs/dynamics.md, "The arrowhead")
+      ! against 19 496 (docs/integrator.md, "The arrowhead")
       sys%jacobian_border = [(BODY_SIZE*(b%n_elements + 2) + k, k=1, 6)]
       call it%set_jacobian_blocks([(BODY_SIZE*(k - 1) + 1, k=1, b%n_elements)], BODY_SIZE, BALL_JACOBIAN_COLUMNS, &
                                   error, border=sys%jacobian_border)

@@ -10,7 +10,7 @@
 !> when the whirl radius r and angle psi are integrated as
 !>     r'' = F_r / m,     r psi'' = F_t / m
 !> (polar coordinates without the centripetal and Coriolis accelerations), the reading
-!> docs/dynamics.md ("The cage's whirl frame") documents with its evidence.  In inertial
+!> docs/cage.md ("The cage's whirl frame") documents with its evidence.  In inertial
 !> components the mass centre's acceleration is then F/m plus whirl_frame_acceleration.
 module adore_dynamics_cage_whirl
    use adore_core_kinds, only: wp
@@ -28,7 +28,7 @@ contains
    !> header).  The whirl angle is undefined on the axis, where these terms grow without
    !> bound (v_t**2 / r for a cage passing near it): within r_blend (m; default 0) of the axis
    !> they are scaled by r / r_blend, so the cage crosses the axis by Newton's equations
-   !> (docs/dynamics.md, "The cage's whirl frame"); zero below r = 1e-12 m.
+   !> (docs/cage.md, "The cage's whirl frame"); zero below r = 1e-12 m.
    pure function whirl_frame_acceleration(p, v, r_blend) result(a)
       real(wp), intent(in) :: p(2), v(2)
       real(wp), intent(in), optional :: r_blend

@@ -46,7 +46,7 @@ module adore_dynamics_integrator
 
    !> INT METHOD codes pyadore knows (Rec 1 field int_method): 3 Bogacki-Shampine 3(2),
    !> 5 Dormand-Prince 5(4).  Only 5 is attested (both decks); its meaning in ADORE is not.
-   !> pyadore's own codes: 34 ROS34PW2, 43 ARK4(3)6L[2]SA (docs/dynamics.md, "INT METHOD").
+   !> pyadore's own codes: 34 ROS34PW2, 43 ARK4(3)6L[2]SA (docs/integrator.md, "INT METHOD").
    integer, parameter :: INT_METHOD_BS32 = 3, INT_METHOD_DP54 = 5, INT_METHOD_ROS34PW2 = 34, INT_METHOD_ARK436 = 43
 
    !> Step-size controller constants (DOPRI5's bounds of h_new/h; the safety factor is a setting).

@@ -5,7 +5,7 @@
 !> call per column for all blocks and one per border unknown).  A submodule of
 !> adore_dynamics_integrator: it works on integrator_t's workspace and statistics; the
 !> explicit pairs, the step control and the statistics stay in the parent
-!> (docs/dynamics.md, "The stiff-aware method").
+!> (docs/integrator.md, "The stiff-aware method").
 submodule(adore_dynamics_integrator) adore_dynamics_integrator_implicit
    implicit none
 

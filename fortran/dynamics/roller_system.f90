@@ -434,7 +434,7 @@ contains
       end if
       ! a free cage: a new block Jacobian every step (a kept one lags the pocket contacts
       ! opening and closing; measured with ROS34PW2, the free cage's method under the deck's
-      ! INT METHOD 5: docs/dynamics.md, "The free roller cage's pocket episode")
+      ! INT METHOD 5: docs/rollers.md, "The free roller cage's pocket episode")
       if (sys%cage_free) settings%jacobian_every = 1
       call it%init(size(y), settings, error, scale=roller_error_scale(n, scales(1), scales(3), 0.5_wp*b%dm, &
                                                                        0.5_wp*b%roller%roller_length))

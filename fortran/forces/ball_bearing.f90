@@ -265,7 +265,7 @@ contains
    !> 2.5)e-5 k (E. Kraemer, Dynamics of Rotors and Foundations, Springer 1993, ch. 6);
    !> docs/dynamics.md, "Contact damping".
    !> land_film (default .true.): the guide lands' short-bearing film (adore_contact_cage_land);
-   !> .false. keeps only their metallic contact (docs/dynamics.md, "Cage dynamics").
+   !> .false. keeps only their metallic contact (docs/cage.md, "Cage dynamics").
    !> rolling (default .false.): the race contacts' EHD rolling resistance (rolling_couple).
    !> lubricant_temperature (K, the TEMP_* order; default: s%temperature): the bulk
    !> temperatures the race contacts' lubricant (film, EHD traction, rolling resistance) is

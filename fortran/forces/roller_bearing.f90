@@ -428,7 +428,7 @@ contains
       end do
    end subroutine cylindrical_pocket_loads
 
-   !> The roller's ends against the race flanges (adore_contact_roller_flange; docs/dynamics.md,
+   !> The roller's ends against the race flanges (adore_contact_roller_flange; docs/rollers.md,
    !> "Flanges"): each contact's Hertz load with the stiffness-proportional damping of the
    !> slices (beta k ddelta/dt, kept >= 0), its traction by the run's law against the sliding
    !> of the roller end over the flange, t = kappa(|u|) Q u/|u| opposing u; the force and its

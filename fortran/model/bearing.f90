@@ -72,7 +72,7 @@ module adore_model_bearing
       real(wp) :: corner_radius(2) = 0.0_wp    !< roller corner radii, -x and +x end (m)
       real(wp) :: race_crown(2) = 1.0e10_wp    !< outer, inner race crown radii (m)
       real(wp) :: race_length(2) = 0.0_wp      !< outer, inner race length 1 (Rec 5B.1, m; 0 = none)
-      !> pyadore's Rec 5B.2 (docs/dynamics.md, "Flanges"): kPocType (0 rectangular, -1
+      !> pyadore's Rec 5B.2 (docs/rollers.md, "Flanges"): kPocType (0 rectangular, -1
       !> cylindrical, report 4.4.11); flange present (end 1 = -x, end 2 = +x; race 1 outer, 2
       !> inner); spherical end radius (m; 0 flat); flange height (m), lay-back angle (rad) and
       !> axial play between the race's flange faces (m), per race
@@ -149,11 +149,11 @@ module adore_model_bearing
       !> decks) are not used.
       real(wp) :: cage_friction(2) = 0.05_wp
       !> lubricant layer on the guide lands (m; run option land_oil): the land film exists where
-      !> the local gap is below it (adore_contact_cage_land, starved land; docs/dynamics.md,
+      !> the local gap is below it (adore_contact_cage_land, starved land; docs/cage.md,
       !> "The guide-land film where the report has none"); huge: flooded
       real(wp) :: land_oil_layer = 1.0e-4_wp
       !> Rec 3.3's eleven flags as the deck gives them.  Their positions are not identified
-      !> (docs/dynamics.md, "The cage's degrees of freedom"); the run option cage=deck reads
+      !> (docs/cage.md, "The cage's degrees of freedom"); the run option cage=deck reads
       !> them through adore_model_condition's deck_constraints (all zero: nothing constrained).
       integer :: dof_flags(11) = 0
       ! operating conditions, Rec 2.7, 9.0, 9.1.x, 11

@@ -223,7 +223,7 @@ contains
 
    end subroutine build_bearing
 
-   !> pyadore's Rec 5B.2 (roller ends, flanges, pocket type; docs/dynamics.md, "Flanges"):
+   !> pyadore's Rec 5B.2 (roller ends, flanges, pocket type; docs/rollers.md, "Flanges"):
    !> angles from degrees to radians.
    subroutine read_roller_extension(deck, b, error)
       type(deck_t), intent(in) :: deck

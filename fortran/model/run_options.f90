@@ -93,20 +93,20 @@ module adore_model_run_options
       real(wp) :: duration = 0.0_wp
       !> the same in shaft (inner race) revolutions; 0: none
       real(wp) :: revolutions = 0.0_wp
-      !> the cage's degrees of freedom (report 4.4.6; docs/dynamics.md, "The cage's degrees of
+      !> the cage's degrees of freedom (report 4.4.6; docs/cage.md, "The cage's degrees of
       !> freedom"): "deck" (the default: the deck's own constraints, Rec 3.3 all zero or
       !> Appendix D's pattern constrain nothing of the cage, a free cage), "centred"
       !> (translation and tilt constrained, turning about its axis) or "free" (all six
       !> integrated, the guide lands' film on)
       character(len=16) :: cage = "deck"
-      !> the equations of a free cage's mass centre in its whirl plane (docs/dynamics.md, "The
+      !> the equations of a free cage's mass centre in its whirl plane (docs/cage.md, "The
       !> cage's whirl frame"): "adore" (ADORE's, as report 4.4.4 and its prints show them: the
       !> whirl radius and angle integrated as r'' = F_r/m, r psi'' = F_t/m, so a cage free of
       !> interactions keeps its whirl circle) or "inertial" (Newton's: the centripetal and
       !> Coriolis accelerations of the whirl included)
       character(len=16) :: cage_whirl = "adore"
       !> the lubricant layer on the cage's guide lands (m): the land film exists where the local
-      !> gap is below it (docs/dynamics.md, "The guide-land film where the report has none");
+      !> gap is below it (docs/cage.md, "The guide-land film where the report has none");
       !> default 10 um, pyadore's choice (the report prints no land force at gaps of 0.12 mm
       !> and more); 0: dry lands (metallic contact only); a value above the clearance: flooded
       real(wp) :: land_oil = 1.0e-4_wp
@@ -132,7 +132,7 @@ module adore_model_run_options
       !> transients"): each body's bulk temperature relaxes toward the steady field
       logical :: thermal_transient = .false.
       !> threads of the time integration's derivative (the rolling elements' contacts shared
-      !> by an OpenMP team; the results the same bit for bit on any number; docs/dynamics.md,
+      !> by an OpenMP team; the results the same bit for bit on any number; docs/performance.md,
       !> "Threads"); 0: automatic (adore_core_threads' run_threads: OMP_NUM_THREADS, else the
       !> processors, at most 4)
       integer :: threads = 0

@@ -269,7 +269,7 @@ contains
    end subroutine write_roller_step0
 
    !> The flanged start's roller end / flange contacts (adore_quasistatic_roller_flange_equilibrium),
-   !> a block after step 0's sections (the report's print has no flange columns; docs/dynamics.md,
+   !> a block after step 0's sections (the report's print has no flange columns; docs/rollers.md,
    !> "Flanges at step 0"): per roller its axial position (m), tilt (rad) and each flange's Hertz
    !> load (N), then the inner race's axial position and the flanges' axial force on it (N).
    subroutine write_roller_flanges(unit, s)

@@ -1,4 +1,4 @@
-!> The quasi-static start of a flanged cylindrical roller bearing (issue #26; docs/dynamics.md,
+!> The quasi-static start of a flanged cylindrical roller bearing (issue #26; docs/rollers.md,
 !> "Flanges at step 0"): every roller in radial, tilting and axial equilibrium under its
 !> slice contacts (adore_quasistatic_roller_equilibrium's roller_contacts), its centrifugal
 !> force and its roller end / flange contacts (adore_contact_roller_flange's flange_contact,

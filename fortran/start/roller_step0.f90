@@ -24,7 +24,7 @@
 !>   report prints no flange loads at step 0.  With Rec 5B.2 flanges (a spherical roller end,
 !>   R_e >= L/2) the start is adore_quasistatic_roller_flange_equilibrium: each roller's axial
 !>   position and tilt with its flange contacts, the inner race's axial position, so that the
-!>   flanges carry the axial load (docs/dynamics.md, "Flanges at step 0").  Roller skew is
+!>   flanges carry the axial load (docs/rollers.md, "Flanges at step 0").  Roller skew is
 !>   prescribed 0; roller tilt is solved.
 !> * Race and roller weights are left out of the start (see solve_roller_step0).
 !> * Tribology (roller_tribology): slice slips, tractions and contact losses of both races
@@ -162,7 +162,7 @@ contains
       allocate (w(b%n_elements))
       w = s%orbital_speed
       associate (r => b%roller)
-         ! flanges at step 0 (docs/dynamics.md, "Flanges at step 0"); a flange set the contact
+         ! flanges at step 0 (docs/rollers.md, "Flanges at step 0"); a flange set the contact
          ! model cannot honour (flat or short end) is left to the dynamics' input error
          if (any(r%flange) .and. r%end_radius > 0.0_wp .and. r%end_radius >= 0.5_wp*r%roller_length) then
             s%flanges = roller_flanges(b%d, r%roller_length, r%corner_radius, r%end_radius, r%flange, &
@@ -281,7 +281,7 @@ contains
                                          sum(s%tr_i%sliding))
    end subroutine roller_wear
 
-   !> The flange contacts' traction loss (W) at the start (docs/dynamics.md, "Flanges at step
+   !> The flange contacts' traction loss (W) at the start (docs/rollers.md, "Flanges at step
    !> 0"): each loaded contact of the flanged equilibrium with the start's kinematics - roller
    !> centre orbiting at w_m, its absolute spin w_m + W about its axis, the races turning -
    !> the sliding u of the roller end over the flange (adore_contact_roller_flange) and the

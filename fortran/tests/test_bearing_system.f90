@@ -298,7 +298,7 @@ contains
    end subroutine test_run_options_text
 
    !> The ball kind hands the integrator its equations' border shares (the arrowhead
-   !> Jacobian's border rows C_b, docs/dynamics.md "The arrowhead"): after a step they are
+   !> Jacobian's border rows C_b, docs/integrator.md "The arrowhead"): after a step they are
    !> available, not all zero, and those of ball_system_t's own border_shares bit for bit
    !> (before session 18 the kind did not forward them and every run had C_b = 0).
    subroutine check_border_shares_forwarded(sys, n)

@@ -593,7 +593,7 @@ contains
    !> tight run (measured 0.053 %, 0.32 %, 0.37 um).  The deck's own limit 1e-4 does not reach
    !> the bound (measured 1.29 %, 1.50 %, 26.7 um): its error lies along the orbit, the balls'
    !> places in their pocket clearances, a neutral motion that integrates the balls' orbital
-   !> speed errors (docs/dynamics.md, "Where the error at the deck's limit comes from"); across
+   !> speed errors (docs/integrator.md, "Where the error at the deck's limit comes from"); across
    !> the orbit (axial and radial, where the contact loads are made) every ball is within the
    !> bound's 2 um (measured 0.26 um), which the test asserts at the deck's limit.
    subroutine test_accuracy_against_a_tight_run()

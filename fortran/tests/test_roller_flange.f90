@@ -1,7 +1,7 @@
 !> Engine unit tests of the roller end / flange contacts (fortran/contact/roller_flange.f90,
 !> the flange hook of fortran/forces/roller_bearing.f90) and of the flanged example deck
 !> decks/examples/cylindrical_roller_nup_combined.inp against hand calculations
-!> (docs/dynamics.md, "Flanges"): the geometry of the laid-back face and the Hertz load of
+!> (docs/rollers.md, "Flanges"): the geometry of the laid-back face and the Hertz load of
 !> the end sphere, the force and moment on the roller, the axial load of the inner race
 !> carried by the flange contacts and each roller's axial and tilt balance.
 program test_roller_flange
@@ -135,7 +135,7 @@ contains
       call test_cylindrical_pocket_free_cage(m)
    end subroutine test_cylindrical_pocket
 
-   !> The cylindrical pocket of a free cage by hand (docs/dynamics.md, "The cylindrical pocket"):
+   !> The cylindrical pocket of a free cage by hand (docs/rollers.md, "The cylindrical pocket"):
    !> (1) the cage displaced by c/2 + delta0 along e_t(psi), the roller centred on the centred
    !> cage's pocket axis: every slice has delta0, the load K delta0**(10/9) L_p pushes the
    !> roller along +e_t, the cage takes -N e_t and the torque -R_p N about its centre's axis,
@@ -207,7 +207,7 @@ contains
    end subroutine test_cylindrical_pocket_free_cage
 
    !> The flanged example deck (NUP type, 5 kN radial + 0.5 kN axial, 3000 rpm) integrated
-   !> past its start transient, then averaged (docs/dynamics.md, "Flanges").
+   !> past its start transient, then averaged (docs/rollers.md, "Flanges").
    subroutine test_example_deck()
       type(bearing_t) :: b
       type(roller_step0_t) :: s0
@@ -420,7 +420,7 @@ contains
       end associate
    end subroutine test_flanged_step0
 
-   !> The flanged start against the dynamics' time average (docs/dynamics.md, "Flanges at
+   !> The flanged start against the dynamics' time average (docs/rollers.md, "Flanges at
    !> step 0"): the axial load each roller's inner flange carries, as its share of the inner
    !> flanges' total at its azimuth (the quasi-static loads interpolated over azimuth), at the
    !> dynamics' last state; the inner race's axial reaction.
@@ -454,7 +454,7 @@ contains
          call check(abs(sum(e%flange_axial(3:4, :)) - b%force(1)) < 1.0e-8_wp*b%force(1), &
                     "step 0: the inner flanges carry the applied axial load")
          ! the dynamics' flanges carry 130 % of it, the slices' axial traction of the skewed
-         ! rollers the rest (docs/dynamics.md, "Flanges"): the shares, not the totals, compare
+         ! rollers the rest (docs/rollers.md, "Flanges"): the shares, not the totals, compare
          call check(worst < 0.05_wp, "the loaded rollers' inner flange shares: step 0 against the dynamics within 5 %")
       end associate
    end subroutine compare_with_step0

@@ -21,7 +21,7 @@ _BANNER_INFO = re.compile(r"Bearing Type\s*=\s*(\S+)\s+Program\s+Mode\s*=\s*(\S+
 _TERMINATION = re.compile(r"Last Step Number\s*=\s*(\S+)\s+Final Time\s*=\s*(\S+)")
 _SLICES_TITLE = re.compile(r"^1a\.\s+Load Distribution Along Roller no\.\s*(\d+)\s*$")
 _SECTION_TITLE = re.compile(r"^(1|1a|2|3|4)\.\s")
-#: the flanged start's block after step 0 (docs/dynamics.md, "Flanges at step 0"; not in the report)
+#: the flanged start's block after step 0 (docs/rollers.md, "Flanges at step 0"; not in the report)
 _FLANGE_TITLE = "ROLLER END / FLANGE CONTACTS AT STEP 0"
 _FLANGE_RACE = re.compile(r"Inner race axial position\s+(\S+)\s+flanges' axial force on it\s+(\S+)")
 _LOAD_ROWS = L.LOAD_ROWS
@@ -275,7 +275,7 @@ class _Reader:
         return s.lstrip().startswith("step") and "(ADORE 5.0)" in s
 
     def flanges(self, i: int, step: Step) -> int:
-        """The flanged start's block after step 0 (docs/dynamics.md, "Flanges at step 0"):
+        """The flanged start's block after step 0 (docs/rollers.md, "Flanges at step 0"):
         ``step.tables["flanges"]``, per roller its axial position (m), tilt (rad) and each
         flange's load (N, columns ``outer_minus_x_N`` ... ``inner_plus_x_N``), and
         ``step.tables["flanges_race"]``, the inner race's axial position (m) and the flanges'

@@ -84,7 +84,7 @@ def run_case(case_id: str, deck_text: str, steps: int | None, options: dict | No
                 return out
             try:
                 # the sweep has its own progress bar; one thread a case unless the sweep's options
-                # say otherwise (its workers share the cores: docs/dynamics.md, "Threads")
+                # say otherwise (its workers share the cores: docs/performance.md, "Threads")
                 result = run(deck, steps=steps, out=prt, progress=False, **{"threads": 1, **(options or {})})
                 stamps["engine"] = time.time()
                 out["notes"] = list(result.notes)
