@@ -8,15 +8,12 @@ submodule(adore_bearings_ball) adore_bearings_ball_results
 
 contains
 
-   module integer function ball_n_values(self)
-      class(ball_kind_t), intent(in) :: self
+   module procedure ball_n_values
       ball_n_values = AVG_BALL_WEAR - 1 + 2*self%bearing%n_elements + max(self%bearing%n_lands, 0)
-   end function ball_n_values
+   end procedure ball_n_values
 
    !> ball_averaged_values at the last evaluated state.
-   module subroutine ball_values(self, v)
-      class(ball_kind_t), intent(in) :: self
-      real(wp), intent(out) :: v(:)
+   module procedure ball_values
       if (self%tribology_current) then
          call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v, &
                                    self%eom%lubricant_temperature, self%tribology)
@@ -24,13 +21,12 @@ contains
          call ball_averaged_values(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, v, &
                                    self%eom%lubricant_temperature)
       end if
-   end subroutine ball_values
+   end procedure ball_values
 
    !> Each ball's orbital position unwrapped from step to step (a step moves a ball far
    !> less than half a revolution); the accepted state's printed tribology (no flash), which
    !> its averages and history row share.
-   module subroutine ball_accepted(self)
-      class(ball_kind_t), intent(inout) :: self
+   module procedure ball_accepted
       type(thermal_heat_t) :: heat
       integer :: k
       ! the thermal model's heat of this accepted state (its time: the state's, s)
@@ -48,13 +44,10 @@ contains
                               flash=.false., lubricant_temperature=self%eom%lubricant_temperature, &
                               threads=self%eom%threads)
       self%tribology_current = .true.
-   end subroutine ball_accepted
+   end procedure ball_accepted
 
    !> A printed time step (adore_output_ball_dynamic_report) at the last evaluated state.
-   module subroutine ball_write_step(self, unit, step, t, mean)
-      class(ball_kind_t), intent(in) :: self
-      integer, intent(in) :: unit, step
-      real(wp), intent(in) :: t, mean(:)
+   module procedure ball_write_step
       real(wp) :: time, header(4), life, cage_avg(3)
       type(bearing_state_t) :: rates
       integer :: n
@@ -95,30 +88,22 @@ contains
             end if
          end associate
       end associate
-   end subroutine ball_write_step
+   end procedure ball_write_step
 
    !> The ball history (new_ball_history) with the options' element and stride; with the
    !> thermal model on, a column exit_fluid_temp_K.
-   module subroutine ball_new_history(self, h, n_steps, error)
-      class(ball_kind_t), intent(in) :: self
-      type(run_history_t), intent(out) :: h
-      integer, intent(in) :: n_steps
-      type(error_type), allocatable, intent(out) :: error
+   module procedure ball_new_history
       call new_ball_history(h, self%bearing, n_steps, self%options%history_element, error, &
                             self%options%history_stride)
       if (allocated(error)) return
       if (self%thermal%mode /= THERMAL_OFF) call add_history_column(h, "exit_fluid_temp_K")
-   end subroutine ball_new_history
+   end procedure ball_new_history
 
    !> A history row and its element row (ball_element_row, with the printed tribology of
    !> the race contacts; the flash temperature rise at printed rows only, h%printed) at the
    !> last evaluated state; with the thermal model on, its exit fluid temperature and the
    !> history element's contact temperatures from the last field.
-   module subroutine ball_record_row(self, h, step, t, mean)
-      class(ball_kind_t), intent(in) :: self
-      type(run_history_t), intent(inout) :: h
-      integer, intent(in) :: step
-      real(wp), intent(in) :: t, mean(:)
+   module procedure ball_record_row
       type(contact_print_t) :: tribology
       character(len=:), allocatable :: e
       call record_ball_history(h, step, t*self%time_scale, self%eom%state, self%eom%loads, &
@@ -146,7 +131,7 @@ contains
             end associate
          end if
       end if
-   end subroutine ball_record_row
+   end procedure ball_record_row
 
    !> The plot-data row of step 0 from the step-0 solution the print shows (set_step0_row),
    !> not from the dynamics' initial state (issue #29: the two differ by the dynamic model's
@@ -188,18 +173,15 @@ contains
       end associate
    end subroutine step0_history_values
 
-   module integer function ball_n_balance(self)
-      class(ball_kind_t), intent(in) :: self
+   module procedure ball_n_balance
       ball_n_balance = N_BALANCE + 0*self%bearing%n_elements
-   end function ball_n_balance
+   end procedure ball_n_balance
 
    !> adore_forces_ball_power's balance values at the last evaluated state (the equations
    !> of motion's loads, the condition's applied load; a free cage in ADORE's whirl
    !> coordinates with the acceleration they add, whose power is the balance's whirl-frame
    !> line).
-   module subroutine ball_balance(self, v)
-      class(ball_kind_t), intent(in) :: self
-      real(wp), intent(out) :: v(:)
+   module procedure ball_balance
       real(wp) :: a(3)
       associate (e => self%eom)
          a = 0.0_wp
@@ -207,7 +189,7 @@ contains
             a(2:3) = whirl_frame_acceleration(e%state%cage%position(2:3), e%state%cage%velocity(2:3), e%whirl_blend)
          v = ball_balance_values(e%bearing, e%state, e%loads, a)
       end associate
-   end subroutine ball_balance
+   end procedure ball_balance
 
    !> The run note's balance line over the window [window(1), window(2)] (tau) from the
    !> window's means of the balance values and their first and last values: drive power
@@ -218,10 +200,7 @@ contains
    !> terms a free cage's whirl coordinates omit (P_frame, adore_forces_ball_power: 0 by
    !> Newton's equations); the closure (drive - dissipation - dE/dt - P_frame) /
    !> max(|drive|, dissipation, 1 uW), flagged above 1 %.
-   module subroutine ball_balance_text(self, window, mean, first, last, text)
-      class(ball_kind_t), intent(in) :: self
-      real(wp), intent(in) :: window(2), mean(:), first(:), last(:)
-      character(len=:), allocatable, intent(out) :: text
+   module procedure ball_balance_text
       character(len=900) :: buf
       real(wp) :: seconds, dissipation, rate, carried(3), housing(3), closure
       integer :: stat
@@ -257,6 +236,6 @@ contains
          if (abs(closure) > 0.01_wp) text = text//", above 0.01: the time steps do not resolve the drive torque "// &
                                             "(a smaller Rec 2.1 maximum step does; docs/operating-points.md)"
       end associate
-   end subroutine ball_balance_text
+   end procedure ball_balance_text
 
 end submodule adore_bearings_ball_results

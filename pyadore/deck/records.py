@@ -79,7 +79,7 @@ RECORDS: tuple[RecordSpec, ...] = (
         F("rec1_flag_13", "int", "-", "unknown; 0 in both decks, not echoed", "", "unknown", default=0),
         F("int_method", "int", "-", "integration method (echo INT METHOD; 5 in both decks): 5 = "
           "the deck's production method (ball dynamics: ARK4(3)6L[2]SA with the balls' contact blocks "
-          "implicit), 3 = Bogacki-Shampine 3(2); assumed (docs/dynamics.md)", "", "echo", choices=(3, 5)),
+          "implicit), 3 = Bogacki-Shampine 3(2); assumed (docs/integrator.md, \"INT METHOD\")", "", "echo", choices=(3, 5)),
     ), section="4.4.5, 4.4.6; echo: SCALE FACTORS AND OUTPUT CONTROLS",
         notes="The last three fields stand apart from the first eleven in the text copy of both listings."),
     RecordSpec("2.1", "Step size information", (
@@ -147,7 +147,7 @@ RECORDS: tuple[RecordSpec, ...] = (
     ), section="echo: Bearing Type, NO OF BALLS/ROLLERS",
         notes="Field count (10) from the roller listing line `1 2 8 1 0 0 0 0 0 1`; field 11 is "
               "pyadore's (the report gives no record layout for flanges or the pocket code: "
-              "docs/dynamics.md, \"Flanges\")."),
+              "docs/rollers.md, \"Flanges\")."),
     RecordSpec("3.3", "Program options (flags)", tuple(
         F(f"rec3_3_flag_{k}", "int", "-", "DOF constraint flag (report 4.4.6), read as one pattern with "
           "the other ten: all eleven 0 = nothing constrained; 1 1 1 1 0 0 0 0 0 0 1 (Appendix D, the "
@@ -167,7 +167,7 @@ RECORDS: tuple[RecordSpec, ...] = (
               "transverse axis (free); so Appendix D holds the rollers only.  The ball deck's listing "
               "line is lost (its zeros are the transcription's).  The echo's TRANSLATIONAL / ROTATIONAL "
               "CONSTRAINTS rows (1 1 1 1 1 1 each in Appendix D) do not follow Rec 3.3's order and are "
-              "not read (docs/dynamics.md, \"The cage's degrees of freedom\")."),
+              "not read (docs/cage.md, \"The cage's degrees of freedom\")."),
     RecordSpec("3.4", "Program options (flags, incl. kRotFrames)", _unknown_ints(
         "3.4", 1, 12, "ball deck 0 0 0 0 0 2 1 19 0 0 0 0, roller 1 1 1 1 0 0 0 0 0 0 0 0; one of the "
         "twelve is kRotFrames (section 4.4.10), which one is not recoverable"),
@@ -250,7 +250,7 @@ RECORDS: tuple[RecordSpec, ...] = (
     ), when="roller_extension != 0", section="4.4.11; A (guide flange data)",
         notes="pyadore's record (not in ADORE decks): the report's Appendix A names the data "
               "(kFlngInd, flngHt, flngAng, flngCls, bReEndRad) but not its input record.  Flange "
-              "contact model: docs/dynamics.md, \"Flanges\"."),
+              "contact model: docs/rollers.md, \"Flanges\"."),
     RecordSpec("7.0", "Cage options and guide lands", (
         *_unknown_ints("7.0", 1, 8, "0 in both decks; one of fields 1-8 is the pocket code kPocType "
                        "(section 4.4.11; echo POCKET SHAPE 0), which one is not recoverable"),
@@ -318,7 +318,7 @@ RECORDS: tuple[RecordSpec, ...] = (
         F("cage_whirl_radius", "real", "m", "meaning not identified, not used; formerly read as the start "
           "whirl's radius (section 4.4.4), but ball 6.636E-04 and roller 2.5E-04 m against the centres "
           "printed at the start, 5.900E-04 and 5.0E-05 m, the roller's beyond its land radial clearance "
-          "5.0E-05 m: the start whirl turns about the axis at the centre's own radius (docs/dynamics.md)",
+          "5.0E-05 m: the start whirl turns about the axis at the centre's own radius (docs/cage.md)",
           "", "inference",
           default=0.0, lo=0.0),
         _real("cage_whirl_ratio", "-", "cage whirl to angular velocity ratio (echo)", default=1.0),
