@@ -462,12 +462,12 @@ def test_elastic_film_resolves_the_slip_at_60000_rpm(tmp_path):
     closure -0.96; in the grid 227 of 300, docs/operating-points.md "The film's elasticity
     in the grid").  The film as a Maxwell film (run option film_shear_modulus, G = 1 GPa,
     Johnson & Tevaarwerk 1977; docs/tribology.md "The film's elasticity") has a traction
-    slope three orders of magnitude lower at 3-4 GPa: no step is forced, the inner race
-    carries its load, and the drive power balances the dissipation and the energy change
-    within the deck's error limit's resolution of the drive torque: closure 0.025 (drive
-    3 439 W, dissipation 3 328 W, energy rate 26.0 W), where the same run at error limit
-    1e-6 closes to 1e-5 (3 347, 3 322 and 25.4 W) - measured session 18.  (Main before it
-    read 0.006: a drive 1.6 % high offset by an energy rate of 44.7 W against 25.4.)  The cage is held centred: the subject is the films (with the
+    slope three orders of magnitude lower at 3-4 GPa: no step is forced and the inner race
+    carries its load.  Resolved, the drive power is the dissipation plus the energy change:
+    the same 300 steps at error limit 1e-5 close to 4.4e-5 (drive 3 346.7 W, dissipation
+    3 327.1 W, energy rate 19.5 W; measured session 18).  At the deck's 1e-4 the closure is
+    the drive torque's error at those steps and differs between builds that differ only at
+    round-off (0.004-0.028 over session 18's builds), so it is not asserted there.  The cage is held centred: the subject is the films (with the
     deck's free cage on main's starved guide lands the 300 steps are still a cage transient:
     closure 0.040, also without a forced step)."""
     from pyadore.api import parse_forced_steps
@@ -480,4 +480,10 @@ def test_elastic_film_resolves_the_slip_at_60000_rpm(tmp_path):
     result = _runs_and_carries_its_load(path, force, tmp_path / "elastic.prt", cage="centred",
                                         film_shear_modulus=1.0e9)
     assert parse_forced_steps(" ".join(result.notes)) is None
-    assert abs(result.balance["closure"]) <= 0.03
+    deck = read_deck(path)
+    deck.set("2.1", "error_limit", 1.0e-5)
+    deck.save(tmp_path / "iso1_tight.inp")
+    tight = _runs_and_carries_its_load(tmp_path / "iso1_tight.inp", force, tmp_path / "tight.prt", cage="centred",
+                                       film_shear_modulus=1.0e9)
+    assert parse_forced_steps(" ".join(tight.notes)) is None
+    assert abs(tight.balance["closure"]) <= 0.01
