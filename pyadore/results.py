@@ -11,7 +11,7 @@ with dimensions ``time``, ``element`` and ``race``; :func:`write_netcdf` writes 
 
 xarray is imported on demand: a run reads its results into :class:`ResultArrays` and writes
 the netCDF file from them; the dataset is built when first asked for (the first import of
-xarray costs about 2 s where dask is installed: docs/dynamics.md).
+xarray costs about 2 s where dask is installed: docs/performance.md).
 """
 
 from __future__ import annotations

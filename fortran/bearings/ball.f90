@@ -278,9 +278,9 @@ contains
             text = text//")"//lf
          end if
          if (s%cage .and. .not. s%cage_spin_only .and. s%adore_whirl) text = text//"  CAGE MASS CENTRE IN "// &
-            "ADORE'S WHIRL COORDINATES (REPORT 4.4.4; NO CENTRIPETAL OR CORIOLIS TERMS, docs/dynamics.md)"//lf
+            "ADORE'S WHIRL COORDINATES (REPORT 4.4.4; NO CENTRIPETAL OR CORIOLIS TERMS, docs/cage.md)"//lf
          if (s%cage .and. .not. s%land_film) text = text//"  GUIDE-LAND FILM OFF: METALLIC GUIDE-LAND CONTACT "// &
-            "ONLY (docs/dynamics.md, Cage dynamics)"//lf
+            "ONLY (docs/cage.md, Cage dynamics)"//lf
          if (s%gyro_restraint) text = text//"  BALL GYROSCOPIC MOMENTS CARRIED BY THE RACES WITHOUT SLIP "// &
             "(docs/dynamics.md)"//lf
          if (s%contact_damping > 0.0_wp) then
@@ -333,7 +333,7 @@ contains
          if (s%cage .and. s%land_film .and. .not. s%cage_spin_only) then
             write (buf, "(es10.3)") s%bearing%land_oil_layer
             text = text//"; guide-land film where the gap is below the lands' oil layer of "//trim(adjustl(buf))// &
-                   " m (run option land_oil; docs/dynamics.md, starved land)"
+                   " m (run option land_oil; docs/cage.md, starved land)"
          end if
          if (s%gyro_restraint) text = text//"; ball gyroscopic moments carried by the races without slip"
          if (s%contact_damping > 0.0_wp) text = text//"; ball/race contact damping (stiffness-proportional)"

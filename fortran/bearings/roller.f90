@@ -156,17 +156,17 @@ contains
          if (self%options%cage == "deck") text = text//"; AS THE DECK'S REC 3.3 SAYS"
          text = text//")"//lf
          if (self%eom%adore_whirl) text = text//"  CAGE MASS CENTRE IN ADORE'S WHIRL COORDINATES (REPORT 4.4.4; "// &
-                "NO CENTRIPETAL OR CORIOLIS TERMS, docs/dynamics.md)"//lf
+                "NO CENTRIPETAL OR CORIOLIS TERMS, docs/cage.md)"//lf
       else
          text = text//"  CAGE CENTRED ON THE BEARING AXIS, TURNING ABOUT IT ONLY (DOF CONSTRAINT, REPORT 4.4.6)"//lf
       end if
       if (self%bearing%roller%pocket_type == -1) then
          text = text//"  CYLINDRICAL ROLLER POCKETS (KPOCTYPE -1, REPORT 4.4.11)"//lf
       else
-         text = text//"  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/dynamics.md, Roller dynamics)"//lf
+         text = text//"  RECTANGULAR ROLLER POCKETS AS FLAT WALLS (docs/rollers.md, Roller dynamics)"//lf
       end if
       if (any(self%bearing%roller%flange)) text = text//"  ROLLER END / FLANGE CONTACTS: SPHERICAL ENDS ON "// &
-                                                  "LAID-BACK FLANGES (REC 5B.2, docs/dynamics.md, Flanges)"//lf
+                                                  "LAID-BACK FLANGES (REC 5B.2, docs/rollers.md, Flanges)"//lf
    end subroutine roller_listing_lines
 
    !> dy/dtau of the equations of motion (adore_dynamics_roller_system).
