@@ -152,6 +152,27 @@ def balance(stderr: str) -> dict:
             "inner_force_residual": b["inner_residual_N"] / load if load > 0 else float("nan")}
 
 
+def forced_diagnosis(stderr: str) -> dict:
+    """The run note's diagnosis of its forced steps (pyadore.api.parse_forced_diagnosis): the
+    largest error over the limit and the unknown that led most of them with its steps
+    ("ball 1's angular velocity (body y): 100"); {} without forced steps."""
+    from pyadore.api import parse_forced_diagnosis
+
+    d = parse_forced_diagnosis(stderr.replace("\n", " "))
+    if not d:
+        return {}
+    lead = f"{d['leaders'][0][0]}: {d['leaders'][0][1]}" if d["leaders"] else ""
+    return {"forced_err_max": d["err_max"], "forced_lead": lead}
+
+
+def leader_kind(lead: str) -> str:
+    """A forced-step leader without its element's number: "ball 1's angular velocity (body y): 100"
+    -> "a ball's angular velocity"."""
+    name = re.sub(r": \d+$", "", lead)
+    name = re.sub(r" \((body|orbit) [a-z]\)$", "", name)
+    return re.sub(r"^(ball|roller) \d+'s", r"a \1's", name)
+
+
 def _case(args) -> dict:
     base, speed, load, fit, steps, exe, extra, sets = args
     from pyadore.deck import check_deck
@@ -174,14 +195,15 @@ def _case(args) -> dict:
             from pyadore.api import parse_forced_steps
 
             forced = parse_forced_steps(proc.stderr.replace("\n", " "))
-            return row | {"outcome": "ran", "forced_steps": forced[0] if forced else 0} | balance(proc.stderr)
+            return row | {"outcome": "ran", "forced_steps": forced[0] if forced else 0} | balance(proc.stderr) \
+                | forced_diagnosis(proc.stderr)
         message = proc.stderr.strip().split("\n")[0].replace(str(path) + ": ", "")
         return row | {"outcome": "failed", "category": category(message), "message": message}
 
 
 FIELDS = ("deck", "speed_rpm", "load_N", "fit_m", "outcome", "category", "message", "seconds",
           "revolutions", "drive_W", "dissipation_W", "energy_rate_W", "drive_over_dissipation", "closure",
-          "inner_force_residual", "forced_steps")
+          "inner_force_residual", "forced_steps", "forced_err_max", "forced_lead")
 GRID = ROOT / "bench" / "operating_points_grid.csv"
 
 
@@ -230,6 +252,11 @@ def summarize(rows: list[dict]) -> None:
         forced = [r for r in counted if int(r["forced_steps"]) > 0]
         print(f"ran with steps forced at the minimum step (error above the limit, not resolved): "
               f"{len(forced)} of {len(counted)} that ran and record it")
+        led = [r for r in forced if r.get("forced_lead")]
+        if led:
+            print(f"  the unknown that led most of a run's forced steps ({len(led)} runs that record it):")
+            for k, n in collections.Counter(leader_kind(r["forced_lead"]) for r in led).most_common():
+                print(f"  {n:4d}  {k}")
     for title, key in (("category", lambda r: category(r["message"])[:110]), ("deck", lambda r: r["deck"]),
                        ("speed (rpm)", lambda r: float(r["speed_rpm"])), ("load (N)", lambda r: float(r["load_N"]) if float(r["load_N"]) in LOADS else "C0"),
                        ("fit (um)", lambda r: round(float(r["fit_m"]) * 1e6))):

@@ -310,6 +310,23 @@ def parse_forced_steps(note: str) -> tuple[int, int] | None:
     return (int(m.group(1)), int(m.group(2))) if m else None
 
 
+def parse_forced_diagnosis(note: str) -> dict | None:
+    """The run note's diagnosis of its forced steps (fortran/driver/run.f90
+    add_forced_steps_note, issue #28): ``err_max`` (the largest error estimate of those steps
+    over the error limit), ``within_2`` (how many of them were within twice the limit) and
+    ``leaders``, the unknowns whose error component led most of them, as (name, steps) pairs,
+    most first (at most three); None when the note has no forced steps."""
+    import re
+
+    m = re.search(r"their error up to ([0-9.]+) times the limit \((\d+) of them within twice it\), led by (.*?)"
+                  r" \(a smaller Rec 2\.1 minimum step", note or "")
+    if not m:
+        return None
+    leaders = [(name, int(steps)) for name, steps in re.findall(r"(.+?) at (\d+)(?:, |$)", m.group(3))
+               if name != "other unknowns"]
+    return {"err_max": float(m.group(1)), "within_2": int(m.group(2)), "leaders": leaders}
+
+
 def _closure(drive: float, dissipation: float, rate: float, whirl_frame: float = 0.0) -> float:
     """(drive - dissipation - energy change - whirl frame) / max(|drive|, dissipation, 1 uW):
     0 up to the integration error (Newton-Euler, with the power of the terms a free cage's

@@ -17,7 +17,8 @@ module adore_bearings_ball
    use adore_model_condition, only: operating_condition_t, condition_of, default_constraints, cage_option_free, &
                                     dof_constraints_t, deck_constraints
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
-   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER
+   use adore_state_bearing_state, only: bearing_state_t, body_azimuth, set_packed_temperatures, BODY_SIZE, RACE_INNER, &
+                                        packed_name
    use adore_thermal_distortion, only: distorted_bearing
    use adore_thermal_network, only: thermal_heat_t
    use adore_bearings_ball_thermal, only: ball_thermal_t, ball_heat_rates, &
@@ -95,6 +96,7 @@ module adore_bearings_ball
       procedure :: balance_values => ball_balance
       procedure :: balance_text => ball_balance_text
       procedure :: start_load => ball_start_load
+      procedure :: unknown_name => ball_unknown_name
    end type ball_kind_t
 
 
@@ -174,6 +176,15 @@ contains
       logical, intent(out) :: ok
       call self%eom%border_shares(shares, ok)
    end subroutine ball_border_shares
+
+   !> The name of unknown i of the packed state (adore_state_bearing_state's packed_name: the
+   !> balls in the frame the run packs them in), e.g. "ball 2's angular velocity (body x)".
+   subroutine ball_unknown_name(self, i, name)
+      class(ball_kind_t), intent(in) :: self
+      integer, intent(in) :: i
+      character(len=:), allocatable, intent(out) :: name
+      name = packed_name(i, self%bearing%n_elements, "ball", self%eom%orbit_frame)
+   end subroutine ball_unknown_name
 
    !> Step 0: mounting, equilibrium, ball speeds (the options' start hypothesis, report
    !> 4.4.7; moment equilibrium when asked), tribology, life, cage.

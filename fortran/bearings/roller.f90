@@ -22,7 +22,7 @@ module adore_bearings_roller
    use adore_start_roller_step0, only: roller_step0_t, solve_roller_step0
    use adore_dynamics_integrator, only: integrator_t, DERIV_OK, INT_METHOD_ARK436, INT_METHOD_ROS34PW2
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, R_PHI, &
-                                           R_PHIDOT, CAGE_OFFSET, RACE_OFFSET
+                                           R_PHIDOT, CAGE_OFFSET, RACE_OFFSET, roller_unknown_name
    use adore_bearings_system, only: bearing_system_t, run_int_method, asked_steps, adopt_failure
    use adore_bearings_thermal_run, only: thermal_run_t, thermal_run_for, thermal_accumulate, thermal_run_text, &
                                          thermal_condition, hold_race_load, THERMAL_OFF
@@ -58,6 +58,7 @@ module adore_bearings_roller
       integer :: hold_solves = 0
    contains
       procedure :: eval => roller_eval
+      procedure :: unknown_name => roller_kind_unknown_name
       procedure :: solve_start => roller_solve_start
       procedure :: write_start => roller_write_start
       procedure :: run_note => roller_run_note
@@ -99,6 +100,14 @@ contains
       integer, intent(in) :: unit
       call write_roller_step0(unit, 0, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], self%bearing, self%step0)
    end subroutine roller_write_start
+
+   !> The name of unknown i of the packed state (roller_unknown_name), e.g. "roller 3's spin".
+   subroutine roller_kind_unknown_name(self, i, name)
+      class(roller_kind_t), intent(in) :: self
+      integer, intent(in) :: i
+      character(len=:), allocatable, intent(out) :: name
+      name = roller_unknown_name(self%eom%n, i)
+   end subroutine roller_kind_unknown_name
 
    !> What the time integration leaves out or assumes (blank without time steps).
    subroutine roller_run_note(self, n_steps, text)

@@ -71,6 +71,7 @@ module adore_bearings_system
       procedure :: n_balance => no_values
       procedure :: balance_values => no_averaged_values
       procedure :: balance_text => no_balance_text
+      procedure :: unknown_name => no_unknown_name
       procedure :: set_condition
       procedure :: on_event
       procedure :: start_load => no_start_load
@@ -272,6 +273,15 @@ contains
       character(len=:), allocatable, intent(out) :: text
       text = ""
    end subroutine no_balance_text
+
+   !> The name of unknown i of the system's packed state vector, for messages (issue #28's
+   !> forced-step diagnosis); a kind without time integration: "unknown i".
+   subroutine no_unknown_name(self, i, name)
+      class(bearing_system_t), intent(in) :: self
+      integer, intent(in) :: i
+      character(len=:), allocatable, intent(out) :: name
+      name = "unknown "//itoa(i)
+   end subroutine no_unknown_name
 
    !> An engine error: nothing to mount without a time integration.
    subroutine no_mount(self, y, error)

@@ -35,7 +35,7 @@ module adore_driver_run
    use adore_output_run_history, only: run_history_t, write_history_csv, history_file_name, write_element_file, &
                                        element_file_name
    use adore_quasistatic_ball_start, only: start_method_from_name, start_method_title, MIN_DISSIPATION
-   use adore_dynamics_integrator, only: integrator_t
+   use adore_dynamics_integrator, only: integrator_t, integrator_stats_t
    use adore_bearings_system, only: bearing_system_t
    use adore_bearings_select, only: new_bearing_system
    use adore_driver_time_loop, only: run_time_loop, run_progress, INCOMPLETE_MARK
@@ -236,7 +236,7 @@ contains
       if (n_dynamic > 0 .and. it%stats%forced_at_h_min > 0) then
          ! ADORE's rule accepts a step at the Rec 2.1 minimum whatever its error
          ! (adore_dynamics_integrator's accept_at_h_min): say how many were (issue #28)
-         call add_forced_steps_note(it%stats%forced_at_h_min, it%stats%accepted, balance)
+         call add_forced_steps_note(it%stats, sys, balance)
       end if
       if (len(balance) > 0) then
          if (len(run_note) > 0) then
@@ -316,12 +316,35 @@ contains
    !> (or a less stiff traction) is what resolves it (docs/operating-points.md, "The last ten
    !> grid failures").  A subroutine: a deferred-length function result would be static
    !> storage (fortran/core/strings.f90).
-   pure subroutine add_forced_steps_note(forced, accepted, text)
-      integer, intent(in) :: forced, accepted
+   subroutine add_forced_steps_note(stats, sys, text)
+      type(integrator_stats_t), intent(in) :: stats
+      class(bearing_system_t), intent(in) :: sys
       character(len=:), allocatable, intent(inout) :: text
+      character(len=16) :: ratio
+      character(len=:), allocatable :: name
+      integer, allocatable :: lead(:)
+      integer :: j, i
       if (len(text) > 0) text = text//"; "
-      text = text//itoa(forced)//" of "//itoa(accepted)//" time steps accepted at the minimum step (Rec 2.1) "// &
-             "with their error above the error limit: not resolved (docs/operating-points.md)"
+      text = text//itoa(stats%forced_at_h_min)//" of "//itoa(stats%accepted)//" time steps accepted at the "// &
+             "minimum step (Rec 2.1) with their error above the error limit: not resolved"
+      ! the diagnosis (issue #28): how far above, and which unknowns led the error test
+      write (ratio, "(f16.2)") stats%forced_err_max
+      text = text//"; their error up to "//trim(adjustl(ratio))//" times the limit ("// &
+             itoa(stats%forced_within_2)//" of them within twice it), led by "
+      if (allocated(stats%forced_lead)) then
+         lead = stats%forced_lead
+         do j = 1, 3
+            if (maxval(lead) <= 0) exit
+            i = maxloc(lead, 1)
+            call sys%unknown_name(i, name)
+            if (j > 1) text = text//", "
+            text = text//name//" at "//itoa(lead(i))
+            lead(i) = 0
+         end do
+         if (sum(lead) > 0) text = text//", other unknowns at "//itoa(sum(lead))
+      end if
+      text = text//" (a smaller Rec 2.1 minimum step lets the error control resolve them; "// &
+             "docs/operating-points.md)"
    end subroutine add_forced_steps_note
 
 end module adore_driver_run

@@ -104,6 +104,11 @@ module adore_dynamics_integrator
       integer :: rejected_flag = 0          !< attempts refused by the derivative (4.4.12)
       integer :: rejected_nonfinite = 0     !< attempts with non-finite stages or result
       integer :: forced_at_h_min = 0        !< steps accepted at h_min with err > 1 (accept_at_h_min)
+      real(wp) :: forced_err_max = 0.0_wp   !< the largest err (1 = at the limit) of those steps
+      integer :: forced_within_2 = 0        !< those of them with err <= 2
+      !> per unknown: the forced steps whose error it led (the largest weighted component of the
+      !> error estimate; allocated by init, n values), the diagnosis of issue #28
+      integer, allocatable :: forced_lead(:)
       real(wp) :: h_min_used = huge(1.0_wp) !< Minimum Step Size (steps cut to land on t_out excluded)
       real(wp) :: h_max_used = 0.0_wp       !< Maximum Step Size (idem)
       real(wp) :: h_last = 0.0_wp           !< Last Step Size
@@ -307,6 +312,7 @@ contains
          k = self%tab%error_order
       end if
       allocate (self%k(n, self%last), self%y_stage(n), self%y_new(n), self%y_err(n), self%y_fsal(n))
+      allocate (self%stats%forced_lead(n), source=0)
       ! PI exponents for an error of order k = error_order: beta = 0.2/k, alpha = 1/k - 0.75 beta
       ! (for k = 5 these are DOPRI5's beta = 0.04, expo1 = 0.17)
       self%beta = 0.2_wp/k
@@ -447,7 +453,14 @@ contains
       ! accepted: statistics, the new state, the next step (PI controller, HNW II.4 eq 4.13)
       associate (st => self%stats)
          st%accepted = st%accepted + 1
-         if (forced) st%forced_at_h_min = st%forced_at_h_min + 1
+         if (forced) then
+            st%forced_at_h_min = st%forced_at_h_min + 1
+            st%forced_err_max = max(st%forced_err_max, err)
+            if (err <= 2.0_wp) st%forced_within_2 = st%forced_within_2 + 1
+            associate (i => error_leader(self, y))
+               st%forced_lead(i) = st%forced_lead(i) + 1
+            end associate
+         end if
          st%h_last = h
          if (.not. clipped) then
             st%h_min_used = min(st%h_min_used, h)
@@ -566,6 +579,15 @@ contains
       end associate
       err = weighted_error(self, y)
    end subroutine attempt
+
+   !> The unknown leading the error test's norm of y_err for a step from y to y_new: the index of
+   !> its largest weighted component (the first of equals).
+   integer function error_leader(self, y) result(i)
+      class(integrator_t), intent(in) :: self
+      real(wp), intent(in) :: y(:)
+      i = maxloc(abs(self%y_err)/(self%settings%error_limit* &
+                                  (self%scale + self%settings%rel_weight*max(abs(y), abs(self%y_new)))), 1)
+   end function error_leader
 
    !> The error test's norm of y_err (Rec 2.1 ERROR LIMIT; 1 = at the limit) for a step from y to y_new.
    real(wp) function weighted_error(self, y) result(err)

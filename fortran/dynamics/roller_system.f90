@@ -47,6 +47,7 @@ module adore_dynamics_roller_system
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, input_error
+   use adore_core_strings, only: itoa
    use adore_model_bearing, only: bearing_t, BODY_ELEMENT, BODY_INNER, BODY_CAGE
    use adore_model_condition, only: dof_constraints_t, default_constraints
    use adore_model_scales, only: scale_factors
@@ -66,7 +67,8 @@ module adore_dynamics_roller_system
    implicit none
    private
 
-   public :: roller_system_t, roller_state_size, roller_pose, start_roller_dynamics, roller_error_scale
+   public :: roller_system_t, roller_state_size, roller_pose, start_roller_dynamics, roller_error_scale, &
+             roller_unknown_name
 
    integer, parameter, public :: ROLLER_SIZE = 11
    integer, parameter, public :: R_X = 1, R_R = 2, R_PHI = 3, R_XDOT = 4, R_RDOT = 5, R_PHIDOT = 6, R_TILT = 7, &
@@ -112,6 +114,30 @@ module adore_dynamics_roller_system
    end type roller_system_t
 
 contains
+
+   !> The name of unknown i of the packed state of n rollers (the module header's order), for
+   !> messages: e.g. "roller 3's spin", "the cage's angle".
+   pure function roller_unknown_name(n, i) result(name)
+      integer, intent(in) :: n, i
+      character(len=:), allocatable :: name
+      character(len=*), parameter :: roller(ROLLER_SIZE) = [character(len=26) :: "axial position", "radius", &
+         "orbital angle", "axial velocity", "radial velocity", "orbital speed", "tilt", "skew", &
+         "angular velocity (orbit t)", "angular velocity (orbit r)", "spin"]
+      character(len=*), parameter :: tail(TAIL_SIZE) = [character(len=40) :: "the cage's angle", &
+         "the cage's speed", "the inner race's position x", "the inner race's position y", &
+         "the inner race's position z", "the inner race's velocity x", "the inner race's velocity y", &
+         "the inner race's velocity z", "the cage's centre y", "the cage's centre z", &
+         "the cage's centre velocity y", "the cage's centre velocity z", "the cage's axial position", &
+         "the cage's axis tilt y", "the cage's axis tilt z", "the cage's axial velocity", &
+         "the cage's angular velocity y", "the cage's angular velocity z"]
+      if (i >= 1 .and. i <= ROLLER_SIZE*n) then
+         name = "roller "//itoa((i - 1)/ROLLER_SIZE + 1)//"'s "//trim(roller(mod(i - 1, ROLLER_SIZE) + 1))
+      else if (i > ROLLER_SIZE*n .and. i <= roller_state_size(n)) then
+         name = trim(tail(i - ROLLER_SIZE*n))
+      else
+         name = "unknown "//itoa(i)
+      end if
+   end function roller_unknown_name
 
    pure integer function roller_state_size(n)
       integer, intent(in) :: n

@@ -19,12 +19,13 @@
 module adore_state_bearing_state
    use adore_core_kinds, only: wp
    use adore_core_rotation, only: quat_identity
+   use adore_core_strings, only: itoa
    implicit none
    private
 
    public :: body_state_t, bearing_state_t
    public :: new_bearing_state, state_size, pack_state, unpack_state, pack_rates, set_packed_temperatures, &
-             body_azimuth, body_radius
+             body_azimuth, body_radius, packed_name
 
    !> Number of reals of one body in the packed vector: position 3, velocity 3,
    !> quaternion 4, angular velocity 3.
@@ -194,5 +195,51 @@ contains
       type(body_state_t) :: b
       b = body_state_t(v(1:3), v(4:6), v(7:10), v(11:13))
    end function vector_body
+
+   !> The name of unknown i of a vector packed by pack_state with n_elements rolling elements
+   !> (orbit as it was packed with), for messages: e.g. "ball 2's angular velocity (body x)"
+   !> with noun = "ball"; its unit is the packed vector's.
+   pure function packed_name(i, n_elements, noun, orbit) result(name)
+      integer, intent(in) :: i, n_elements
+      character(len=*), intent(in) :: noun
+      logical, intent(in), optional :: orbit
+      character(len=:), allocatable :: name
+      character(len=*), parameter :: axis(3) = ["x", "y", "z"]
+      character(len=*), parameter :: orbit_names(6) = [character(len=15) :: "axial position", "radius", &
+                                                       "orbital angle", "axial velocity", "radial velocity", "orbital speed"]
+      character(len=:), allocatable :: body
+      integer :: k, c
+
+      if (i < 1 .or. i > state_size(n_elements)) then
+         name = "unknown "//itoa(i)
+         return
+      end if
+      k = (i - 1)/BODY_SIZE + 1
+      c = mod(i - 1, BODY_SIZE) + 1
+      if (k > n_elements + 3) then
+         name = "bulk temperature "//itoa(i - BODY_SIZE*(n_elements + 3))//" (Rec 2.7)"
+         return
+      end if
+      if (k <= n_elements) then
+         body = noun//" "//itoa(k)
+      else if (k == n_elements + 1) then
+         body = "the cage"
+      else if (k == n_elements + 2) then
+         body = "the outer race"
+      else
+         body = "the inner race"
+      end if
+      if (c <= 6 .and. k <= n_elements .and. orbit_frame(orbit)) then
+         name = body//"'s "//trim(orbit_names(c))
+      else if (c <= 3) then
+         name = body//"'s position "//axis(c)
+      else if (c <= 6) then
+         name = body//"'s velocity "//axis(c - 3)
+      else if (c <= 10) then
+         name = body//"'s attitude (quaternion "//itoa(c - 7)//")"
+      else
+         name = body//"'s angular velocity (body "//axis(c - 10)//")"
+      end if
+   end function packed_name
 
 end module adore_state_bearing_state

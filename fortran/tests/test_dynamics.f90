@@ -47,6 +47,7 @@ end module test_dynamics_free_body
 program test_dynamics
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
+   use adore_core_strings, only: itoa
    use adore_core_rotation, only: quat_matrix, quat_from_rotation_vector, quat_rate
    use adore_forces_ball_bearing, only: total_power_loss
    use adore_forces_ball_power, only: contact_power_sum, ball_balance_values, BAL_DRIVE
@@ -55,7 +56,7 @@ program test_dynamics
    use adore_model_scales, only: length_scale, load_scale, time_scale
    use adore_geometry_mounted, only: mounted_geometry_t, mount_geometry
    use adore_state_bearing_state, only: bearing_state_t, body_state_t, state_size, pack_state, unpack_state, &
-                                        new_bearing_state, BODY_SIZE, RACE_INNER
+                                        new_bearing_state, BODY_SIZE, RACE_INNER, RACE_OUTER, packed_name
    use adore_contact_ball_race, only: contact_energy
    use adore_dynamics_ball_system, only: ball_system_t, new_ball_system, initial_ball_state, start_ball_dynamics, &
                                          state_error_scale, BALL_JACOBIAN_COLUMNS
@@ -76,6 +77,7 @@ program test_dynamics
    call test_energy_without_traction(.false., 10.0_wp)
    call test_energy_without_traction(.true., 5.0_wp)
    call test_orbit_frame_rates()
+   call test_packed_names()
    call test_orbit_frame_is_the_same_motion()
    call test_run_balances_the_applied_load()
    call test_power_identity("appendix_c_ball.inp", .true., .true., .true.)
@@ -90,6 +92,62 @@ program test_dynamics
    call finish("dynamics")
 
 contains
+
+   !> packed_name (the run note's forced-step diagnosis, issue #28) against pack_state's own
+   !> layout: a state with one marked value packs to one index, whose name must be that value's.
+   subroutine test_packed_names()
+      type(bearing_state_t) :: s
+      real(wp) :: y(state_size(4))
+      logical :: ok
+      ok = .true.
+      s = new_bearing_state(4)
+      s%elements(2)%omega(1) = 1.0_wp
+      call mark_name(s, "ball 2's angular velocity (body x)", ok)
+      s = new_bearing_state(4)
+      s%cage%velocity(2) = 1.0_wp
+      call mark_name(s, "the cage's velocity y", ok)
+      s = new_bearing_state(4)
+      s%races(RACE_INNER)%position(3) = 1.0_wp
+      call mark_name(s, "the inner race's position z", ok)
+      s = new_bearing_state(4)
+      s%races(RACE_OUTER)%omega(3) = 1.0_wp
+      call mark_name(s, "the outer race's angular velocity (body z)", ok)
+      s = new_bearing_state(4)
+      s%elements(4)%attitude(3) = 0.5_wp
+      call mark_name(s, "ball 4's attitude (quaternion 2)", ok)
+      s = new_bearing_state(4)
+      s%temperature(3) = 500.0_wp
+      call mark_name(s, "bulk temperature 3 (Rec 2.7)", ok)
+      call check(ok, "packed_name: each marked value's index named as pack_state placed it")
+      ! the orbit frame: a ball on the z axis (phi = 0) moving radially packs r and r' only
+      s = new_bearing_state(4)
+      s%elements(3)%position = [0.0_wp, 0.0_wp, 0.05_wp]
+      s%elements(3)%velocity = [0.0_wp, 0.0_wp, 2.0_wp]
+      call pack_state(s, y, orbit=.true.)
+      call check(packed_name(findloc(y == 2.0_wp, .true., 1), 4, "ball", .true.) == "ball 3's radial velocity" .and. &
+                 packed_name(findloc(y == 0.05_wp, .true., 1), 4, "ball", .true.) == "ball 3's radius", &
+                 "packed_name: the orbit frame's radius and radial velocity")
+      call check(packed_name(0, 4, "ball") == "unknown 0" .and. packed_name(state_size(4) + 1, 4, "ball") == &
+                 "unknown "//itoa(state_size(4) + 1), "packed_name: outside the vector")
+   end subroutine test_packed_names
+
+   !> test_packed_names: s differs from a new state of 4 balls in one value; ok set .false.
+   !> (and a line written) unless exactly one packed value differs and its name is expected.
+   subroutine mark_name(s, expected, ok)
+      type(bearing_state_t), intent(in) :: s
+      character(len=*), intent(in) :: expected
+      logical, intent(inout) :: ok
+      real(wp) :: y(state_size(4)), y_ref(state_size(4))
+      integer :: i
+      call pack_state(new_bearing_state(4), y_ref)
+      call pack_state(s, y)
+      i = findloc(y /= y_ref, .true., 1)
+      if (count(y /= y_ref) /= 1 .or. packed_name(i, 4, "ball") /= expected) then
+         ok = .false.
+         write (*, "(a,i0,a)") "packed_name: index ", i, " named '"//packed_name(i, 4, "ball")// &
+            "', expected '"//expected//"'"
+      end if
+   end subroutine mark_name
 
    !> A free body tumbling about a skewed axis, integrated over 10**4 accepted steps
    !> (step capped at a hundredth of a spin period): energy 1/2 omega.I omega and the

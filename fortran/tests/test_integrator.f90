@@ -811,7 +811,7 @@ contains
       type(decay_t) :: f
       type(integrator_settings_t) :: s
       type(error_type), allocatable :: error
-      real(wp) :: t, y(1)
+      real(wp) :: t, y(1), y2(2)
 
       f%lambda = 50.0_wp
       s = settings_of(INT_METHOD_DP54, 1.0e-10_wp)
@@ -836,6 +836,25 @@ contains
       call check(.not. allocated(error), "accept_at_h_min: completes")
       call check(it%stats%forced_at_h_min > 0 .and. it%stats%max_truncation > s%error_limit .and. &
                  it%stats%h_min_used == s%h_min, "accept_at_h_min: forced steps at h_min, truncation above limit")
+      ! the diagnosis (issue #28): two decays, the fast one (lambda h_min = 0.5) leads every
+      ! forced step's error; the largest error ratio is the largest truncation over the limit
+      block
+         type(two_rates_t) :: g
+         g%lambda = [0.1_wp, 50.0_wp]
+         call it%init(2, s, error)
+         t = 0.0_wp
+         y2 = 1.0_wp
+         call it%advance(g, t, y2, 1.0_wp, error)
+         call check(.not. allocated(error), "forced-step diagnosis: completes")
+         write (*, "(a,i0,a,2(1x,i0),a,es10.3,a,i0)") "forced steps ", it%stats%forced_at_h_min, ", led by unknown 1, 2:", &
+            it%stats%forced_lead, "; largest err ", it%stats%forced_err_max, ", within 2: ", it%stats%forced_within_2
+         call check(it%stats%forced_at_h_min > 0 .and. it%stats%forced_lead(2) == it%stats%forced_at_h_min .and. &
+                    it%stats%forced_lead(1) == 0, "forced-step diagnosis: the fast unknown leads every forced step")
+         call check(abs(it%stats%forced_err_max*s%error_limit - it%stats%max_truncation) <= &
+                    1.0e-12_wp*it%stats%max_truncation .and. it%stats%forced_err_max > 1.0_wp .and. &
+                    it%stats%forced_within_2 >= 0 .and. it%stats%forced_within_2 <= it%stats%forced_at_h_min, &
+                    "forced-step diagnosis: largest error ratio = max truncation / limit; within-2 count bounded")
+      end block
    end subroutine test_minimum_step
 
    !> Non-finite values, a failing derivative, a derivative refusing every step: errors.

@@ -21,7 +21,7 @@ program test_roller_dynamics
    use adore_dynamics_integrator, only: integrator_t
    use adore_dynamics_roller_system, only: roller_system_t, start_roller_dynamics, roller_pose, ROLLER_SIZE, &
                                            R_TILT, R_SKEW, R_PHI, RACE_OFFSET, CAGE_POS_OFFSET, CAGE_OFFSET, &
-                                           CAGE_TILT_OFFSET
+                                           CAGE_TILT_OFFSET, roller_unknown_name, R_SPIN, R_RDOT, roller_state_size
    use adore_model_condition, only: body_dof_t
    implicit none
 
@@ -47,10 +47,27 @@ program test_roller_dynamics
    call test_free_cage_nutation()
    call test_tilted_cage_pocket_moment()
    call test_threads_same_rates()
+   call test_unknown_names()
 
    call finish("roller dynamics")
 
 contains
+
+   !> roller_unknown_name (the run note's forced-step diagnosis, issue #28) at the indices the
+   !> equations of motion read: a roller's spin and radial velocity, the inner race's position
+   !> z, the cage's angle, centre y and tilt y, and outside the vector.
+   subroutine test_unknown_names()
+      integer, parameter :: n = 14
+      call check(roller_unknown_name(n, ROLLER_SIZE*2 + R_SPIN) == "roller 3's spin" .and. &
+                 roller_unknown_name(n, R_RDOT) == "roller 1's radial velocity" .and. &
+                 roller_unknown_name(n, ROLLER_SIZE*n + RACE_OFFSET + 3) == "the inner race's position z" .and. &
+                 roller_unknown_name(n, ROLLER_SIZE*n + CAGE_OFFSET + 1) == "the cage's angle" .and. &
+                 roller_unknown_name(n, ROLLER_SIZE*n + CAGE_POS_OFFSET + 1) == "the cage's centre y" .and. &
+                 roller_unknown_name(n, ROLLER_SIZE*n + CAGE_TILT_OFFSET + 2) == "the cage's axis tilt y" .and. &
+                 roller_unknown_name(n, roller_state_size(n)) == "the cage's angular velocity z" .and. &
+                 roller_unknown_name(n, roller_state_size(n) + 1) == "unknown 173", &
+                 "roller_unknown_name: the packed layout's names")
+   end subroutine test_unknown_names
 
    !> The start's system (no pocket contacts when pockets is .false.).
    subroutine start(sys, it, y, pockets, cage_free)
