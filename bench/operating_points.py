@@ -122,7 +122,7 @@ _NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 def category(message: str) -> str:
     """A failure message without its numbers, ball and contact names: the class it is
     counted in ("the derivative refused the step: ball N, outer race contact: ...")."""
-    m = message.split("; kept: ")[0]
+    m = message.split("; kept: ")[0].split("; before it, ")[0]
     for head in ("integration stopped: ", "the derivative refused the step (report 4.4.12): "):
         if head in m:
             m = m.split(head, 1)[1]

@@ -511,3 +511,24 @@ def test_forced_step_diagnosis_parsing():
                                                         ("the cage's velocity y", 32)]}
     assert parse_forced_diagnosis("balance over the last half of the run ...") is None
     assert parse_forced_diagnosis("") is None
+
+
+def test_a_stopped_run_says_its_steps_were_forced(tmp_path):
+    """A run that stops after steps accepted at the minimum step without error control says
+    so in its error, with the forced-step diagnosis (fortran/driver/run.f90, issue #28): the
+    grid's failures at 10 000 rpm stop that way, their stop a consequence of the unresolved
+    steps before it.  Made deterministic here by a progress function that stops the run of
+    the static-capacity point at the full Hertz pressure (mostly forced, as
+    test_mixed_films_at_the_static_capacity_run_resolved_and_balance measures) at step 6."""
+    from pyadore.errors import AdoreEngineError
+
+    path, _ = _variant(tmp_path, BALL, "c0", speed=1000.0, load=146100.0, fit=0.0)
+    with pytest.raises(AdoreEngineError) as info:
+        _core.run_file(path, tmp_path / "stopped.prt", "steps=15\nthreads=1\nfull_film_lambda=0",
+                       progress=lambda step, n, tau, t: 1 if step == 6 else 0)
+    message = str(info.value)
+    assert "run incomplete after step 6" in message
+    m = re.search(r"; before it, (\d+) of 6 time steps accepted at the minimum step \(Rec 2\.1\) with their error "
+                  r"above the error limit: not resolved; their error up to [0-9.]+ times the limit", message)
+    assert m and int(m.group(1)) >= 1
+    assert "led by ball " in message and message.index("before it") < message.index("; kept: the print file")

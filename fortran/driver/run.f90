@@ -79,6 +79,7 @@ contains
       type(run_history_t) :: hist
       type(error_type), allocatable :: run_error
       real(wp), allocatable :: y(:)
+      character(len=:), allocatable :: forced_text
       character(len=:), allocatable :: part_path, table_path, start_title, hist_path, incomplete, run_note, listing, &
                                        element_path
       character(len=:), allocatable :: deck_warnings, balance
@@ -281,8 +282,15 @@ contains
          if (hist%rows > 0) integrated = nint(hist%values(hist%rows, 2))
       end if
       if (allocated(run_error)) then
-         call engine_error(error, run_error%message//"; kept: the print file "//trim(out_path)//" (its last line "// &
-                           "says '"//INCOMPLETE_MARK//"') and its plot-data file "//hist_path)
+         ! a run that steps at the minimum without error control before it stops: say so, and
+         ! what led those steps' error (the stop is then a consequence, issue #28)
+         forced_text = ""
+         if (n_dynamic > 0 .and. it%stats%forced_at_h_min > 0) then
+            call add_forced_steps_note(it%stats, sys, forced_text)
+            forced_text = "; before it, "//forced_text
+         end if
+         call engine_error(error, run_error%message//forced_text//"; kept: the print file "//trim(out_path)// &
+                           " (its last line says '"//INCOMPLETE_MARK//"') and its plot-data file "//hist_path)
          error%stat = run_error%stat
       end if
    end subroutine run_deck
