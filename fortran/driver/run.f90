@@ -239,6 +239,7 @@ contains
          ! (adore_dynamics_integrator's accept_at_h_min): say how many were (issue #28)
          call add_forced_steps_note(it%stats, sys, balance)
       end if
+      if (n_dynamic > 0 .and. it%stats%below_h_min > 0) call add_below_minimum_note(it%stats, balance)
       if (len(balance) > 0) then
          if (len(run_note) > 0) then
             run_note = run_note//"; "//balance
@@ -285,10 +286,9 @@ contains
          ! a run that steps at the minimum without error control before it stops: say so, and
          ! what led those steps' error (the stop is then a consequence, issue #28)
          forced_text = ""
-         if (n_dynamic > 0 .and. it%stats%forced_at_h_min > 0) then
-            call add_forced_steps_note(it%stats, sys, forced_text)
-            forced_text = "; before it, "//forced_text
-         end if
+         if (n_dynamic > 0 .and. it%stats%forced_at_h_min > 0) call add_forced_steps_note(it%stats, sys, forced_text)
+         if (n_dynamic > 0 .and. it%stats%below_h_min > 0) call add_below_minimum_note(it%stats, forced_text)
+         if (len(forced_text) > 0) forced_text = "; before it, "//forced_text
          call engine_error(error, run_error%message//forced_text//"; kept: the print file "//trim(out_path)// &
                            " (its last line says '"//INCOMPLETE_MARK//"') and its plot-data file "//hist_path)
          error%stat = run_error%stat
@@ -354,5 +354,18 @@ contains
       text = text//" (a smaller Rec 2.1 minimum step lets the error control resolve them; "// &
              "docs/operating-points.md)"
    end subroutine add_forced_steps_note
+
+   !> Append to text ("; "-separated) the run note's clause on steps shorter than the Rec 2.1
+   !> minimum that report 4.4.12's reduced step took after the model refused attempts (or
+   !> they were not finite) at the minimum (adore_dynamics_integrator, ADORE's rule; issue #28).
+   subroutine add_below_minimum_note(stats, text)
+      type(integrator_stats_t), intent(in) :: stats
+      character(len=:), allocatable, intent(inout) :: text
+      character(len=16) :: shortest
+      if (len(text) > 0) text = text//"; "
+      write (shortest, "(es10.3)") stats%h_min_used
+      text = text//itoa(stats%below_h_min)//" time steps shorter than the minimum step (Rec 2.1; the shortest "// &
+             trim(adjustl(shortest))//" tau) after attempts the model refused at it (report 4.4.12's reduced step)"
+   end subroutine add_below_minimum_note
 
 end module adore_driver_run

@@ -53,6 +53,9 @@ module adore_dynamics_integrator
    real(wp), parameter :: fac_min = 0.2_wp, fac_max = 10.0_wp
    !> Step reduction after a derivative refused the step (4.4.12 says "a reduced step").
    real(wp), parameter :: flag_cut = 0.5_wp
+   !> under ADORE's rule (accept_at_h_min), the shortest retry of an attempt refused or not
+   !> finite at h_min, as a fraction of h_min (report 4.4.12's reduced step; halved to it)
+   real(wp), parameter :: SUB_MIN_FLOOR = 1.0_wp/1024.0_wp
    !> Lower bound of the previous error in the PI controller (DOPRI5's facold floor).
    real(wp), parameter :: err_floor = 1.0e-4_wp
 
@@ -105,6 +108,9 @@ module adore_dynamics_integrator
       integer :: rejected_nonfinite = 0     !< attempts with non-finite stages or result
       integer :: forced_at_h_min = 0        !< steps accepted at h_min with err > 1 (accept_at_h_min)
       real(wp) :: forced_err_max = 0.0_wp   !< the largest err (1 = at the limit) of those steps
+      !> steps accepted shorter than h_min after attempts the derivative refused or that were not
+      !> finite at h_min (report 4.4.12's reduced step; accept_at_h_min only)
+      integer :: below_h_min = 0
       integer :: forced_within_2 = 0        !< those of them with err <= 2
       !> per unknown: the forced steps whose error it led (the largest weighted component of the
       !> error estimate; allocated by init, n values), the diagnosis of issue #28
@@ -345,7 +351,7 @@ contains
       real(wp), intent(in), optional :: t_limit
       real(wp) :: h, h_plan, err, fac, fac_err, h_min
       integer :: flag, tries
-      logical :: clipped, rejected_before, forced
+      logical :: clipped, rejected_before, forced, below_min
       character(len=:), allocatable :: why
 
       if (.not. self%ready) then
@@ -387,6 +393,7 @@ contains
       end if
       rejected_before = .false.
       forced = .false.
+      below_min = .false.
       do tries = 0, self%settings%max_rejections
          if (self%rosenbrock) then
             call attempt_rosenbrock(self, deriv, t, y, h, flag, err, &
@@ -432,11 +439,26 @@ contains
             if (allocated(error)) return
          end if
          if (h <= h_min) then
-            call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min)", &
-                            t, h, ": "//why)
-            return
+            ! report 4.4.12: an attempt the derivative refuses (or that is not finite) is
+            ! retried with a reduced step; under ADORE's rule (accept_at_h_min) below the
+            ! minimum too, halving down to SUB_MIN_FLOOR of it (issue #28)
+            if (.not. (self%settings%accept_at_h_min .and. (flag == DERIV_REJECT_STEP .or. &
+                                                            .not. ieee_is_finite(err)) .and. &
+                       h > SUB_MIN_FLOOR*h_min*1.000001_wp)) then
+               if (h < h_min) then
+                  call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min) "// &
+                                  "and refused down to 1/"//itoa(nint(1.0_wp/SUB_MIN_FLOOR))//" of it", t, h, ": "//why)
+               else
+                  call stop_error(self, error, "step driven below the minimum step size (Rec 2.1 step_min)", &
+                                  t, h, ": "//why)
+               end if
+               return
+            end if
+            h = max(0.5_wp*h, SUB_MIN_FLOOR*h_min)
+            below_min = .true.
+         else
+            h = max(fac*h, h_min)
          end if
-         h = max(fac*h, h_min)
          clipped = .false.
          if (present(t_limit)) then
             if (t + h >= t_limit) then      ! never step past t_limit
@@ -453,6 +475,7 @@ contains
       ! accepted: statistics, the new state, the next step (PI controller, HNW II.4 eq 4.13)
       associate (st => self%stats)
          st%accepted = st%accepted + 1
+         if (below_min) st%below_h_min = st%below_h_min + 1
          if (forced) then
             st%forced_at_h_min = st%forced_at_h_min + 1
             st%forced_err_max = max(st%forced_err_max, err)

@@ -8,7 +8,7 @@ module integrator_test_problems
    private
 
    public :: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
-   public :: driven_oscillators_t, driven_exact, shaker_t
+   public :: driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t
 
    !> y' = -lambda y (exact: y0 exp(-lambda t)).
    type, extends(derivative_t) :: decay_t
@@ -71,6 +71,16 @@ module integrator_test_problems
    contains
       procedure :: eval => bad_eval
    end type bad_t
+
+   !> y' = -lambda y whose model refuses (DERIV_REJECT_STEP) any state with |y| > bound: an
+   !> explicit step far beyond its stability limit lands there (report 4.4.12's abnormal
+   !> contact in miniature).
+   type, extends(derivative_t) :: refusing_decay_t
+      real(wp) :: lambda = 50.0_wp, bound = 1.5_wp
+      integer :: refusals = 0
+   contains
+      procedure :: eval => refusing_decay_eval
+   end type refusing_decay_t
 
    !> Damped oscillators k = 1..n driven through their spring at 1 rad per unit of t, each a
    !> block (x_k, v_k) of the state: x' = v, v' = -omega_k**2 (x - sin t) - 2 zeta omega_k v
@@ -135,6 +145,20 @@ contains
          if (k == 1) y(size(y)) = aimag(h/cmplx(1.0_wp, 1.0_wp, wp)*e)
       end do
    end function driven_exact
+
+   subroutine refusing_decay_eval(self, t, y, dydt, flag)
+      class(refusing_decay_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      dydt = -self%lambda*y
+      flag = DERIV_OK
+      if (any(abs(y) > self%bound)) then
+         flag = DERIV_REJECT_STEP
+         self%refusals = self%refusals + 1
+      end if
+   end subroutine refusing_decay_eval
 
    subroutine decay_eval(self, t, y, dydt, flag)
       class(decay_t), intent(inout) :: self
@@ -285,7 +309,7 @@ program test_integrator
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, derivative_t, &
       INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436
    use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t, &
-      driven_oscillators_t, driven_exact, shaker_t
+      driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t
    use adore_dynamics_block_jacobian, only: block_jacobian_t
    use adore_core_linalg, only: solve_dense
    implicit none
@@ -302,6 +326,7 @@ program test_integrator
    call test_statistics_and_fsal()
    call test_rejection_by_derivative()
    call test_minimum_step()
+   call test_refused_below_minimum_step()
    call test_failures()
    call test_rosenbrock_order()
    call test_rosenbrock_stiff_oscillators()
@@ -856,6 +881,62 @@ contains
                     "forced-step diagnosis: largest error ratio = max truncation / limit; within-2 count bounded")
       end block
    end subroutine test_minimum_step
+
+   !> Report 4.4.12: an attempt the derivative refuses is retried with a reduced step.  Under
+   !> ADORE's rule (accept_at_h_min) also below the Rec 2.1 minimum, halving to 1/1024 of it;
+   !> without it the refusal at the minimum stops the run as before (issue #28).
+   subroutine test_refused_below_minimum_step()
+      type(integrator_t) :: it
+      type(refusing_decay_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1)
+
+      s = settings_of(INT_METHOD_DP54, 1.0e-6_wp)
+      s%h_min = 0.2_wp      ! lambda h_min = 10: DP5's stages leave |y| <= 1.5 at once
+      s%h_max = 0.5_wp
+      s%h_initial = 0.2_wp
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 1.0_wp, error)
+      call check(allocated(error), "refused at h_min without accept_at_h_min: an error")
+      if (allocated(error)) call check(has(error%message, "below the minimum step size") .and. &
+                                       .not. has(error%message, "refused down to"), &
+                                       "refused at h_min without accept_at_h_min: the message as before")
+      s%accept_at_h_min = .true.
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      f%refusals = 0
+      call it%advance(f, t, y, 1.0_wp, error)
+      write (*, "(a,i0,a,i0,a,es10.3,a,i0,a,i0)") "refused below h_min: ", it%stats%below_h_min, " of ", &
+         it%stats%accepted, " steps shorter than h_min, the shortest ", it%stats%h_min_used, "; refusals ", &
+         f%refusals, ", forced ", it%stats%forced_at_h_min
+      call check(.not. allocated(error) .and. abs(t - 1.0_wp) < 1.0e-12_wp, &
+                 "refused at h_min under accept_at_h_min: the run completes")
+      call check(it%stats%below_h_min > 0 .and. it%stats%h_min_used < s%h_min .and. &
+                 it%stats%h_min_used >= s%h_min/1024.0_wp .and. f%refusals >= it%stats%below_h_min, &
+                 "refused at h_min: steps shorter than h_min taken and counted, never below h_min/1024")
+      call check(abs(y(1)) <= 1.5_wp, "refused at h_min: every accepted state one the model accepts")
+      ! a model that refuses every state past t = 0.5: halved down to 1/1024 of h_min there,
+      ! then an error
+      block
+         type(bad_t) :: g
+         g%mode = 3
+         s = settings_of(INT_METHOD_DP54, 1.0e-6_wp)
+         s%accept_at_h_min = .true.
+         call it%init(1, s, error)
+         t = 0.0_wp
+         y = 1.0_wp
+         call it%advance(g, t, y, 1.0_wp, error)
+         call check(t <= 0.5_wp, "refused everywhere past 0.5: stopped at the last good time")
+      end block
+      call check(allocated(error), "refused everywhere under accept_at_h_min: an error")
+      if (allocated(error)) call check(has(error%message, "refused down to 1/1024 of it") .and. &
+                                       has(error%message, "4.4.12"), &
+                                       "refused everywhere: the message names the floor and 4.4.12: "//error%message)
+   end subroutine test_refused_below_minimum_step
 
    !> Non-finite values, a failing derivative, a derivative refusing every step: errors.
    subroutine test_failures()
