@@ -183,7 +183,7 @@ contains
       class(ball_kind_t), intent(in) :: self
       integer, intent(in) :: i
       character(len=:), allocatable, intent(out) :: name
-      name = packed_name(i, self%bearing%n_elements, "ball", self%eom%orbit_frame)
+      call packed_name(i, self%bearing%n_elements, "ball", name, self%eom%orbit_frame)
    end subroutine ball_unknown_name
 
    !> Step 0: mounting, equilibrium, ball speeds (the options' start hypothesis, report

@@ -106,7 +106,7 @@ contains
       class(roller_kind_t), intent(in) :: self
       integer, intent(in) :: i
       character(len=:), allocatable, intent(out) :: name
-      name = roller_unknown_name(self%eom%n, i)
+      call roller_unknown_name(self%eom%n, i, name)
    end subroutine roller_kind_unknown_name
 
    !> What the time integration leaves out or assumes (blank without time steps).

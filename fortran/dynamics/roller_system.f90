@@ -116,10 +116,11 @@ module adore_dynamics_roller_system
 contains
 
    !> The name of unknown i of the packed state of n rollers (the module header's order), for
-   !> messages: e.g. "roller 3's spin", "the cage's angle".
-   pure function roller_unknown_name(n, i) result(name)
+   !> messages: e.g. "roller 3's spin", "the cage's angle".  A subroutine: a deferred-length
+   !> function result would be static storage (fortran/core/strings.f90).
+   pure subroutine roller_unknown_name(n, i, name)
       integer, intent(in) :: n, i
-      character(len=:), allocatable :: name
+      character(len=:), allocatable, intent(out) :: name
       character(len=*), parameter :: roller(ROLLER_SIZE) = [character(len=26) :: "axial position", "radius", &
          "orbital angle", "axial velocity", "radial velocity", "orbital speed", "tilt", "skew", &
          "angular velocity (orbit t)", "angular velocity (orbit r)", "spin"]
@@ -137,7 +138,7 @@ contains
       else
          name = "unknown "//itoa(i)
       end if
-   end function roller_unknown_name
+   end subroutine roller_unknown_name
 
    pure integer function roller_state_size(n)
       integer, intent(in) :: n

@@ -198,12 +198,13 @@ contains
 
    !> The name of unknown i of a vector packed by pack_state with n_elements rolling elements
    !> (orbit as it was packed with), for messages: e.g. "ball 2's angular velocity (body x)"
-   !> with noun = "ball"; its unit is the packed vector's.
-   pure function packed_name(i, n_elements, noun, orbit) result(name)
+   !> with noun = "ball"; its unit is the packed vector's.  A subroutine: a deferred-length
+   !> function result would be static storage (fortran/core/strings.f90).
+   pure subroutine packed_name(i, n_elements, noun, name, orbit)
       integer, intent(in) :: i, n_elements
       character(len=*), intent(in) :: noun
+      character(len=:), allocatable, intent(out) :: name
       logical, intent(in), optional :: orbit
-      character(len=:), allocatable :: name
       character(len=*), parameter :: axis(3) = ["x", "y", "z"]
       character(len=*), parameter :: orbit_names(6) = [character(len=15) :: "axial position", "radius", &
                                                        "orbital angle", "axial velocity", "radial velocity", "orbital speed"]
@@ -240,6 +241,6 @@ contains
       else
          name = body//"'s angular velocity (body "//axis(c - 10)//")"
       end if
-   end function packed_name
+   end subroutine packed_name
 
 end module adore_state_bearing_state

@@ -124,12 +124,22 @@ contains
       s%elements(3)%position = [0.0_wp, 0.0_wp, 0.05_wp]
       s%elements(3)%velocity = [0.0_wp, 0.0_wp, 2.0_wp]
       call pack_state(s, y, orbit=.true.)
-      call check(packed_name(findloc(y == 2.0_wp, .true., 1), 4, "ball", .true.) == "ball 3's radial velocity" .and. &
-                 packed_name(findloc(y == 0.05_wp, .true., 1), 4, "ball", .true.) == "ball 3's radius", &
+      call check(pname(findloc(y == 2.0_wp, .true., 1), .true.) == "ball 3's radial velocity" .and. &
+                 pname(findloc(y == 0.05_wp, .true., 1), .true.) == "ball 3's radius", &
                  "packed_name: the orbit frame's radius and radial velocity")
-      call check(packed_name(0, 4, "ball") == "unknown 0" .and. packed_name(state_size(4) + 1, 4, "ball") == &
+      call check(pname(0, .false.) == "unknown 0" .and. pname(state_size(4) + 1, .false.) == &
                  "unknown "//itoa(state_size(4) + 1), "packed_name: outside the vector")
    end subroutine test_packed_names
+
+   !> test_packed_names: packed_name of unknown i of 4 balls (blank-padded).
+   function pname(i, orbit) result(name)
+      integer, intent(in) :: i
+      logical, intent(in) :: orbit
+      character(len=80) :: name
+      character(len=:), allocatable :: text
+      call packed_name(i, 4, "ball", text, orbit)
+      name = text
+   end function pname
 
    !> test_packed_names: s differs from a new state of 4 balls in one value; ok set .false.
    !> (and a line written) unless exactly one packed value differs and its name is expected.
@@ -142,9 +152,9 @@ contains
       call pack_state(new_bearing_state(4), y_ref)
       call pack_state(s, y)
       i = findloc(y /= y_ref, .true., 1)
-      if (count(y /= y_ref) /= 1 .or. packed_name(i, 4, "ball") /= expected) then
+      if (count(y /= y_ref) /= 1 .or. pname(i, .false.) /= expected) then
          ok = .false.
-         write (*, "(a,i0,a)") "packed_name: index ", i, " named '"//packed_name(i, 4, "ball")// &
+         write (*, "(a,i0,a)") "packed_name: index ", i, " named '"//trim(pname(i, .false.))// &
             "', expected '"//expected//"'"
       end if
    end subroutine mark_name

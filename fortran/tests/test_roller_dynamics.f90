@@ -53,19 +53,28 @@ program test_roller_dynamics
 
 contains
 
+   !> test_unknown_names: roller_unknown_name of unknown i of 14 rollers (blank-padded).
+   function rname(i) result(name)
+      integer, intent(in) :: i
+      character(len=80) :: name
+      character(len=:), allocatable :: text
+      call roller_unknown_name(14, i, text)
+      name = text
+   end function rname
+
    !> roller_unknown_name (the run note's forced-step diagnosis, issue #28) at the indices the
    !> equations of motion read: a roller's spin and radial velocity, the inner race's position
    !> z, the cage's angle, centre y and tilt y, and outside the vector.
    subroutine test_unknown_names()
       integer, parameter :: n = 14
-      call check(roller_unknown_name(n, ROLLER_SIZE*2 + R_SPIN) == "roller 3's spin" .and. &
-                 roller_unknown_name(n, R_RDOT) == "roller 1's radial velocity" .and. &
-                 roller_unknown_name(n, ROLLER_SIZE*n + RACE_OFFSET + 3) == "the inner race's position z" .and. &
-                 roller_unknown_name(n, ROLLER_SIZE*n + CAGE_OFFSET + 1) == "the cage's angle" .and. &
-                 roller_unknown_name(n, ROLLER_SIZE*n + CAGE_POS_OFFSET + 1) == "the cage's centre y" .and. &
-                 roller_unknown_name(n, ROLLER_SIZE*n + CAGE_TILT_OFFSET + 2) == "the cage's axis tilt y" .and. &
-                 roller_unknown_name(n, roller_state_size(n)) == "the cage's angular velocity z" .and. &
-                 roller_unknown_name(n, roller_state_size(n) + 1) == "unknown 173", &
+      call check(rname(ROLLER_SIZE*2 + R_SPIN) == "roller 3's spin" .and. &
+                 rname(R_RDOT) == "roller 1's radial velocity" .and. &
+                 rname(ROLLER_SIZE*n + RACE_OFFSET + 3) == "the inner race's position z" .and. &
+                 rname(ROLLER_SIZE*n + CAGE_OFFSET + 1) == "the cage's angle" .and. &
+                 rname(ROLLER_SIZE*n + CAGE_POS_OFFSET + 1) == "the cage's centre y" .and. &
+                 rname(ROLLER_SIZE*n + CAGE_TILT_OFFSET + 2) == "the cage's axis tilt y" .and. &
+                 rname(roller_state_size(n)) == "the cage's angular velocity z" .and. &
+                 rname(roller_state_size(n) + 1) == "unknown 173", &
                  "roller_unknown_name: the packed layout's names")
    end subroutine test_unknown_names
 
