@@ -643,7 +643,7 @@ def _int_method_4(text):
 
 
 def _fixed_step_5(text):
-    return text.replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01", "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1)
+    return text.replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01", "Rec 2.1      5.0000E+03 5.0000E+03 5.0000E+03", 1)
 
 
 def test_unknown_int_method_leaves_no_print(tmp_path, ball_deck, adore_exe):
@@ -661,8 +661,10 @@ def test_unknown_int_method_leaves_no_print(tmp_path, ball_deck, adore_exe):
 
 
 def test_failed_integration_gives_exit_2_and_an_incomplete_print(tmp_path, ball_deck, adore_exe):
-    """Rec 2.1 MINIMUM = MAXIMUM = INITIAL = 5 tau (about 1.2 ms, a fifth of a ball's orbit):
-    the first step drives the contacts out of the model's range.  Exit status 2 (Python:
+    """Rec 2.1 MINIMUM = MAXIMUM = INITIAL = 5 000 tau (about 1.2 s, 200 ball orbits): the
+    first step drives the contacts out of the model's range, also at the 1/1024 of the minimum
+    (4.9 tau) that report 4.4.12's reduced step goes down to (at 5 tau, as before session 19,
+    the reduced steps now let the run go on).  Exit status 2 (Python:
     AdoreEngineError) with the integrator's message; the print is kept (step 0) and ends
     with the incomplete line; no .part is left."""
     text = ball_deck.read_text()

@@ -142,10 +142,11 @@ def _python_lines(code: str, *args) -> list[str]:
 
 
 def _stopping_deck(tmp_path, ball_deck):
-    """Appendix C with Rec 2.1 fixed at 5 tau: its time integration stops after step 0."""
+    """Appendix C with Rec 2.1 fixed at 5 000 tau: its time integration stops after step 0
+    (refused down to 1/1024 of the minimum, report 4.4.12's reduced step)."""
     deck = tmp_path / "step5.inp"
     deck.write_text(ball_deck.read_text().replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01",
-                                                  "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1))
+                                                  "Rec 2.1      5.0000E+03 5.0000E+03 5.0000E+03", 1))
     return deck
 
 
@@ -251,7 +252,7 @@ def test_element_file_holds_the_print_values(run400):
 
 
 def test_failed_run_dataset_is_marked_incomplete(tmp_path, ball_deck):
-    """A time integration that stops early (Rec 2.1 fixed at 5 tau): its dataset and netCDF
+    """A time integration that stops early (Rec 2.1 fixed at 5 000 tau): its dataset and netCDF
     file are kept with the steps done and say run_complete = 0 and why - never complete."""
     from pyadore.errors import AdoreEngineError
     from pyadore.results import read_results, results_path

@@ -327,7 +327,7 @@ def test_library_failed_and_refused_runs_leave_no_older_print(tmp_path):
     _stale(out)
     deck = tmp_path / "step5.inp"
     deck.write_text(BALL.read_text().replace("Rec 2.1      5.0000E-02 5.0000E-03 3.0000E-01",
-                                             "Rec 2.1      5.0000E+00 5.0000E+00 5.0000E+00", 1))
+                                             "Rec 2.1      5.0000E+03 5.0000E+03 5.0000E+03", 1))
     with pytest.raises(AdoreEngineError, match="integration stopped"):
         pyadore.run(deck, steps=5, out=out)
     assert _outputs(tmp_path) == _kept("lib", "pyadore")
@@ -449,8 +449,8 @@ def test_failed_sweep_case_keeps_the_print_its_message_names(tmp_path):
     """A case whose time integration fails at once: its message names the incomplete print
     and plot-data file kept in the case folder (the worker's own folder is gone)."""
     folder = tmp_path / "f"
-    result = CliRunner().invoke(cli, ["sweep", str(BALL), "--vary", "step_min=5", "--vary", "step_initial=5",
-                                      "--vary", "step_max=5", "--steps", "3", "-o", str(folder), "--workers", "1"])
+    result = CliRunner().invoke(cli, ["sweep", str(BALL), "--vary", "step_min=5000", "--vary", "step_initial=5000",
+                                      "--vary", "step_max=5000", "--steps", "3", "-o", str(folder), "--workers", "1"])
     assert result.exit_code == 1, result.output
     (entry,) = json.loads((folder / "manifest.json").read_text())["cases"]
     case = folder / "cases" / "case_0001"
