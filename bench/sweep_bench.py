@@ -349,7 +349,7 @@ def budget(workers: int, pool=None) -> dict:
     marks: dict = {"results": []}
     original = runner.run_local
 
-    def run_local(jobs, pool_, on_result, count):
+    def run_local(jobs, pool_, on_result, count, **kwargs):
         def timed_jobs():
             for job in jobs:
                 marks.setdefault("first_job", time.time())
@@ -363,7 +363,7 @@ def budget(workers: int, pool=None) -> dict:
             marks["results"].append((res, arrived, time.time()))
             marks["last_result_cpu"] = time.process_time()
 
-        original(timed_jobs(), pool_, timed_result, count)
+        original(timed_jobs(), pool_, timed_result, count, **kwargs)
 
     runner.run_local = run_local
     try:
