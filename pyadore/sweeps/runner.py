@@ -117,6 +117,9 @@ class _Sweep:
         #: case id -> (its entry when encoded, or None while pending; its manifest line; its status)
         self._manifest_lines: dict[str, tuple] = {}
         self._unflushed: Path | None = None  # sweep.json, written and not flushed yet
+        #: the folder's cases/ made by this sweep: no case folder held a file before it
+        #: (nothing to resume, no earlier print to remove)
+        self._fresh = False
 
     # -- folder -------------------------------------------------------------------------------
     def case_dir(self, case_id: str) -> Path:
@@ -126,7 +129,12 @@ class _Sweep:
     def open_folder(self) -> None:
         """Create the folder, or check that it holds this same sweep; clear stale temporaries."""
         self.root.mkdir(parents=True, exist_ok=True)
-        (self.root / store.CASES).mkdir(exist_ok=True)
+        try:
+            (self.root / store.CASES).mkdir()
+            self._fresh = True
+        except FileExistsError:
+            if not (self.root / store.CASES).is_dir():
+                raise
         store.remove_stale_temporaries(self.root)
         path = self.root / store.SWEEP_FILE
         if path.exists():
@@ -160,7 +168,11 @@ class _Sweep:
     def load_finished(self) -> None:
         """Take every case already finished (``ok`` with its print) from the folder.  A case
         finished by a sweep killed before its events.log line was written (the log follows
-        the manifest rewrites, which a fast sweep batches) gets its line now, once."""
+        the manifest rewrites, which a fast sweep batches) gets its line now, once.  Nothing to
+        take from a folder whose cases/ this sweep made (64 failed look-ups of the 32-case grid's
+        files on the client's path to its first job otherwise)."""
+        if self._fresh:
+            return
         logged = set()
         events = self.root / store.EVENTS
         if events.exists():
@@ -224,13 +236,14 @@ class _Sweep:
         prt = cdir / store.CASE_PRINT
         kept = {store.CASE_HISTORY: history_text if status == "ok" else None,
                 store.CASE_RESULTS: base64.b64decode(results_nc) if status == "ok" and results_nc else None}
-        if prt.exists():
+        fresh = self._fresh  # no earlier file in the case's folder to remove (five look-ups less)
+        if not fresh and prt.exists():
             prt.unlink()  # no print from an earlier run may pose as this case's result
         for name, content in kept.items():
             path = cdir / name
             if content is not None:
                 store.write_atomic(path, content)
-            elif path.exists():
+            elif not fresh and path.exists():
                 path.unlink()  # of an earlier run of this case
         if status == "ok":
             store.write_atomic(prt, print_text)
@@ -239,7 +252,7 @@ class _Sweep:
             path = cdir / name
             if text is not None:
                 store.write_atomic(path, text)
-            elif path.exists():
+            elif not fresh and path.exists():
                 path.unlink()  # of an earlier failed run of this case
         entry = self._entry(case, status, error, duration, notes, worker, results or {})
         # not flushed to the disk: the print it vouches for is (fsync above), and a result.json a
@@ -607,6 +620,7 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
             bar.update(1)
 
     def jobs():
+        pending = True  # the manifest listing every case pending: written once the first job is out
         for case in todo:
             text = run.prepare(case)
             if text is None:
@@ -614,9 +628,14 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
                     bar.update(1)
                 continue
             yield (case.case_id, text, steps, options)
+            if pending:
+                # after the first job, not on the client's path to it (docs/sweeps.md, "Scaling,
+                # nineteenth session"); flushed with the summary at the end
+                pending = False
+                if run._manifest_written == 0.0:
+                    run.write_manifest(durable=False)
 
     try:
-        run.write_manifest(durable=False)  # every case pending; flushed with the summary at the end
         if scheduler is not None:
             run_dask(jobs(), scheduler, on_result)
         else:
