@@ -185,6 +185,11 @@ def bench_budget(workers=(1, 2), repeats: int = 2) -> dict:
         c = (b["client: first result to last recorded (records, manifest), a case"] * 32
              + max(0.0, b["client: first job to first result (the other case decks, the threads)"] - idle))
         out.update(serial=s, cases=w, client=c, bound=(s + w) / (s + (w + c) / 2))
+        # the same with the two workers' finishing gap: the worker that ends first idles while the other
+        # runs its last case, half of their CPU difference on the wall (the cases' order decides it;
+        # docs/sweeps.md, "Scaling, nineteenth session")
+        gap = b["cases: the workers' CPU, largest less smallest"]
+        out.update(gap=gap, bound_gap=(s + w) / (s + (w + c) / 2 + gap / 2))
     return out
 
 
@@ -199,7 +204,8 @@ def print_cpu_budget(result: dict) -> None:
     if "bound" in result:
         print(f"sweep CPU bound on 2 free cores: serial S = {result['serial']:.3f} s, cases W = {result['cases']:.3f} s, "
               f"client amid the cases C = {result['client']:.3f} s: (S + W) / (S + (W + C) / 2) = "
-              f"{result['bound']:.2f}x")
+              f"{result['bound']:.2f}x; with the workers' finishing gap G = {result['gap']:.3f} s (their CPU, "
+              f"largest less smallest): (S + W) / (S + (W + C + G) / 2) = {result['bound_gap']:.2f}x")
 
 
 def bench_cold(workers=(1, 2), repeats: int = REPEATS) -> tuple[list[dict], dict]:
@@ -322,7 +328,8 @@ def bench_sweep(workers=(1, 2), repeats: int = REPEATS) -> list[dict]:
               f"interleaved 1 2 2 1 ...; {os.cpu_count()} CPUs, load average {before} before, {after} after):")
         print(f"  `pyadore sweep --workers N` (cold, the acceptance's number): {cold['best'][1]:.2f} s / "
               f"{cold['best'][2]:.2f} s = {s_cold:.2f}x least, {m_cold:.2f}x median (target >= {SPEEDUP_TARGET}x: "
-              f"{_verdict(s_cold)})" + (f"; its CPU-time bound on 2 free cores {budget_cpu['bound']:.2f}x"
+              f"{_verdict(s_cold)})" + (f"; its CPU-time bound on 2 free cores {budget_cpu['bound']:.2f}x "
+                                        f"({budget_cpu['bound_gap']:.2f}x with the workers' finishing gap)"
                                         if budget_cpu and "bound" in budget_cpu else ""))
         print(f"  warm WorkerPool (no start-up): {warm['best'][1]:.2f} s / {warm['best'][2]:.2f} s = {s_warm:.2f}x "
               f"(target >= {SPEEDUP_TARGET}x: {_verdict(s_warm)})")
@@ -332,7 +339,8 @@ def bench_sweep(workers=(1, 2), repeats: int = REPEATS) -> list[dict]:
             rows.append({"deck": BALL.name, "case": "sweep speedup 2 vs 1, cold: CPU-time bound on 2 free cores",
                          "best_s": budget_cpu["bound"], "median_s": budget_cpu["bound"],
                          "serial_cpu_s": budget_cpu["serial"], "cases_cpu_s": budget_cpu["cases"],
-                         "client_amid_cases_cpu_s": budget_cpu["client"], "load_average": f"{before} -> {after}"})
+                         "client_amid_cases_cpu_s": budget_cpu["client"], "workers_gap_cpu_s": budget_cpu["gap"],
+                         "bound_with_gap": budget_cpu["bound_gap"], "load_average": f"{before} -> {after}"})
         rows.append({"deck": BALL.name, "case": "sweep speedup 2 vs 1, warm pool", "best_s": s_warm,
                      "median_s": statistics.median(warm["walls"][1]) / statistics.median(warm["walls"][2]),
                      "load_average": f"{before} -> {after}"})
