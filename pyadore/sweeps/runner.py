@@ -415,7 +415,8 @@ class CostModel:
         self.cheap = {c.case_id: _cheap_cost(c, speed) for c in order}
         self.params = {c.case_id: c.params for c in order}
         self.costs: dict[str, float] = {}
-        self.estimate: tuple | None = None  # (mean, [{value: effect} for each field of self.names])
+        #: (mean, [{value: effect} for each field of self.names], {case id: its cost by them})
+        self.estimate: tuple | None = None
 
     def add(self, case_id: str, cost) -> None:
         """Learn from a finished case its cost (s; a case without one, e.g. a worker that died,
@@ -440,7 +441,7 @@ class CostModel:
             effect = {key: total / n for key, (total, n) in sums.items()}
             left = {c: v - effect[self.params[c].get(name)] for c, v in left.items()}
             effects.append(effect)
-        return mean, effects
+        return mean, effects, {}
 
     def cost(self, case_id: str) -> float | None:
         """The learnt cost (s) of case ``case_id`` among the cases of its cheap estimate; None
@@ -448,9 +449,13 @@ class CostModel:
         estimate = self.estimate
         if estimate is None:
             return None
-        mean, effects = estimate
-        params = self.params[case_id]
-        return mean + sum(effect.get(params.get(name), 0.0) for name, effect in zip(self.names, effects))
+        mean, effects, known = estimate
+        cost = known.get(case_id)
+        if cost is None:  # once per case and estimate: a free worker ranks every case not taken yet
+            params = self.params[case_id]
+            cost = known[case_id] = mean + sum(effect.get(params.get(name), 0.0)
+                                               for name, effect in zip(self.names, effects))
+        return cost
 
     def rank(self, job: tuple) -> tuple:
         """The key a worker free for a case takes the highest of (``job[0]``: its case id): its
