@@ -14,7 +14,8 @@ prints how busy the workers were (the sum of the cases' own run times over worke
 
 ``python bench/sweep_bench.py budget`` prints where the time of one sweep goes (the client's
 parts, the workers' boot, each case's parts from its ``timing`` stamps, the end; docs/sweeps.md,
-"Scaling").
+"Scaling"); ``python bench/sweep_bench.py order [N]`` replays N traced sweeps' case costs in the cheap
+estimate's order and in the learnt one (the workers' finishing gap).
 """
 
 from __future__ import annotations
@@ -185,6 +186,11 @@ def bench_budget(workers=(1, 2), repeats: int = 2) -> dict:
         c = (b["client: first result to last recorded (records, manifest), a case"] * 32
              + max(0.0, b["client: first job to first result (the other case decks, the threads)"] - idle))
         out.update(serial=s, cases=w, client=c, bound=(s + w) / (s + (w + c) / 2))
+        # the same with the two workers' finishing gap: the worker that ends first idles while the other
+        # runs its last case, half of their CPU difference on the wall (the cases' order decides it;
+        # docs/sweeps.md, "Scaling, nineteenth session")
+        gap = b["cases: the workers' CPU, largest less smallest"]
+        out.update(gap=gap, bound_gap=(s + w) / (s + (w + c) / 2 + gap / 2))
     return out
 
 
@@ -199,7 +205,59 @@ def print_cpu_budget(result: dict) -> None:
     if "bound" in result:
         print(f"sweep CPU bound on 2 free cores: serial S = {result['serial']:.3f} s, cases W = {result['cases']:.3f} s, "
               f"client amid the cases C = {result['client']:.3f} s: (S + W) / (S + (W + C) / 2) = "
-              f"{result['bound']:.2f}x")
+              f"{result['bound']:.2f}x; with the workers' finishing gap G = {result['gap']:.3f} s (their CPU, "
+              f"largest less smallest): (S + W) / (S + (W + C + G) / 2) = {result['bound_gap']:.2f}x")
+
+
+def replay_order(costs: dict, learn: bool, gap: float = 0.001) -> tuple[float, float]:
+    """The two workers' finishing gap and the later one's end (s) of the 32-case grid whose cases
+    cost ``costs`` (CPU s by case id, e.g. a traced sweep's), each worker taking a case when its
+    last has ended (``gap`` s between): in :func:`pyadore.sweeps.runner.dispatch_order`'s order
+    (``learn`` False), or ranked as the sweep ranks them (:class:`~pyadore.sweeps.runner.CostModel`,
+    learnt from the cases ended by then).  The order's effect without the machine's load, which
+    moves the wall time of a 2-worker sweep by more (docs/sweeps.md, "Scaling, nineteenth session")."""
+    from pyadore.deck import read_deck
+    from pyadore.sweeps.grid import make_cases, parse_vary
+    from pyadore.sweeps.runner import CostModel, dispatch_order
+
+    deck = read_deck(BALL)
+    varied = [parse_vary(f"{name}={','.join(map(str, values))}", deck) for name, values in GRID.items()]
+    order = dispatch_order(make_cases(varied), varied)
+    model = CostModel(order, varied) if learn else None
+    pending = [c.case_id for c in order]
+    free = [0.0, 0.0]       # when each worker is free for its next case
+    running = [None, None]  # (case, its end) of each worker
+    while pending:
+        w = 0 if free[0] <= free[1] else 1
+        for k in (0, 1):  # what has ended by now is learnt
+            if model is not None and running[k] is not None and running[k][1] <= free[w] - gap:
+                model.add(running[k][0], costs[running[k][0]])
+                running[k] = None
+        pick = 0 if model is None else max(range(len(pending)), key=lambda i: model.rank((pending[i],)))
+        case = pending.pop(pick)
+        running[w] = (case, free[w] + costs[case])
+        free[w] += costs[case] + gap
+    return abs(free[0] - free[1]), max(free)
+
+
+def bench_order(repeats: int = 6) -> dict:
+    """Traced cold 2-worker sweeps (``repeats``), each one's per-case CPU replayed (:func:`replay_order`)
+    in the cheap estimate's order and in the learnt one: the workers' finishing gap and the later
+    worker's end (s), mean and median over the runs."""
+    out: dict = {False: [], True: []}
+    with tempfile.TemporaryDirectory() as tmp:
+        for r in range(repeats):
+            trace = Path(tmp) / f"order-{r}.json"
+            _cli_sweep(2, Path(tmp) / f"o{r}", trace=trace)
+            costs = {x["case"]: x["timing"]["cpu_s"] for x in json.loads(trace.read_text())["results"]}
+            for learn in out:
+                out[learn].append(replay_order(costs, learn))
+    for learn, runs in out.items():
+        gaps, ends = [g for g, _ in runs], [e for _, e in runs]
+        print(f"{'learnt order' if learn else 'cheap estimate':15s} ({len(runs)} traced sweeps' case costs): "
+              f"finishing gap mean {1000 * statistics.mean(gaps):.1f} ms, median {1000 * statistics.median(gaps):.1f} ms "
+              f"({1000 * min(gaps):.0f}-{1000 * max(gaps):.0f}); later worker's end mean {statistics.mean(ends):.3f} s")
+    return out
 
 
 def bench_cold(workers=(1, 2), repeats: int = REPEATS) -> tuple[list[dict], dict]:
@@ -322,7 +380,8 @@ def bench_sweep(workers=(1, 2), repeats: int = REPEATS) -> list[dict]:
               f"interleaved 1 2 2 1 ...; {os.cpu_count()} CPUs, load average {before} before, {after} after):")
         print(f"  `pyadore sweep --workers N` (cold, the acceptance's number): {cold['best'][1]:.2f} s / "
               f"{cold['best'][2]:.2f} s = {s_cold:.2f}x least, {m_cold:.2f}x median (target >= {SPEEDUP_TARGET}x: "
-              f"{_verdict(s_cold)})" + (f"; its CPU-time bound on 2 free cores {budget_cpu['bound']:.2f}x"
+              f"{_verdict(s_cold)})" + (f"; its CPU-time bound on 2 free cores {budget_cpu['bound']:.2f}x "
+                                        f"({budget_cpu['bound_gap']:.2f}x with the workers' finishing gap)"
                                         if budget_cpu and "bound" in budget_cpu else ""))
         print(f"  warm WorkerPool (no start-up): {warm['best'][1]:.2f} s / {warm['best'][2]:.2f} s = {s_warm:.2f}x "
               f"(target >= {SPEEDUP_TARGET}x: {_verdict(s_warm)})")
@@ -332,7 +391,8 @@ def bench_sweep(workers=(1, 2), repeats: int = REPEATS) -> list[dict]:
             rows.append({"deck": BALL.name, "case": "sweep speedup 2 vs 1, cold: CPU-time bound on 2 free cores",
                          "best_s": budget_cpu["bound"], "median_s": budget_cpu["bound"],
                          "serial_cpu_s": budget_cpu["serial"], "cases_cpu_s": budget_cpu["cases"],
-                         "client_amid_cases_cpu_s": budget_cpu["client"], "load_average": f"{before} -> {after}"})
+                         "client_amid_cases_cpu_s": budget_cpu["client"], "workers_gap_cpu_s": budget_cpu["gap"],
+                         "bound_with_gap": budget_cpu["bound_gap"], "load_average": f"{before} -> {after}"})
         rows.append({"deck": BALL.name, "case": "sweep speedup 2 vs 1, warm pool", "best_s": s_warm,
                      "median_s": statistics.median(warm["walls"][1]) / statistics.median(warm["walls"][2]),
                      "load_average": f"{before} -> {after}"})
@@ -349,7 +409,7 @@ def budget(workers: int, pool=None) -> dict:
     marks: dict = {"results": []}
     original = runner.run_local
 
-    def run_local(jobs, pool_, on_result, count):
+    def run_local(jobs, pool_, on_result, count, **kwargs):
         def timed_jobs():
             for job in jobs:
                 marks.setdefault("first_job", time.time())
@@ -363,7 +423,7 @@ def budget(workers: int, pool=None) -> dict:
             marks["results"].append((res, arrived, time.time()))
             marks["last_result_cpu"] = time.process_time()
 
-        original(timed_jobs(), pool_, timed_result, count)
+        original(timed_jobs(), pool_, timed_result, count, **kwargs)
 
     runner.run_local = run_local
     try:
@@ -433,6 +493,8 @@ if __name__ == "__main__":
     if sys.argv[1:] == ["budget"]:
         print_cpu_budget(bench_budget(repeats=3))
         print_budget()
+    elif sys.argv[1:2] == ["order"]:
+        bench_order(int(sys.argv[2]) if len(sys.argv) > 2 else 6)
     else:
         for row in bench_sweep():
             pass

@@ -29,7 +29,7 @@ def _stamp() -> list[float]:
     return [time.time(), time.process_time()]
 
 
-def run_local(jobs, pool, on_result, count):
+def run_local(jobs, pool, on_result, count, **kwargs):
     """execute.run_local with stamps: the first job, each result's arrival and its records."""
 
     def timed_jobs():
@@ -59,7 +59,7 @@ def run_local(jobs, pool, on_result, count):
 
     runner._Sweep.write_end = summary_then_marks
     try:
-        _run_local(timed_jobs(), pool, timed_result, count)
+        _run_local(timed_jobs(), pool, timed_result, count, **kwargs)
     finally:
         MARKS["boot"] = [dict(w.boot) for w in getattr(pool, "_workers", [])]
 

@@ -479,6 +479,128 @@ def test_cases_are_dispatched_longest_first():
     assert dispatch_order(make_cases(loads), loads) == make_cases(loads)
 
 
+def test_the_workers_take_the_cases_by_the_costs_learnt_from_those_finished():
+    """runner.CostModel (docs/sweeps.md, "Scaling, nineteenth session"): before LEARN_AFTER
+    cases finished, the cheap estimate's order (the faster shaft first, the grid's order within
+    a speed); then, within a speed, the case of the highest learnt cost first - the loads'
+    additive effects from the finished cases' CPU times, here costs made additive so that the
+    learnt effects are exact: a + b(Fz) + c(Fx).  A value no finished case had adds nothing; a
+    case without a finite cost teaches nothing; a zipped field that repeats another adds
+    nothing (one backfitting pass).  execute._Pending takes the job of the highest rank, a
+    None only once no job is left."""
+    import queue
+
+    from pyadore.sweeps.execute import _Pending
+    from pyadore.sweeps.runner import CostModel, dispatch_order
+
+    deck = read_deck(BALL)
+    varied = [parse_vary("inner_race_speed=10000,25000", deck), parse_vary("applied_force_z=1000,2000,3000", deck),
+              parse_vary("applied_force_x=3000,4500", deck)]
+    cases = make_cases(varied)
+    order = dispatch_order(cases, varied)
+    model = CostModel(order, varied)
+
+    def taken(model) -> list:
+        pending = _Pending(model.rank)
+        for case in order:
+            pending.put((case.case_id,))
+        pending.put(None)
+        out = [pending.get() for _ in range(len(order) + 1)]
+        with pytest.raises(queue.Empty):
+            pending.get_nowait()
+        assert out[-1] is None
+        return [job[0] for job in out[:-1]]
+
+    assert taken(model) == [c.case_id for c in order]  # nothing learnt yet: the cheap estimate's order
+    b = {1000: 0.030, 2000: 0.0, 3000: 0.010}
+    c = {3000: 0.0, 4500: 0.020}
+
+    def cost(case):
+        return 0.05 + b[case.params["applied_force_z"]] + c[case.params["applied_force_x"]]
+
+    fast = [case for case in order if case.params["inner_race_speed"] == 25000]
+    for case in fast[:CostModel.LEARN_AFTER - 1]:
+        model.add(case.case_id, cost(case))
+    model.add(fast[-1].case_id, float("nan"))  # teaches nothing
+    model.add(fast[-1].case_id, None)
+    assert model.estimate is None and model.cost(fast[-1].case_id) is None
+    for case in fast:  # every value of both loads seen once at 25 000 rpm
+        model.add(case.case_id, cost(case))
+    for case in cases:
+        assert model.cost(case.case_id) == pytest.approx(cost(case), abs=1e-12)
+    slow = sorted((case for case in order if case.params["inner_race_speed"] == 10000), key=cost, reverse=True)
+    ranked = taken(model)
+    assert ranked[:len(fast)] == [case.case_id for case in sorted(fast, key=cost, reverse=True)]
+    assert ranked[len(fast):] == [case.case_id for case in slow]  # the faster shaft still first
+    # a value no finished case had adds nothing; a zipped field repeating another adds nothing
+    zipped = [parse_vary("applied_force_z=1000,2000,3000,4000,5000", deck),
+              parse_vary("applied_force_x=1000,2000,3000,4000,5000", deck)]
+    zcases = make_cases(zipped, zip_values=True)
+    zmodel = CostModel(dispatch_order(zcases, zipped), zipped)
+    for case, value in zip(zcases, (0.1, 0.2, 0.3, 0.4)):
+        zmodel.add(case.case_id, value)
+    assert [zmodel.cost(case.case_id) for case in zcases] == pytest.approx([0.1, 0.2, 0.3, 0.4, 0.25])
+    fifo = _Pending()
+    for job in ((1,), None, (2,)):
+        fifo.put(job)
+    assert [fifo.get(), fifo.get(), fifo.get()] == [(1,), (2,), None]
+
+
+def test_a_fresh_sweep_folder_is_not_searched_and_its_pending_manifest_follows_the_first_job(tmp_path, monkeypatch):
+    """A sweep into a folder without cases/ looks for no finished case and no earlier case file
+    (_Sweep._fresh: the client's path to its first job), and writes the manifest listing every
+    case pending once its first job is out (docs/sweeps.md, "Scaling, nineteenth session");
+    a second sweep into the folder still resumes (nothing run again) and a case folder's stale
+    print is still removed before a case of a folder not fresh is recorded."""
+    from pyadore.sweeps import execute, runner
+
+    seen: list = []
+    original = execute.run_local
+
+    def spy(jobs, pool, on_result, count, **kwargs):
+        def watched():
+            for job in jobs:
+                seen.append((job[0], (folder / "manifest.json").exists()))
+                yield job
+        original(watched(), pool, on_result, count, **kwargs)
+
+    folder = tmp_path / "s"
+    monkeypatch.setattr(runner, "run_local", spy)
+    looked: list = []
+    real = runner._Sweep._load_finished
+    monkeypatch.setattr(runner._Sweep, "_load_finished", lambda self: (looked.append(1), real(self)))
+    grid = {"applied_force_z": [500, 750]}
+    pyadore.sweep(ROLLER, grid, folder, steps=0, workers=1, progress=False)
+    assert [exists for _, exists in seen] == [False, True] and looked == []
+    manifest = json.loads((folder / "manifest.json").read_text())
+    assert [c["status"] for c in manifest["cases"]] == ["ok", "ok"]
+    events = (folder / "events.log").read_text()
+    pyadore.sweep(ROLLER, grid, folder, steps=0, workers=1, progress=False)
+    assert looked == [1] and (folder / "events.log").read_text() == events  # resumed: nothing run
+    run, cases = _roller_sweep(folder, "applied_force_z=500,750")
+    run.open_folder()
+    assert not run._fresh
+    stale = folder / "cases" / cases[0].case_id / "case.nc"
+    stale.write_bytes(b"old")
+    run.record(cases[0], "engine-failure", error="stopped", duration=0.1, worker="w:1")
+    assert not stale.exists() and not (folder / "cases" / cases[0].case_id / "case.prt").exists()
+
+
+def test_the_deck_digest_is_sha256_without_openssl():
+    """sweep.json's deck_sha256 is hashlib's SHA-256 digest, computed without importing hashlib
+    (OpenSSL's library: 3-6 ms of the client's path to its first job)."""
+    import hashlib
+
+    from pyadore.sweeps.runner import _sha256_hex
+
+    for data in (b"", b"abc", BALL.read_bytes()):
+        assert _sha256_hex(data) == hashlib.sha256(data).hexdigest()
+    probe = "import sys, pyadore.sweeps.runner as r; r._sha256_hex(b'x'); print('hashlib' in sys.modules)"
+    proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == "False"
+
+
 def test_the_sweep_client_starts_without_numpy():
     """What the `pyadore sweep` command imports before its first case goes to a worker - the
     command line (its options from the option table's cached copy), the runner, the deck

@@ -481,7 +481,59 @@ def take_early(workers: int) -> WorkerPool | None:
     return pool
 
 
-def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None], count: int) -> None:
+class _Pending:
+    """The jobs no worker has taken yet (the interface of ``queue.Queue`` that :meth:`_Worker.serve`
+    and :func:`run_local` use: put, get, get_nowait): first in, first out, or with ``rank`` the
+    job of the highest ``rank(job)`` first, ranked when a worker takes one (so that a rank
+    learnt from the cases finished meanwhile orders the rest; :func:`run_local`).  A None (a
+    worker's end) is taken only when no job is left."""
+
+    def __init__(self, rank: Callable[[tuple], object] | None = None) -> None:
+        import threading
+
+        self._ready = threading.Condition()
+        self._jobs: list = []
+        self._ends = 0
+        self._rank = rank
+
+    def put(self, job) -> None:
+        with self._ready:
+            if job is None:
+                self._ends += 1
+            else:
+                self._jobs.append(job)
+            self._ready.notify()
+
+    def _take(self):
+        if self._jobs:
+            k = 0
+            if self._rank is not None and len(self._jobs) > 1:
+                rank = self._rank
+                try:
+                    k = max(range(len(self._jobs)), key=lambda i: rank(self._jobs[i]))
+                except Exception:  # a rank that fails orders nothing: first in, first out
+                    k = 0
+            return self._jobs.pop(k)
+        self._ends -= 1
+        return None
+
+    def get(self):
+        with self._ready:
+            while not self._jobs and not self._ends:
+                self._ready.wait()
+            return self._take()
+
+    def get_nowait(self):
+        import queue
+
+        with self._ready:
+            if not self._jobs and not self._ends:
+                raise queue.Empty
+            return self._take()
+
+
+def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None], count: int,
+              rank: Callable[[tuple], object] | None = None) -> None:
     """Run ``jobs`` (tuples of :func:`run_case` arguments, at most ``count``) on ``workers``
     local worker processes (a number: started for this sweep when the first job comes, so
     they boot while the client prepares the next ones, and ended after it; or a
@@ -489,14 +541,16 @@ def run_local(jobs: Iterable[tuple], workers, on_result: Callable[[dict], None],
     :meth:`WorkerPool.start`); ``on_result`` gets each
     :func:`run_case` result, in this thread, as it arrives.  A case whose process dies (a
     crash in the engine) is reported as an error and a fresh process takes the next case;
-    the others are not affected."""
+    the others are not affected.  ``rank`` (a job's key; None: the jobs' own order): a worker
+    free for a job takes the job of the highest rank among those not taken yet, ranked then,
+    so that a rank that learns from the results ``on_result`` gets orders the rest."""
     import queue
     import threading
 
     own = not isinstance(workers, WorkerPool)
     pool = WorkerPool(max(1, min(workers, count))) if own else workers
     pool.once = pool.once or own
-    pending: queue.Queue = queue.Queue()
+    pending = _Pending(rank)
     results: queue.Queue = queue.Queue()
     used: list[_Worker] = []
     try:

@@ -8,7 +8,6 @@ case and runs only the missing and failed ones.
 
 from __future__ import annotations
 
-import hashlib
 import json
 import math
 import os
@@ -22,16 +21,19 @@ from .execute import run_dask, run_local
 from .grid import Case, SweepError, Varied, case_deck_text, make_cases, parse_vary
 from .results import RESULT_COLUMNS, key_results, mean_results
 
-__all__ = ["sweep", "run_sweep", "read_summary", "read_summary_file", "summary_csv", "dispatch_order"]
+__all__ = ["sweep", "run_sweep", "read_summary", "read_summary_file", "summary_csv", "dispatch_order", "CostModel"]
 
 #: While cases finish, manifest.json is rewritten after a case when the last rewrite is
-#: MANIFEST_COST_FACTOR times its own duration ago, and at least every MANIFEST_INTERVAL (s):
-#: after every case for a small sweep, at most 1/MANIFEST_COST_FACTOR of the time for a large
-#: one (the file grows with the cases).  Each rewrite is followed by the events.log lines of
-#: the cases it added, so the events log is never ahead of the manifest, even in a sweep
-#: killed at any moment; both are written at the end.  Each case's own result.json is what a
-#: resume reads.
+#: MANIFEST_COST_FACTOR times its own duration and at least MANIFEST_MIN_INTERVAL (s) ago, and at
+#: least every MANIFEST_INTERVAL (s): four times a second at most, at most 1/MANIFEST_COST_FACTOR
+#: of the time for a large sweep (the file grows with the cases).  Each rewrite is followed by
+#: the events.log lines of the cases it added, so the events log is never ahead of the
+#: manifest, even in a sweep killed at any moment; both are written at the end.  Each case's own
+#: result.json is what a resume reads.  (A rewrite after every case - a 30 kB file created and
+#: renamed over the old one, about 0.4 ms of the client's CPU and the file system's write-back -
+#: competed with two workers for the cores: docs/sweeps.md, "Scaling, nineteenth session".)
 MANIFEST_INTERVAL = 1.0
+MANIFEST_MIN_INTERVAL = 0.25
 MANIFEST_COST_FACTOR = 20.0
 
 
@@ -61,6 +63,21 @@ def _vary_specs(vary) -> list[str]:
                          f"them, got {vary!r}") from None
 
 
+def _sha256_hex(data: bytes) -> str:
+    """The SHA-256 digest of ``data`` in hex (sweep.json's ``deck_sha256``), by CPython's own
+    implementation where it has one: ``hashlib`` loads OpenSSL's library (``_hashlib``) on its
+    import, 3-6 ms of the ``pyadore sweep`` client's path to its first job (docs/sweeps.md,
+    "Scaling, nineteenth session"); the digest is the same."""
+    try:
+        from _sha256 import sha256  # CPython <= 3.11
+    except ImportError:
+        try:
+            from _sha2 import sha256  # CPython >= 3.12
+        except ImportError:
+            from hashlib import sha256
+    return sha256(data).hexdigest()
+
+
 def _now() -> str:
     from datetime import datetime, timezone
 
@@ -88,7 +105,7 @@ class _Sweep:
         self.options = options
         self.definition = {
             "deck": str(deck_path),
-            "deck_sha256": hashlib.sha256(base_text.encode("utf-8")).hexdigest(),
+            "deck_sha256": _sha256_hex(base_text.encode("utf-8")),
             "vary": [{"name": v.name, "records": list(v.records), "field": v.field, "unit": v.unit,
                       "values": list(v.values)} for v in varied],
             "zip": zip_values, "steps": steps, "options": options,
@@ -100,6 +117,9 @@ class _Sweep:
         #: case id -> (its entry when encoded, or None while pending; its manifest line; its status)
         self._manifest_lines: dict[str, tuple] = {}
         self._unflushed: Path | None = None  # sweep.json, written and not flushed yet
+        #: the folder's cases/ made by this sweep: no case folder held a file before it
+        #: (nothing to resume, no earlier print to remove)
+        self._fresh = False
 
     # -- folder -------------------------------------------------------------------------------
     def case_dir(self, case_id: str) -> Path:
@@ -109,7 +129,12 @@ class _Sweep:
     def open_folder(self) -> None:
         """Create the folder, or check that it holds this same sweep; clear stale temporaries."""
         self.root.mkdir(parents=True, exist_ok=True)
-        (self.root / store.CASES).mkdir(exist_ok=True)
+        try:
+            (self.root / store.CASES).mkdir()
+            self._fresh = True
+        except FileExistsError:
+            if not (self.root / store.CASES).is_dir():
+                raise
         store.remove_stale_temporaries(self.root)
         path = self.root / store.SWEEP_FILE
         if path.exists():
@@ -143,7 +168,11 @@ class _Sweep:
     def load_finished(self) -> None:
         """Take every case already finished (``ok`` with its print) from the folder.  A case
         finished by a sweep killed before its events.log line was written (the log follows
-        the manifest rewrites, which a fast sweep batches) gets its line now, once."""
+        the manifest rewrites, which a fast sweep batches) gets its line now, once.  Nothing to
+        take from a folder whose cases/ this sweep made (64 failed look-ups of the 32-case grid's
+        files on the client's path to its first job otherwise)."""
+        if self._fresh:
+            return
         logged = set()
         events = self.root / store.EVENTS
         if events.exists():
@@ -207,13 +236,14 @@ class _Sweep:
         prt = cdir / store.CASE_PRINT
         kept = {store.CASE_HISTORY: history_text if status == "ok" else None,
                 store.CASE_RESULTS: base64.b64decode(results_nc) if status == "ok" and results_nc else None}
-        if prt.exists():
+        fresh = self._fresh  # no earlier file in the case's folder to remove (five look-ups less)
+        if not fresh and prt.exists():
             prt.unlink()  # no print from an earlier run may pose as this case's result
         for name, content in kept.items():
             path = cdir / name
             if content is not None:
                 store.write_atomic(path, content)
-            elif path.exists():
+            elif not fresh and path.exists():
                 path.unlink()  # of an earlier run of this case
         if status == "ok":
             store.write_atomic(prt, print_text)
@@ -222,7 +252,7 @@ class _Sweep:
             path = cdir / name
             if text is not None:
                 store.write_atomic(path, text)
-            elif path.exists():
+            elif not fresh and path.exists():
                 path.unlink()  # of an earlier failed run of this case
         entry = self._entry(case, status, error, duration, notes, worker, results or {})
         # not flushed to the disk: the print it vouches for is (fsync above), and a result.json a
@@ -233,7 +263,7 @@ class _Sweep:
         dur = "-" if duration is None or not math.isfinite(duration) else f"{duration:.3f}s"
         self._events.append(f"{entry['finished_at']} {case.case_id} {status} {dur} {worker}".rstrip())
         since = time.monotonic() - self._manifest_written
-        if since >= min(MANIFEST_INTERVAL, MANIFEST_COST_FACTOR * self._manifest_cost):
+        if since >= min(MANIFEST_INTERVAL, max(MANIFEST_MIN_INTERVAL, MANIFEST_COST_FACTOR * self._manifest_cost)):
             self.write_manifest(durable=False)
 
     def write_manifest(self, durable: bool = True, summary: bool = False) -> None:
@@ -329,25 +359,110 @@ class _Sweep:
         return text
 
 
+def _speed_field(varied: list[Varied]) -> Varied | None:
+    """The varied inner race speed (Rec 9.1.2), the cheap estimate of a case's cost; None."""
+    return next((v for v in varied if v.field == "inner_race_speed"), None)
+
+
+def _cheap_cost(case: Case, speed: Varied | None) -> float:
+    """The cheap estimate of a case's cost: its shaft speed (rpm; 0 when not varied)."""
+    if speed is None:
+        return 0.0
+    try:
+        return abs(float(case.params[speed.name]))
+    except (KeyError, TypeError, ValueError):
+        return 0.0
+
+
 def dispatch_order(cases: list[Case], varied: list[Varied]) -> list[Case]:
     """The order in which the cases go to the workers: the longest first, by a cheap estimate of
     their cost, so that the workers end together instead of one idling while the other runs a
     long last case (the grid's order puts the fastest speeds, the longest cases, last).  The
     estimate is the varied inner race speed (Rec 9.1.2): Appendix C's step 0 takes 55-80 ms of
     CPU at 10 000-15 000 rpm and 90-137 ms at 25 000 rpm (docs/sweeps.md, "Scaling"); cases of
-    one speed, or a sweep that does not vary it, keep the grid's order.  Only the order of the
-    work changes: every file, the manifest and the summary list the cases in the grid's order."""
-    speed = [v for v in varied if v.field == "inner_race_speed"]
-    if not speed:
+    one speed, or a sweep that does not vary it, keep the grid's order here, and the workers
+    order them by the costs of the cases finished meanwhile (:class:`CostModel`).  Only the
+    order of the work changes: every file, the manifest and the summary list the cases in the
+    grid's order."""
+    speed = _speed_field(varied)
+    if speed is None:
         return list(cases)
+    return sorted(cases, key=lambda c: _cheap_cost(c, speed), reverse=True)  # stable: the grid's order
 
-    def cost(case: Case) -> float:
-        try:
-            return abs(float(case.params[speed[0].name]))
-        except (KeyError, TypeError, ValueError):
-            return 0.0
 
-    return sorted(cases, key=cost, reverse=True)  # stable: the grid's order within a speed
+class CostModel:
+    """The order in which the workers take the cases, learnt while they run.  The cases go by
+    the cheap estimate first (:func:`dispatch_order`: the faster shaft first); among cases of
+    one cheap estimate (one speed, or all of them when the speed is not varied) the case of the
+    highest learnt cost first, once ``LEARN_AFTER`` cases have finished: each case's CPU time in
+    its worker, additive in the other varied fields' values - the mean cost, then for each
+    field in turn the mean of what is left of the finished cases' costs at each of its values
+    (one backfitting pass, so that a zipped field that repeats another adds nothing; a value no
+    finished case had adds nothing).  So the last cases are the shortest and the workers end
+    together: Appendix C's step 0 varies by up to 2x within a speed with the loads (56-140 ms
+    of CPU at 25 000 rpm), which the speed does not tell, and the loads' effect is learnt from
+    the faster speeds' cases before the slower speeds' run (docs/sweeps.md, "Scaling,
+    nineteenth session").  Only the work's order changes.  :meth:`rank` is called by the
+    workers' threads, :meth:`add` by the client's: the estimate is replaced whole."""
+
+    #: the finished cases needed before their costs order the rest
+    LEARN_AFTER = 4
+
+    def __init__(self, order: list[Case], varied: list[Varied]) -> None:
+        speed = _speed_field(varied)
+        self.names = [v.name for v in varied if v is not speed]
+        self.position = {c.case_id: k for k, c in enumerate(order)}
+        self.cheap = {c.case_id: _cheap_cost(c, speed) for c in order}
+        self.params = {c.case_id: c.params for c in order}
+        self.costs: dict[str, float] = {}
+        #: (mean, [{value: effect} for each field of self.names], {case id: its cost by them})
+        self.estimate: tuple | None = None
+
+    def add(self, case_id: str, cost) -> None:
+        """Learn from a finished case its cost (s; a case without one, e.g. a worker that died,
+        teaches nothing)."""
+        if case_id not in self.params or isinstance(cost, bool) or not isinstance(cost, (int, float)) \
+                or not math.isfinite(cost):
+            return
+        self.costs[case_id] = float(cost)
+        if len(self.costs) >= self.LEARN_AFTER:
+            self.estimate = self._fit()
+
+    def _fit(self) -> tuple:
+        mean = sum(self.costs.values()) / len(self.costs)
+        left = {c: v - mean for c, v in self.costs.items()}
+        effects = []
+        for name in self.names:
+            sums: dict = {}
+            for c, v in left.items():
+                key = self.params[c].get(name)
+                total, n = sums.get(key, (0.0, 0))
+                sums[key] = (total + v, n + 1)
+            effect = {key: total / n for key, (total, n) in sums.items()}
+            left = {c: v - effect[self.params[c].get(name)] for c, v in left.items()}
+            effects.append(effect)
+        return mean, effects, {}
+
+    def cost(self, case_id: str) -> float | None:
+        """The learnt cost (s) of case ``case_id`` among the cases of its cheap estimate; None
+        before enough cases finished."""
+        estimate = self.estimate
+        if estimate is None:
+            return None
+        mean, effects, known = estimate
+        cost = known.get(case_id)
+        if cost is None:  # once per case and estimate: a free worker ranks every case not taken yet
+            params = self.params[case_id]
+            cost = known[case_id] = mean + sum(effect.get(params.get(name), 0.0)
+                                               for name, effect in zip(self.names, effects))
+        return cost
+
+    def rank(self, job: tuple) -> tuple:
+        """The key a worker free for a case takes the highest of (``job[0]``: its case id): its
+        cheap estimate, then its learnt cost, then the earlier in :func:`dispatch_order` first."""
+        case_id = job[0]
+        cost = self.cost(case_id)
+        return (self.cheap.get(case_id, 0.0), 0.0 if cost is None else cost, -self.position.get(case_id, 0))
 
 
 def _csv_column(values: list) -> list[str]:
@@ -479,11 +594,13 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
     run.open_folder()
     run.load_finished()
     todo = dispatch_order([c for c in cases if c.case_id not in run.entries], varied)
+    costs = CostModel(todo, varied)  # the order of the rest, learnt from the cases finished
     by_id = {c.case_id: c for c in cases}
     bar = _progress(len(todo), progress)
 
     def on_result(res: dict) -> None:
         case = by_id[res["case"]]
+        costs.add(case.case_id, (res.get("timing") or {}).get("cpu_s"))
         error = res["error"]
         cdir = run.case_dir(case.case_id)
         incomplete = res.get("incomplete_text")
@@ -508,6 +625,7 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
             bar.update(1)
 
     def jobs():
+        pending = True  # the manifest listing every case pending: written once the first job is out
         for case in todo:
             text = run.prepare(case)
             if text is None:
@@ -515,13 +633,18 @@ def _run_sweep(deck, given, deck_path, vary, out_dir, zip, steps, pool, schedule
                     bar.update(1)
                 continue
             yield (case.case_id, text, steps, options)
+            if pending:
+                # after the first job, not on the client's path to it (docs/sweeps.md, "Scaling,
+                # nineteenth session"); flushed with the summary at the end
+                pending = False
+                if run._manifest_written == 0.0:
+                    run.write_manifest(durable=False)
 
     try:
-        run.write_manifest(durable=False)  # every case pending; flushed with the summary at the end
         if scheduler is not None:
             run_dask(jobs(), scheduler, on_result)
         else:
-            run_local(jobs(), pool, on_result, count=len(todo))
+            run_local(jobs(), pool, on_result, count=len(todo), rank=costs.rank)
     finally:
         if bar is not None:
             bar.close()
