@@ -48,13 +48,6 @@ module adore_dynamics_block_jacobian
       real(wp), allocatable :: e(:, :, :)     !< (m, nr, nb) E_b = (I - hg A_b)**-1 hg B_b
       real(wp), allocatable :: slu(:, :)      !< (nr, nr) LU factors of the Schur complement S, transposed
       integer, allocatable :: spiv(:)         !< (nr) its row interchanges
-      !> factor's copies of the parts across the blocks (block index first, so that solve and
-      !> multiply do each block's arithmetic for all blocks at once, in SIMD lanes, with every
-      !> block's operations and their order unchanged): lux(b, j, k) = lu(j, k, b),
-      !> ex(b, i, k) = e(i, k, b), cjx(b, i, l) = cj(i, l, b), jx(b, i, k) = j(i, k, b),
-      !> bjx(b, i, k) = bj(i, k, b).  Valid while hg >= 0: whoever changes j, bj, cj or dj sets
-      !> hg = -1 (as the integrator's block_jacobian does), and multiply then takes the parts.
-      real(wp), allocatable :: lux(:, :, :), ex(:, :, :), cjx(:, :, :), jx(:, :, :), bjx(:, :, :)
       !> threads of factor's per-block work (OpenMP; the run option threads, adore_core_threads):
       !> every block's factors, E_b and C_b E_b into its own slots, S summed after them in block
       !> order, so the factors are the same bit for bit on any number of threads
@@ -99,13 +92,13 @@ contains
       self%m = m
       self%first = first
       self%cols = cols
-      allocate (self%j(m, m, nb), self%lu(m, m, nb), self%piv(m, nb), self%lux(nb, m, m), self%jx(nb, m, m))
+      allocate (self%j(m, m, nb), self%lu(m, m, nb), self%piv(m, nb))
       self%j = 0.0_wp
       self%hg = -1.0_wp
       if (present(border)) then
          self%border = border
          allocate (self%bj(m, nr, nb), self%cj(nr, m, nb), self%dj(nr, nr), self%e(m, nr, nb), self%slu(nr, nr), &
-                   self%spiv(nr), self%ex(nb, m, nr), self%cjx(nb, nr, m), self%bjx(nb, m, nr))
+                   self%spiv(nr))
          self%bj = 0.0_wp
          self%cj = 0.0_wp
          self%dj = 0.0_wp
@@ -169,7 +162,6 @@ contains
          end if
          self%slu = transpose(s)
       end if
-      call copy_across(self)
       self%hg = hg
 
    contains
@@ -203,177 +195,86 @@ contains
       end subroutine factor_block
    end subroutine factor
 
-   !> The parts and factors across the blocks (block index first; the components' comment):
-   !> factor's copies for solve and multiply.
-   subroutine copy_across(self)
-      class(block_jacobian_t), intent(inout) :: self
-      integer :: b
-      do b = 1, size(self%first)
-         self%lux(b, :, :) = self%lu(:, :, b)
-         self%jx(b, :, :) = self%j(:, :, b)
-         if (.not. self%bordered()) cycle
-         self%ex(b, :, :) = self%e(:, :, b)
-         self%cjx(b, :, :) = self%cj(:, :, b)
-         self%bjx(b, :, :) = self%bj(:, :, b)
-      end do
-   end subroutine copy_across
-
    !> v := (I - hg J)**-1 v on the blocks' and the border's unknowns (the factors of the last
    !> factor call; module header); the other unknowns unchanged (their W is the identity).
-   !> Every block's operations are lu_solve's and the products' of the header, in the same
-   !> order, done for all blocks at once (factor's copies across the blocks), bit for bit the
-   !> block-by-block result.
    subroutine solve(self, v)
       class(block_jacobian_t), intent(in) :: self
       real(wp), intent(inout), contiguous :: v(:)
-      integer :: b, i, i0, m, nb, k, l, nr, p
-      real(wp) :: r(border_size(self)), x(size(self%first), self%m), s(size(self%first)), t
-      real(wp) :: pb(size(self%first), border_size(self))
+      integer :: b, i0, m, k, l, nr
+      real(wp) :: r(border_size(self)), p(border_size(self))
       m = self%m
-      nb = size(self%first)
-      nr = border_size(self)
-      ! w_b = (I - hg A_b)**-1 v_b: the row interchanges block by block, then lu_solve's
-      ! substitutions for all blocks at once
-      do b = 1, nb
+      do b = 1, size(self%first)
          i0 = self%first(b) - 1
-         do k = 1, m
-            x(b, k) = v(i0 + k)
-         end do
-         do k = 1, m
-            p = self%piv(k, b)
-            if (p /= k) then
-               t = x(b, k)
-               x(b, k) = x(b, p)
-               x(b, p) = t
-            end if
-         end do
+         call lu_solve(m, self%lu(:, :, b), self%piv(:, b), v(i0 + 1:i0 + m))
       end do
-      do k = 2, m
-         s = 0.0_wp
-         do l = 1, k - 1
-            s = s + self%lux(:, l, k)*x(:, l)
-         end do
-         x(:, k) = x(:, k) - s
-      end do
-      do k = m, 1, -1
-         s = 0.0_wp
-         do l = k + 1, m
-            s = s + self%lux(:, l, k)*x(:, l)
-         end do
-         x(:, k) = (x(:, k) - s)/self%lux(:, k, k)
-      end do
-      if (nr > 0) then
-         r = v(self%border)
-         ! r + hg matmul(C_b, w_b) block after block, each product in matmul's order
-         pb = 0.0_wp
+      if (.not. self%bordered()) return
+      nr = size(self%border)
+      r = v(self%border)
+      do b = 1, size(self%first)
+         i0 = self%first(b) - 1
+         ! r + hg matmul(C_b, w_b), the product in matmul's order
+         p = 0.0_wp
          do l = 1, m
-            do i = 1, nr
-               pb(:, i) = pb(:, i) + self%cjx(:, i, l)*x(:, l)
-            end do
+            p = p + self%cj(:, l, b)*v(i0 + l)
          end do
-         do b = 1, nb
-            r = r + self%hg*pb(b, :)
-         end do
-         call lu_solve(nr, self%slu, self%spiv, r)
-         ! w_b + matmul(E_b, x_r), the product in matmul's order
-         do i = 1, m
-            s = 0.0_wp
-            do k = 1, nr
-               s = s + self%ex(:, i, k)*r(k)
-            end do
-            x(:, i) = x(:, i) + s
-         end do
-         v(self%border) = r
-      end if
-      do b = 1, nb
-         i0 = self%first(b) - 1
-         do k = 1, m
-            v(i0 + k) = x(b, k)
-         end do
+         r = r + self%hg*p
       end do
+      call lu_solve(nr, self%slu, self%spiv, r)
+      do b = 1, size(self%first)
+         i0 = self%first(b) - 1
+         ! w_b + matmul(E_b, x_r), the product in matmul's order
+         associate (x => v(i0 + 1:i0 + m))
+            block
+               real(wp) :: q(m)
+               q = 0.0_wp
+               do k = 1, nr
+                  q = q + self%e(:, k, b)*r(k)
+               end do
+               x = x + q
+            end block
+         end associate
+      end do
+      v(self%border) = r
    end subroutine solve
 
    !> w := J v on the blocks' and the border's unknowns, 0 elsewhere (units of v per unit of t).
-   !> Each product in matmul's order (every element summed from 0, column by column); with
-   !> factors (hg >= 0) for all blocks at once from factor's copies, bit for bit the same.
    subroutine multiply(self, v, w)
       class(block_jacobian_t), intent(in) :: self
       real(wp), intent(in), contiguous :: v(:)
       real(wp), intent(out), contiguous :: w(:)
-      integer :: b, i, i0, m, k, nr, nb
+      integer :: b, i0, m, k, nr
       real(wp) :: vr(border_size(self)), wr(border_size(self)), p(border_size(self)), q(self%m)
-      real(wp) :: x(size(self%first), self%m), y(size(self%first), self%m), s(size(self%first))
-      real(wp) :: pb(size(self%first), border_size(self))
       m = self%m
-      nb = size(self%first)
       w = 0.0_wp
-      nr = border_size(self)
-      if (nr > 0) then
-         vr = v(self%border)
-         wr = 0.0_wp
+      do b = 1, size(self%first)
+         i0 = self%first(b) - 1
+         ! matmul's sum in its order (from 0, column by column), written out so that it vectorises
+         do k = 1, m
+            w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + self%j(:, k, b)*v(i0 + k)
+         end do
+      end do
+      if (.not. self%bordered()) return
+      nr = size(self%border)
+      vr = v(self%border)
+      ! the products below in matmul's order (each element summed from 0, column by column)
+      wr = 0.0_wp
+      do k = 1, nr
+         wr = wr + self%dj(:, k)*vr(k)
+      end do
+      do b = 1, size(self%first)
+         i0 = self%first(b) - 1
+         q = 0.0_wp
          do k = 1, nr
-            wr = wr + self%dj(:, k)*vr(k)
+            q = q + self%bj(:, k, b)*vr(k)
          end do
-      end if
-      if (self%hg >= 0.0_wp) then
-         ! all blocks at once: A_b v_b (+ B_b v_r), and C_b v_b for the border
-         do b = 1, nb
-            i0 = self%first(b) - 1
-            do k = 1, m
-               x(b, k) = v(i0 + k)
-            end do
+         w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + q
+         p = 0.0_wp
+         do k = 1, m
+            p = p + self%cj(:, k, b)*v(i0 + k)
          end do
-         do i = 1, m
-            s = 0.0_wp
-            do k = 1, m
-               s = s + self%jx(:, i, k)*x(:, k)
-            end do
-            y(:, i) = s
-         end do
-         if (nr > 0) then
-            do i = 1, m
-               s = 0.0_wp
-               do k = 1, nr
-                  s = s + self%bjx(:, i, k)*vr(k)
-               end do
-               y(:, i) = y(:, i) + s
-            end do
-            pb = 0.0_wp
-            do k = 1, m
-               do i = 1, nr
-                  pb(:, i) = pb(:, i) + self%cjx(:, i, k)*x(:, k)
-               end do
-            end do
-            do b = 1, nb
-               wr = wr + pb(b, :)
-            end do
-         end if
-         do b = 1, nb
-            i0 = self%first(b) - 1
-            do k = 1, m
-               w(i0 + k) = y(b, k)
-            end do
-         end do
-      else
-         do b = 1, nb
-            i0 = self%first(b) - 1
-            do k = 1, m
-               w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + self%j(:, k, b)*v(i0 + k)
-            end do
-            if (nr == 0) cycle
-            q = 0.0_wp
-            do k = 1, nr
-               q = q + self%bj(:, k, b)*vr(k)
-            end do
-            w(i0 + 1:i0 + m) = w(i0 + 1:i0 + m) + q
-            p = 0.0_wp
-            do k = 1, m
-               p = p + self%cj(:, k, b)*v(i0 + k)
-            end do
-            wr = wr + p
-         end do
-      end if
-      if (nr > 0) w(self%border) = wr
+         wr = wr + p
+      end do
+      w(self%border) = wr
    end subroutine multiply
 
    !> The number of border unknowns (0 without a border).
