@@ -27,6 +27,7 @@
 !> Everything outside the blocks and the border is zero in J (treated explicitly).
 module adore_dynamics_block_jacobian
    use adore_core_kinds, only: wp
+   use adore_core_threads, only: team_join
    implicit none
    private
 
@@ -124,7 +125,7 @@ contains
       class(block_jacobian_t), intent(inout) :: self
       real(wp), intent(in) :: hg
       logical, intent(out) :: ok
-      integer :: b, i, nr, nb
+      integer :: b, i, nr, nb, arrived
       logical :: ok_b(size(self%first))
       real(wp), allocatable :: s(:, :), ce(:, :, :)
       nb = size(self%first)
@@ -132,11 +133,16 @@ contains
       if (self%bordered()) nr = size(self%border)
       allocate (ce(nr, nr, nb))
       if (self%threads > 1) then
-         !$omp parallel do num_threads(self%threads) schedule(static, 1) default(shared) private(b)
+         ! (as adore_forces_ball_bearing's loop: dynamic, the first thread joins last)
+         arrived = 0
+         !$omp parallel num_threads(self%threads) default(shared) private(b)
+         !$omp do schedule(dynamic, 1)
          do b = 1, nb
             call factor_block(b)
          end do
-         !$omp end parallel do
+         !$omp end do nowait
+         call team_join(arrived)
+         !$omp end parallel
       else
          do b = 1, nb
             call factor_block(b)
