@@ -14,6 +14,7 @@
 !> * the two-dimensional traction (two_d): it opposes a spin about e_t, keeps action =
 !>   reaction, and its fast quadrature agrees with the reference one within 1e-4 at every
 !>   race contact at the step-0 state and at states slipping across the rolling direction.
+!> * team_join (the end of a parallel loop's work): every thread but the first counted once;
 !> * threads: the loads on 1, 2 and 5 threads are the same bit for bit (every body, contact,
 !>   heat, pocket and land), and an error is the first ball's whichever thread met it;
 !> * the Hertz ellipse (adore_contact_hertz): the bisection with its Newton shortcut gives
@@ -40,6 +41,7 @@ program test_forces
    use adore_state_bearing_state, only: body_state_t
    use adore_core_rotation, only: quat_matrix
    use adore_test_support, only: check, finish
+   use adore_core_threads, only: team_join
    use adore_test_ball_fixture, only: step0_state, appendix_c_race_control, power_of, loads_power
    implicit none
 
@@ -61,6 +63,7 @@ program test_forces
    call test_contact_damping(b, g, st)
    call test_free_body_rates()
    call test_threads_same_loads(b, g, st)
+   call test_team_join()
    call finish("force assembly")
 
 contains
@@ -581,6 +584,30 @@ contains
       call check(maxval(abs(rdot - matmul(quat_matrix(body%attitude), skew))) < 1.0e-6_wp*norm2(w), &
                  "free body: attitude rate dR/dt = R [omega]x")
    end subroutine test_free_body_rates
+
+   !> team_join (adore_core_threads), the end of a parallel loop's work: in a region of 1, 2
+   !> and 5 threads every thread but the first counts itself exactly once, and the first
+   !> thread comes back (its wait is bounded) with the loop's results all in place.
+   subroutine test_team_join()
+      integer :: arrived, nt, k, done(20)
+      integer :: teams(3) = [1, 2, 5]
+      integer :: t
+      do t = 1, size(teams)
+         nt = teams(t)
+         arrived = 0
+         done = 0
+         !$omp parallel num_threads(nt) default(shared) private(k)
+         !$omp do schedule(dynamic, 1)
+         do k = 1, size(done)
+            done(k) = k
+         end do
+         !$omp end do nowait
+         call team_join(arrived)
+         !$omp end parallel
+         call check(arrived == nt - 1 .and. all(done == [(k, k=1, size(done))]), &
+                    "team_join: every thread but the first counted once on "//achar(48 + nt)//" threads")
+      end do
+   end subroutine test_team_join
 
    !> The force assembly on several threads (ball_bearing_loads' threads; run option threads):
    !> at a state where every ball differs (each displaced and spinning off its start, the inner
