@@ -4,6 +4,7 @@
 !> (adore_forces_ball_power) with its note line.  A submodule of adore_bearings_ball: the
 !> ball kind's lifecycle (start, dynamics, mounting, events) stays in the parent.
 submodule(adore_bearings_ball) adore_bearings_ball_results
+   use adore_core_threads, only: team_threads
    implicit none
 
 contains
@@ -42,7 +43,7 @@ contains
       end do
       call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, self%tribology, &
                               flash=.false., lubricant_temperature=self%eom%lubricant_temperature, &
-                              threads=self%eom%threads)
+                              threads=team_threads(self%eom%team, self%eom%threads))   ! the calls' choice
       self%tribology_current = .true.
    end procedure ball_accepted
 
@@ -115,7 +116,7 @@ contains
       else
          call ball_contact_print(self%bearing, self%eom%geometry, self%eom%state, self%eom%loads, tribology, &
                                  flash=h%printed, lubricant_temperature=self%eom%lubricant_temperature, &
-                                 threads=self%eom%threads)
+                                 threads=team_threads(self%eom%team, self%eom%threads))
       end if
       call ball_element_row(h, self%eom%state, self%eom%loads, self%azimuth, tribology)
       ! the thermal model's exit fluid temperature and the history element's contact

@@ -4,16 +4,42 @@
 !> a fixed order, so that a run's results are the same bit for bit on any number of threads.
 !> Built without OpenMP (no -fopenmp), every run has one thread.  No module state.
 module adore_core_threads
-   !$ use omp_lib, only: omp_get_max_threads, omp_get_num_procs
+   use adore_core_kinds, only: wp
+   !$ use omp_lib, only: omp_get_max_threads, omp_get_num_procs, omp_get_thread_num, omp_get_num_threads, omp_get_wtime
    implicit none
    private
 
-   public :: run_threads, DEFAULT_THREADS_CAP
+   public :: run_threads, team_join, team_t, team_threads, team_note, wall_seconds, DEFAULT_THREADS_CAP, &
+             TEAM_JOIN_WAIT, TEAM_PROBE, TEAM_KEEP
 
    !> the most threads a run takes by default (no OMP_NUM_THREADS, no `threads` option): the
    !> 18 balls of Appendix C on 4 threads are 5, 5, 4 and 4 balls, at most 3.6 times the
    !> speed of one; more threads would each get fewer balls while the serial part stays
    integer, parameter :: DEFAULT_THREADS_CAP = 4
+
+   !> the longest the first thread waits (s), busy, in team_join for the others to finish their
+   !> last items: about two balls' contacts of Appendix C (~10 us each); on a loaded machine,
+   !> where another thread may have lost its core, at most this much CPU is spent a loop
+   real(wp), parameter :: TEAM_JOIN_WAIT = 2.0e-5_wp
+
+   !> calls of each measured window of team_t (one on the run's threads, one on a single
+   !> thread), and calls run on the faster choice before both are measured again
+   integer, parameter :: TEAM_PROBE = 32, TEAM_KEEP = 480
+
+   !> A run's choice between its threads and one thread for the derivative calls, measured as
+   !> it goes (docs/performance.md, "Threads"): TEAM_PROBE calls on the run's threads, then
+   !> TEAM_PROBE on one, then TEAM_KEEP calls on whichever took less wall time, and again.
+   !> On a machine whose cores are free the threads win; when other work holds the cores,
+   !> a parallel loop waits for a thread that has no core (measured: one thread 13-15 %
+   !> faster then) and the run goes on one.  The results are the same bit for bit either way.
+   type :: team_t
+      integer :: phase = 0                !< 0: not started; 1: measuring the threads; 2: one; 3: keeping
+      integer :: left = 0                 !< calls left in the phase
+      integer :: choice = 1               !< the threads of phase 3
+      real(wp) :: seconds(2) = 0.0_wp     !< wall time of the windows: on the threads, on one
+      integer :: kept_one = 0             !< phases 3 run on one thread (statistics)
+      integer :: kept_many = 0            !< phases 3 run on the threads (statistics)
+   end type team_t
 
 contains
 
@@ -39,5 +65,95 @@ contains
       !$ end if
       n = max(n, 1)
    end function run_threads
+
+   !> The end of a parallel loop's work (docs/performance.md, "Threads"), called by every
+   !> thread of the team once its share is done (after a `nowait` worksharing loop, before the
+   !> region's end): the other threads count themselves in arrived (shared, 0 at the region's
+   !> start); the first thread waits, busy, until all the others have, at most TEAM_JOIN_WAIT
+   !> seconds.  So the first thread, which carries the run on, usually reaches the region's
+   !> closing barrier last and passes it without sleeping: under the passive wait policy a
+   !> sleeping thread costs a futex wake-up and, on a virtual machine, the virtual CPU's
+   !> return from halt (~20-50 us measured here).  The results do not depend on it.
+   subroutine team_join(arrived)
+      integer, intent(inout) :: arrived
+      integer :: seen, others
+      real(wp) :: start, now
+      logical :: first
+      first = .true.
+      others = 0
+      !$ first = omp_get_thread_num() == 0
+      !$ others = omp_get_num_threads() - 1
+      if (.not. first) then
+         !$omp atomic update
+         arrived = arrived + 1
+         return
+      end if
+      start = 0.0_wp
+      !$ start = omp_get_wtime()
+      do
+         !$omp atomic read
+         seen = arrived
+         if (seen >= others) exit
+         now = start + 2.0_wp*TEAM_JOIN_WAIT
+         !$ now = omp_get_wtime()
+         if (now - start > TEAM_JOIN_WAIT) exit
+      end do
+   end subroutine team_join
+
+   !> The threads for the next derivative call of a run on `threads` threads (team_t).
+   pure integer function team_threads(team, threads) result(n)
+      type(team_t), intent(in) :: team
+      integer, intent(in) :: threads
+      n = max(threads, 1)
+      if (n == 1) return
+      select case (team%phase)
+      case (2)
+         n = 1
+      case (3)
+         n = team%choice
+      end select
+   end function team_threads
+
+   !> The wall time (s) of a derivative call made on team_threads(team, threads) threads:
+   !> the windows' sums, the choice at the end of the second, the phases' turns (team_t).
+   pure subroutine team_note(team, threads, seconds)
+      type(team_t), intent(inout) :: team
+      integer, intent(in) :: threads
+      real(wp), intent(in) :: seconds
+      if (threads <= 1) return
+      if (team%phase == 0) then
+         team%phase = 1
+         team%left = TEAM_PROBE
+         team%seconds = 0.0_wp
+      end if
+      if (team%phase == 1 .or. team%phase == 2) team%seconds(team%phase) = team%seconds(team%phase) + seconds
+      team%left = team%left - 1
+      if (team%left > 0) return
+      select case (team%phase)
+      case (1)
+         team%phase = 2
+         team%left = TEAM_PROBE
+      case (2)
+         team%phase = 3
+         team%left = TEAM_KEEP
+         if (team%seconds(1) <= team%seconds(2)) then
+            team%choice = threads
+            team%kept_many = team%kept_many + 1
+         else
+            team%choice = 1
+            team%kept_one = team%kept_one + 1
+         end if
+      case default
+         team%phase = 1
+         team%left = TEAM_PROBE
+         team%seconds = 0.0_wp
+      end select
+   end subroutine team_note
+
+   !> Wall-clock seconds (omp_get_wtime; 0 without OpenMP, where every run has one thread).
+   real(wp) function wall_seconds() result(t)
+      t = 0.0_wp
+      !$ t = omp_get_wtime()
+   end function wall_seconds
 
 end module adore_core_threads

@@ -14,6 +14,7 @@ module adore_dynamics_ball_system
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type, engine_error
    use adore_core_strings, only: itoa
+   use adore_core_threads, only: team_t, team_threads, team_note, wall_seconds
    use adore_core_rotation, only: quat_from_rotation_vector, quat_matrix
    use adore_model_bearing, only: BODY_CAGE, BODY_ELEMENT, BODY_INNER, bearing_t
    use adore_model_condition, only: dof_constraints_t, default_constraints
@@ -103,6 +104,8 @@ module adore_dynamics_ball_system
       !> threads of each evaluation's ball contacts (run option threads, adore_core_threads;
       !> ball_bearing_loads: the same rates bit for bit on any number)
       integer :: threads = 1
+      !> the choice between those threads and one, call by call, measured (adore_core_threads)
+      type(team_t) :: team
       type(bearing_state_t) :: state, rates  !< scratch of eval
       type(ball_bearing_loads_t) :: loads    !< the loads of the last evaluation
       integer :: calls = 0                   !< evaluations so far
@@ -142,16 +145,22 @@ contains
       real(wp), intent(in) :: y(:)
       real(wp), intent(out) :: dydt(:)
       integer, intent(out) :: flag
+      integer :: threads
+      real(wp) :: start
 
       self%calls = self%calls + 1
       if (allocated(self%failure_reason)) deallocate (self%failure_reason)   ! only the last eval's reason
       call unpack_state(y, t*self%time_scale, self%state, self%orbit_frame)
+      ! the run's threads or one, whichever the last measured windows found faster
+      threads = team_threads(self%team, self%threads)
+      start = 0.0_wp
+      if (self%threads > 1) start = wall_seconds()
       if (allocated(self%frozen_stiffness)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
                                  self%traction, self%cage, self%frozen_stiffness, self%traction_2d, self%gyro_restraint, &
                                  self%contact_damping, self%land_film, self%cage_spin_only, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl, threads=self%threads, &
+                                 adore_whirl=self%adore_whirl, threads=threads, &
                                  whirl_blend=self%whirl_blend)
       else if (allocated(self%constraints)) then
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
@@ -159,7 +168,7 @@ contains
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, constraints=self%constraints, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl, threads=self%threads, &
+                                 adore_whirl=self%adore_whirl, threads=threads, &
                                  whirl_blend=self%whirl_blend)
       else
          call ball_bearing_rates(self%bearing, self%geometry, self%state, self%rates, self%loads, self%failure, &
@@ -167,9 +176,10 @@ contains
                                  gyro_restraint=self%gyro_restraint, damping=self%contact_damping, &
                                  land_film=self%land_film, cage_spin_only=self%cage_spin_only, &
                                  rolling=self%rolling_resistance, lubricant_temperature=self%lubricant_temperature, &
-                                 adore_whirl=self%adore_whirl, threads=self%threads, &
+                                 adore_whirl=self%adore_whirl, threads=threads, &
                                  whirl_blend=self%whirl_blend)
       end if
+      if (self%threads > 1) call team_note(self%team, self%threads, wall_seconds() - start)
       if (allocated(self%failure)) then
          ! a state outside the contact models' range (e.g. a stage of a too long step that
          ! drove a ball deep into a race): the integrator retries smaller (report 4.4.12);

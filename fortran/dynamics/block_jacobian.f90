@@ -27,6 +27,7 @@
 !> Everything outside the blocks and the border is zero in J (treated explicitly).
 module adore_dynamics_block_jacobian
    use adore_core_kinds, only: wp
+   use adore_core_threads, only: team_join, team_t, team_threads, team_note, wall_seconds
    implicit none
    private
 
@@ -52,6 +53,8 @@ module adore_dynamics_block_jacobian
       !> every block's factors, E_b and C_b E_b into its own slots, S summed after them in block
       !> order, so the factors are the same bit for bit on any number of threads
       integer :: threads = 1
+      !> the choice between those threads and one for each factorisation, measured (team_t)
+      type(team_t) :: team
    contains
       procedure :: setup
       procedure :: factor
@@ -119,29 +122,41 @@ contains
 
    !> LU factors (partial pivoting) of I - hg A_b of every block (hg = h gamma, unit of t) and,
    !> with a border, E_b and the factors of the Schur complement S (module header);
-   !> ok = .false. when a block or S is singular.  The blocks on self%threads threads.
+   !> ok = .false. when a block or S is singular.  The blocks on self%threads threads or on
+   !> one, whichever self%team measured faster.
    subroutine factor(self, hg, ok)
       class(block_jacobian_t), intent(inout) :: self
       real(wp), intent(in) :: hg
       logical, intent(out) :: ok
-      integer :: b, i, nr, nb
+      integer :: b, i, nr, nb, arrived, threads
+      real(wp) :: start
       logical :: ok_b(size(self%first))
       real(wp), allocatable :: s(:, :), ce(:, :, :)
       nb = size(self%first)
       nr = 0
       if (self%bordered()) nr = size(self%border)
       allocate (ce(nr, nr, nb))
-      if (self%threads > 1) then
-         !$omp parallel do num_threads(self%threads) schedule(static, 1) default(shared) private(b)
+      ! the run's threads or one, whichever the last measured windows found faster (team_t)
+      threads = team_threads(self%team, self%threads)
+      start = 0.0_wp
+      if (self%threads > 1) start = wall_seconds()
+      if (threads > 1) then
+         ! (as adore_forces_ball_bearing's loop: dynamic, the first thread joins last)
+         arrived = 0
+         !$omp parallel num_threads(threads) default(shared) private(b)
+         !$omp do schedule(dynamic, 1)
          do b = 1, nb
             call factor_block(b)
          end do
-         !$omp end parallel do
+         !$omp end do nowait
+         call team_join(arrived)
+         !$omp end parallel
       else
          do b = 1, nb
             call factor_block(b)
          end do
       end if
+      if (self%threads > 1) call team_note(self%team, self%threads, wall_seconds() - start)
       ok = all(ok_b)
       if (.not. ok) then
          self%hg = -1.0_wp

@@ -25,6 +25,7 @@
 !> (report 4.4.12) sets `abnormal` for the integrator to reject the step.
 !> Moments are about each body's mass centre, inertial components.  Units SI.
 module adore_forces_ball_bearing
+   use adore_core_threads, only: team_join
    use adore_core_strings, only: itoa
    use adore_core_kinds, only: wp
    use adore_core_error, only: error_type
@@ -302,7 +303,7 @@ contains
       real(wp) :: rho, beta
       real(wp) :: t_lub(size(s%temperature)), race_rot(3, 3, 2)
       type(cage_land_pair_t), allocatable :: lp(:)
-      integer :: n, k, j, n_threads, n_lands
+      integer :: n, k, j, n_threads, n_lands, arrived
       logical :: with_traction, with_2d, with_reference, with_rolling, with_cage, with_gyro
 
       with_traction = .true.
@@ -355,12 +356,18 @@ contains
       ! (after the balls, each into its own slot; they depend on the cage and the races only):
       ! on n_threads threads (run option threads, adore_core_threads) or without OpenMP on one,
       ! the same numbers bit for bit
+      ! (dynamic: the first thread starts on the items while the others wake; team_join: it
+      ! usually reaches the closing barrier last, so it does not sleep there)
       if (n_threads > 1) then
-         !$omp parallel do num_threads(n_threads) schedule(static, 1) default(shared) private(k)
+         arrived = 0
+         !$omp parallel num_threads(n_threads) default(shared) private(k)
+         !$omp do schedule(dynamic, 1)
          do k = 1, n + n_lands
             call loop_item(k)
          end do
-         !$omp end parallel do
+         !$omp end do nowait
+         call team_join(arrived)
+         !$omp end parallel
       else
          do k = 1, n + n_lands
             call loop_item(k)

@@ -14,6 +14,10 @@
 !> * the two-dimensional traction (two_d): it opposes a spin about e_t, keeps action =
 !>   reaction, and its fast quadrature agrees with the reference one within 1e-4 at every
 !>   race contact at the step-0 state and at states slipping across the rolling direction.
+!> * team_join (the end of a parallel loop's work): every thread but the first counted once;
+!> * team_t (the run's threads or one, measured call by call): with synthetic call times it
+!>   keeps the threads while they are faster, goes to one thread while one is, and measures
+!>   both again after TEAM_KEEP calls;
 !> * threads: the loads on 1, 2 and 5 threads are the same bit for bit (every body, contact,
 !>   heat, pocket and land), and an error is the first ball's whichever thread met it;
 !> * the Hertz ellipse (adore_contact_hertz): the bisection with its Newton shortcut gives
@@ -40,6 +44,7 @@ program test_forces
    use adore_state_bearing_state, only: body_state_t
    use adore_core_rotation, only: quat_matrix
    use adore_test_support, only: check, finish
+   use adore_core_threads, only: team_join, team_t, team_threads, team_note, TEAM_PROBE, TEAM_KEEP
    use adore_test_ball_fixture, only: step0_state, appendix_c_race_control, power_of, loads_power
    implicit none
 
@@ -61,6 +66,8 @@ program test_forces
    call test_contact_damping(b, g, st)
    call test_free_body_rates()
    call test_threads_same_loads(b, g, st)
+   call test_team_join()
+   call test_team_choice()
    call finish("force assembly")
 
 contains
@@ -581,6 +588,62 @@ contains
       call check(maxval(abs(rdot - matmul(quat_matrix(body%attitude), skew))) < 1.0e-6_wp*norm2(w), &
                  "free body: attitude rate dR/dt = R [omega]x")
    end subroutine test_free_body_rates
+
+   !> team_join (adore_core_threads), the end of a parallel loop's work: in a region of 1, 2
+   !> and 5 threads every thread but the first counts itself exactly once, and the first
+   !> thread comes back (its wait is bounded) with the loop's results all in place.
+   subroutine test_team_join()
+      integer :: arrived, nt, k, done(20)
+      integer :: teams(3) = [1, 2, 5]
+      integer :: t
+      do t = 1, size(teams)
+         nt = teams(t)
+         arrived = 0
+         done = 0
+         !$omp parallel num_threads(nt) default(shared) private(k)
+         !$omp do schedule(dynamic, 1)
+         do k = 1, size(done)
+            done(k) = k
+         end do
+         !$omp end do nowait
+         call team_join(arrived)
+         !$omp end parallel
+         call check(arrived == nt - 1 .and. all(done == [(k, k=1, size(done))]), &
+                    "team_join: every thread but the first counted once on "//achar(48 + nt)//" threads")
+      end do
+   end subroutine test_team_join
+
+   !> team_t's choice (adore_core_threads) with synthetic wall times: a run on 2 threads first
+   !> measures TEAM_PROBE calls on 2 threads, then TEAM_PROBE on one, keeps the faster for
+   !> TEAM_KEEP calls and measures again; a run on one thread never leaves it.
+   subroutine test_team_choice()
+      type(team_t) :: team
+      integer :: k, n, seq(2*TEAM_PROBE + TEAM_KEEP + 1)
+      real(wp) :: cost(2)
+      ! 2 threads take 1.0 ms a call, one thread 1.6 ms: the threads are kept
+      cost = [1.0e-3_wp, 1.6e-3_wp]
+      do k = 1, size(seq)
+         n = team_threads(team, 2)
+         seq(k) = n
+         call team_note(team, 2, cost(3 - n))
+      end do
+      call check(all(seq(1:TEAM_PROBE) == 2) .and. all(seq(TEAM_PROBE + 1:2*TEAM_PROBE) == 1) .and. &
+                 all(seq(2*TEAM_PROBE + 1:2*TEAM_PROBE + TEAM_KEEP) == 2) .and. seq(size(seq)) == 2 .and. &
+                 team%kept_many == 1 .and. team%kept_one == 0, &
+                 "team: the faster threads kept for TEAM_KEEP calls after one window each, then measured again")
+      ! the machine gets busy: 2 threads now take 2.0 ms a call, one thread 1.6 ms
+      cost = [2.0e-3_wp, 1.6e-3_wp]
+      do k = 1, 2*TEAM_PROBE + TEAM_KEEP
+         n = team_threads(team, 2)
+         seq(k) = n
+         call team_note(team, 2, cost(3 - n))
+      end do
+      call check(all(seq(TEAM_PROBE:2*TEAM_PROBE - 1) == 1) .and. &
+                 all(seq(2*TEAM_PROBE:2*TEAM_PROBE + TEAM_KEEP - 1) == 1) .and. team%kept_one == 1, &
+                 "team: one thread kept while it is the faster")
+      team = team_t()
+      call check(team_threads(team, 1) == 1, "team: a run on one thread stays on one")
+   end subroutine test_team_choice
 
    !> The force assembly on several threads (ball_bearing_loads' threads; run option threads):
    !> at a state where every ball differs (each displaced and spinning off its start, the inner
