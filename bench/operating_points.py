@@ -32,7 +32,9 @@ into bench/operating_points_grid.csv in place of the same cases, marked in its `
 column, and prints the before -> after transitions; ``--summarize`` prints a CSV's failures by message category,
 deck, speed, load and fit; ``--compare`` prints several CSVs side by side (failures, runs with
 forced steps by speed and load, closures within 1 % and 10 %, the cases that moved).  The measured grid and its diagnosis re-runs are kept in
-bench/operating_points_grid.csv (the last full grid, session 18 after main's arrowhead border rows;
+bench/operating_points_grid.csv (the last full grid, session 19: the forced-step diagnosis and report
+4.4.12's reduced step below the minimum; session 18's final one in bench/operating_points_grid_s18c.csv, its grid
+after main's arrowhead border rows in bench/operating_points_grid_s18b.csv;
 the same session's on 5bac9b8 in bench/operating_points_grid_s18a.csv, session 16's in
 bench/operating_points_grid_s16.csv, session 15's in bench/operating_points_grid_s15.csv, session 14's in bench/operating_points_grid_s14.csv,
 session 13's in bench/operating_points_grid_s13.csv,
