@@ -2,6 +2,7 @@
 !> closed forms and defining conditions only; the comparison with the report's print is
 !> in tests/test_tribology.py.
 program test_tribology
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
@@ -17,7 +18,8 @@ program test_tribology
    use adore_tribology_slip, only: contact_power
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_contact_power, &
                                            ehd_contact_traction_fast
-   use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_ERROR, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
+   use adore_tribology_ehd_strip_table, only: strip_log_shear, strip_log_shear_nodes, STRIP_ERROR, STRIP_A_MAX, &
+                                              STRIP_L_MIN, STRIP_L_MAX
    use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, min_dissipation_kinematics, ehd_films_t
    implicit none
 
@@ -32,6 +34,7 @@ program test_tribology
    call test_flash()
    call test_fast_paths()
    call test_strip_table()
+   call test_strip_nodes()
    call test_min_dissipation_search()
 
    call finish("tribology")
@@ -134,6 +137,51 @@ contains
       call check(abs(strip_log_shear(0.0_wp, 0.3_wp) - (log(2.0_wp*th*tanh(th)) - 0.6_wp)) <= STRIP_ERROR, &
                  "EHD strip table: A = 0 is H(L) itself")
    end subroutine test_strip_table
+
+   !> strip_log_shear_nodes (the C kernel of fortran/tribology/ehd_strip_kernel.c) against
+   !> strip_log_shear node by node, bit for bit: 2 000 000 pseudo-random points of the
+   !> domain (A in [0, STRIP_A_MAX], L in [STRIP_L_MIN - 3, STRIP_L_MAX]: below STRIP_L_MIN
+   !> clamped), the domain's corners and grid lines; the nodes beyond the domain (A >
+   !> STRIP_A_MAX or L > STRIP_L_MAX) keep their value and a NaN argument gives NaN.
+   subroutine test_strip_nodes()
+      integer, parameter :: N = 1000
+      real(wp) :: a(N), l(N), g(N), r(2, N), expect
+      integer :: pass, j, bad
+      integer, allocatable :: seed(:)
+
+      call random_seed(size=j)
+      allocate (seed(j))
+      seed = 20261127
+      call random_seed(put=seed)
+      bad = 0
+      do pass = 1, 2000
+         call random_number(r)
+         a = STRIP_A_MAX*r(1, :)
+         l = STRIP_L_MIN - 3.0_wp + (STRIP_L_MAX - STRIP_L_MIN + 3.0_wp)*r(2, :)
+         if (pass == 1) then
+            ! the corners, the grid lines (cell edges: x0 = 1 exactly) and the upper edges
+            a(1:4) = [0.0_wp, STRIP_A_MAX, 0.0_wp, STRIP_A_MAX]
+            l(1:4) = [STRIP_L_MIN, STRIP_L_MIN, STRIP_L_MAX, STRIP_L_MAX]
+            a(5:104) = [(0.08_wp*j, j = 0, 99)]
+            l(5:104) = [(STRIP_L_MIN + 0.08_wp*j, j = 0, 99)]
+         end if
+         g = -7.0_wp
+         call strip_log_shear_nodes(N, a, l, g)
+         do j = 1, N
+            expect = strip_log_shear(a(j), max(l(j), STRIP_L_MIN))
+            if (.not. (g(j) == expect)) bad = bad + 1
+         end do
+      end do
+      call check(bad == 0, "EHD strip table at nodes (C kernel): strip_log_shear's bits at 2e6 points")
+      a(1:4) = [STRIP_A_MAX*1.0001_wp, 1.0_wp, 1.0_wp, 1.0_wp]
+      l(1:4) = [0.0_wp, STRIP_L_MAX + 0.01_wp, 0.0_wp, 0.0_wp]
+      a(3) = ieee_value(1.0_wp, ieee_quiet_nan)
+      g(1:4) = -7.0_wp
+      call strip_log_shear_nodes(4, a(1:4), l(1:4), g(1:4))
+      call check(g(1) == -7.0_wp .and. g(2) == -7.0_wp .and. ieee_is_nan(g(3)) .and. &
+                 g(4) == strip_log_shear(1.0_wp, 0.0_wp), &
+                 "EHD strip table at nodes: beyond the domain untouched, NaN for NaN")
+   end subroutine test_strip_nodes
 
    !> G(A, L) of the strip table by the rule cpsi = cos(psi), wpsi = weights x cos(psi)
    !> on [0, pi/2] (test_strip_table).

@@ -26,7 +26,7 @@ module adore_tribology_ehd_traction
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_quadrature, only: gauss_legendre
-   use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
+   use adore_tribology_ehd_strip_table, only: strip_log_shear_nodes, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
    use adore_tribology_ehd_elastic, only: elastic_strip_ratio
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
                                    interior_extremum, contact_kinematics, rolling_zones, axis_nodes, cross_slip, &
@@ -371,13 +371,13 @@ contains
             lz(1:n) = STRIP_L_MIN
             fac = rheo%eta_w/h*b
          end if
+         ! the table at the nodes in its domain (G is flat below STRIP_L_MIN), in one call
+         ! (strip_log_shear_nodes: strip_log_shear's bits), then the nodes beyond it
+         call strip_log_shear_nodes(n, aa, lz, g)
          do j = 1, n
             if (aa(j) > STRIP_A_MAX) then
                g(j) = 0.0_wp
-            else if (lz(j) <= STRIP_L_MAX) then
-               ! G is flat below STRIP_L_MIN
-               g(j) = strip_log_shear(aa(j), max(lz(j), STRIP_L_MIN))
-            else
+            else if (lz(j) > STRIP_L_MAX) then
                g(j) = log(2.0_wp*(lz(j) + log(2.0_wp) + 0.25_wp*pi*aa(j))) - 2.0_wp*lz(j)
             end if
          end do
