@@ -146,7 +146,7 @@ contains
    subroutine test_strip_nodes()
       integer, parameter :: N = 1000
       real(wp) :: a(N), l(N), g(N), r(2, N), expect
-      integer :: pass, j, bad
+      integer :: pass, j, bad, left
       integer, allocatable :: seed(:)
 
       call random_seed(size=j)
@@ -166,7 +166,8 @@ contains
             l(5:104) = [(STRIP_L_MIN + 0.08_wp*j, j = 0, 99)]
          end if
          g = -7.0_wp
-         call strip_log_shear_nodes(N, a, l, g)
+         call strip_log_shear_nodes(N, a, l, g, left)
+         if (left /= 0) bad = bad + 1
          do j = 1, N
             expect = strip_log_shear(a(j), max(l(j), STRIP_L_MIN))
             if (.not. (g(j) == expect)) bad = bad + 1
@@ -177,10 +178,10 @@ contains
       l(1:4) = [0.0_wp, STRIP_L_MAX + 0.01_wp, 0.0_wp, 0.0_wp]
       a(3) = ieee_value(1.0_wp, ieee_quiet_nan)
       g(1:4) = -7.0_wp
-      call strip_log_shear_nodes(4, a(1:4), l(1:4), g(1:4))
-      call check(g(1) == -7.0_wp .and. g(2) == -7.0_wp .and. ieee_is_nan(g(3)) .and. &
+      call strip_log_shear_nodes(4, a(1:4), l(1:4), g(1:4), left)
+      call check(left == 2 .and. g(1) == -7.0_wp .and. g(2) == -7.0_wp .and. ieee_is_nan(g(3)) .and. &
                  g(4) == strip_log_shear(1.0_wp, 0.0_wp), &
-                 "EHD strip table at nodes: beyond the domain untouched, NaN for NaN")
+                 "EHD strip table at nodes: beyond the domain untouched and counted, NaN for NaN")
    end subroutine test_strip_nodes
 
    !> G(A, L) of the strip table by the rule cpsi = cos(psi), wpsi = weights x cos(psi)

@@ -18,13 +18,13 @@
  * w0 = -x1 x2 x3 / 6, w1 = x0 x2 x3 / 2, w2 = -x0 x1 x3 / 2, w3 = x0 x1 x2 / 6 (xk = x0 - k),
  * the columns of A combined first (rows in pairs), then along L.  table: column-major
  * (nl rows of L, one column per A node).  Other nodes keep g[j] (the caller handles them);
- * a NaN argument gives g[j] = NaN. */
+ * a NaN argument gives g[j] = NaN.  Returns the number of nodes left to the caller. */
 #include <stddef.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
-void adore_strip_log_shear_nodes(int n, const double *restrict a, const double *restrict l, double *restrict g,
+int adore_strip_log_shear_nodes(int n, const double *restrict a, const double *restrict l, double *restrict g,
                                  const double *restrict table, int nl, double a0, double l0, double inv_h,
                                  double a_max, double l_min, double l_max)
 {
@@ -35,11 +35,14 @@ void adore_strip_log_shear_nodes(int n, const double *restrict a, const double *
     const __m128d k0 = _mm_set1_pd(c0), k1 = _mm_set1_pd(c1), k2 = _mm_set1_pd(c2), k3 = _mm_set1_pd(c3);
     const __m128i ione = _mm_set1_epi32(1);
 #endif
+    int left = 0;
     for (int j = 0; j < n; j++) {
         double aj = a[j], lj = l[j];
         if (!(aj <= a_max && lj <= l_max)) {
             if (aj != aj || lj != lj)
                 g[j] = aj + lj;
+            else
+                left++;
             continue;
         }
         if (lj < l_min)
@@ -99,4 +102,5 @@ void adore_strip_log_shear_nodes(int n, const double *restrict a, const double *
         g[j] = w[0][1] * v[0] + w[1][1] * v[1] + w[2][1] * v[2] + w[3][1] * v[3];
 #endif
     }
+    return left;
 }

@@ -14003,14 +14003,14 @@ module adore_tribology_ehd_strip_table
 
    interface
       !> fortran/tribology/ehd_strip_kernel.c: strip_log_shear at nodes, the same bits
-      subroutine strip_kernel(n, a, l, g, table, nl, a0, l0, inv_h, a_max, l_min, l_max) &
+      integer(c_int) function strip_kernel(n, a, l, g, table, nl, a0, l0, inv_h, a_max, l_min, l_max) &
          bind(c, name="adore_strip_log_shear_nodes")
          import :: c_int, c_double
          integer(c_int), value :: n, nl
          real(c_double), intent(in) :: a(*), l(*), table(*)
          real(c_double), intent(inout) :: g(*)
          real(c_double), value :: a0, l0, inv_h, a_max, l_min, l_max
-      end subroutine strip_kernel
+      end function strip_kernel
    end interface
 
 contains
@@ -14051,15 +14051,18 @@ contains
 
    !> g(j) = strip_log_shear(a(j), max(l(j), STRIP_L_MIN)) (dimensionless) for every node j
    !> with a(j) <= STRIP_A_MAX and l(j) <= STRIP_L_MAX, bit for bit; g(j) of the other nodes
-   !> is left as it was (NaN for a NaN argument).  The fast EHD traction's ~40 nodes a contact
-   !> in one call (issue #30).
-   subroutine strip_log_shear_nodes(n, a, l, g)
+   !> is left as it was (NaN for a NaN argument); left: the number of those other nodes
+   !> (beyond the domain, not NaN).  The fast EHD traction's ~40 nodes a contact in one call
+   !> (issue #30).
+   subroutine strip_log_shear_nodes(n, a, l, g, left)
       integer, intent(in) :: n
       real(wp), intent(in) :: a(n), l(n)
       real(wp), intent(inout) :: g(n)
+      integer, intent(out) :: left
+      left = 0
       if (n < 1) return
-      call strip_kernel(int(n, c_int), a, l, g, TABLE, int(NL, c_int), A0, L0, INV_H, STRIP_A_MAX, &
-                        STRIP_L_MIN, STRIP_L_MAX)
+      left = strip_kernel(int(n, c_int), a, l, g, TABLE, int(NL, c_int), A0, L0, INV_H, STRIP_A_MAX, &
+                          STRIP_L_MIN, STRIP_L_MAX)
    end subroutine strip_log_shear_nodes
 
 end module adore_tribology_ehd_strip_table

@@ -196,7 +196,7 @@ contains
       real(wp) :: umax, ce, se, u_end(2)
       real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
       real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
-      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
+      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8), nleft
 
       nm = EHD_FAST_MAJOR
       ns = EHD_FAST_STRIP
@@ -373,14 +373,16 @@ contains
          end if
          ! the table at the nodes in its domain (G is flat below STRIP_L_MIN), in one call
          ! (strip_log_shear_nodes: strip_log_shear's bits), then the nodes beyond it
-         call strip_log_shear_nodes(n, aa, lz, g)
-         do j = 1, n
-            if (aa(j) > STRIP_A_MAX) then
-               g(j) = 0.0_wp
-            else if (lz(j) > STRIP_L_MAX) then
-               g(j) = log(2.0_wp*(lz(j) + log(2.0_wp) + 0.25_wp*pi*aa(j))) - 2.0_wp*lz(j)
-            end if
-         end do
+         call strip_log_shear_nodes(n, aa, lz, g, nleft)
+         if (nleft > 0) then
+            do j = 1, n
+               if (aa(j) > STRIP_A_MAX) then
+                  g(j) = 0.0_wp
+               else if (lz(j) > STRIP_L_MAX) then
+                  g(j) = log(2.0_wp*(lz(j) + log(2.0_wp) + 0.25_wp*pi*aa(j))) - 2.0_wp*lz(j)
+               end if
+            end do
+         end if
          do j = 1, n
             f(j) = fac*cphi(j)*zz(j)*exp(g(j))
          end do
