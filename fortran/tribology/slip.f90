@@ -347,15 +347,15 @@ contains
       type(ball_race_contact_t), intent(in) :: c
       integer, intent(in) :: n_gauss
       real(wp), intent(out) :: s, u
-      type(contact_traction_t) :: t
-      real(wp), allocatable :: x(:), w(:)
+      real(wp) :: x(3*max(n_gauss, 1)), w(3*max(n_gauss, 1))
       real(wp) :: uj
-      integer :: j
+      integer :: j, n
 
-      call major_axis_nodes(c, n_gauss, t, x, w)
+      ! major_axis_nodes' nodes without its kinematics and allocation (the same nodes)
+      call axis_nodes(c, n_gauss, x, w, n)
       s = 0.0_wp
       u = 0.0_wp
-      do j = 1, size(x)
+      do j = 1, n
          uj = contact_slip(c, x(j))
          if (abs(uj) >= abs(u)) then
             s = x(j)
