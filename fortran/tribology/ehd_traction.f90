@@ -171,8 +171,11 @@ contains
    !> given: contact_kinematics(c) (its centre kinematics are taken from it).  A contact without
    !> pure-rolling point whose |u| dips inside (two rolling points merged or just apart, as
    !> under race control) is split and graded at the dip (slip_minimum): plain Gauss in phi
-   !> missed that layer by up to 4e-3 of the force (docs/dynamics.md).
-   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse, kinematics)
+   !> missed that layer by up to 4e-3 of the force (docs/dynamics.md).  extremes = .false.:
+   !> t%max_slip is not computed (left 0; the end slips, the nodes' largest |u| and the
+   !> interior extremum skipped), every other output the same bit for bit: for a caller that
+   !> does not use it (the force assembly, adore_forces_race_contact's ehd_traction; issue #30).
+   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse, kinematics, extremes)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
       real(wp), intent(in) :: h, b
@@ -182,6 +185,8 @@ contains
       real(wp), intent(in), optional :: transverse(3)
       !> contact_kinematics of c, when the caller has it (its fields are taken, not recomputed)
       type(contact_traction_t), intent(in), optional :: kinematics
+      !> .false.: t%max_slip not computed (left 0); default .true.
+      logical, intent(in), optional :: extremes
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
       integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
@@ -197,11 +202,14 @@ contains
       real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
       real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8), nleft
+      logical :: ext
 
       nm = EHD_FAST_MAJOR
       ns = EHD_FAST_STRIP
       if (present(n_major)) nm = n_major
       if (present(n_strip)) ns = n_strip
+      ext = .true.
+      if (present(extremes)) ext = extremes
       call check_ehd_inputs(c, rheo, h, b, nm, merge(1, ns, ns == EHD_STRIP_TABLE), error)
       if (allocated(error)) return
       if (nm > MAX_FAST .or. ns > MAX_FAST) then
@@ -309,15 +317,17 @@ contains
       ! alpha -+ a / rho by angle addition from those of alpha and a / rho (one sincos
       ! instead of four; equal to round-off).  Here, after the loop of sin(phi): computed
       ! before it, gcc no longer vectorises that loop ("latch block not empty")
-      ce = cos(c%a/c%rho)
-      se = sin(c%a/c%rho)
-      u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
-              - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
-      if (present(transverse)) then
-         t%max_slip = max(hypot(u_end(1), transverse(1) + transverse(2)*ce - transverse(3)*se), &
-                          hypot(u_end(2), transverse(1) + transverse(2)*ce + transverse(3)*se))
-      else
-         t%max_slip = max(abs(u_end(1)), abs(u_end(2)))
+      if (ext) then
+         ce = cos(c%a/c%rho)
+         se = sin(c%a/c%rho)
+         u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
+                 - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
+         if (present(transverse)) then
+            t%max_slip = max(hypot(u_end(1), transverse(1) + transverse(2)*ce - transverse(3)*se), &
+                             hypot(u_end(2), transverse(1) + transverse(2)*ce + transverse(3)*se))
+         else
+            t%max_slip = max(abs(u_end(1)), abs(u_end(2)))
+         end if
       end if
       if (c%a <= 0.4_wp*c%rho) then
          ! |psi| <= 0.4 (the decks' balls: a / rho <= 0.3): to psi**14 / 14! and psi**13 / 13!,
@@ -431,13 +441,15 @@ contains
          sliding = sum(us(1:n)*cphi(1:n)**2*wn(1:n))
       end if
       t%sliding = 0.75_wp*c%load/c%a*sliding    ! Hertz strip load
-      ! the largest |u| (exact in any order: a loop gcc vectorises, where maxval is scalar)
-      umax = t%max_slip
-      do j = 1, n
-         umax = max(umax, us(j))
-      end do
-      t%max_slip = umax
-      call interior_extremum(c, t%max_slip, polar)
+      if (ext) then
+         ! the largest |u| (exact in any order: a loop gcc vectorises, where maxval is scalar)
+         umax = t%max_slip
+         do j = 1, n
+            umax = max(umax, us(j))
+         end do
+         t%max_slip = umax
+         call interior_extremum(c, t%max_slip, polar)
+      end if
       t%coefficient = t%force/c%load
 
    contains
