@@ -35,7 +35,7 @@ module adore_tribology_ehd_traction
    private
 
    public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_strip_traction
-   public :: ehd_contact_traction_fast, ehd_contact_power, series_sin
+   public :: ehd_contact_traction_fast, ehd_contact_power, series_sin, series_cos_sin
 
    !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
    !> zone in the angle phi of s = a sin(phi) along the major axis, and across each strip
@@ -461,18 +461,22 @@ contains
       subroutine add_sub(pf, pr, s_r, rule)
          real(wp), intent(in) :: pf, pr, s_r
          integer, intent(in) :: rule
-         real(wp) :: th, dudx
+         real(wp) :: dudx, cs(2), cp
          if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) then
             call add_graded(pf, pr, 0.0_wp, rule)
             return
          end if
          ! the zones on both sides of a rolling point (and the halves of a zone between two)
-         ! meet there in turn: its layer width once, for both
+         ! meet there in turn: its layer width once, for both.  sin, cos of theta = alpha +
+         ! s_r / rho by angle addition from alpha's and the series of s_r / rho (|s_r / rho|
+         ! < a / rho < 1): no sincos (issue #30; equal to round-off: test_traction_fast)
          if (s_r /= s_last) then
-            th = c%alpha + s_r/c%rho
-            dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
+            cp = cos(pr)
+            cs = cos_sin_series(s_r/c%rho, c%a <= 0.4_wp*c%rho)
+            dudx = (-c%side*c%rho*(c%omega(1) - rs)*(sa*cs(1) + ca*cs(2)) &
+                    - c%side*c%rho*c%omega(2)*(ca*cs(1) - sa*cs(2)))/c%rho
             s_last = s_r
-            k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr)
+            k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cp)*c%a*cp
          end if
          call add_graded(pf, pr, k_last, rule)
       end subroutine add_sub
@@ -554,6 +558,40 @@ contains
       end function strip_rule_integral
 
    end subroutine ehd_contact_traction_fast
+
+   !> [cos(x), sin(x)] (-) for |x| < 1 (rad) as the fast traction computes them at a
+   !> pure-rolling point (cos_sin_series; public for its test): short for |x| <= 0.4.
+   pure function series_cos_sin(x, short) result(cs)
+      real(wp), intent(in) :: x
+      logical, intent(in) :: short
+      real(wp) :: cs(2)
+      cs = cos_sin_series(x, short)
+   end function series_cos_sin
+
+   !> [cos(x), sin(x)] (-) for |x| < 1 (rad; x = s / rho on the major axis) by the Taylor
+   !> series of the fast traction's nodes: short (|x| <= 0.4, the contacts with a <= 0.4 rho):
+   !> to x**14 / 14! and x**13 / 13! (truncation below 2.1e-20 and 8.2e-19), else to
+   !> x**18 / 18! and x**17 / 17! (below 8.3e-18); private, so that gcc inlines it.
+   pure function cos_sin_series(x, short) result(cs)
+      real(wp), intent(in) :: x
+      logical, intent(in) :: short
+      real(wp) :: cs(2), x2
+      integer :: q_
+      real(wp), parameter :: COS_C(9) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 1.0_wp), q_ = 1, 9)]
+      real(wp), parameter :: SIN_C(8) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 2.0_wp), q_ = 1, 8)]
+      x2 = x*x
+      if (short) then
+         cs(1) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
+                 + x2*(COS_C(6) + x2*COS_C(7)))))))
+         cs(2) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
+                 + x2*SIN_C(6))))))
+      else
+         cs(1) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
+                 + x2*(COS_C(6) + x2*(COS_C(7) + x2*(COS_C(8) + x2*COS_C(9)))))))))
+         cs(2) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
+                 + x2*(SIN_C(6) + x2*(SIN_C(7) + x2*SIN_C(8))))))))
+      end if
+   end function cos_sin_series
 
    !> sin(x) (-) for |x| <= pi/2 (rad) as the fast traction computes it at every node
    !> (taylor_sin; public for its test).
