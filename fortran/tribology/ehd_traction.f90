@@ -219,8 +219,13 @@ contains
       nh = max(1, (nm + 1)/2)             ! a half of a zone between two rolling points
       call gauss_legendre(nm, xq(1:nm, 1), wq(1:nm, 1))
       call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
-      ca = cos(c%alpha)
-      sa = sin(c%alpha)
+      if (c%trig_of == c%alpha) then
+         sa = c%sin_cos(1)             ! the contact geometry's (planar_contact), the same values
+         ca = c%sin_cos(2)
+      else
+         ca = cos(c%alpha)
+         sa = sin(c%alpha)
+      end if
       if (present(kinematics)) then
          call take_kinematics(kinematics, t)
       else

@@ -128,6 +128,8 @@ contains
 
       if (present(sin_cos)) then
          n = c%side*sin_cos
+      else if (c%trig_of == c%alpha) then
+         n = c%side*c%sin_cos           ! the contact geometry's (planar_contact), the same values
       else
          n = c%side*[sin(c%alpha), cos(c%alpha)]
       end if
