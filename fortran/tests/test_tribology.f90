@@ -17,7 +17,8 @@ program test_tribology
    use adore_tribology_traction_law, only: curve_law
    use adore_tribology_slip, only: contact_power
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_contact_power, &
-                                           ehd_contact_traction_fast
+                                           ehd_contact_traction_fast, film_shear_stress, film_constants, &
+                                           thermal_film_shear
    use adore_tribology_ehd_strip_table, only: strip_log_shear, strip_log_shear_nodes, STRIP_ERROR, STRIP_A_MAX, &
                                               STRIP_L_MIN, STRIP_L_MAX
    use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, min_dissipation_kinematics, ehd_films_t
@@ -32,6 +33,7 @@ program test_tribology
    call test_lubricant()
    call test_slip()
    call test_flash()
+   call test_thermal_film_shear()
    call test_fast_paths()
    call test_strip_table()
    call test_strip_nodes()
@@ -401,5 +403,39 @@ contains
       call check(.not. allocated(error), "flash: contact accepted")
       call check(avg > 0.0_wp .and. avg < mx, "flash: 0 < average < maximum")
    end subroutine test_flash
+
+   !> The EHD flash's film shear (adore_tribology_ehd_flash, issue #30) in the strip traction's
+   !> form amp E shear_shape(zeta |u| E), E = exp(alpha p / 2) (thermal_film_shear), against
+   !> film_shear_stress at eta_w exp(alpha p): 3 wall rheologies (eta_w 0.01 .. 0.2 Pa s,
+   !> alpha 5e-9 .. 2e-8 1/Pa), films 0.05 .. 2 um, pressures 0 .. 3 GPa, slips 1e-9 .. 200 m/s
+   !> of either sign (Appendix C's flash: ~0.08 Pa s, 5.2e-9 1/Pa, <= 2.4 GPa): within 1e-14
+   !> relative (a few ulp of the exp, square roots and divisions).
+   subroutine test_thermal_film_shear()
+      type(ehd_rheology_t) :: rheo
+      real(wp), parameter :: ETA(3) = [0.01_wp, 0.0816_wp, 0.2_wp], ALF(3) = [5.0e-9_wp, 5.2214e-9_wp, 2.0e-8_wp]
+      real(wp) :: amp, zeta, worst, p, u, h, ref, got
+      integer :: ir, ih, ip, iu
+      worst = 0.0_wp
+      do ir = 1, 3
+         rheo = ehd_rheology_t(eta_w=ETA(ir), alpha=ALF(ir), beta=4.25519e-2_wp, conductivity=0.1425185_wp)
+         do ih = 0, 4
+            h = 5.0e-8_wp*40.0_wp**(ih/4.0_wp)
+            call film_constants(rheo, h, amp, zeta)
+            do ip = 0, 30
+               p = 1.0e8_wp*ip
+               do iu = -110, 110
+                  if (iu == 0) cycle
+                  u = sign(1.0e-9_wp*10.0_wp**(abs(iu)/10.0_wp), real(iu, wp))
+                  if (abs(u) > 200.0_wp) cycle
+                  ref = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)
+                  got = thermal_film_shear(amp, zeta, exp(0.5_wp*rheo%alpha*p), u)
+                  worst = max(worst, abs(got - ref)/ref)
+               end do
+            end do
+         end do
+      end do
+      write (*, "(a,es10.2)") "flash film shear, strip form against film_shear_stress: worst relative", worst
+      call check(worst <= 1.0e-14_wp, "flash film shear: amp E shear_shape(zeta |u| E) = film_shear_stress to round-off")
+   end subroutine test_thermal_film_shear
 
 end program test_tribology

@@ -35,7 +35,8 @@ module adore_tribology_ehd_traction
    private
 
    public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_strip_traction
-   public :: ehd_contact_traction_fast, ehd_contact_power, series_sin, series_cos_sin
+   public :: ehd_contact_traction_fast, ehd_contact_power, series_sin, series_cos_sin, film_constants, &
+             thermal_film_shear
 
    !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
    !> zone in the angle phi of s = a sin(phi) along the major axis, and across each strip
@@ -77,6 +78,15 @@ contains
       c = 0.5_wp*abs(u)*sqrt(beta*eta_w/(2.0_wp*k_f))      ! sinh(c/2) with c of the header
       tau = sqrt(2.0_wp*k_f*eta_w/beta)/h*shear_shape(c)
    end function film_shear_stress
+
+   !> Shear stress (Pa) of the thermal film (beta > 0) with film_constants' amp (Pa) and zeta
+   !> (s/m) at E = exp(alpha p / 2) (-) and slip u (m/s): amp E shear_shape(zeta |u| E), the
+   !> strip traction's form of film_shear_stress(eta_w E**2, ...) (equal to round-off).
+   elemental function thermal_film_shear(amp, zeta, e_half, u) result(tau)
+      real(wp), intent(in) :: amp, zeta, e_half, u
+      real(wp) :: tau
+      tau = amp*e_half*shear_shape(zeta*abs(u)*e_half)
+   end function thermal_film_shear
 
    !> 2 asinh(z) / sqrt(1 + z**2) = c / cosh(c/2) with sinh(c/2) = z; 2 z for tiny z.
    elemental function shear_shape(z) result(g)
