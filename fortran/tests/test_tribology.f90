@@ -12,7 +12,7 @@ program test_tribology
                                    lubricant_from_code, kinematic_viscosity, dynamic_viscosity, &
                                    temperature_viscosity_coefficient, LUBRICANT_MIL_L_7808
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
-                                   contact_slip, pure_rolling_points, SIDE_OUTER, SIDE_INNER
+                                   contact_slip, pure_rolling_points, SIDE_OUTER, SIDE_INNER, print_slip_node
    use adore_tribology_flash, only: flash_rise_dimensionless, contact_temperature_rise
    use adore_tribology_traction_law, only: curve_law
    use adore_tribology_slip, only: contact_power
@@ -34,6 +34,7 @@ program test_tribology
    call test_slip()
    call test_flash()
    call test_thermal_film_shear()
+   call test_print_slip_series()
    call test_fast_paths()
    call test_strip_table()
    call test_strip_nodes()
@@ -403,6 +404,44 @@ contains
       call check(.not. allocated(error), "flash: contact accepted")
       call check(avg > 0.0_wp .and. avg < mx, "flash: 0 < average < maximum")
    end subroutine test_flash
+
+   !> The print node's slip (print_slip_node: cos, sin of alpha + s / rho by angle addition
+   !> and the series of s / rho, issue #30) against contact_slip at that node: 20 000
+   !> pseudo-random contacts (either race, alpha -40 .. 40 deg, a / rho 0.05 .. 0.6, spins and
+   !> race speeds of either sign, with and without the angle's sine and cosine carried):
+   !> within 4 eps (|A| + |B| + |C|) of u = A cos(theta) + B sin(theta) + C.
+   subroutine test_print_slip_series()
+      type(ball_race_contact_t) :: c
+      real(wp) :: r(7), s, u, scale, worst
+      integer :: i
+      integer, allocatable :: seed(:)
+      call random_seed(size=i)
+      allocate (seed(i))
+      seed = 4242
+      call random_seed(put=seed)
+      worst = 0.0_wp
+      do i = 1, 20000
+         call random_number(r)
+         c%side = merge(SIDE_OUTER, SIDE_INNER, r(1) < 0.5_wp)
+         c%alpha = (r(2) - 0.5_wp)*1.4_wp
+         c%rho = 0.006_wp
+         c%a = c%rho*(0.05_wp + 0.55_wp*r(3))
+         c%r_b = 0.05_wp
+         c%omega = [2000.0_wp*(r(4) - 0.5_wp), 3000.0_wp*(r(5) - 0.5_wp)]
+         c%race_speed = 400.0_wp*(r(6) - 0.5_wp)
+         c%load = 100.0_wp
+         c%trig_of = huge(1.0_wp)
+         if (r(7) < 0.5_wp) then
+            c%sin_cos = [sin(c%alpha), cos(c%alpha)]
+            c%trig_of = c%alpha
+         end if
+         call print_slip_node(c, 4, s, u)
+         scale = c%rho*(abs(c%omega(1) - c%race_speed) + abs(c%omega(2))) + abs(c%race_speed*c%r_b)
+         worst = max(worst, abs(u - contact_slip(c, s))/(epsilon(1.0_wp)*scale))
+      end do
+      write (*, "(a,f6.2)") "print node slip by the series, against contact_slip (eps x scale):", worst
+      call check(worst <= 4.0_wp, "print node slip: angle addition and series = contact_slip to round-off")
+   end subroutine test_print_slip_series
 
    !> The EHD flash's film shear (adore_tribology_ehd_flash, issue #30) in the strip traction's
    !> form amp E shear_shape(zeta |u| E), E = exp(alpha p / 2) (thermal_film_shear), against
