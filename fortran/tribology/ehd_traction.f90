@@ -81,11 +81,19 @@ contains
 
    !> Shear stress (Pa) of the thermal film (beta > 0) with film_constants' amp (Pa) and zeta
    !> (s/m) at E = exp(alpha p / 2) (-) and slip u (m/s): amp E shear_shape(zeta |u| E), the
-   !> strip traction's form of film_shear_stress(eta_w E**2, ...) (equal to round-off).
+   !> strip traction's form of film_shear_stress(eta_w E**2, ...) (equal to round-off); for
+   !> z = zeta |u| E >= 0.5 asinh(z) = log(z + sqrt(1 + z**2)), whose square root the shape's
+   !> denominator shares (no cancellation there; a log instead of libm's asinh).
    elemental function thermal_film_shear(amp, zeta, e_half, u) result(tau)
       real(wp), intent(in) :: amp, zeta, e_half, u
-      real(wp) :: tau
-      tau = amp*e_half*shear_shape(zeta*abs(u)*e_half)
+      real(wp) :: tau, z, s
+      z = zeta*abs(u)*e_half
+      if (z < 0.5_wp) then
+         tau = amp*e_half*shear_shape(z)
+      else
+         s = sqrt(1.0_wp + z*z)
+         tau = amp*e_half*(2.0_wp*log(z + s)/s)
+      end if
    end function thermal_film_shear
 
    !> 2 asinh(z) / sqrt(1 + z**2) = c / cosh(c/2) with sinh(c/2) = z; 2 z for tiny z.
