@@ -191,6 +191,16 @@ contains
          ", against quad precision (ulp)", worst_ulp
       call check(worst_libm <= 3.4e-16_wp .and. worst_ulp <= 2.0_wp, &
                  "series cos, sin = cos, sin to round-off on |x| <= 0.4 (short) and |x| < 1")
+      ! a graded sub-zone's e**vmax, vmax = asinh(z) = log(y), y = z + sqrt(1 + z**2), is y itself
+      ! (issue #30: no exp) where the fast traction grades (vmax > 1, z <= 40): within 5 ulp
+      worst_ulp = 0.0_wp
+      do i = 0, 100000
+         x = sinh(1.0_wp) + (40.0_wp - sinh(1.0_wp))*real(i, wp)/100000.0_wp
+         top = x + sqrt(1.0_wp + x*x)
+         worst_ulp = max(worst_ulp, abs(exp(log(top)) - top)/spacing(top))
+      end do
+      write (*, "(a,f5.2)") "graded sub-zone: e**vmax as the logarithm's argument, exp(log(y)) - y (ulp)", worst_ulp
+      call check(worst_ulp <= 5.0_wp, "graded sub-zone: e**vmax = y to round-off")
    end subroutine test_series_cos_sin
 
    !> Count one more comparison in n; same stays true while both ellipses of curvatures rho

@@ -298,7 +298,11 @@ contains
             ! vmax = asinh(kp |pf - pr|) by its logarithm (kp |pf - pr| <= 2 LAYER: add_graded),
             ! equal to round-off where it is used (vmax > 1); a plain sub-zone (kp = 0): none
             vmax = 0.0_wp
-            if (kp > 0.0_wp) vmax = log(kp*abs(pf - pr) + sqrt(1.0_wp + (kp*abs(pf - pr))**2))
+            ev = 1.0_wp
+            if (kp > 0.0_wp) then
+               ev = kp*abs(pf - pr) + sqrt(1.0_wp + (kp*abs(pf - pr))**2)      ! e**vmax
+               vmax = log(ev)
+            end if
             if (kp > 0.0_wp .and. vmax > 1.0_wp) then
                ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2;
                ! the Gauss nodes pair up (x_(m+1-j) = -x_j), so e**v of the upper half is
@@ -306,7 +310,7 @@ contains
                do j = 1, (m + 1)/2
                   evs(j) = exp(0.5_wp*vmax*(1.0_wp + xq(j, r)))
                end do
-               ev = exp(vmax)
+               ! e**vmax: the logarithm's argument above (no exp; equal to round-off)
                do j = (m + 1)/2 + 1, m
                   evs(j) = ev/evs(m + 1 - j)
                end do
