@@ -201,14 +201,6 @@ contains
       end do
       write (*, "(a,f5.2)") "graded sub-zone: e**vmax as the logarithm's argument, exp(log(y)) - y (ulp)", worst_ulp
       call check(worst_ulp <= 5.0_wp, "graded sub-zone: e**vmax = y to round-off")
-      ! a rolling point's cos(pr), pr = asin(x), as sqrt((1 - x) (1 + x)) (issue #30): within 2 eps
-      worst_libm = 0.0_wp
-      do i = -100000, 100000
-         x = real(i, wp)/100000.0_wp
-         worst_libm = max(worst_libm, abs(sqrt((1.0_wp - x)*(1.0_wp + x)) - cos(asin(x))))
-      end do
-      write (*, "(a,es10.2)") "rolling point: sqrt((1 - x) (1 + x)) against cos(asin(x)) on [-1, 1]", worst_libm
-      call check(worst_libm <= 2.0_wp*epsilon(1.0_wp), "rolling point: cos(asin(x)) = sqrt((1 - x) (1 + x)) to round-off")
    end subroutine test_series_cos_sin
 
    !> Count one more comparison in n; same stays true while both ellipses of curvatures rho

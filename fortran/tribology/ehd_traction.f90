@@ -488,7 +488,7 @@ contains
       subroutine add_sub(pf, pr, s_r, rule)
          real(wp), intent(in) :: pf, pr, s_r
          integer, intent(in) :: rule
-         real(wp) :: dudx, cs(2), cp, x
+         real(wp) :: dudx, cs(2), cp
          if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) then
             call add_graded(pf, pr, 0.0_wp, rule)
             return
@@ -496,11 +496,9 @@ contains
          ! the zones on both sides of a rolling point (and the halves of a zone between two)
          ! meet there in turn: its layer width once, for both.  sin, cos of theta = alpha +
          ! s_r / rho by angle addition from alpha's and the series of s_r / rho (|s_r / rho|
-         ! < a / rho < 1), cos(pr) = cos(asin(x)) = sqrt((1 - x) (1 + x)): no sincos or cos
-         ! (issue #30; equal to round-off: test_traction_fast)
+         ! < a / rho < 1): no sincos (issue #30; equal to round-off: test_traction_fast)
          if (s_r /= s_last) then
-            x = max(-1.0_wp, min(1.0_wp, s_r/c%a))      ! pr = asin(x) (the zone loop's)
-            cp = sqrt((1.0_wp - x)*(1.0_wp + x))           ! cos(pr)
+            cp = cos(pr)
             cs = cos_sin_series(s_r/c%rho, c%a <= 0.4_wp*c%rho)
             dudx = (-c%side*c%rho*(c%omega(1) - rs)*(sa*cs(1) + ca*cs(2)) &
                     - c%side*c%rho*c%omega(2)*(ca*cs(1) - sa*cs(2)))/c%rho
