@@ -38,11 +38,14 @@ int adore_strip_log_shear_nodes(int n, const double *restrict a, const double *r
     int left = 0;
     for (int j = 0; j < n; j++) {
         double aj = a[j], lj = l[j];
+        if (aj != aj || lj != lj) {
+            /* NaN first, by quiet comparisons (an ordered one would raise `invalid`, which the
+               checks build traps) */
+            g[j] = aj + lj;
+            continue;
+        }
         if (!(aj <= a_max && lj <= l_max)) {
-            if (aj != aj || lj != lj)
-                g[j] = aj + lj;
-            else
-                left++;
+            left++;
             continue;
         }
         if (lj < l_min)
