@@ -166,11 +166,12 @@ def fortran(table, err):
         f"!>   L > STRIP_L_MAX by the asymptote W = 2 (L + ln 2 + A pi / 4):  {err['high']:.2e}",
         f"!>   table values (composite Gauss, against twice as fine):      {err['quadrature']:.2e}",
         "module adore_tribology_ehd_strip_table",
+        "   use, intrinsic :: iso_c_binding, only: c_int, c_double",
         "   use adore_core_kinds, only: wp",
         "   implicit none",
         "   private",
         "",
-        "   public :: strip_log_shear",
+        "   public :: strip_log_shear, strip_log_shear_nodes",
         "",
         "   !> grid step (in A and L), range of A, range of L = ln Z of the table; STRIP_ERROR:",
         "   !> the measured bound of the interpolation error of G (relative error of S)",
@@ -197,9 +198,10 @@ def fortran(table, err):
         lines.append(f"      {chunk}" + (", &" if k + 8 < NA else "], [NL, NA])"))
     lines += [
         "",
+    ] + _kernel_interface() + [
         "contains",
         "",
-    ] + _evaluator() + [
+    ] + _evaluator() + _nodes() + [
         "end module adore_tribology_ehd_strip_table",
         "",
     ]
@@ -255,6 +257,66 @@ def _evaluator():
     for k in range(4, n, 4):
         lines.append("          + " + " + ".join(terms[k:k + 4]) + (" &" if k + 4 < n else ""))
     lines += ["   end function strip_log_shear", ""]
+    return lines
+
+
+def _kernel_interface():
+    """The C kernel's interface (fortran/tribology/ehd_strip_kernel.c: degree 3 only)."""
+    if DEGREE != 3:
+        return []
+    return [
+        "   interface",
+        "      !> fortran/tribology/ehd_strip_kernel.c: strip_log_shear at nodes, the same bits",
+        "      integer(c_int) function strip_kernel(n, a, l, g, table, nl, a0, l0, inv_h, a_max, l_min, l_max) &",
+        "         bind(c, name=\"adore_strip_log_shear_nodes\")",
+        "         import :: c_int, c_double",
+        "         integer(c_int), value :: n, nl",
+        "         real(c_double), intent(in) :: a(*), l(*), table(*)",
+        "         real(c_double), intent(inout) :: g(*)",
+        "         real(c_double), value :: a0, l0, inv_h, a_max, l_min, l_max",
+        "      end function strip_kernel",
+        "   end interface",
+        "",
+    ]
+
+
+def _nodes():
+    """Fortran lines of strip_log_shear_nodes: the table at many nodes, by the C kernel
+    (degree 3) or a loop of strip_log_shear (other degrees' trials)."""
+    lines = [
+        "   !> g(j) = strip_log_shear(a(j), max(l(j), STRIP_L_MIN)) (dimensionless) for every node j",
+        "   !> with a(j) <= STRIP_A_MAX and l(j) <= STRIP_L_MAX, bit for bit; g(j) of the other nodes",
+        "   !> is left as it was (NaN for a NaN argument); left: the number of those other nodes",
+        "   !> (beyond the domain, not NaN).  The fast EHD traction's ~40 nodes a contact in one call",
+        "   !> (issue #30).",
+        "   subroutine strip_log_shear_nodes(n, a, l, g, left)",
+        "      integer, intent(in) :: n",
+        "      real(wp), intent(in) :: a(n), l(n)",
+        "      real(wp), intent(inout) :: g(n)",
+        "      integer, intent(out) :: left",
+    ]
+    if DEGREE == 3:
+        lines += [
+            "      left = 0",
+            "      if (n < 1) return",
+            "      left = strip_kernel(int(n, c_int), a, l, g, TABLE, int(NL, c_int), A0, L0, INV_H, STRIP_A_MAX, &",
+            "                          STRIP_L_MIN, STRIP_L_MAX)",
+        ]
+    else:
+        lines += [
+            "      integer :: j",
+            "      left = 0",
+            "      do j = 1, n",
+            "         if (a(j) <= STRIP_A_MAX .and. l(j) <= STRIP_L_MAX) then",
+            "            g(j) = strip_log_shear(a(j), max(l(j), STRIP_L_MIN))",
+            "         else if (isnan(a(j)) .or. isnan(l(j))) then",
+            "            g(j) = a(j) + l(j)",
+            "         else",
+            "            left = left + 1",
+            "         end if",
+            "      end do",
+        ]
+    lines += ["   end subroutine strip_log_shear_nodes", ""]
     return lines
 
 

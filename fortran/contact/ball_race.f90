@@ -189,15 +189,20 @@ contains
       type(ball_race_pair_t), intent(in) :: p
       type(ball_race_geometry_t), intent(in) :: c
       type(ball_race_contact_t) :: q
-      real(wp) :: rho, w, x, y, s
+      real(wp) :: rho, w, x, y, s, sn, cs
 
       rho = 0.5_wp*p%d
       s = real(p%side, wp)
       ! u = side rho [(w_x - w) cos(alpha + psi) - w_r sin(alpha + psi)] - w r_b
       w = -c%slip_coeff(1)/c%ball_radius
-      x = s*(cos(c%alpha)*c%slip_coeff(2) - sin(c%alpha)*c%slip_coeff(3))/rho
-      y = -s*(sin(c%alpha)*c%slip_coeff(2) + cos(c%alpha)*c%slip_coeff(3))/rho
+      sn = sin(c%alpha)
+      cs = cos(c%alpha)
+      x = s*(cs*c%slip_coeff(2) - sn*c%slip_coeff(3))/rho
+      y = -s*(sn*c%slip_coeff(2) + cs*c%slip_coeff(3))/rho
       q = ball_race_contact_t(p%side, c%alpha, rho, c%ball_radius, [x + w, y], w, c%ellipse%semi_major, c%load)
+      ! the contact angle's sine and cosine for the slip and traction (no sincos of their own)
+      q%sin_cos = [sn, cs]
+      q%trig_of = c%alpha
    end function planar_contact
 
    !> Elastic energy (J) of the contact, 2/5 K delta**1.5 delta; 0 without contact.

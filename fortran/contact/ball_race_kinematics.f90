@@ -23,6 +23,12 @@ module adore_contact_ball_race_kinematics
       real(wp) :: race_speed = 0.0_wp   !< race angular speed relative to the orbit frame, Omega - w_m (rad/s)
       real(wp) :: a = 0.0_wp            !< semi-major axis of the contact ellipse (m)
       real(wp) :: load = 0.0_wp         !< normal load (N)
+      !> [sin(alpha), cos(alpha)] (-), valid when trig_of == alpha: set by the contact geometry
+      !> (adore_contact_ball_race's planar_contact, which computes them anyway), taken by the
+      !> slip and traction routines instead of a sincos of their own (the same libm values;
+      !> issue #30); a contact built or changed elsewhere keeps trig_of /= alpha
+      real(wp) :: sin_cos(2) = 0.0_wp
+      real(wp) :: trig_of = huge(1.0_wp) !< the alpha (rad) that sin_cos belongs to
    end type ball_race_contact_t
 
 end module adore_contact_ball_race_kinematics

@@ -34,7 +34,7 @@
 !> c/2 - a step whose stage lands there is rejected by the integrator.  Units SI.
 module adore_contact_cage_pocket
    use adore_core_kinds, only: wp
-   use adore_core_rotation, only: quat_matrix, cross
+   use adore_core_rotation, only: quat_matrix
    use adore_contact_hertz, only: hertz_geometry_t, hertz_geometry
    use adore_state_bearing_state, only: body_state_t
    implicit none
@@ -139,7 +139,7 @@ contains
       ball_rot = quat_matrix(ball%attitude)     ! a named matrix: no heap temporary for matmul
       w_b = matmul(ball_rot, ball%omega)
       w_c = matmul(rot, cage%omega)
-      u = ball%velocity + cross(w_b, c%point - ball%position) - cage%velocity - cross(w_c, c%point - cage%position)
+      u = ball%velocity + cross3(w_b, c%point - ball%position) - cage%velocity - cross3(w_c, c%point - cage%position)
       un = dot_product(u, c%normal)
       c%slip = u - un*c%normal
 
@@ -148,7 +148,7 @@ contains
       c%abnormal = delta > ABNORMAL_FRACTION*0.5_wp*p%clearance
       if (p%viscosity > 0.0_wp .and. p%ir_constant > 0.0_wp) then
          p_far = ball%position - 0.5_wp*p%d*c%normal
-         u_far = ball%velocity + cross(w_b, p_far - ball%position) - cage%velocity - cross(w_c, p_far - cage%position)
+         u_far = ball%velocity + cross3(w_b, p_far - ball%position) - cage%velocity - cross3(w_c, p_far - cage%position)
          u_far = u_far - dot_product(u_far, c%normal)*c%normal
          h_near = max(c%gap, p%critical_film)
          h_far = max(0.5_wp*p%clearance + rho, p%critical_film)
@@ -162,10 +162,18 @@ contains
       c%power = 0.0_wp - dot_product(c%friction_force, c%slip)
 
       c%force_ball = -w_total*c%normal + c%friction_force
-      c%moment_ball = cross(c%point - ball%position, c%friction_force)
+      c%moment_ball = cross3(c%point - ball%position, c%friction_force)
       c%force_cage = -c%force_ball
-      c%moment_cage = cross(c%point - cage%position, c%force_cage)
+      c%moment_cage = cross3(c%point - cage%position, c%force_cage)
    end subroutine cage_pocket_contact
+
+   !> a x b, as adore_core_rotation's cross (the same operations, so the same bits), here so
+   !> that gcc inlines it into cage_pocket_contact (6 calls a pocket; issue #30)
+   pure function cross3(a, b) result(c)
+      real(wp), intent(in) :: a(3), b(3)
+      real(wp) :: c(3)
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross3
 
    !> Elastic energy (J) of the metallic contact, 2/5 K delta**2.5; 0 with clearance.
    pure real(wp) function pocket_energy(p, c)

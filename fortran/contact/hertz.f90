@@ -145,7 +145,7 @@ contains
 
    !> The ellipticity kappa = exp(x) solving F(kappa) = f (0 < f < 1) by Newton's method on
    !> x = log(kappa) from a polynomial fit of x against log(R_y/R_x), R_y/R_x = (1 + f)/(1 - f),
-   !> within 5.8e-7 for kappa 1.18 .. 94 (two evaluations of F instead of three; issue #30),
+   !> within 1.5e-10 for kappa 1.18 .. 94 (one evaluation of F instead of three; issue #30),
    !> elsewhere from the Hamrock-Brewe estimate kappa = 1.0339 (R_y/R_x)**0.636, and K(m),
    !> E(m) at m = 1 - 1/kappa**2.  Quadratic
    !> convergence: after a step |dx| <= 1e-9 the error of x is ~1e-18, and K, E at the new x
@@ -157,13 +157,17 @@ contains
       real(wp), intent(out) :: kappa, k, e
       logical, intent(out) :: found
       !> x(t) = log(kappa) against t = log(R_y/R_x) on [T_LO, T_HI] (kappa 1.18 .. 94): a
-      !> least-squares polynomial of degree 10 in u = (2 t - T_LO - T_HI) / (T_HI - T_LO),
-      !> within 5.8e-7 of the root (fitted to 400 roots of F by scipy's K, E and brentq)
+      !> least-squares polynomial of degree 18 in u = (2 t - T_LO - T_HI) / (T_HI - T_LO),
+      !> within 1.5e-10 of the root (fitted to 4001 roots of F by scipy's K, E and brentq; 1.4e-10
+      !> at 2000 other roots), so that Newton's first step is its last (|dx| <= 1e-9)
       real(wp), parameter :: T_LO = 0.25_wp, T_HI = 7.5_wp
-      real(wp), parameter :: X_FIT(0:10) = [2.46869756113596539e+00_wp, 2.16705087086973824e+00_wp, &
-         -1.17445018050150687e-01_wp, 3.45654194636170198e-02_wp, -4.42749145627293738e-04_wp, &
-         -8.79464938204606479e-03_wp, 7.39626804995315978e-03_wp, -3.23251116416953168e-03_wp, &
-         -2.70601753949994972e-04_wp, 1.25112191881986872e-03_wp, -4.77221182900734329e-04_wp]
+      real(wp), parameter :: X_FIT(0:18) = [2.46869763727594638e+00_wp, 2.16705105000151255e+00_wp, &
+         -1.17450783956337124e-01_wp, 3.45648784404197773e-02_wp, -3.73782428866869772e-04_wp, &
+         -8.82140610420659513e-03_wp, 7.10596219323445140e-03_wp, -3.04687473187671828e-03_wp, &
+         2.37211111223900860e-04_wp, 8.06263599313112797e-04_wp, -7.72722197966433494e-04_wp, &
+         4.32843167031075090e-04_wp, -1.25795174067784706e-04_wp, -1.07588794578212526e-04_wp, &
+         1.71208201739082286e-04_wp, -6.03130138605743061e-05_wp, -2.80596266021640021e-05_wp, &
+         2.11241534850942831e-05_wp, -2.33228607233952720e-06_wp]
       real(wp) :: x, dx, g, slope, dk, de, t, u
       integer :: iter
 
@@ -173,10 +177,10 @@ contains
       e = 0.0_wp
       t = log((1.0_wp + f)/(1.0_wp - f))
       if (t >= T_LO .and. t <= T_HI) then
-         ! the fit: Newton then stops after two evaluations (|dx| <= 1e-9 at the second)
+         ! the fit: Newton then stops after one evaluation (|dx| <= 1e-9 at the first)
          u = (2.0_wp*t - (T_LO + T_HI))/(T_HI - T_LO)
-         x = X_FIT(10)
-         do iter = 9, 0, -1
+         x = X_FIT(18)
+         do iter = 17, 0, -1
             x = X_FIT(iter) + u*x
          end do
       else

@@ -31,13 +31,30 @@ contains
    pure function quat_matrix(q) result(r)
       real(wp), intent(in) :: q(4)
       real(wp) :: r(3, 3)
-      real(wp) :: u(4)
-      u = quat_normalized(q)
-      associate (w => u(1), x => u(2), y => u(3), z => u(4))
-         r(1, :) = [1.0_wp - 2.0_wp*(y*y + z*z), 2.0_wp*(x*y - w*z), 2.0_wp*(x*z + w*y)]
-         r(2, :) = [2.0_wp*(x*y + w*z), 1.0_wp - 2.0_wp*(x*x + z*z), 2.0_wp*(y*z - w*x)]
-         r(3, :) = [2.0_wp*(x*z - w*y), 2.0_wp*(y*z + w*x), 1.0_wp - 2.0_wp*(x*x + y*y)]
-      end associate
+      real(wp) :: w, x, y, z, n
+      ! quat_normalized's q / |q| in line (the same norm2 and divisions: the same bits), the
+      ! elements one by one (issue #30: no array temporaries, no call)
+      n = norm2(q)
+      if (n > 0.0_wp) then
+         w = q(1)/n
+         x = q(2)/n
+         y = q(3)/n
+         z = q(4)/n
+      else
+         w = 1.0_wp
+         x = 0.0_wp
+         y = 0.0_wp
+         z = 0.0_wp
+      end if
+      r(1, 1) = 1.0_wp - 2.0_wp*(y*y + z*z)
+      r(2, 1) = 2.0_wp*(x*y + w*z)
+      r(3, 1) = 2.0_wp*(x*z - w*y)
+      r(1, 2) = 2.0_wp*(x*y - w*z)
+      r(2, 2) = 1.0_wp - 2.0_wp*(x*x + z*z)
+      r(3, 2) = 2.0_wp*(y*z + w*x)
+      r(1, 3) = 2.0_wp*(x*z + w*y)
+      r(2, 3) = 2.0_wp*(y*z - w*x)
+      r(3, 3) = 1.0_wp - 2.0_wp*(x*x + y*y)
    end function quat_matrix
 
    !> q / |q| (the identity for a zero quaternion).

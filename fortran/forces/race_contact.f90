@@ -248,7 +248,11 @@ contains
    !> quadrature of EHD_GAUSS x EHD_STRIP points (the step-0 print's).  transverse (m/s),
    !> when given: the two-dimensional traction of the slip along and across the rolling
    !> direction (u_m(psi) = m1 + m2 cos psi + m3 sin psi; report eq 5), t%cross_force;
-   !> kinematics, when given: contact_kinematics(cj), for the fast traction to take.
+   !> kinematics, when given: contact_kinematics(cj), for the fast traction to take.  The
+   !> fast traction leaves t%max_slip at 0 (ehd_contact_traction_fast's extremes = .false.):
+   !> the force assembly, its one caller, never reads it (the print's slip velocity is
+   !> printed_slip's), and its end slips and interior extremum were ~2 % of a derivative
+   !> call (issue #30).
    subroutine ehd_traction(b, temperature, cj, b_minor, race, h, t, error, reference, transverse, kinematics)
       type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: temperature(:)
@@ -268,7 +272,7 @@ contains
                                    transverse)
       else
          call ehd_contact_traction_fast(cj, wall_rheology(b, temperature, race), h, b_minor, t, error, &
-                                        transverse=transverse, kinematics=kinematics)
+                                        transverse=transverse, kinematics=kinematics, extremes=.false.)
       end if
    end subroutine ehd_traction
 

@@ -2,6 +2,7 @@
 !> closed forms and defining conditions only; the comparison with the report's print is
 !> in tests/test_tribology.py.
 program test_tribology
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    use adore_test_support, only: check, finish
    use adore_core_kinds, only: wp
    use adore_core_constants, only: pi
@@ -11,13 +12,15 @@ program test_tribology
                                    lubricant_from_code, kinematic_viscosity, dynamic_viscosity, &
                                    temperature_viscosity_coefficient, LUBRICANT_MIL_L_7808
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_traction, &
-                                   contact_slip, pure_rolling_points, SIDE_OUTER, SIDE_INNER
+                                   contact_slip, pure_rolling_points, SIDE_OUTER, SIDE_INNER, print_slip_node
    use adore_tribology_flash, only: flash_rise_dimensionless, contact_temperature_rise
    use adore_tribology_traction_law, only: curve_law
    use adore_tribology_slip, only: contact_power
    use adore_tribology_ehd_traction, only: ehd_rheology_t, ehd_contact_traction, ehd_contact_power, &
-                                           ehd_contact_traction_fast
-   use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_ERROR, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
+                                           ehd_contact_traction_fast, film_shear_stress, film_constants, &
+                                           thermal_film_shear
+   use adore_tribology_ehd_strip_table, only: strip_log_shear, strip_log_shear_nodes, STRIP_ERROR, STRIP_A_MAX, &
+                                              STRIP_L_MIN, STRIP_L_MAX
    use adore_quasistatic_ball_kinematics, only: ball_kinematics_t, min_dissipation_kinematics, ehd_films_t
    implicit none
 
@@ -30,8 +33,11 @@ program test_tribology
    call test_lubricant()
    call test_slip()
    call test_flash()
+   call test_thermal_film_shear()
+   call test_print_slip_series()
    call test_fast_paths()
    call test_strip_table()
+   call test_strip_nodes()
    call test_min_dissipation_search()
 
    call finish("tribology")
@@ -134,6 +140,52 @@ contains
       call check(abs(strip_log_shear(0.0_wp, 0.3_wp) - (log(2.0_wp*th*tanh(th)) - 0.6_wp)) <= STRIP_ERROR, &
                  "EHD strip table: A = 0 is H(L) itself")
    end subroutine test_strip_table
+
+   !> strip_log_shear_nodes (the C kernel of fortran/tribology/ehd_strip_kernel.c) against
+   !> strip_log_shear node by node, bit for bit: 2 000 000 pseudo-random points of the
+   !> domain (A in [0, STRIP_A_MAX], L in [STRIP_L_MIN - 3, STRIP_L_MAX]: below STRIP_L_MIN
+   !> clamped), the domain's corners and grid lines; the nodes beyond the domain (A >
+   !> STRIP_A_MAX or L > STRIP_L_MAX) keep their value and a NaN argument gives NaN.
+   subroutine test_strip_nodes()
+      integer, parameter :: N = 1000
+      real(wp) :: a(N), l(N), g(N), r(2, N), expect
+      integer :: pass, j, bad, left
+      integer, allocatable :: seed(:)
+
+      call random_seed(size=j)
+      allocate (seed(j))
+      seed = 20261127
+      call random_seed(put=seed)
+      bad = 0
+      do pass = 1, 2000
+         call random_number(r)
+         a = STRIP_A_MAX*r(1, :)
+         l = STRIP_L_MIN - 3.0_wp + (STRIP_L_MAX - STRIP_L_MIN + 3.0_wp)*r(2, :)
+         if (pass == 1) then
+            ! the corners, the grid lines (cell edges: x0 = 1 exactly) and the upper edges
+            a(1:4) = [0.0_wp, STRIP_A_MAX, 0.0_wp, STRIP_A_MAX]
+            l(1:4) = [STRIP_L_MIN, STRIP_L_MIN, STRIP_L_MAX, STRIP_L_MAX]
+            a(5:104) = [(0.08_wp*j, j = 0, 99)]
+            l(5:104) = [(STRIP_L_MIN + 0.08_wp*j, j = 0, 99)]
+         end if
+         g = -7.0_wp
+         call strip_log_shear_nodes(N, a, l, g, left)
+         if (left /= 0) bad = bad + 1
+         do j = 1, N
+            expect = strip_log_shear(a(j), max(l(j), STRIP_L_MIN))
+            if (.not. (g(j) == expect)) bad = bad + 1
+         end do
+      end do
+      call check(bad == 0, "EHD strip table at nodes (C kernel): strip_log_shear's bits at 2e6 points")
+      a(1:4) = [STRIP_A_MAX*1.0001_wp, 1.0_wp, 1.0_wp, 1.0_wp]
+      l(1:4) = [0.0_wp, STRIP_L_MAX + 0.01_wp, 0.0_wp, 0.0_wp]
+      a(3) = ieee_value(1.0_wp, ieee_quiet_nan)
+      g(1:4) = -7.0_wp
+      call strip_log_shear_nodes(4, a(1:4), l(1:4), g(1:4), left)
+      call check(left == 2 .and. g(1) == -7.0_wp .and. g(2) == -7.0_wp .and. ieee_is_nan(g(3)) .and. &
+                 g(4) == strip_log_shear(1.0_wp, 0.0_wp), &
+                 "EHD strip table at nodes: beyond the domain untouched and counted, NaN for NaN")
+   end subroutine test_strip_nodes
 
    !> G(A, L) of the strip table by the rule cpsi = cos(psi), wpsi = weights x cos(psi)
    !> on [0, pi/2] (test_strip_table).
@@ -352,5 +404,77 @@ contains
       call check(.not. allocated(error), "flash: contact accepted")
       call check(avg > 0.0_wp .and. avg < mx, "flash: 0 < average < maximum")
    end subroutine test_flash
+
+   !> The print node's slip (print_slip_node: cos, sin of alpha + s / rho by angle addition
+   !> and the series of s / rho, issue #30) against contact_slip at that node: 20 000
+   !> pseudo-random contacts (either race, alpha -40 .. 40 deg, a / rho 0.05 .. 0.6, spins and
+   !> race speeds of either sign, with and without the angle's sine and cosine carried):
+   !> within 4 eps (|A| + |B| + |C|) of u = A cos(theta) + B sin(theta) + C.
+   subroutine test_print_slip_series()
+      type(ball_race_contact_t) :: c
+      real(wp) :: r(7), s, u, scale, worst
+      integer :: i
+      integer, allocatable :: seed(:)
+      call random_seed(size=i)
+      allocate (seed(i))
+      seed = 4242
+      call random_seed(put=seed)
+      worst = 0.0_wp
+      do i = 1, 20000
+         call random_number(r)
+         c%side = merge(SIDE_OUTER, SIDE_INNER, r(1) < 0.5_wp)
+         c%alpha = (r(2) - 0.5_wp)*1.4_wp
+         c%rho = 0.006_wp
+         c%a = c%rho*(0.05_wp + 0.55_wp*r(3))
+         c%r_b = 0.05_wp
+         c%omega = [2000.0_wp*(r(4) - 0.5_wp), 3000.0_wp*(r(5) - 0.5_wp)]
+         c%race_speed = 400.0_wp*(r(6) - 0.5_wp)
+         c%load = 100.0_wp
+         c%trig_of = huge(1.0_wp)
+         if (r(7) < 0.5_wp) then
+            c%sin_cos = [sin(c%alpha), cos(c%alpha)]
+            c%trig_of = c%alpha
+         end if
+         call print_slip_node(c, 4, s, u)
+         scale = c%rho*(abs(c%omega(1) - c%race_speed) + abs(c%omega(2))) + abs(c%race_speed*c%r_b)
+         worst = max(worst, abs(u - contact_slip(c, s))/(epsilon(1.0_wp)*scale))
+      end do
+      write (*, "(a,f6.2)") "print node slip by the series, against contact_slip (eps x scale):", worst
+      call check(worst <= 4.0_wp, "print node slip: angle addition and series = contact_slip to round-off")
+   end subroutine test_print_slip_series
+
+   !> The EHD flash's film shear (adore_tribology_ehd_flash, issue #30) in the strip traction's
+   !> form amp E shear_shape(zeta |u| E), E = exp(alpha p / 2) (thermal_film_shear), against
+   !> film_shear_stress at eta_w exp(alpha p): 3 wall rheologies (eta_w 0.01 .. 0.2 Pa s,
+   !> alpha 5e-9 .. 2e-8 1/Pa), films 0.05 .. 2 um, pressures 0 .. 3 GPa, slips 1e-9 .. 200 m/s
+   !> of either sign (Appendix C's flash: ~0.08 Pa s, 5.2e-9 1/Pa, <= 2.4 GPa): within 1e-14
+   !> relative (a few ulp of the exp, square roots and divisions).
+   subroutine test_thermal_film_shear()
+      type(ehd_rheology_t) :: rheo
+      real(wp), parameter :: ETA(3) = [0.01_wp, 0.0816_wp, 0.2_wp], ALF(3) = [5.0e-9_wp, 5.2214e-9_wp, 2.0e-8_wp]
+      real(wp) :: amp, zeta, worst, p, u, h, ref, got
+      integer :: ir, ih, ip, iu
+      worst = 0.0_wp
+      do ir = 1, 3
+         rheo = ehd_rheology_t(eta_w=ETA(ir), alpha=ALF(ir), beta=4.25519e-2_wp, conductivity=0.1425185_wp)
+         do ih = 0, 4
+            h = 5.0e-8_wp*40.0_wp**(ih/4.0_wp)
+            call film_constants(rheo, h, amp, zeta)
+            do ip = 0, 30
+               p = 1.0e8_wp*ip
+               do iu = -110, 110
+                  if (iu == 0) cycle
+                  u = sign(1.0e-9_wp*10.0_wp**(abs(iu)/10.0_wp), real(iu, wp))
+                  if (abs(u) > 200.0_wp) cycle
+                  ref = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)
+                  got = thermal_film_shear(amp, zeta, exp(0.5_wp*rheo%alpha*p), u)
+                  worst = max(worst, abs(got - ref)/ref)
+               end do
+            end do
+         end do
+      end do
+      write (*, "(a,es10.2)") "flash film shear, strip form against film_shear_stress: worst relative", worst
+      call check(worst <= 1.0e-14_wp, "flash film shear: amp E shear_shape(zeta |u| E) = film_shear_stress to round-off")
+   end subroutine test_thermal_film_shear
 
 end program test_tribology

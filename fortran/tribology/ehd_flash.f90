@@ -8,7 +8,8 @@ module adore_tribology_ehd_flash
    use adore_core_error, only: error_type, input_error
    use adore_tribology_flash, only: strip_temperature_rise, flash_trapezoid_weights
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes
-   use adore_tribology_ehd_traction, only: ehd_rheology_t, film_shear_stress, ehd_contact_traction
+   use adore_tribology_ehd_traction, only: ehd_rheology_t, film_shear_stress, ehd_contact_traction, film_constants, &
+                                           thermal_film_shear
    implicit none
    private
 
@@ -33,7 +34,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(contact_traction_t) :: t
       real(wp), allocatable :: x(:), w(:), eta(:), q(:), dt(:), p(:), cw(:)
-      real(wp) :: u, ek, bk, p0, strip, denom
+      real(wp) :: u, ek, bk, p0, strip, denom, amp, zeta
       integer :: j, i, half_ny
 
       dt_avg = 0.0_wp
@@ -51,6 +52,7 @@ contains
       eta = [(-1.0_wp + 2.0_wp*real(i - 1, wp)/real(ny - 1, wp), i=1, ny)]
       if (.not. present(dt_max)) call flash_trapezoid_weights(ny, cw)
       half_ny = (ny + 1)/2
+      call film_constants(rheo, h, amp, zeta)
       denom = sqrt(pi*th1(1)*th1(2)*th1(3)*abs(u1)) + sqrt(pi*th2(1)*th2(2)*th2(3)*abs(u2))
       p0 = 1.5_wp*c%load/(pi*c%a*b)
       do j = 1, size(x)
@@ -61,8 +63,14 @@ contains
          p = p0*sqrt(ek)*sqrt(max(1.0_wp - eta**2, 0.0_wp))
          if (present(dt_max)) then
             q = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)*abs(u)
+         else if (rheo%beta > 0.0_wp) then
+            ! the flux is even across the strip: half of it, mirrored.  film_shear_stress at
+            ! eta_w exp(alpha p) as the strip traction's amp E shear_shape(zeta |u| E) with
+            ! E = exp(alpha p / 2) (film_constants: no square roots or divisions a point;
+            ! equal to round-off, test_tribology; issue #30)
+            q(1:half_ny) = thermal_film_shear(amp, zeta, exp(0.5_wp*rheo%alpha*p(1:half_ny)), u)*abs(u)
+            q(ny:half_ny + 1:-1) = q(1:ny - half_ny)
          else
-            ! the flux is even across the strip: half of it, mirrored
             q(1:half_ny) = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p(1:half_ny)), rheo%beta, rheo%conductivity, &
                                              u, h)*abs(u)
             q(ny:half_ny + 1:-1) = q(1:ny - half_ny)

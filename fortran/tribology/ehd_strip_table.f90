@@ -13,11 +13,12 @@
 !>   L > STRIP_L_MAX by the asymptote W = 2 (L + ln 2 + A pi / 4):  5.30e-08
 !>   table values (composite Gauss, against twice as fine):      7.11e-15
 module adore_tribology_ehd_strip_table
+   use, intrinsic :: iso_c_binding, only: c_int, c_double
    use adore_core_kinds, only: wp
    implicit none
    private
 
-   public :: strip_log_shear
+   public :: strip_log_shear, strip_log_shear_nodes
 
    !> grid step (in A and L), range of A, range of L = ln Z of the table; STRIP_ERROR:
    !> the measured bound of the interpolation error of G (relative error of S)
@@ -14000,6 +14001,18 @@ module adore_tribology_ehd_strip_table
       G_A144, G_A145, G_A146, G_A147, G_A148, G_A149, G_A150, G_A151, &
       G_A152, G_A153, G_A154], [NL, NA])
 
+   interface
+      !> fortran/tribology/ehd_strip_kernel.c: strip_log_shear at nodes, the same bits
+      integer(c_int) function strip_kernel(n, a, l, g, table, nl, a0, l0, inv_h, a_max, l_min, l_max) &
+         bind(c, name="adore_strip_log_shear_nodes")
+         import :: c_int, c_double
+         integer(c_int), value :: n, nl
+         real(c_double), intent(in) :: a(*), l(*), table(*)
+         real(c_double), intent(inout) :: g(*)
+         real(c_double), value :: a0, l0, inv_h, a_max, l_min, l_max
+      end function strip_kernel
+   end interface
+
 contains
 
    !> G(A, L) (dimensionless) for A in [0, STRIP_A_MAX] and L in [STRIP_L_MIN, STRIP_L_MAX]
@@ -14035,5 +14048,21 @@ contains
           + w3(1)*TABLE(i(2) + 1:i(2) + 4, i(1) + 4)
       g = w0(2)*v(1) + w1(2)*v(2) + w2(2)*v(3) + w3(2)*v(4)
    end function strip_log_shear
+
+   !> g(j) = strip_log_shear(a(j), max(l(j), STRIP_L_MIN)) (dimensionless) for every node j
+   !> with a(j) <= STRIP_A_MAX and l(j) <= STRIP_L_MAX, bit for bit; g(j) of the other nodes
+   !> is left as it was (NaN for a NaN argument); left: the number of those other nodes
+   !> (beyond the domain, not NaN).  The fast EHD traction's ~40 nodes a contact in one call
+   !> (issue #30).
+   subroutine strip_log_shear_nodes(n, a, l, g, left)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: a(n), l(n)
+      real(wp), intent(inout) :: g(n)
+      integer, intent(out) :: left
+      left = 0
+      if (n < 1) return
+      left = strip_kernel(int(n, c_int), a, l, g, TABLE, int(NL, c_int), A0, L0, INV_H, STRIP_A_MAX, &
+                          STRIP_L_MIN, STRIP_L_MAX)
+   end subroutine strip_log_shear_nodes
 
 end module adore_tribology_ehd_strip_table

@@ -26,7 +26,7 @@ module adore_tribology_ehd_traction
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, input_error, engine_error
    use adore_core_quadrature, only: gauss_legendre
-   use adore_tribology_ehd_strip_table, only: strip_log_shear, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
+   use adore_tribology_ehd_strip_table, only: strip_log_shear_nodes, STRIP_A_MAX, STRIP_L_MIN, STRIP_L_MAX
    use adore_tribology_ehd_elastic, only: elastic_strip_ratio
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes, &
                                    interior_extremum, contact_kinematics, rolling_zones, axis_nodes, cross_slip, &
@@ -35,7 +35,8 @@ module adore_tribology_ehd_traction
    private
 
    public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_strip_traction
-   public :: ehd_contact_traction_fast, ehd_contact_power, series_sin
+   public :: ehd_contact_traction_fast, ehd_contact_power, series_sin, series_cos_sin, film_constants, &
+             thermal_film_shear
 
    !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
    !> zone in the angle phi of s = a sin(phi) along the major axis, and across each strip
@@ -77,6 +78,23 @@ contains
       c = 0.5_wp*abs(u)*sqrt(beta*eta_w/(2.0_wp*k_f))      ! sinh(c/2) with c of the header
       tau = sqrt(2.0_wp*k_f*eta_w/beta)/h*shear_shape(c)
    end function film_shear_stress
+
+   !> Shear stress (Pa) of the thermal film (beta > 0) with film_constants' amp (Pa) and zeta
+   !> (s/m) at E = exp(alpha p / 2) (-) and slip u (m/s): amp E shear_shape(zeta |u| E), the
+   !> strip traction's form of film_shear_stress(eta_w E**2, ...) (equal to round-off); for
+   !> z = zeta |u| E >= 0.5 asinh(z) = log(z + sqrt(1 + z**2)), whose square root the shape's
+   !> denominator shares (no cancellation there; a log instead of libm's asinh).
+   elemental function thermal_film_shear(amp, zeta, e_half, u) result(tau)
+      real(wp), intent(in) :: amp, zeta, e_half, u
+      real(wp) :: tau, z, s
+      z = zeta*abs(u)*e_half
+      if (z < 0.5_wp) then
+         tau = amp*e_half*shear_shape(z)
+      else
+         s = sqrt(1.0_wp + z*z)
+         tau = amp*e_half*(2.0_wp*log(z + s)/s)
+      end if
+   end function thermal_film_shear
 
    !> 2 asinh(z) / sqrt(1 + z**2) = c / cosh(c/2) with sinh(c/2) = z; 2 z for tiny z.
    elemental function shear_shape(z) result(g)
@@ -171,8 +189,11 @@ contains
    !> given: contact_kinematics(c) (its centre kinematics are taken from it).  A contact without
    !> pure-rolling point whose |u| dips inside (two rolling points merged or just apart, as
    !> under race control) is split and graded at the dip (slip_minimum): plain Gauss in phi
-   !> missed that layer by up to 4e-3 of the force (docs/dynamics.md).
-   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse, kinematics)
+   !> missed that layer by up to 4e-3 of the force (docs/dynamics.md).  extremes = .false.:
+   !> t%max_slip is not computed (left 0; the end slips, the nodes' largest |u| and the
+   !> interior extremum skipped), every other output the same bit for bit: for a caller that
+   !> does not use it (the force assembly, adore_forces_race_contact's ehd_traction; issue #30).
+   subroutine ehd_contact_traction_fast(c, rheo, h, b, t, error, n_major, n_strip, transverse, kinematics, extremes)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
       real(wp), intent(in) :: h, b
@@ -182,6 +203,8 @@ contains
       real(wp), intent(in), optional :: transverse(3)
       !> contact_kinematics of c, when the caller has it (its fields are taken, not recomputed)
       type(contact_traction_t), intent(in), optional :: kinematics
+      !> .false.: t%max_slip not computed (left 0); default .true.
+      logical, intent(in), optional :: extremes
       !> extent of a graded layer at a pure-rolling point, in units of its width 1 / K
       real(wp), parameter :: LAYER = 20.0_wp
       integer, parameter :: MAX_FAST = 64, MAX_NODES = 8*MAX_FAST
@@ -196,12 +219,15 @@ contains
       real(wp) :: umax, ce, se, u_end(2)
       real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
       real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
-      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8)
+      integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8), nleft
+      logical :: ext
 
       nm = EHD_FAST_MAJOR
       ns = EHD_FAST_STRIP
       if (present(n_major)) nm = n_major
       if (present(n_strip)) ns = n_strip
+      ext = .true.
+      if (present(extremes)) ext = extremes
       call check_ehd_inputs(c, rheo, h, b, nm, merge(1, ns, ns == EHD_STRIP_TABLE), error)
       if (allocated(error)) return
       if (nm > MAX_FAST .or. ns > MAX_FAST) then
@@ -211,8 +237,13 @@ contains
       nh = max(1, (nm + 1)/2)             ! a half of a zone between two rolling points
       call gauss_legendre(nm, xq(1:nm, 1), wq(1:nm, 1))
       call gauss_legendre(nh, xq(1:nh, 2), wq(1:nh, 2))
-      ca = cos(c%alpha)
-      sa = sin(c%alpha)
+      if (c%trig_of == c%alpha) then
+         sa = c%sin_cos(1)             ! the contact geometry's (planar_contact), the same values
+         ca = c%sin_cos(2)
+      else
+         ca = cos(c%alpha)
+         sa = sin(c%alpha)
+      end if
       if (present(kinematics)) then
          call take_kinematics(kinematics, t)
       else
@@ -267,7 +298,11 @@ contains
             ! vmax = asinh(kp |pf - pr|) by its logarithm (kp |pf - pr| <= 2 LAYER: add_graded),
             ! equal to round-off where it is used (vmax > 1); a plain sub-zone (kp = 0): none
             vmax = 0.0_wp
-            if (kp > 0.0_wp) vmax = log(kp*abs(pf - pr) + sqrt(1.0_wp + (kp*abs(pf - pr))**2))
+            ev = 1.0_wp
+            if (kp > 0.0_wp) then
+               ev = kp*abs(pf - pr) + sqrt(1.0_wp + (kp*abs(pf - pr))**2)      ! e**vmax
+               vmax = log(ev)
+            end if
             if (kp > 0.0_wp .and. vmax > 1.0_wp) then
                ! v in [0, vmax]: ev = e**v, sinh(v) = (ev - 1 / ev) / 2, cosh(v) = (ev + 1 / ev) / 2;
                ! the Gauss nodes pair up (x_(m+1-j) = -x_j), so e**v of the upper half is
@@ -275,7 +310,7 @@ contains
                do j = 1, (m + 1)/2
                   evs(j) = exp(0.5_wp*vmax*(1.0_wp + xq(j, r)))
                end do
-               ev = exp(vmax)
+               ! e**vmax: the logarithm's argument above (no exp; equal to round-off)
                do j = (m + 1)/2 + 1, m
                   evs(j) = ev/evs(m + 1 - j)
                end do
@@ -309,15 +344,17 @@ contains
       ! alpha -+ a / rho by angle addition from those of alpha and a / rho (one sincos
       ! instead of four; equal to round-off).  Here, after the loop of sin(phi): computed
       ! before it, gcc no longer vectorises that loop ("latch block not empty")
-      ce = cos(c%a/c%rho)
-      se = sin(c%a/c%rho)
-      u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
-              - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
-      if (present(transverse)) then
-         t%max_slip = max(hypot(u_end(1), transverse(1) + transverse(2)*ce - transverse(3)*se), &
-                          hypot(u_end(2), transverse(1) + transverse(2)*ce + transverse(3)*se))
-      else
-         t%max_slip = max(abs(u_end(1)), abs(u_end(2)))
+      if (ext) then
+         ce = cos(c%a/c%rho)
+         se = sin(c%a/c%rho)
+         u_end = c%side*c%rho*(c%omega(1) - rs)*[ca*ce + sa*se, ca*ce - sa*se] &
+                 - c%side*c%rho*c%omega(2)*[sa*ce - ca*se, sa*ce + ca*se] - rs*c%r_b
+         if (present(transverse)) then
+            t%max_slip = max(hypot(u_end(1), transverse(1) + transverse(2)*ce - transverse(3)*se), &
+                             hypot(u_end(2), transverse(1) + transverse(2)*ce + transverse(3)*se))
+         else
+            t%max_slip = max(abs(u_end(1)), abs(u_end(2)))
+         end if
       end if
       if (c%a <= 0.4_wp*c%rho) then
          ! |psi| <= 0.4 (the decks' balls: a / rho <= 0.3): to psi**14 / 14! and psi**13 / 13!,
@@ -371,16 +408,18 @@ contains
             lz(1:n) = STRIP_L_MIN
             fac = rheo%eta_w/h*b
          end if
-         do j = 1, n
-            if (aa(j) > STRIP_A_MAX) then
-               g(j) = 0.0_wp
-            else if (lz(j) <= STRIP_L_MAX) then
-               ! G is flat below STRIP_L_MIN
-               g(j) = strip_log_shear(aa(j), max(lz(j), STRIP_L_MIN))
-            else
-               g(j) = log(2.0_wp*(lz(j) + log(2.0_wp) + 0.25_wp*pi*aa(j))) - 2.0_wp*lz(j)
-            end if
-         end do
+         ! the table at the nodes in its domain (G is flat below STRIP_L_MIN), in one call
+         ! (strip_log_shear_nodes: strip_log_shear's bits), then the nodes beyond it
+         call strip_log_shear_nodes(n, aa, lz, g, nleft)
+         if (nleft > 0) then
+            do j = 1, n
+               if (aa(j) > STRIP_A_MAX) then
+                  g(j) = 0.0_wp
+               else if (lz(j) > STRIP_L_MAX) then
+                  g(j) = log(2.0_wp*(lz(j) + log(2.0_wp) + 0.25_wp*pi*aa(j))) - 2.0_wp*lz(j)
+               end if
+            end do
+         end if
          do j = 1, n
             f(j) = fac*cphi(j)*zz(j)*exp(g(j))
          end do
@@ -429,13 +468,15 @@ contains
          sliding = sum(us(1:n)*cphi(1:n)**2*wn(1:n))
       end if
       t%sliding = 0.75_wp*c%load/c%a*sliding    ! Hertz strip load
-      ! the largest |u| (exact in any order: a loop gcc vectorises, where maxval is scalar)
-      umax = t%max_slip
-      do j = 1, n
-         umax = max(umax, us(j))
-      end do
-      t%max_slip = umax
-      call interior_extremum(c, t%max_slip, polar)
+      if (ext) then
+         ! the largest |u| (exact in any order: a loop gcc vectorises, where maxval is scalar)
+         umax = t%max_slip
+         do j = 1, n
+            umax = max(umax, us(j))
+         end do
+         t%max_slip = umax
+         call interior_extremum(c, t%max_slip, polar)
+      end if
       t%coefficient = t%force/c%load
 
    contains
@@ -447,18 +488,22 @@ contains
       subroutine add_sub(pf, pr, s_r, rule)
          real(wp), intent(in) :: pf, pr, s_r
          integer, intent(in) :: rule
-         real(wp) :: th, dudx
+         real(wp) :: dudx, cs(2), cp
          if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) then
             call add_graded(pf, pr, 0.0_wp, rule)
             return
          end if
          ! the zones on both sides of a rolling point (and the halves of a zone between two)
-         ! meet there in turn: its layer width once, for both
+         ! meet there in turn: its layer width once, for both.  sin, cos of theta = alpha +
+         ! s_r / rho by angle addition from alpha's and the series of s_r / rho (|s_r / rho|
+         ! < a / rho < 1): no sincos (issue #30; equal to round-off: test_traction_fast)
          if (s_r /= s_last) then
-            th = c%alpha + s_r/c%rho
-            dudx = (-c%side*c%rho*(c%omega(1) - rs)*sin(th) - c%side*c%rho*c%omega(2)*cos(th))/c%rho
+            cp = cos(pr)
+            cs = cos_sin_series(s_r/c%rho, c%a <= 0.4_wp*c%rho)
+            dudx = (-c%side*c%rho*(c%omega(1) - rs)*(sa*cs(1) + ca*cs(2)) &
+                    - c%side*c%rho*c%omega(2)*(ca*cs(1) - sa*cs(2)))/c%rho
             s_last = s_r
-            k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cos(pr))*c%a*cos(pr)
+            k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cp)*c%a*cp
          end if
          call add_graded(pf, pr, k_last, rule)
       end subroutine add_sub
@@ -540,6 +585,40 @@ contains
       end function strip_rule_integral
 
    end subroutine ehd_contact_traction_fast
+
+   !> [cos(x), sin(x)] (-) for |x| < 1 (rad) as the fast traction computes them at a
+   !> pure-rolling point (cos_sin_series; public for its test): short for |x| <= 0.4.
+   pure function series_cos_sin(x, short) result(cs)
+      real(wp), intent(in) :: x
+      logical, intent(in) :: short
+      real(wp) :: cs(2)
+      cs = cos_sin_series(x, short)
+   end function series_cos_sin
+
+   !> [cos(x), sin(x)] (-) for |x| < 1 (rad; x = s / rho on the major axis) by the Taylor
+   !> series of the fast traction's nodes: short (|x| <= 0.4, the contacts with a <= 0.4 rho):
+   !> to x**14 / 14! and x**13 / 13! (truncation below 2.1e-20 and 8.2e-19), else to
+   !> x**18 / 18! and x**17 / 17! (below 8.3e-18); private, so that gcc inlines it.
+   pure function cos_sin_series(x, short) result(cs)
+      real(wp), intent(in) :: x
+      logical, intent(in) :: short
+      real(wp) :: cs(2), x2
+      integer :: q_
+      real(wp), parameter :: COS_C(9) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 1.0_wp), q_ = 1, 9)]
+      real(wp), parameter :: SIN_C(8) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 2.0_wp), q_ = 1, 8)]
+      x2 = x*x
+      if (short) then
+         cs(1) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
+                 + x2*(COS_C(6) + x2*COS_C(7)))))))
+         cs(2) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
+                 + x2*SIN_C(6))))))
+      else
+         cs(1) = 1.0_wp + x2*(COS_C(1) + x2*(COS_C(2) + x2*(COS_C(3) + x2*(COS_C(4) + x2*(COS_C(5) &
+                 + x2*(COS_C(6) + x2*(COS_C(7) + x2*(COS_C(8) + x2*COS_C(9)))))))))
+         cs(2) = x + x*x2*(SIN_C(1) + x2*(SIN_C(2) + x2*(SIN_C(3) + x2*(SIN_C(4) + x2*(SIN_C(5) &
+                 + x2*(SIN_C(6) + x2*(SIN_C(7) + x2*SIN_C(8))))))))
+      end if
+   end function cos_sin_series
 
    !> sin(x) (-) for |x| <= pi/2 (rad) as the fast traction computes it at every node
    !> (taylor_sin; public for its test).

@@ -128,6 +128,8 @@ contains
 
       if (present(sin_cos)) then
          n = c%side*sin_cos
+      else if (c%trig_of == c%alpha) then
+         n = c%side*c%sin_cos           ! the contact geometry's (planar_contact), the same values
       else
          n = c%side*[sin(c%alpha), cos(c%alpha)]
       end if
@@ -346,17 +348,36 @@ contains
    pure subroutine print_slip_node(c, n_gauss, s, u)
       type(ball_race_contact_t), intent(in) :: c
       integer, intent(in) :: n_gauss
+      integer :: q_
+      real(wp), parameter :: COS_T(9) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 1.0_wp), q_ = 1, 9)]
+      real(wp), parameter :: SIN_T(8) = [((-1.0_wp)**q_/gamma(2.0_wp*q_ + 2.0_wp), q_ = 1, 8)]
       real(wp), intent(out) :: s, u
-      type(contact_traction_t) :: t
-      real(wp), allocatable :: x(:), w(:)
-      real(wp) :: uj
-      integer :: j
+      real(wp) :: x(3*max(n_gauss, 1)), w(3*max(n_gauss, 1))
+      real(wp) :: uj, sc(2), ps, ps2, cps, sps
+      integer :: j, n
 
-      call major_axis_nodes(c, n_gauss, t, x, w)
+      ! major_axis_nodes' nodes without its kinematics and allocation (the same nodes)
+      call axis_nodes(c, n_gauss, x, w, n)
+      if (c%trig_of == c%alpha) then
+         sc = c%sin_cos
+      else
+         sc = [sin(c%alpha), cos(c%alpha)]
+      end if
       s = 0.0_wp
       u = 0.0_wp
-      do j = 1, size(x)
-         uj = contact_slip(c, x(j))
+      do j = 1, n
+         ! contact_slip(c, x(j)) with cos, sin of alpha + psi by angle addition, psi = s / rho
+         ! (|psi| < a / rho < 1) by its Taylor series to psi**18 / 18!, psi**17 / 17!
+         ! (truncation below 8.3e-18): no sincos a node (issue #30; equal to round-off,
+         ! test_tribology)
+         ps = x(j)/c%rho
+         ps2 = ps*ps
+         cps = 1.0_wp + ps2*(COS_T(1) + ps2*(COS_T(2) + ps2*(COS_T(3) + ps2*(COS_T(4) + ps2*(COS_T(5) &
+               + ps2*(COS_T(6) + ps2*(COS_T(7) + ps2*(COS_T(8) + ps2*COS_T(9)))))))))
+         sps = ps + ps*ps2*(SIN_T(1) + ps2*(SIN_T(2) + ps2*(SIN_T(3) + ps2*(SIN_T(4) + ps2*(SIN_T(5) &
+               + ps2*(SIN_T(6) + ps2*(SIN_T(7) + ps2*SIN_T(8))))))))
+         uj = c%side*c%rho*(c%omega(1) - c%race_speed)*(sc(2)*cps - sc(1)*sps) &
+              - c%side*c%rho*c%omega(2)*(sc(1)*cps + sc(2)*sps) - c%race_speed*c%r_b
          if (abs(uj) >= abs(u)) then
             s = x(j)
             u = uj
