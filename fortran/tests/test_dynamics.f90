@@ -119,13 +119,17 @@ contains
       s%temperature(3) = 500.0_wp
       call mark_name(s, "bulk temperature 3 (Rec 2.7)", ok)
       call check(ok, "packed_name: each marked value's index named as pack_state placed it")
-      ! the orbit frame: a ball on the z axis (phi = 0) moving radially packs r and r' only
+      ! the orbit frame: balls on the z axis (phi = 0; none at the axis, where the frame has
+      ! no azimuth), ball 3 at its own radius moving radially: its r and r' where named
       s = new_bearing_state(4)
-      s%elements(3)%position = [0.0_wp, 0.0_wp, 0.05_wp]
+      s%elements(1)%position = [0.0_wp, 0.0_wp, 0.05_wp]
+      s%elements(2)%position = [0.0_wp, 0.0_wp, 0.05_wp]
+      s%elements(4)%position = [0.0_wp, 0.0_wp, 0.05_wp]
+      s%elements(3)%position = [0.0_wp, 0.0_wp, 0.06_wp]
       s%elements(3)%velocity = [0.0_wp, 0.0_wp, 2.0_wp]
       call pack_state(s, y, orbit=.true.)
       call check(pname(findloc(y == 2.0_wp, .true., 1), .true.) == "ball 3's radial velocity" .and. &
-                 pname(findloc(y == 0.05_wp, .true., 1), .true.) == "ball 3's radius", &
+                 pname(findloc(y == 0.06_wp, .true., 1), .true.) == "ball 3's radius", &
                  "packed_name: the orbit frame's radius and radial velocity")
       call check(pname(0, .false.) == "unknown 0" .and. pname(state_size(4) + 1, .false.) == &
                  "unknown "//itoa(state_size(4) + 1), "packed_name: outside the vector")
