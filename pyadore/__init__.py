@@ -15,10 +15,13 @@ from importlib import import_module
 
 from .errors import AdoreEngineError, AdoreError, AdoreInputError, AdoreInterrupted
 
-# The engine's threads (run option threads) sleep between its parallel loops instead of
-# spinning, unless the environment says otherwise: OpenMP's run-time reads this when the
-# engine extension loads it (docs/performance.md, "Threads"; fortran/app/wait_policy.c for adore)
-os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+# The engine's threads (run option threads) spin briefly (3 000 rounds) between its parallel
+# loops and then sleep, instead of libgomp's long spin, unless the environment sets either
+# variable: OpenMP's run-time reads them when the engine extension loads it
+# (docs/performance.md, "Threads"; fortran/app/wait_policy.c for adore)
+if "OMP_WAIT_POLICY" not in os.environ and "GOMP_SPINCOUNT" not in os.environ:
+    os.environ["OMP_WAIT_POLICY"] = "PASSIVE"
+    os.environ["GOMP_SPINCOUNT"] = "3000"
 #: the process that imported pyadore: a run in a child forked from it takes one thread unless
 #: told otherwise (OpenMP's run-time of GCC, libgomp, does not survive a fork: a child's
 #: first parallel loop after the parent ran one waits forever; docs/performance.md, "Threads")

@@ -87,13 +87,15 @@ def test_default_threads(adore_exe, short_ball_deck, tmp_path):
     assert _threads_line(given).startswith(THREADS_LINE + "5 THREADS ")
 
 
-def _spin_count(cmd, policy):
+def _spin_count(cmd, policy, spin=None):
     """GOMP_SPINCOUNT as libgomp reports it (OMP_DISPLAY_ENV) for a process started with
-    OMP_WAIT_POLICY=policy (None: unset)."""
-    env = {k: v for k, v in os.environ.items() if k != "OMP_WAIT_POLICY"}
+    OMP_WAIT_POLICY=policy and GOMP_SPINCOUNT=spin (None: unset)."""
+    env = {k: v for k, v in os.environ.items() if k not in ("OMP_WAIT_POLICY", "GOMP_SPINCOUNT")}
     env["OMP_DISPLAY_ENV"] = "verbose"
     if policy is not None:
         env["OMP_WAIT_POLICY"] = policy
+    if spin is not None:
+        env["GOMP_SPINCOUNT"] = spin
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600, env=env)
     assert proc.returncode == 0, proc.stderr
     found = [line.split("=", 1)[1].strip().strip("'") for line in (proc.stdout + proc.stderr).splitlines()
@@ -102,14 +104,18 @@ def _spin_count(cmd, policy):
     return int(found[0])
 
 
-def test_wait_policy_passive_unless_set(adore_exe):
-    """Both front ends load OpenMP with the passive wait policy (no spinning between the
-    parallel loops) unless the environment sets one."""
+def test_wait_policy_short_spin_unless_set(adore_exe):
+    """Both front ends load OpenMP with a short spin (3 000 rounds, then sleep) between the
+    parallel loops unless the environment sets the wait policy or the spin count: the user's
+    setting is kept as given."""
     exe = [str(adore_exe), "--version"]
     py = [sys.executable, "-c", "import pyadore._core.base as b; b._engine()"]
     for cmd in (exe, py):
-        assert _spin_count(cmd, None) == 0
-        assert _spin_count(cmd, "active") > 0
+        assert _spin_count(cmd, None) == 3000
+        assert _spin_count(cmd, "passive") == 0
+        assert _spin_count(cmd, "active") > 3000
+        assert _spin_count(cmd, None, "0") == 0
+        assert _spin_count(cmd, None, "50000") == 50000
 
 
 def test_sweep_case_on_one_thread(short_ball_deck):

@@ -10,7 +10,7 @@ module adore_core_threads
    private
 
    public :: run_threads, team_join, team_t, team_threads, team_note, wall_seconds, DEFAULT_THREADS_CAP, &
-             TEAM_JOIN_WAIT, TEAM_PROBE, TEAM_KEEP
+             TEAM_JOIN_WAIT, TEAM_PROBE, TEAM_KEEP, TEAM_CUT, TEAM_BACKOFF
 
    !> the most threads a run takes by default (no OMP_NUM_THREADS, no `threads` option): the
    !> 18 balls of Appendix C on 4 threads are 5, 5, 4 and 4 balls, at most 3.6 times the
@@ -26,12 +26,24 @@ module adore_core_threads
    !> thread), and calls run on the faster choice before both are measured again
    integer, parameter :: TEAM_PROBE = 32, TEAM_KEEP = 480
 
+   !> a window on the threads ends early, and one thread is kept, once its calls have taken
+   !> TEAM_CUT times the wall time of the whole last window on one thread: on a busy machine
+   !> the threads' window costs about that much more than one thread's, not its full length
+   real(wp), parameter :: TEAM_CUT = 1.5_wp
+
+   !> one thread kept k times in a row is kept TEAM_KEEP * 2**min(k - 1, TEAM_BACKOFF) calls:
+   !> while other work holds the cores, the threads are measured ever less often
+   integer, parameter :: TEAM_BACKOFF = 3
+
    !> A run's choice between its threads and one thread for the derivative calls, measured as
    !> it goes (docs/performance.md, "Threads"): TEAM_PROBE calls on the run's threads, then
    !> TEAM_PROBE on one, then TEAM_KEEP calls on whichever took less wall time, and again.
    !> On a machine whose cores are free the threads win; when other work holds the cores,
    !> a parallel loop waits for a thread that has no core (measured: one thread 13-15 %
-   !> faster then) and the run goes on one.  The results are the same bit for bit either way.
+   !> faster then, 3 times with spinning threads) and the run goes on one; a window on the
+   !> threads that has already cost TEAM_CUT times the last one-thread window ends there, and
+   !> one thread kept again is kept longer (TEAM_BACKOFF).  The results are the same bit for
+   !> bit either way.
    type :: team_t
       integer :: phase = 0                !< 0: not started; 1: measuring the threads; 2: one; 3: keeping
       integer :: left = 0                 !< calls left in the phase
@@ -39,6 +51,8 @@ module adore_core_threads
       real(wp) :: seconds(2) = 0.0_wp     !< wall time of the windows: on the threads, on one
       integer :: kept_one = 0             !< phases 3 run on one thread (statistics)
       integer :: kept_many = 0            !< phases 3 run on the threads (statistics)
+      integer :: streak = 0               !< one thread kept this many times in a row
+      real(wp) :: one_window = 0.0_wp     !< wall time (s) of the last whole window on one thread
    end type team_t
 
 contains
@@ -115,7 +129,8 @@ contains
    end function team_threads
 
    !> The wall time (s) of a derivative call made on team_threads(team, threads) threads:
-   !> the windows' sums, the choice at the end of the second, the phases' turns (team_t).
+   !> the windows' sums, the choice at the end of the second (or when the threads' window has
+   !> cost TEAM_CUT times the last one-thread window), the phases' turns (team_t).
    pure subroutine team_note(team, threads, seconds)
       type(team_t), intent(inout) :: team
       integer, intent(in) :: threads
@@ -128,20 +143,28 @@ contains
       end if
       if (team%phase == 1 .or. team%phase == 2) team%seconds(team%phase) = team%seconds(team%phase) + seconds
       team%left = team%left - 1
+      if (team%phase == 1 .and. team%one_window > 0.0_wp .and. team%left > 0) then
+         ! the threads already slower than a whole window on one thread: keep one
+         if (team%seconds(1) > TEAM_CUT*team%one_window) then
+            call keep_one(team)
+            return
+         end if
+      end if
       if (team%left > 0) return
       select case (team%phase)
       case (1)
          team%phase = 2
          team%left = TEAM_PROBE
       case (2)
-         team%phase = 3
-         team%left = TEAM_KEEP
+         team%one_window = team%seconds(2)
          if (team%seconds(1) <= team%seconds(2)) then
+            team%phase = 3
+            team%left = TEAM_KEEP
             team%choice = threads
             team%kept_many = team%kept_many + 1
+            team%streak = 0
          else
-            team%choice = 1
-            team%kept_one = team%kept_one + 1
+            call keep_one(team)
          end if
       case default
          team%phase = 1
@@ -149,6 +172,16 @@ contains
          team%seconds = 0.0_wp
       end select
    end subroutine team_note
+
+   !> team_t: one thread for the next TEAM_KEEP * 2**min(streak, TEAM_BACKOFF) calls.
+   pure subroutine keep_one(team)
+      type(team_t), intent(inout) :: team
+      team%phase = 3
+      team%left = TEAM_KEEP*2**min(team%streak, TEAM_BACKOFF)
+      team%choice = 1
+      team%kept_one = team%kept_one + 1
+      team%streak = team%streak + 1
+   end subroutine keep_one
 
    !> Wall-clock seconds (omp_get_wtime; 0 without OpenMP, where every run has one thread).
    real(wp) function wall_seconds() result(t)

@@ -44,7 +44,8 @@ program test_forces
    use adore_state_bearing_state, only: body_state_t
    use adore_core_rotation, only: quat_matrix
    use adore_test_support, only: check, finish
-   use adore_core_threads, only: team_join, team_t, team_threads, team_note, TEAM_PROBE, TEAM_KEEP
+   use adore_core_threads, only: team_join, team_t, team_threads, team_note, TEAM_PROBE, TEAM_KEEP, TEAM_CUT, &
+                                 TEAM_BACKOFF
    use adore_test_ball_fixture, only: step0_state, appendix_c_race_control, power_of, loads_power
    implicit none
 
@@ -618,8 +619,9 @@ contains
    !> TEAM_KEEP calls and measures again; a run on one thread never leaves it.
    subroutine test_team_choice()
       type(team_t) :: team
-      integer :: k, n, seq(2*TEAM_PROBE + TEAM_KEEP + 1)
+      integer :: k, n, seq(2*TEAM_PROBE + TEAM_KEEP + 1), cut, round, on_threads, kept
       real(wp) :: cost(2)
+      logical :: ok
       ! 2 threads take 1.0 ms a call, one thread 1.6 ms: the threads are kept
       cost = [1.0e-3_wp, 1.6e-3_wp]
       do k = 1, size(seq)
@@ -641,6 +643,41 @@ contains
       call check(all(seq(TEAM_PROBE:2*TEAM_PROBE - 1) == 1) .and. &
                  all(seq(2*TEAM_PROBE:2*TEAM_PROBE + TEAM_KEEP - 1) == 1) .and. team%kept_one == 1, &
                  "team: one thread kept while it is the faster")
+      ! a busy machine: the threads take 5.0 ms a call, 3 times one thread's 1.6 ms.  Each
+      ! window on the threads ends once it has cost TEAM_CUT times the last one-thread window
+      ! (TEAM_PROBE calls of 1.6 ms), and one thread is kept twice as long each time, up to
+      ! 2**TEAM_BACKOFF times TEAM_KEEP
+      cost = [5.0e-3_wp, 1.6e-3_wp]
+      cut = floor(TEAM_CUT*TEAM_PROBE*1.6_wp/5.0_wp) + 1
+      team = team_t()
+      ! the first measurement has no one-thread window to cut by: both windows whole
+      do k = 1, 2*TEAM_PROBE + TEAM_KEEP
+         call team_note(team, 2, cost(3 - team_threads(team, 2)))
+      end do
+      ok = team%kept_one == 1 .and. team%streak == 1 .and. team_threads(team, 2) == 2
+      do round = 1, TEAM_BACKOFF + 2
+         on_threads = 0
+         do
+            n = team_threads(team, 2)
+            if (n == 1) exit
+            on_threads = on_threads + 1
+            call team_note(team, 2, cost(3 - n))
+         end do
+         kept = 0
+         do while (team_threads(team, 2) == 1)
+            kept = kept + 1
+            call team_note(team, 2, cost(2))
+         end do
+         ok = ok .and. on_threads == cut .and. kept == TEAM_KEEP*2**min(round, TEAM_BACKOFF)
+      end do
+      call check(ok .and. team%kept_one == TEAM_BACKOFF + 3 .and. team%streak == TEAM_BACKOFF + 3, &
+                 "team: on a busy machine the threads' windows end early and one thread is kept ever longer")
+      ! the cores free again: the threads win their next window and the streak ends
+      cost = [1.0e-3_wp, 1.6e-3_wp]
+      do k = 1, 2*TEAM_PROBE
+         call team_note(team, 2, cost(3 - team_threads(team, 2)))
+      end do
+      call check(team_threads(team, 2) == 2 .and. team%streak == 0, "team: the threads kept again once faster")
       team = team_t()
       call check(team_threads(team, 1) == 1, "team: a run on one thread stays on one")
    end subroutine test_team_choice
