@@ -365,7 +365,7 @@ contains
       real(wp), intent(in), optional :: t_limit
       real(wp) :: h, h_plan, err, fac, fac_err, h_min
       integer :: flag, tries
-      logical :: clipped, rejected_before, forced, below_min, gross, gross_seen
+      logical :: clipped, rejected_before, forced, below_min, gross, gross_seen, at_min
       character(len=:), allocatable :: why
 
       if (.not. self%ready) then
@@ -411,11 +411,15 @@ contains
       gross_seen = .false.
       do tries = 0, self%settings%max_rejections
          gross = .false.
+         ! at the minimum: h_min, or a step landing on t_limit that is longer only by the
+         ! round-off of t (t_limit - t = h_min + a few ulp of t; without this such a step could
+         ! be neither forced nor shortened, and was rejected max_rejections times)
+         at_min = h <= h_min .or. (clipped .and. h - h_min <= 8.0_wp*spacing(abs(t) + h))
          if (self%rosenbrock) then
             call attempt_rosenbrock(self, deriv, t, y, h, flag, err, &
-                                    self%settings%accept_at_h_min .and. h <= h_min)
+                                    self%settings%accept_at_h_min .and. at_min)
          else if (self%imex) then
-            call attempt_imex(self, deriv, t, y, h, flag, err, self%settings%accept_at_h_min .and. h <= h_min)
+            call attempt_imex(self, deriv, t, y, h, flag, err, self%settings%accept_at_h_min .and. at_min)
          else
             call attempt(self, deriv, t, y, h, flag, err)
          end if
@@ -435,11 +439,11 @@ contains
             fac = fac_min
          else if (err <= 1.0_wp) then
             exit
-         else if (self%settings%accept_at_h_min .and. h <= h_min .and. err <= self%settings%forced_err_cap) then
+         else if (self%settings%accept_at_h_min .and. at_min .and. err <= self%settings%forced_err_cap) then
             ! at the minimum step (or a shorter step landing on t_limit): accept, counted
             forced = .true.
             exit
-         else if (self%settings%accept_at_h_min .and. h <= h_min) then
+         else if (self%settings%accept_at_h_min .and. at_min) then
             ! at the minimum with an error beyond what ADORE is attested to accept: retried
             ! below it as a refused attempt (the halving below)
             gross = .true.
@@ -467,7 +471,7 @@ contains
             call block_jacobian(self, deriv, t, y, error)
             if (allocated(error)) return
          end if
-         if (h <= h_min) then
+         if (at_min) then
             ! report 4.4.12: an attempt the derivative refuses (or that is not finite) is
             ! retried with a reduced step; under ADORE's rule (accept_at_h_min) below the
             ! minimum too, halving down to SUB_MIN_FLOOR of it (issue #28)

@@ -328,6 +328,7 @@ program test_integrator
    call test_minimum_step()
    call test_refused_below_minimum_step()
    call test_forced_error_cap()
+   call test_landing_at_minimum_with_round_off()
    call test_failures()
    call test_rosenbrock_order()
    call test_rosenbrock_stiff_oscillators()
@@ -998,6 +999,34 @@ contains
                                        has(error%message, "above 17.2086 times the error limit"), &
                                        "capped, unresolved: the message names the floor and the cap: "//error%message)
    end subroutine test_forced_error_cap
+
+   !> Under ADORE's rule a step landing on t_limit that is longer than h_min only by the
+   !> round-off of t is at the minimum: y' = -50 y, h_min = 0.04 to t = 0.2 - after four
+   !> forced steps t = 0.16 and the landing step 0.2 - 0.16 = 0.04000000000000001; it used to
+   !> be neither forced nor shortenable and the run stopped after "101 consecutive rejected
+   !> attempts" (found in session 20); now it is forced like the others and lands on 0.2.
+   subroutine test_landing_at_minimum_with_round_off()
+      type(integrator_t) :: it
+      type(decay_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1)
+
+      f%lambda = 50.0_wp
+      s = settings_of(INT_METHOD_DP54, 1.0e-8_wp)
+      s%h_min = 4.0e-2_wp
+      s%h_initial = 4.0e-2_wp
+      s%accept_at_h_min = .true.
+      call check(0.2_wp - 4.0_wp*0.04_wp > 0.04_wp, "landing sliver: 0.2 - 0.16 is above 0.04 in round-off")
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 0.2_wp, error)
+      if (allocated(error)) write (*, "(a)") "landing sliver: "//error%message
+      call check(.not. allocated(error) .and. t == 0.2_wp, "landing sliver above h_min by round-off: forced, lands")
+      call check(it%stats%forced_at_h_min == 5 .and. it%stats%rejected_error == 0, &
+                 "landing sliver: five forced steps, none rejected")
+   end subroutine test_landing_at_minimum_with_round_off
 
    !> Non-finite values, a failing derivative, a derivative refusing every step: errors.
    subroutine test_failures()
