@@ -235,8 +235,8 @@ contains
                             balance=balance)
       end if
       if (n_dynamic > 0 .and. it%stats%forced_at_h_min > 0) then
-         ! ADORE's rule accepts a step at the Rec 2.1 minimum whatever its error
-         ! (adore_dynamics_integrator's accept_at_h_min): say how many were (issue #28)
+         ! ADORE's rule accepts a step at the Rec 2.1 minimum with its error above the limit
+         ! (up to ADORE_FORCED_ERR_CAP; adore_dynamics_integrator's accept_at_h_min): say how many (issue #28)
          call add_forced_steps_note(it%stats, sys, balance)
       end if
       if (n_dynamic > 0 .and. it%stats%below_h_min > 0) call add_below_minimum_note(it%stats, balance)

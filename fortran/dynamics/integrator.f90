@@ -95,8 +95,8 @@ module adore_dynamics_integrator
       real(wp) :: h_max = 0.0_wp                !< Rec 2.1 step_max (MAXIMUM)
       real(wp) :: error_limit = 0.0_wp          !< Rec 2.1 error_limit (ERROR LIMIT)
       real(wp) :: rel_weight = 1.0_wp           !< weight of |y| in the error scale (0: absolute only)
-      !> At h_min with err > 1: .false. stops the run with an error; .true. accepts the step and
-      !> counts it (stats%forced_at_h_min), as ADORE's Appendix C statistics suggest it does.
+      !> At h_min with err > 1: .false. stops the run with an error; .true. accepts the step (err up to
+      !> forced_err_cap) and counts it (stats%forced_at_h_min), as ADORE's Appendix C statistics suggest.
       logical :: accept_at_h_min = .false.
       !> Under accept_at_h_min: the largest error ratio (err, 1 = at the limit) accepted at h_min.
       !> An attempt at h_min with a larger err is halved below h_min (down to SUB_MIN_FLOOR of
