@@ -195,6 +195,10 @@ def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
                               note).group(1))
     assert printed == pytest.approx(loose.balance["closure"], rel=1e-3, abs=1e-3)
     assert abs(loose.balance["closure"]) > 0.01 and "do not resolve the drive torque" in note
+    # the note's hint names the limit that held the window's steps: here the maximum step (52 of
+    # the window's 53 at it, measured session 20), what the short run below changes
+    hint = re.search(r"do not resolve the drive torque \(([^;]*);", note).group(1)
+    assert "time steps at the maximum step: a smaller Rec 2.1 maximum step does" in hint
     assert abs(short.balance["closure"]) <= 0.01
     assert not any("do not resolve the drive torque" in n for n in short.notes)
     # the long steps' error is in the drive torque: relative to the resolved run the drive

@@ -146,10 +146,12 @@ module adore_bearings_ball
          class(ball_kind_t), intent(in) :: self
          real(wp), intent(out) :: v(:)
       end subroutine ball_balance
-      !> The run note's balance line over the window [window(1), window(2)] (tau).
-      module subroutine ball_balance_text(self, window, mean, first, last, text)
+      !> The run note's balance line over the window [window(1), window(2)] (tau); hint: what
+      !> resolves the window's steps when the closure misses (the time loop's, from its steps).
+      module subroutine ball_balance_text(self, window, mean, first, last, hint, text)
          class(ball_kind_t), intent(in) :: self
          real(wp), intent(in) :: window(2), mean(:), first(:), last(:)
+         character(len=*), intent(in) :: hint
          character(len=:), allocatable, intent(out) :: text
       end subroutine ball_balance_text
    end interface

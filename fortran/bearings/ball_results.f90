@@ -200,7 +200,8 @@ contains
    !> is m dv/dt averaged), the outer race's against the housing's share; the power of the
    !> terms a free cage's whirl coordinates omit (P_frame, adore_forces_ball_power: 0 by
    !> Newton's equations); the closure (drive - dissipation - dE/dt - P_frame) /
-   !> max(|drive|, dissipation, 1 uW), flagged above 1 %.
+   !> max(|drive|, dissipation, 1 uW), flagged above 1 % with the hint (the time loop's: what
+   !> limited the window's steps, adore_driver_time_loop's closure_hint).
    module procedure ball_balance_text
       character(len=900) :: buf
       real(wp) :: seconds, dissipation, rate, carried(3), housing(3), closure
@@ -235,7 +236,7 @@ contains
             "/max(|drive|, dissipation, 1 uW) ", closure
          text = text//trim(buf)
          if (abs(closure) > 0.01_wp) text = text//", above 0.01: the time steps do not resolve the drive torque "// &
-                                            "(a smaller Rec 2.1 maximum step does; docs/operating-points.md)"
+                                            "("//hint//"; docs/operating-points.md)"
       end associate
    end procedure ball_balance_text
 

@@ -266,10 +266,11 @@ contains
       real(wp), intent(in) :: t, mean(:)
    end subroutine no_record_row
 
-   !> No balance to report.
-   subroutine no_balance_text(self, window, mean, first, last, text)
+   !> No balance to report (hint: what resolves an unbalanced window, the time loop's; unused).
+   subroutine no_balance_text(self, window, mean, first, last, hint, text)
       class(bearing_system_t), intent(in) :: self
       real(wp), intent(in) :: window(2), mean(:), first(:), last(:)
+      character(len=*), intent(in) :: hint
       character(len=:), allocatable, intent(out) :: text
       text = ""
    end subroutine no_balance_text

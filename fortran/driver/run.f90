@@ -35,7 +35,7 @@ module adore_driver_run
    use adore_output_run_history, only: run_history_t, write_history_csv, history_file_name, write_element_file, &
                                        element_file_name
    use adore_quasistatic_ball_start, only: start_method_from_name, start_method_title, MIN_DISSIPATION
-   use adore_dynamics_integrator, only: integrator_t, integrator_stats_t
+   use adore_dynamics_integrator, only: integrator_t, integrator_stats_t, ADORE_FORCED_ERR_CAP
    use adore_bearings_system, only: bearing_system_t
    use adore_bearings_select, only: new_bearing_system
    use adore_driver_time_loop, only: run_time_loop, run_progress, INCOMPLETE_MARK
@@ -235,8 +235,8 @@ contains
                             balance=balance)
       end if
       if (n_dynamic > 0 .and. it%stats%forced_at_h_min > 0) then
-         ! ADORE's rule accepts a step at the Rec 2.1 minimum whatever its error
-         ! (adore_dynamics_integrator's accept_at_h_min): say how many were (issue #28)
+         ! ADORE's rule accepts a step at the Rec 2.1 minimum with its error above the limit
+         ! (up to ADORE_FORCED_ERR_CAP; adore_dynamics_integrator's accept_at_h_min): say how many (issue #28)
          call add_forced_steps_note(it%stats, sys, balance)
       end if
       if (n_dynamic > 0 .and. it%stats%below_h_min > 0) call add_below_minimum_note(it%stats, balance)
@@ -357,15 +357,22 @@ contains
 
    !> Append to text ("; "-separated) the run note's clause on steps shorter than the Rec 2.1
    !> minimum that report 4.4.12's reduced step took after the model refused attempts (or
-   !> they were not finite) at the minimum (adore_dynamics_integrator, ADORE's rule; issue #28).
+   !> they were not finite) at the minimum, or their error there was above what ADORE is
+   !> attested to accept (ADORE_FORCED_ERR_CAP times the limit; adore_dynamics_integrator,
+   !> ADORE's rule; issue #28).
    subroutine add_below_minimum_note(stats, text)
       type(integrator_stats_t), intent(in) :: stats
       character(len=:), allocatable, intent(inout) :: text
-      character(len=16) :: shortest
+      character(len=16) :: shortest, cap
       if (len(text) > 0) text = text//"; "
       write (shortest, "(es10.3)") stats%h_min_used
       text = text//itoa(stats%below_h_min)//" time steps shorter than the minimum step (Rec 2.1; the shortest "// &
              trim(adjustl(shortest))//" tau) after attempts the model refused at it (report 4.4.12's reduced step)"
+      if (stats%below_h_min_error > 0) then
+         write (cap, "(f16.2)") ADORE_FORCED_ERR_CAP
+         text = text//" or whose error there was above "//trim(adjustl(cap))//" times the limit, the most "// &
+                "ADORE's Appendix C run accepts at the minimum ("//itoa(stats%below_h_min_error)//" of them)"
+      end if
    end subroutine add_below_minimum_note
 
 end module adore_driver_run

@@ -26,7 +26,7 @@ module adore_driver_time_loop
    implicit none
    private
 
-   public :: run_time_loop, run_progress, INCOMPLETE_MARK
+   public :: run_time_loop, run_progress, INCOMPLETE_MARK, closure_hint
 
    !> First words of the last line of a print whose run stopped early.
    character(len=*), parameter :: INCOMPLETE_MARK = "*** RUN INCOMPLETE"
@@ -83,8 +83,9 @@ contains
       type(time_average_t) :: averages, window
       real(wp), allocatable :: dydt(:), values(:), mean(:), bal(:), bal_first(:), bal_mean(:)
       real(wp) :: t, t_old, t_event, t_stop, t_window
-      character(len=:), allocatable :: reason
+      character(len=:), allocatable :: reason, hint
       integer :: i, j, flag, stop, printed_last, n_sub, print_interval, n_events, n_report
+      integer :: n_window, forced_before, n_at_max
       logical :: print_now, events, to_time, last, in_window
 
       incomplete = ""
@@ -141,6 +142,8 @@ contains
             if (in_window) then
                call sys%balance_values(bal)
                call window%add(t - t_old, bal)
+               n_window = n_window + 1
+               if (t - t_old >= (1.0_wp - 1.0e-9_wp)*it%settings%h_max) n_at_max = n_at_max + 1
             else if (to_time .and. t >= 0.5_wp*t_stop) then
                call open_window()
             end if
@@ -183,7 +186,8 @@ contains
       if (present(balance) .and. in_window .and. size(bal) > 0) then
          if (window%elapsed > 0.0_wp) then
             call window%mean(bal_mean)
-            call sys%balance_text([t_window, t], bal_mean, bal_first, window%last, balance)
+            call closure_hint(n_window, it%stats%forced_at_h_min - forced_before, n_at_max, hint)
+            call sys%balance_text([t_window, t], bal_mean, bal_first, window%last, hint, balance)
          end if
       end if
       call write_termination(unit, i, t)
@@ -197,6 +201,9 @@ contains
       subroutine open_window()
          in_window = .true.
          t_window = t
+         n_window = 0
+         n_at_max = 0
+         forced_before = it%stats%forced_at_h_min
          call sys%balance_values(bal)
          bal_first = bal
          call window%start(bal)
@@ -249,5 +256,26 @@ contains
       end subroutine stop_run
 
    end subroutine run_time_loop
+
+   !> What limited the balance window's time steps, for the run note when its balances do
+   !> not close (issue #28): of the window's n_window accepted steps, n_forced were accepted
+   !> at (or below) the Rec 2.1 minimum step with their error above the error limit (ADORE's
+   !> rule) - then the minimum step, not the maximum, is what a deck changes; else n_at_max
+   !> were at the Rec 2.1 maximum step - then the maximum step; else every step met the error
+   !> limit between the two - then the error limit.  Text without units.
+   subroutine closure_hint(n_window, n_forced, n_at_max, hint)
+      integer, intent(in) :: n_window, n_forced, n_at_max
+      character(len=:), allocatable, intent(out) :: hint
+      if (n_forced > 0) then
+         hint = itoa(n_forced)//" of the window's "//itoa(n_window)//" time steps accepted at the minimum step "// &
+                "with their error above the error limit: a smaller Rec 2.1 minimum step resolves them"
+      else if (n_at_max > 0) then
+         hint = itoa(n_at_max)//" of the window's "//itoa(n_window)//" time steps at the maximum step: "// &
+                "a smaller Rec 2.1 maximum step does"
+      else
+         hint = "the window's "//itoa(n_window)//" time steps met the error limit between the minimum and "// &
+                "maximum steps: a smaller Rec 2.1 error limit does"
+      end if
+   end subroutine closure_hint
 
 end module adore_driver_time_loop

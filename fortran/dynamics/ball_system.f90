@@ -25,7 +25,7 @@ module adore_dynamics_ball_system
    use adore_forces_ball_bearing, only: ball_bearing_loads_t, guide_land_pairs
    use adore_dynamics_ball_motion, only: ball_bearing_rates
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
-                                        DERIV_REJECT_STEP, INT_METHOD_DP54, INT_METHOD_ARK436
+                                        DERIV_REJECT_STEP, INT_METHOD_DP54, INT_METHOD_ARK436, ADORE_FORCED_ERR_CAP
    use adore_quasistatic_ball_start, only: ball_start_t, start_contact_load
    use adore_cage_step0, only: cage_step0_t
    use adore_model_scales, only: scale_factors
@@ -441,7 +441,8 @@ contains
       associate (c => b%controls)
          settings = integrator_settings_t(int_method=ball_int_method(c%int_method), h_initial=c%step_initial, &
                                           h_min=c%step_min, h_max=c%step_max, error_limit=c%error_limit, &
-                                          rel_weight=0.0_wp, accept_at_h_min=.true.)
+                                          rel_weight=0.0_wp, accept_at_h_min=.true., &
+                                          forced_err_cap=ADORE_FORCED_ERR_CAP)
       end associate
       if (present(int_method)) settings%int_method = int_method
       if (settings%int_method == INT_METHOD_ARK436) then

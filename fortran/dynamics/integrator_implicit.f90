@@ -222,7 +222,8 @@ contains
 
    !> The end of a linearly implicit attempt (y_new and y_err set): the weighted error err
    !> (infinite when y_new is not finite) and, when the step will be accepted (err <= 1 or
-   !> accept), f at (t + h, y_new) into k(:, last), the first stage of the next step.
+   !> accept with err within settings%forced_err_cap), f at (t + h, y_new) into k(:, last), the
+   !> first stage of the next step (an attempt beyond the cap is retried: no call at its end).
    subroutine end_of_attempt(self, deriv, t, y, h, flag, err, accept)
       class(integrator_t), intent(inout) :: self
       class(derivative_t), intent(inout) :: deriv
@@ -233,7 +234,8 @@ contains
       logical, intent(in) :: accept
       if (.not. all(ieee_is_finite(self%y_new))) return
       err = self%weighted_error(y)
-      if (.not. (err <= 1.0_wp .or. accept) .or. .not. ieee_is_finite(err)) return
+      if (.not. (err <= 1.0_wp .or. (accept .and. err <= self%settings%forced_err_cap)) .or. &
+          .not. ieee_is_finite(err)) return
       call deriv%eval(t + h, self%y_new, self%k(:, self%last), flag)
       self%stats%derivative_calls = self%stats%derivative_calls + 1
       self%evaluated_new = flag == DERIV_OK

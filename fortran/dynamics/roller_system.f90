@@ -61,7 +61,7 @@ module adore_dynamics_roller_system
    use adore_forces_roller_bearing, only: roller_force_model_t, roller_pose_t, race_pose_t, roller_loads_t, &
                                           roller_loads
    use adore_dynamics_integrator, only: derivative_t, integrator_t, integrator_settings_t, DERIV_OK, DERIV_FAIL, &
-                                        INT_METHOD_ARK436
+                                        INT_METHOD_ARK436, ADORE_FORCED_ERR_CAP
    use adore_dynamics_ball_system, only: ball_int_method
    use adore_dynamics_cage_whirl, only: whirl_frame_acceleration
    implicit none
@@ -450,7 +450,7 @@ contains
       associate (c => b%controls)
          settings = integrator_settings_t(int_method=ball_int_method(c%int_method), h_initial=c%step_initial, h_min=c%step_min, &
                                           h_max=c%step_max, error_limit=c%error_limit, rel_weight=0.0_wp, &
-                                          accept_at_h_min=.true.)
+                                          accept_at_h_min=.true., forced_err_cap=ADORE_FORCED_ERR_CAP)
       end associate
       if (present(int_method)) settings%int_method = int_method
       if (settings%int_method == INT_METHOD_ARK436) then

@@ -307,7 +307,7 @@ program test_integrator
    use adore_core_constants, only: pi
    use adore_core_error, only: error_type, ADORE_INPUT_ERROR, ADORE_ENGINE_ERROR
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, derivative_t, &
-      INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436
+      INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436, ADORE_FORCED_ERR_CAP
    use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t, &
       driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t
    use adore_dynamics_block_jacobian, only: block_jacobian_t
@@ -327,6 +327,8 @@ program test_integrator
    call test_rejection_by_derivative()
    call test_minimum_step()
    call test_refused_below_minimum_step()
+   call test_forced_error_cap()
+   call test_landing_at_minimum_with_round_off()
    call test_failures()
    call test_rosenbrock_order()
    call test_rosenbrock_stiff_oscillators()
@@ -937,6 +939,94 @@ contains
                                        has(error%message, "4.4.12"), &
                                        "refused everywhere: the message names the floor and 4.4.12: "//error%message)
    end subroutine test_refused_below_minimum_step
+
+   !> ADORE's rule accepts a step at the Rec 2.1 minimum whatever its error; the decks' runs cap
+   !> it at what ADORE's Appendix C run is attested to accept (ADORE_FORCED_ERR_CAP = 17.2 times
+   !> the limit) and halve an attempt beyond it below the minimum, down to 1/1024 of it (issue
+   !> #28, session 20: a forced step 171 times the limit moved a ball 143 um in 171 ns).  y' =
+   !> -32 y with lambda h_min = 2 (steps and end time binary fractions: the landing step is
+   !> h_min exactly): uncapped, the forced steps carry errors of 1e5 and more times the limit
+   !> and y(0.25) = exp(-8) = 3.4e-4 is off by more than 1e-4; capped, every accepted step is
+   !> within the cap, the shorter steps are counted, and y(0.25) is within 1e-6.  A decay no step down
+   !> to the floor resolves (lambda h_min / 1024 = 39): an error naming the floor and the cap.
+   subroutine test_forced_error_cap()
+      type(integrator_t) :: it
+      type(decay_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1), exact, uncapped
+
+      f%lambda = 32.0_wp
+      s = settings_of(INT_METHOD_DP54, 1.0e-8_wp)
+      s%h_min = 6.25e-2_wp
+      s%h_initial = 6.25e-2_wp
+      s%accept_at_h_min = .true.
+      exact = exp(-8.0_wp)
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 0.25_wp, error)
+      if (allocated(error)) write (*, "(a)") "uncapped: "//error%message
+      call check(.not. allocated(error), "uncapped forced steps: complete")
+      uncapped = abs(y(1) - exact)
+      write (*, "(a,i0,a,es10.3,a,es10.3)") "uncapped: ", it%stats%forced_at_h_min, " forced steps, largest err ", &
+         it%stats%forced_err_max, ", error of y(0.25) ", uncapped
+      call check(it%stats%forced_err_max > ADORE_FORCED_ERR_CAP .and. uncapped > 1.0e-4_wp, &
+                 "uncapped: forced steps beyond the cap, y(0.25) = exp(-8) = 3.4e-4 off by more than 1e-4")
+
+      s%forced_err_cap = ADORE_FORCED_ERR_CAP
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 0.25_wp, error)
+      write (*, "(a,i0,a,i0,a,es10.3,a,es10.3,a,es10.3)") "capped: ", it%stats%below_h_min, " steps below h_min (", &
+         it%stats%below_h_min_error, " after an error beyond the cap), the shortest ", it%stats%h_min_used, &
+         ", largest err ", it%stats%max_truncation/s%error_limit, ", error of y(0.25) ", abs(y(1) - exact)
+      call check(.not. allocated(error) .and. abs(t - 0.25_wp) < 1.0e-14_wp, "capped: completes")
+      call check(it%stats%max_truncation <= ADORE_FORCED_ERR_CAP*s%error_limit, "capped: every accepted step within the cap")
+      call check(it%stats%below_h_min > 0 .and. it%stats%below_h_min_error == it%stats%below_h_min .and. &
+                 it%stats%h_min_used < s%h_min .and. it%stats%h_min_used >= s%h_min/1024.0_wp, &
+                 "capped: steps shorter than h_min taken after errors beyond the cap, counted, never below h_min/1024")
+      call check(abs(y(1) - exact) <= 1.0e-6_wp, "capped: y(0.25) = exp(-10) within 1e-6 (forced steps of 1.7e-7 at most)")
+
+      f%lambda = 1.0e6_wp
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 0.25_wp, error)
+      call check(allocated(error) .and. t == 0.0_wp, "capped, unresolved down to the floor: an error at the start")
+      if (allocated(error)) call check(has(error%message, "refused down to 1/1024 of it") .and. &
+                                       has(error%message, "above 17.2086 times the error limit"), &
+                                       "capped, unresolved: the message names the floor and the cap: "//error%message)
+   end subroutine test_forced_error_cap
+
+   !> Under ADORE's rule a step landing on t_limit that is longer than h_min only by the
+   !> round-off of t is at the minimum: y' = -50 y, h_min = 0.04 to t = 0.2 - after four
+   !> forced steps t = 0.16 and the landing step 0.2 - 0.16 = 0.04000000000000001; it used to
+   !> be neither forced nor shortenable and the run stopped after "101 consecutive rejected
+   !> attempts" (found in session 20); now it is forced like the others and lands on 0.2.
+   subroutine test_landing_at_minimum_with_round_off()
+      type(integrator_t) :: it
+      type(decay_t) :: f
+      type(integrator_settings_t) :: s
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(1)
+
+      f%lambda = 50.0_wp
+      s = settings_of(INT_METHOD_DP54, 1.0e-8_wp)
+      s%h_min = 4.0e-2_wp
+      s%h_initial = 4.0e-2_wp
+      s%accept_at_h_min = .true.
+      call check(0.2_wp - 4.0_wp*0.04_wp > 0.04_wp, "landing sliver: 0.2 - 0.16 is above 0.04 in round-off")
+      call it%init(1, s, error)
+      t = 0.0_wp
+      y = 1.0_wp
+      call it%advance(f, t, y, 0.2_wp, error)
+      if (allocated(error)) write (*, "(a)") "landing sliver: "//error%message
+      call check(.not. allocated(error) .and. t == 0.2_wp, "landing sliver above h_min by round-off: forced, lands")
+      call check(it%stats%forced_at_h_min == 5 .and. it%stats%rejected_error == 0, &
+                 "landing sliver: five forced steps, none rejected")
+   end subroutine test_landing_at_minimum_with_round_off
 
    !> Non-finite values, a failing derivative, a derivative refusing every step: errors.
    subroutine test_failures()

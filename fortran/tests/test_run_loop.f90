@@ -7,6 +7,7 @@ program test_run_loop
    use adore_driver_time_average, only: time_average_t
    use adore_output_run_history, only: run_history_t, history_shape, history_due, history_file_name, &
                                        write_history_csv, HISTORY_ROWS
+   use adore_driver_time_loop, only: closure_hint
    use adore_test_support, only: check, finish
    implicit none
 
@@ -14,6 +15,7 @@ program test_run_loop
    call test_averages_weight_by_time()
    call test_history_rows()
    call test_history_file()
+   call test_closure_hint()
    call finish("run loop")
 
 contains
@@ -114,5 +116,28 @@ contains
       call check(line == "# RUN INCOMPLETE after step 7 (tau = 1.0000E+00): test", "incomplete line last")
       close (unit, status="delete")
    end subroutine test_history_file
+
+   !> The run note's hint when a window's balances do not close (issue #28): the limit that
+   !> held the window's steps.  Steps forced at the minimum (ISO example 4 at 10 000 rpm and its
+   !> static capacity: 111 of the window's 150) point to the minimum step, also when some steps
+   !> reached the maximum; else steps at the maximum (Appendix C: 125 of 1 250) to the maximum
+   !> step; else steps that met the error limit to the error limit.
+   subroutine test_closure_hint()
+      character(len=:), allocatable :: hint
+      call closure_hint(150, 111, 0, hint)
+      call check(index(hint, "111 of the window's 150 time steps accepted at the minimum step") > 0 .and. &
+                 index(hint, "smaller Rec 2.1 minimum step") > 0 .and. index(hint, "maximum step") == 0, &
+                 "closure hint, forced steps: the minimum step: "//hint)
+      call closure_hint(10, 3, 5, hint)
+      call check(index(hint, "smaller Rec 2.1 minimum step") > 0 .and. index(hint, "maximum step") == 0, &
+                 "closure hint, forced steps and steps at the maximum: the minimum step: "//hint)
+      call closure_hint(1250, 0, 125, hint)
+      call check(index(hint, "125 of the window's 1250 time steps at the maximum step") > 0 .and. &
+                 index(hint, "smaller Rec 2.1 maximum step does") > 0 .and. index(hint, "minimum step") == 0, &
+                 "closure hint, steps at the maximum: the maximum step: "//hint)
+      call closure_hint(40, 0, 0, hint)
+      call check(index(hint, "smaller Rec 2.1 error limit") > 0 .and. index(hint, "maximum step does") == 0 .and. &
+                 index(hint, "minimum step resolves") == 0, "closure hint, steps within the limits: the error limit: "//hint)
+   end subroutine test_closure_hint
 
 end program test_run_loop
