@@ -382,7 +382,12 @@ def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
     centred (`cage="centred"`), the premise of "nothing lost in collisions": a free cage (the
     default for this deck's Rec 3.3) adds the work of its films (guide-land film on, pocket
     films) at 60 000 rpm to the cage work: 150 W of 8.2 kW, no metallic friction heat
-    (measured 2026-11-27), which is no collision loss."""
+    (measured 2026-11-27), which is no collision loss.  The run names the IMEX method
+    (``integrator="ark4"``), whose run these measurements are: on the deck's method this run
+    now takes ROS34PW2 from its first step (its balls' spin relaxation rate times the minimum
+    step is far above 1; docs/integrator.md, "Step control"), balances better (closure -0.0015
+    against -0.048) and its cage's pocket films take 0.75 W, 1.2e-4 of the dissipation,
+    against 0.064 W (measured 2026-11-27)."""
     path, force = _variant(tmp_path, EXAMPLES / "deep_groove_combined_clearance.inp", "dgc", speed=60000.0,
                            load=17540.0, fit=0.0)
     balls, summary = _core.ball_step0_from_deck(path)
@@ -399,7 +404,8 @@ def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
     weight = np.array([0.0, 0.0, at_rest["inner_force_z"] + force[2]])
     assert weight[2] > 0.0
     assert np.linalg.norm(race + force - weight) <= 1e-6
-    result = pyadore.run(path, steps=300, out=tmp_path / "dgc.prt", history_element=4, cage="centred")
+    result = pyadore.run(path, steps=300, out=tmp_path / "dgc.prt", history_element=4, cage="centred",
+                         integrator="ark4")
     assert result.steps_integrated == 300
     assert np.max(result.time_history["pocket4_force_N"]) < 1.0
     # where the power goes: the race contacts (6.5 kW), not the cage pockets (the stopped run
@@ -470,12 +476,17 @@ def test_elastic_film_resolves_the_slip_at_60000_rpm(tmp_path):
     the drive torque's error at those steps and differs between builds that differ only at
     round-off (0.004-0.028 over session 18's builds), so it is not asserted there.  The cage is held centred: the subject is the films (with the
     deck's free cage on main's starved guide lands the 300 steps are still a cage transient:
-    closure 0.040, also without a forced step)."""
+    closure 0.040, also without a forced step).  Every run here names the IMEX method
+    (``integrator="ark4"``), the method of these measurements: on the deck's method the
+    viscous run now takes ROS34PW2 from its first step and forces no step
+    (test_heavy_fast_runs_take_rosenbrock_from_the_first_step); the elastic film at the
+    tighter limit takes ROS34PW2 too (relaxation rate times minimum step 2.7), with one of its
+    300 steps forced and closure -6e-5 (measured 2026-11-27)."""
     from pyadore.api import parse_forced_diagnosis, parse_forced_steps
 
     path, force = _variant(tmp_path, EXAMPLES / "iso16281_ex1_radial.inp", "iso1", speed=60000.0, load=10000.0,
                            fit=0.0)
-    viscous = pyadore.run(path, steps=300, out=tmp_path / "viscous.prt", cage="centred")
+    viscous = pyadore.run(path, steps=300, out=tmp_path / "viscous.prt", cage="centred", integrator="ark4")
     forced = parse_forced_steps(" ".join(viscous.notes))
     assert forced is not None and forced[0] >= 100
     # the run note's diagnosis names the cause: a ball's angular velocity (the slip mode)
@@ -486,13 +497,13 @@ def test_elastic_film_resolves_the_slip_at_60000_rpm(tmp_path):
     assert diagnosis["leaders"] and sum(n for _, n in diagnosis["leaders"]) <= forced[0]
     assert re.fullmatch(r"ball \d+'s angular velocity \(body [xyz]\)", diagnosis["leaders"][0][0])
     result = _runs_and_carries_its_load(path, force, tmp_path / "elastic.prt", cage="centred",
-                                        film_shear_modulus=1.0e9)
+                                        film_shear_modulus=1.0e9, integrator="ark4")
     assert parse_forced_steps(" ".join(result.notes)) is None
     deck = read_deck(path)
     deck.set("2.1", "error_limit", 1.0e-5)
     deck.save(tmp_path / "iso1_tight.inp")
     tight = _runs_and_carries_its_load(tmp_path / "iso1_tight.inp", force, tmp_path / "tight.prt", cage="centred",
-                                       film_shear_modulus=1.0e9)
+                                       film_shear_modulus=1.0e9, integrator="ark4")
     assert parse_forced_steps(" ".join(tight.notes)) is None
     assert abs(tight.balance["closure"]) <= 0.01
 
@@ -510,12 +521,14 @@ def test_heavy_thrust_at_speed_forced_steps_within_adores_largest_and_hinted(tmp
     "a smaller Rec 2.1 maximum step does" while most of the window's steps sat at the minimum.
     Asserted: the 300 steps run (the unresolved class: 221 forced, closure -1.35, the inner
     race's residual 1 338 N of 30 390 measured), every forced step within ADORE's largest
-    error, and the hint names the minimum step."""
+    error, and the hint names the minimum step.  The IMEX method named as a run option
+    (``integrator="ark4"``): the deck's method now runs this case on ROS34PW2
+    (test_heavy_fast_runs_take_rosenbrock_from_the_first_step)."""
     from pyadore.api import parse_forced_diagnosis, parse_forced_steps
 
     path, force = _variant(tmp_path, EXAMPLES / "iso16281_ex4_axial_clearance.inp", "iso4", speed=10000.0,
                            load=30390.0, fit=2.0e-5)
-    result = pyadore.run(path, steps=300, out=tmp_path / "iso4.prt")
+    result = pyadore.run(path, steps=300, out=tmp_path / "iso4.prt", integrator="ark4")
     assert result.steps_integrated == 300
     note = " ".join(result.notes)
     forced = parse_forced_steps(note)
@@ -539,13 +552,14 @@ def test_a_forced_step_beyond_adores_largest_error_is_retried_not_taken(tmp_path
     minimum: the 300 steps run (still the unresolved class: 263 forced, within the cap), the
     balls orbit within 2.6 % of the cage's speed, move 1.5 um axially and touch their pockets
     with 0.08 N at most (measured).  Bounds: 10 %, 10 um, 1 N.  Which step of a forced run
-    goes wrong is the round-off realisation's; this case holds it on today's build."""
+    goes wrong is the round-off realisation's; this case holds it on today's build.  The IMEX
+    method named as a run option (the deck's method runs this case on ROS34PW2 now)."""
     from pyadore.api import parse_forced_diagnosis
     from pyadore.results import results_arrays
 
     path, _ = _variant(tmp_path, EXAMPLES / "deep_groove_combined_clearance.inp", "dgcc", speed=10000.0,
                        load=17540.0, fit=2.0e-5)
-    result = pyadore.run(path, steps=300, out=tmp_path / "dgcc.prt")
+    result = pyadore.run(path, steps=300, out=tmp_path / "dgcc.prt", integrator="ark4")
     assert result.steps_integrated == 300
     diagnosis = parse_forced_diagnosis(" ".join(result.notes))
     assert diagnosis is not None and diagnosis["err_max"] <= 17.2086
@@ -556,6 +570,29 @@ def test_a_forced_step_beyond_adores_largest_error_is_retried_not_taken(tmp_path
     assert np.max(np.abs(orbit / cage[:, None] - 1.0)) < 0.10
     assert np.max(axial.max(axis=0) - axial.min(axis=0)) < 10e-6
     assert np.nanmax(np.asarray(data["pocket_force_N"].values)) < 1.0
+
+
+def test_heavy_fast_runs_take_rosenbrock_from_the_first_step(tmp_path):
+    """The deep-groove combined deck with clearance at 10 000 rpm, its static capacity 17 540 N
+    and +20 um (as above) on the deck's method: the balls' spin relaxes within the Rec 2.1
+    minimum step (the first block Jacobian's -d(omega')/d(omega) times the minimum step is far
+    above 1; Appendix C's is 0.037), so the run is integrated by ROS34PW2 from its first step
+    and the run note says so.  The IMEX method forced 263 of its 300 steps at the minimum and
+    did not balance (closure -1.6); ROS34PW2 forces none and balances: drive power = dissipation
+    + energy change within 1 %, the inner race's contact force against the applied load within
+    1 % (measured: closure -0.0011, residual 3.3 N of 17 540)."""
+    from pyadore.api import parse_forced_steps
+
+    path, force = _variant(tmp_path, EXAMPLES / "deep_groove_combined_clearance.inp", "dgcc_ros", speed=10000.0,
+                           load=17540.0, fit=2.0e-5)
+    result = pyadore.run(path, steps=300, out=tmp_path / "dgcc_ros.prt")
+    note = " ".join(result.notes)
+    assert result.steps_integrated == 300
+    measure = float(re.search(r"relaxation rate times minimum step (\S+) at the first step", note).group(1))
+    assert measure > 1.0 and "integrated by ROS34PW2 instead of the deck's IMEX method" in note
+    assert parse_forced_steps(note) is None
+    assert abs(result.balance["closure"]) < 0.01
+    assert result.balance["inner_residual_N"] < 0.01 * float(np.linalg.norm(force))
 
 
 def test_forced_step_diagnosis_parsing():

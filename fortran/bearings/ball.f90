@@ -240,7 +240,8 @@ contains
       call start_ball_dynamics(self%bearing, self%step0%geometry, self%step0%start, self%step0%cage_start, self%eom, it, y, &
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &
                                int_method=method, cage_free=cage_free, &
-                               adore_whirl=self%options%cage_whirl == "adore")
+                               adore_whirl=self%options%cage_whirl == "adore", &
+                               method_switch=self%options%integrator == "deck")
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
       self%eom%rolling_resistance = self%options%rolling_resistance

@@ -240,6 +240,7 @@ contains
          call add_forced_steps_note(it%stats, sys, balance)
       end if
       if (n_dynamic > 0 .and. it%stats%below_h_min > 0) call add_below_minimum_note(it%stats, balance)
+      if (n_dynamic > 0 .and. it%stats%switched) call add_switch_note(it%stats, balance)
       if (len(balance) > 0) then
          if (len(run_note) > 0) then
             run_note = run_note//"; "//balance
@@ -374,5 +375,19 @@ contains
                 "ADORE's Appendix C run accepts at the minimum ("//itoa(stats%below_h_min_error)//" of them)"
       end if
    end subroutine add_below_minimum_note
+
+   !> Append to text ("; "-separated) the run note's clause on the deck's IMEX method giving
+   !> way to ROS34PW2 from the first step (integrator_settings_t%switch_stiffness; issue #28):
+   !> the balls' fastest spin relaxation rate times the Rec 2.1 minimum step.
+   subroutine add_switch_note(stats, text)
+      type(integrator_stats_t), intent(in) :: stats
+      character(len=:), allocatable, intent(inout) :: text
+      character(len=16) :: measure
+      if (len(text) > 0) text = text//"; "
+      write (measure, "(es10.3)") stats%switch_measure
+      text = text//"integrated by ROS34PW2 instead of the deck's IMEX method ARK4(3)6L[2]SA: a ball's spin "// &
+             "relaxes within the minimum step (Rec 2.1; relaxation rate times minimum step "// &
+             trim(adjustl(measure))//" at the first step, above 1; docs/integrator.md)"
+   end subroutine add_switch_note
 
 end module adore_driver_run

@@ -33,13 +33,25 @@ module adore_dynamics_ball_system
    private
 
    public :: ball_system_t, new_ball_system, initial_ball_state, state_error_scale, start_ball_dynamics
-   public :: ball_int_method, BALL_JACOBIAN_COLUMNS
+   public :: ball_int_method, BALL_JACOBIAN_COLUMNS, BALL_SWITCH_STIFFNESS, BALL_SPIN_COLUMNS
 
    !> The columns of each ball's block of the Jacobian of the linearly implicit methods (of its
    !> 13 state values): position and velocity, where the race contacts' normal stiffness and
    !> damping act, and angular velocity, where the traction's slip damping acts
    !> (docs/integrator.md, "The stiff-aware method")
    integer, parameter :: BALL_JACOBIAN_COLUMNS(9) = [1, 2, 3, 4, 5, 6, 11, 12, 13]
+
+   !> A ball's angular velocity in its block of 13 (the traction's slip damping acts there)
+   integer, parameter :: BALL_SPIN_COLUMNS(3) = [11, 12, 13]
+
+   !> The deck's IMEX method gives way to ROS34PW2 (start_ball_dynamics' method_switch) when a
+   !> ball's spin relaxation rate -d(omega')/d(omega) (the first block Jacobian's diagonal)
+   !> times the Rec 2.1 minimum step exceeds this: the traction then damps the spin within a
+   !> minimum step.  Measured at step 0 (2026-11-27, issue #28): Appendix C 0.037, the grid's
+   !> light loads below 0.003, a 1 kN deep-groove at 3 000 rpm 0.03; the heavily loaded fast
+   !> runs whose every step the IMEX method forced at the minimum 17-364, and these run
+   !> unforced on ROS34PW2 (docs/integrator.md, "Step control")
+   real(wp), parameter :: BALL_SWITCH_STIFFNESS = 1.0_wp
 
    !> The ball bearing's equations of motion dy/dtau (integrator's derivative_t).
    type, extends(derivative_t) :: ball_system_t
@@ -385,7 +397,7 @@ contains
    !> show: docs/dynamics.md), the packed initial state y at tau = 0.  traction: race
    !> traction on (default); two_d: the two-dimensional race traction (default .true.).
    subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d, orbit_frame, int_method, &
-                                  cage_free, adore_whirl)
+                                  cage_free, adore_whirl, method_switch)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_start_t), intent(in) :: start
@@ -405,6 +417,10 @@ contains
       logical, intent(in), optional :: cage_free
       !> a free cage in ADORE's whirl coordinates (ball_system_t%adore_whirl; default .false.)
       logical, intent(in), optional :: adore_whirl
+      !> the deck's IMEX method gives way to ROS34PW2 from the first step when the balls' spin
+      !> relaxes faster than the Rec 2.1 minimum step can follow (BALL_SWITCH_STIFFNESS; the
+      !> deck's method, not one a run option names); default .false.
+      logical, intent(in), optional :: method_switch
       real(wp) :: scales(3), l, tt
       integer :: k
       type(bearing_state_t) :: st
@@ -452,6 +468,12 @@ contains
          ! damping at 20, 0.2 mW at 10, 27 mW before the border); safety factor 0.8 (0.9 rejected 29 % of the attempts)
          settings%jacobian_every = 10
          settings%safety = 0.8_wp
+         if (present(method_switch)) then
+            if (method_switch) then
+               settings%switch_stiffness = BALL_SWITCH_STIFFNESS
+               settings%switch_columns = BALL_SPIN_COLUMNS
+            end if
+         end if
       end if
       if (sys%orbit_frame) then
          call it%init(size(y), settings, error, scale=state_error_scale(b%n_elements, l, tt, 0.5_wp*b%dm))

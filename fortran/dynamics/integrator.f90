@@ -109,6 +109,13 @@ module adore_dynamics_integrator
       integer :: jacobian_every = 10
       !> safety factor of the step-size controller (DOPRI5's 0.9; in (0, 1])
       real(wp) :: safety = 0.9_wp
+      !> IMEX method with block Jacobians: when the first block Jacobian shows a relaxation rate
+      !> -J_cc (unknown c of a block, c one of switch_columns, 1..m) above switch_stiffness / h_min,
+      !> the run is integrated by the Rosenbrock-W method ROS34PW2 instead (on the same blocks,
+      !> safety factor 0.9), from its first step: a mode the deck's minimum step cannot follow
+      !> (issue #28; docs/integrator.md, "Step control").  0 (the default): never.
+      real(wp) :: switch_stiffness = 0.0_wp
+      integer, allocatable :: switch_columns(:)
    end type integrator_settings_t
 
    !> Counts for "Statistics of this Run" (Appendix C) and diagnostics.
@@ -135,6 +142,10 @@ module adore_dynamics_integrator
       real(wp) :: max_truncation = 0.0_wp   !< Max Truncation: largest err * error_limit accepted
       integer :: jacobians = 0              !< block Jacobians evaluated (Rosenbrock-W)
       integer :: jacobian_calls = 0         !< derivative calls spent on them (in derivative_calls)
+      !> the largest -J_cc h_min of settings%switch_columns at the first block Jacobian (the
+      !> method switch's measure; 0 when not measured) and whether the run switched to ROS34PW2
+      real(wp) :: switch_measure = 0.0_wp
+      logical :: switched = .false.
    end type integrator_stats_t
 
    !> The integrator: settings, method, workspace, step proposal and statistics.
@@ -291,9 +302,9 @@ contains
             return
          end if
          if (.not. (s%rel_weight >= 0.0_wp .and. s%max_rejections >= 1 .and. n >= 1 .and. s%jacobian_every >= 1 .and. &
-                   s%safety > 0.0_wp .and. s%safety <= 1.0_wp)) then
+                   s%safety > 0.0_wp .and. s%safety <= 1.0_wp .and. s%switch_stiffness >= 0.0_wp)) then
             call engine_error(error, "integrator: expected rel_weight >= 0, max_rejections >= 1, "// &
-                              "jacobian_every >= 1, 0 < safety <= 1 and n >= 1 (n = "//itoa(n)// &
+                              "jacobian_every >= 1, 0 < safety <= 1, switch_stiffness >= 0 and n >= 1 (n = "//itoa(n)// &
                               ", max_rejections = "//itoa(s%max_rejections)//")")
          end if
          if (allocated(error)) return
@@ -323,10 +334,12 @@ contains
          allocate (self%u(n, self%ros%stages))
          k = self%ros%error_order
       else if (self%imex) then
-         ! k(:, i): f at stage i; k(:, s + 1): f at y_new; u(:, i): J z_i
+         ! k(:, i): f at stage i; k(:, s + 1): f at y_new; u(:, i): J z_i (also large enough for
+         ! ROS34PW2's k and u after a switch: settings%switch_stiffness)
          self%last = self%ark%stages + 1
          allocate (self%u(n, self%ark%stages))
          k = self%ark%error_order
+         if (settings%switch_stiffness > 0.0_wp) self%ros = ros34pw2()
       else
          self%last = self%tab%stages
          k = self%tab%error_order
@@ -387,6 +400,8 @@ contains
       if (self%jac%active() .and. (self%jac_age < 0 .or. self%jac_age >= self%settings%jacobian_every)) then
          call block_jacobian(self, deriv, t, y, error)
          if (allocated(error)) return
+         if (self%imex .and. self%settings%switch_stiffness > 0.0_wp .and. self%stats%accepted == 0) &
+            call stiffness_switch(self)
       end if
 
       h_min = self%settings%h_min
@@ -544,6 +559,37 @@ contains
       if (clipped) h = max(h, h_plan)   ! a step shortened to land on t_limit does not shrink the plan
       self%h_next = min(max(h, h_min), self%settings%h_max)
    end subroutine step
+
+   !> At the first block Jacobian of an IMEX run (settings%switch_stiffness): the largest
+   !> relaxation rate -J_cc of settings%switch_columns over the blocks times h_min
+   !> (stats%switch_measure, dimensionless); above switch_stiffness the run goes on with
+   !> ROS34PW2 from this first step - the same Jacobian, its controller exponents (error order
+   !> 3) and DOPRI5's safety factor 0.9 (issue #28; the automatic method choice of LSODA,
+   !> Petzold 1983, here from the Jacobian before the first step).
+   subroutine stiffness_switch(self)
+      class(integrator_t), intent(inout) :: self
+      type(integrator_settings_t) :: defaults
+      integer :: b, c
+      real(wp) :: rate
+      if (.not. allocated(self%settings%switch_columns)) return
+      rate = 0.0_wp
+      do b = 1, size(self%jac%j, 3)
+         do c = 1, size(self%settings%switch_columns)
+            associate (i => self%settings%switch_columns(c))
+               if (i >= 1 .and. i <= size(self%jac%j, 1)) rate = max(rate, -self%jac%j(i, i, b))
+            end associate
+         end do
+      end do
+      self%stats%switch_measure = rate*self%settings%h_min
+      if (.not. self%stats%switch_measure > self%settings%switch_stiffness) return
+      self%imex = .false.
+      self%rosenbrock = .true.
+      self%last = self%ros%stages + 1
+      self%beta = 0.2_wp/self%ros%error_order
+      self%alpha = 1.0_wp/self%ros%error_order - 0.75_wp*self%beta
+      self%settings%safety = defaults%safety
+      self%stats%switched = .true.
+   end subroutine stiffness_switch
 
    !> Integrate from (t, y) to t_out (same unit as t), landing on it; t = t_out on return.
    subroutine advance(self, deriv, t, y, t_out, error)

@@ -84,9 +84,10 @@ module adore_model_run_options
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
       character(len=16) :: ball_frame = "orbit"
-      !> the integration method: "deck" (Rec 1 INT METHOD: 5 is the Rosenbrock-W method
-      !> ROS34PW2 for ball decks, docs/dynamics.md), "ros34pw2", "dp5" (Dormand-Prince 5(4))
-      !> or "bs3" (Bogacki-Shampine 3(2))
+      !> the integration method: "deck" (Rec 1 INT METHOD: 5 is the IMEX method ARK4(3)6L[2]SA
+      !> for ball decks, ROS34PW2 from the first step when a ball's spin relaxes within the
+      !> minimum step; docs/integrator.md), "ark4", "ros34pw2", "dp5" (Dormand-Prince 5(4)) or
+      !> "bs3" (Bogacki-Shampine 3(2))
       character(len=16) :: integrator = "deck"
       !> simulated time of the time integration (s): the run ends exactly there, its last
       !> step printed, instead of after a step count; 0: the step count

@@ -332,6 +332,7 @@ program test_integrator
    call test_failures()
    call test_rosenbrock_order()
    call test_rosenbrock_stiff_oscillators()
+   call test_stiffness_switch()
    call test_arrowhead_against_dense()
    call test_bordered_stiff_shaker()
 
@@ -583,6 +584,67 @@ contains
       end do
       call check(all(steps(3) > 4*steps(1:2)), "stiff oscillators: DP5 needs more than 4 times the steps")
    end subroutine test_rosenbrock_stiff_oscillators
+
+   !> The IMEX method's switch to ROS34PW2 at its first block Jacobian (settings%switch_stiffness,
+   !> switch_columns; issue #28): on the driven oscillators (linear: J is constant) the measure
+   !> is the largest -J_cc of the switch columns times h_min; above the threshold the run is
+   !> ROS34PW2's from the start bit for bit (state, steps, calls), below it the IMEX run's.
+   subroutine test_stiffness_switch()
+      type(integrator_t) :: it, ref
+      type(driven_oscillators_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(5), t_ref, y_ref(5), rate
+      integer :: case, b
+      real(wp), parameter :: threshold(2) = [1.0e-4_wp, 1.0e-2_wp]
+      integer, parameter :: reference(2) = [INT_METHOD_ROS34PW2, INT_METHOD_ARK436]
+
+      f%omega = [1000.0_wp, 3000.0_wp]
+      do case = 1, 2
+         call stiff_switch_start(it, INT_METHOD_ARK436, threshold(case), error)
+         call stiff_switch_start(ref, reference(case), 0.0_wp, error)
+         t = 0.0_wp
+         y = driven_exact(f, t)
+         t_ref = t
+         y_ref = y
+         do while (t < 1.0_wp .and. .not. allocated(error))
+            call it%step(f, t, y, error, t_limit=1.0_wp)
+         end do
+         do while (t_ref < 1.0_wp .and. .not. allocated(error))
+            call ref%step(f, t_ref, y_ref, error, t_limit=1.0_wp)
+         end do
+         call check(.not. allocated(error), "stiffness switch: integrated to t = 1")
+         rate = 0.0_wp
+         do b = 1, 2
+            rate = max(rate, -it%jac%j(2, 2, b))
+         end do
+         call check(abs(it%stats%switch_measure - rate*it%settings%h_min) <= 1.0e-12_wp*rate*it%settings%h_min &
+                    .and. rate > 0.0_wp, "stiffness switch: the measure is the largest -J_cc times h_min")
+         call check(it%stats%switched .eqv. (case == 1), "stiffness switch: switched above the threshold only")
+         call check(all(y == y_ref) .and. t == t_ref .and. it%stats%accepted == ref%stats%accepted .and. &
+                    it%stats%derivative_calls == ref%stats%derivative_calls, &
+                    "stiffness switch: the run is the reference method's bit for bit")
+         write (*, "(a,es10.3,a,l2,a,i0,a,i0,a)") "stiffness switch: measure ", it%stats%switch_measure, &
+            ", switched", it%stats%switched, " (", it%stats%accepted, " steps, ", it%stats%derivative_calls, " calls)"
+      end do
+   end subroutine test_stiffness_switch
+
+   !> test_stiffness_switch's run: the driven oscillators' blocks, the switch on their velocity.
+   subroutine stiff_switch_start(run, method, stiffness, error)
+      type(integrator_t), intent(out) :: run
+      integer, intent(in) :: method
+      real(wp), intent(in) :: stiffness
+      type(error_type), allocatable, intent(out) :: error
+      type(integrator_settings_t) :: s
+      s = settings_of(method, 1.0e-3_wp)
+      s%h_max = 10.0_wp
+      s%h_initial = 1.0e-3_wp
+      s%rel_weight = 0.0_wp
+      s%switch_stiffness = stiffness
+      s%switch_columns = [2]
+      call run%init(5, s, error, scale=[1.0_wp, 1.0e3_wp, 1.0_wp, 3.0e3_wp, 1.0_wp])
+      if (allocated(error)) return
+      call run%set_jacobian_blocks([1, 3], 2, [1, 2], error)
+   end subroutine stiff_switch_start
 
    real(wp) function fixed_step_error(method, h, nsteps) result(err)
       integer, intent(in) :: method, nsteps
