@@ -205,8 +205,8 @@ module adore_model_run_options
                     "coordinates of the balls in the integrated state: orbit-following (report eq 54: axial, "// &
                     "radial, azimuth) or inertial cartesian"), &
       option_spec_t("integrator", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,ark4,ros34pw2,dp5,bs3", &
-                    "integration method: the deck's INT METHOD (5: ark4 for balls), IMEX ARK4(3)6L[2]SA, "// &
-                    "Rosenbrock-W ROS34PW2, Dormand-Prince 5(4) or Bogacki-Shampine 3(2)"), &
+                    "integration method: the deck's INT METHOD (5: ark4; ros34pw2 if a ball's spin is stiff), "// &
+                    "IMEX ARK4(3)6L[2]SA, Rosenbrock-W ROS34PW2, DOPRI 5(4) or BS 3(2)"), &
       option_spec_t("cage", OPTION_CHOICE, "deck", 0, "", "NAME", "deck,centred,free", &
                     "cage DOFs (report 4.4.6): as the deck's Rec 3.3 says (all zeros: free), centred (translation "// &
                     "and tilt constrained) or free (all six, land films on)"), &
