@@ -79,7 +79,9 @@ RECORDS: tuple[RecordSpec, ...] = (
         F("rec1_flag_13", "int", "-", "unknown; 0 in both decks, not echoed", "", "unknown", default=0),
         F("int_method", "int", "-", "integration method (echo INT METHOD; 5 in both decks): 5 = "
           "the deck's production method (ball dynamics: ARK4(3)6L[2]SA with the balls' contact blocks "
-          "implicit), 3 = Bogacki-Shampine 3(2); assumed (docs/integrator.md, \"INT METHOD\")", "", "echo", choices=(3, 5)),
+          "implicit; ROS34PW2 from the first step where a ball's spin relaxes within the minimum step, "
+          "docs/integrator.md \"Step control\"), 3 = Bogacki-Shampine 3(2); assumed (docs/integrator.md, "
+          "\"INT METHOD\")", "", "echo", choices=(3, 5)),
     ), section="4.4.5, 4.4.6; echo: SCALE FACTORS AND OUTPUT CONTROLS",
         notes="The last three fields stand apart from the first eleven in the text copy of both listings."),
     RecordSpec("2.1", "Step size information", (
