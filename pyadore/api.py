@@ -297,7 +297,7 @@ def parse_balance(note: str) -> dict | None:
             "energy_rate_W": v[9], "whirl_frame_W": v[10], "drive_ratio": v[11],
             "inner_force_N": tuple(v[12:15]), "inner_carried_N": tuple(v[15:18]), "inner_residual_N": v[18],
             "outer_force_N": tuple(v[19:22]), "outer_expected_N": tuple(v[22:25]), "outer_residual_N": v[25],
-            "closure": _closure(v[3], v[4], v[9], v[10])}
+            "closure": _printed_closure(note, v)}
 
 
 def parse_forced_steps(note: str) -> tuple[int, int] | None:
@@ -325,6 +325,17 @@ def parse_forced_diagnosis(note: str) -> dict | None:
     leaders = [(name, int(steps)) for name, steps in re.findall(r"(.+?) at (\d+)(?:, |$)", m.group(3))
                if name != "other unknowns"]
     return {"err_max": float(m.group(1)), "within_2": int(m.group(2)), "leaders": leaders}
+
+
+def _printed_closure(note: str, v: list) -> float:
+    """The note's closure, which the engine computes from its full-precision means (a small
+    closure is a difference of large terms, lost in their five printed digits); from the
+    printed terms when the note has none."""
+    import re
+
+    m = re.search(r"closure \(drive - dissipation - energy change - whirl frame\)/max\(\|drive\|, dissipation, 1 uW\)"
+                  + _NUM, note)
+    return float(m.group(1)) if m else _closure(v[3], v[4], v[9], v[10])
 
 
 def _closure(drive: float, dissipation: float, rate: float, whirl_frame: float = 0.0) -> float:

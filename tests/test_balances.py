@@ -129,7 +129,7 @@ def test_axial_deck_balances_at_its_own_error_limit(tmp_path):
     bal = result.balance
     closure = bal["drive_power_W"] - bal["dissipation_W"] - bal["energy_rate_W"] - bal["whirl_frame_W"]
     assert abs(closure) <= 0.01 * max(abs(bal["drive_power_W"]), bal["dissipation_W"])
-    assert not any("do not resolve the drive torque" in n for n in result.notes)
+    assert not any("do not resolve the power balance" in n for n in result.notes)
 
 
 def _printed_cage_mass(text: str) -> float:
@@ -171,17 +171,26 @@ def test_whirl_frame_power_closes_the_free_cage_balance(tmp_path):
     assert mean == pytest.approx(a["whirl_frame_W"], rel=0.01)
 
 
-def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
-    """The deep-groove deck at its own Rec 2.1 (error limit 1e-4, maximum step 0.3 tau),
-    0.1 revolutions: the drive power misses the dissipation plus the energy change, and the
-    note says so (closure above 0.01: -0.023 measured in session 18; 0.49 before the
-    arrowhead Jacobian's border rows reached the runs, docs/dynamics.md).  The same run with a maximum
-    step of 0.03 tau closes within 1 % (docs/operating-points.md, "What misses at the
-    deck's settings"); against it the long steps' drive power is off far more than their
-    dissipation: the drive torque is what they do not resolve.  Both runs shear the deck's
-    thin films (5e-8 m at 1 000 rpm, film parameter below 1) as EHD films
-    (boundary_lambda=0 and no mixed band, full_film_lambda=0): the EHD traction's small-slip
-    stiffness is what the deck's steps do not resolve (docs/tribology.md, "Thin films")."""
+def _closure_of_terms(b: dict) -> float:
+    """The closure recomputed from Result.balance's printed terms (five digits each): the
+    engine's own (Result.balance["closure"], from its full-precision means) agrees with it
+    within their rounding."""
+    drive, dissipation = b["drive_power_W"], b["dissipation_W"]
+    return (drive - dissipation - b["energy_rate_W"] - b["whirl_frame_W"]) / max(abs(drive), dissipation, 1e-6)
+
+
+def test_stage_quadrature_closes_the_balance_at_the_decks_steps(tmp_path):
+    """The deep-groove deck at its own Rec 2.1 (error limit 1e-4, maximum step 0.3 tau), 0.1
+    revolutions, the deck's method (the IMEX ARK4): the balance window's means are the
+    method's own quadrature of the balance values at its stages (integrator_t's
+    start_quadrature), so the drive torque's fast part, which the steps pass over, is
+    integrated as the steps move the state, not sampled at their ends.  The balance closes
+    (closure -9e-6 measured; -0.023 by the steps' ends in sessions 18-20, flagged "the time
+    steps do not resolve the drive torque", as the note then said) and the drive power is the resolved run's (maximum
+    step 0.03 tau: 0.056166 W against 0.056173 W).  Both runs shear the deck's thin films
+    (5e-8 m at 1 000 rpm, film parameter below 1) as EHD films (boundary_lambda=0 and no mixed
+    band, full_film_lambda=0): the EHD traction's small-slip stiffness is what the deck's steps
+    pass over (docs/tribology.md, "Thin films")."""
     deck = read_deck(DEEP_GROOVE)
     loose = pyadore.run(DEEP_GROOVE, revolutions=0.1, out=tmp_path / "deck.prt", boundary_lambda=0, full_film_lambda=0)
     deck.set("2.1", "step_initial", 0.03)
@@ -189,24 +198,45 @@ def test_closure_flags_a_drive_torque_the_steps_do_not_resolve(tmp_path):
     deck.save(tmp_path / "short.inp")
     short = pyadore.run(tmp_path / "short.inp", revolutions=0.1, out=tmp_path / "short.prt", boundary_lambda=0,
                         full_film_lambda=0)
-    note = next(n for n in loose.notes if "closure" in n)
-    printed = float(re.search(r"closure \(drive - dissipation - energy change - whirl frame\)/max\(\|drive\|, dissipation, "
-                                 r"1 uW\)\s+(\S+),",
-                              note).group(1))
-    assert printed == pytest.approx(loose.balance["closure"], rel=1e-3, abs=1e-3)
-    assert abs(loose.balance["closure"]) > 0.01 and "do not resolve the drive torque" in note
-    # the note's hint names the limit that held the window's steps: here the maximum step (52 of
-    # the window's 53 at it, measured session 20), what the short run below changes
-    hint = re.search(r"do not resolve the drive torque \(([^;]*);", note).group(1)
-    assert "time steps at the maximum step: a smaller Rec 2.1 maximum step does" in hint
-    assert abs(short.balance["closure"]) <= 0.01
-    assert not any("do not resolve the drive torque" in n for n in short.notes)
-    # the long steps' error is in the drive torque: relative to the resolved run the drive
-    # power is off more than ten times as much as the dissipation
+    assert loose.balance["closure"] == pytest.approx(_closure_of_terms(loose.balance), abs=3e-4)
+    for run in (loose, short):
+        assert abs(run.balance["closure"]) <= 1e-3
+        assert not any("do not resolve the power balance" in n for n in run.notes)
     a, b = loose.balance, short.balance
-    drive_error = abs(a["drive_power_W"] - b["drive_power_W"]) / abs(b["drive_power_W"])
-    dissipation_error = abs(a["dissipation_W"] - b["dissipation_W"]) / b["dissipation_W"]
-    assert drive_error > 10.0 * dissipation_error
+    assert a["drive_power_W"] == pytest.approx(b["drive_power_W"], rel=1e-3)
+    assert a["dissipation_W"] == pytest.approx(b["dissipation_W"], rel=1e-3)
+
+
+def test_closure_flags_what_the_steps_do_not_resolve(tmp_path):
+    """ISO example 3 (radial clearance) at 10 000 rpm, 1 kN and a +20 um fit, 300 steps at its
+    own Rec 2.1 (maximum step 0.3 tau): 90 of the balance window's 150 steps at the maximum,
+    and the run's dissipation itself is off (0.686 W against 0.670 W resolved): the closure
+    (-0.0175 measured) is above 0.01 and the note says so, naming the maximum step.  With a
+    maximum step of 0.1 tau the same run closes (1.7e-6 measured over the same time).  (By the
+    steps' ends, before the stage quadrature, the loose run's closure was -0.92: its drive
+    power 0.30 W against 0.91 W.)"""
+    deck = read_deck(ROOT / "decks" / "examples" / "iso16281_ex3_radial_clearance.inp")
+    force = np.array([deck.lookup(f"applied_force_{c}") for c in "xyz"], dtype=float)
+    force = force / np.linalg.norm(force) * 1000.0
+    for c, v in zip("xyz", force):
+        deck.set("9.1.1", f"applied_force_{c}", float(f"{v:.4E}"))
+    deck.set("9.1.2", "inner_race_speed", 10000.0)
+    deck.set("9.0", "inner_race_fit", 2e-5)
+    deck.save(tmp_path / "loose.inp")
+    loose = pyadore.run(tmp_path / "loose.inp", steps=300, out=tmp_path / "loose.prt")
+    note = next(n for n in loose.notes if "closure" in n)
+    assert loose.balance["closure"] == pytest.approx(_closure_of_terms(loose.balance), abs=3e-4)
+    assert abs(loose.balance["closure"]) > 0.01 and "do not resolve the power balance" in note
+    hint = re.search(r"do not resolve the power balance \(([^;]*);", note).group(1)
+    assert "time steps at the maximum step: a smaller Rec 2.1 maximum step does" in hint
+    deck.set("2.1", "step_initial", 0.005)
+    deck.set("2.1", "step_max", 0.1)
+    deck.save(tmp_path / "short.inp")
+    short = pyadore.run(tmp_path / "short.inp", duration=loose.time_history.index[-1], out=tmp_path / "short.prt")
+    assert abs(short.balance["closure"]) <= 0.01
+    assert not any("do not resolve the power balance" in n for n in short.notes)
+    # what the long steps miss is in the dissipation: the resolved run's is lower
+    assert loose.balance["dissipation_W"] > 1.01 * short.balance["dissipation_W"]
 
 
 def test_rolling_resistance_adds_its_heat(tmp_path):

@@ -408,9 +408,12 @@ def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
                          integrator="ark4")
     assert result.steps_integrated == 300
     assert np.max(result.time_history["pocket4_force_N"]) < 1.0
-    # where the power goes: the race contacts (6.5 kW), not the cage pockets (the stopped run
+    # where the power goes: the race contacts (6.6 kW), not the cage pockets (the stopped run
     # put 1e4 N on a pocket); the balance's race-contact heat is the time history's total
-    # power loss averaged over the same window (measured 6 549.4 W against 6 549.36 W).
+    # power loss averaged over the same window, within 1 %: the balance integrates it by the
+    # IMEX method's stage quadrature, the history's trapezoid samples the steps' ends (measured
+    # 6 608.3 W against 6 568.0 W; equal, 6 549.4 against 6 549.36 W, while the balance too
+    # took the steps' ends, before session 21: docs/operating-points.md, "Stage quadrature").
     # (Until the mixed films' load sharing this compared with the step-0 print's loss, 2 %
     # apart; the in-band contacts' transient now falls from 6 862 W at step 0 to 6 348 W at
     # step 300, so the start's loss is not the window's: docs/operating-points.md.)
@@ -420,7 +423,7 @@ def test_lightly_loaded_balls_start_with_the_cage(tmp_path):
     loss = np.asarray(result.time_history["total_power_loss_W"])
     window = (t >= bal["window_s"][0] * (1.0 - 1e-9)) & (t <= bal["window_s"][1] * (1.0 + 1e-9))
     mean_loss = np.trapezoid(loss[window], t[window]) / (t[window][-1] - t[window][0])
-    assert bal["race_heat_W"] == pytest.approx(mean_loss, rel=1e-3)
+    assert bal["race_heat_W"] == pytest.approx(mean_loss, rel=1e-2)
 
 
 def test_mixed_films_at_the_static_capacity_run_resolved_and_balance(tmp_path):
@@ -536,7 +539,7 @@ def test_heavy_thrust_at_speed_forced_steps_within_adores_largest_and_hinted(tmp
     diagnosis = parse_forced_diagnosis(note)
     assert diagnosis is not None and 1.0 < diagnosis["err_max"] <= 17.2086
     assert abs(result.balance["closure"]) > 0.01
-    hint = re.search(r"do not resolve the drive torque \(([^;]*);", note).group(1)
+    hint = re.search(r"do not resolve the power balance \(([^;]*);", note).group(1)
     assert "accepted at the minimum step with their error above the error limit" in hint
     assert "smaller Rec 2.1 minimum step" in hint and "maximum step" not in hint
 

@@ -235,7 +235,7 @@ contains
          write (buf, "(a,es10.3)", iostat=stat) "; closure (drive - dissipation - energy change - whirl frame)"// &
             "/max(|drive|, dissipation, 1 uW) ", closure
          text = text//trim(buf)
-         if (abs(closure) > 0.01_wp) text = text//", above 0.01: the time steps do not resolve the drive torque "// &
+         if (abs(closure) > 0.01_wp) text = text//", above 0.01: the time steps do not resolve the power balance "// &
                                             "("//hint//"; docs/operating-points.md)"
       end associate
    end procedure ball_balance_text

@@ -71,6 +71,9 @@ module adore_bearings_system
       procedure :: n_balance => no_values
       procedure :: balance_values => no_averaged_values
       procedure :: balance_text => no_balance_text
+      ! the integrator's quadrature (integrator_t%start_quadrature) is of the balance values
+      procedure :: n_quadrature => system_n_quadrature
+      procedure :: quadrature_values => system_quadrature_values
       procedure :: unknown_name => no_unknown_name
       procedure :: set_condition
       procedure :: on_event
@@ -237,6 +240,20 @@ contains
       real(wp), intent(out) :: v(:)
       v = self%time_scale*0.0_wp
    end subroutine no_averaged_values
+
+   !> The integrator's quadrature values (adore_dynamics_integrator's start_quadrature): the
+   !> system's balance values (n_balance, balance_values), integrated over the balance window
+   !> by the method's own stage weights (adore_driver_time_loop).
+   integer function system_n_quadrature(self) result(n)
+      class(bearing_system_t), intent(in) :: self
+      n = self%n_balance()
+   end function system_n_quadrature
+
+   subroutine system_quadrature_values(self, v)
+      class(bearing_system_t), intent(in) :: self
+      real(wp), intent(out) :: v(:)
+      call self%balance_values(v)
+   end subroutine system_quadrature_values
 
    subroutine no_accepted(self)
       class(bearing_system_t), intent(inout) :: self

@@ -22,6 +22,7 @@ module adore_driver_time_average
    contains
       procedure :: start => average_start
       procedure :: add => average_add
+      procedure :: add_integral => average_add_integral
       procedure :: mean => average_mean
    end type time_average_t
 
@@ -47,6 +48,18 @@ contains
       self%last = values
       self%elapsed = self%elapsed + dt
    end subroutine average_add
+
+   !> Add the interval dt (> 0, the caller's time unit) with the integral of each value over
+   !> it given (e.g. the integrator's own quadrature, integrator_t%q_step) and the values at its
+   !> end instant.
+   subroutine average_add_integral(self, dt, integral, values)
+      class(time_average_t), intent(inout) :: self
+      real(wp), intent(in) :: dt
+      real(wp), intent(in) :: integral(:), values(:)
+      self%integral = self%integral + integral
+      self%last = values
+      self%elapsed = self%elapsed + dt
+   end subroutine average_add_integral
 
    !> The time averages since the start into `values` (same size as the started vector).
    subroutine average_mean(self, values)

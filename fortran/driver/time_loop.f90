@@ -141,7 +141,15 @@ contains
             call averages%add(t - t_old, values)
             if (in_window) then
                call sys%balance_values(bal)
-               call window%add(t - t_old, bal)
+               ! the window's means by the method's own quadrature of the balance values at
+               ! its stages where that is consistent with its steps (a fast torque the steps
+               ! do not resolve is then not sampled at their ends; issue #28), else the
+               ! trapezoid of the steps' ends; the values at the step's end for the energy change
+               if (it%quadrature .and. it%quadrature_consistent()) then
+                  call window%add_integral(t - t_old, it%q_step, bal)
+               else
+                  call window%add(t - t_old, bal)
+               end if
                n_window = n_window + 1
                if (t - t_old >= (1.0_wp - 1.0e-9_wp)*it%settings%h_max) n_at_max = n_at_max + 1
             else if (to_time .and. t >= 0.5_wp*t_stop) then
@@ -207,6 +215,8 @@ contains
          call sys%balance_values(bal)
          bal_first = bal
          call window%start(bal)
+         ! from the next step on, the integrator integrates the balance values at its stages
+         if (size(bal) > 0) call it%start_quadrature(bal)
       end subroutine open_window
 
       !> Print step i at the system's last evaluated state (the state at tau = t).

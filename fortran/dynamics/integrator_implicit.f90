@@ -157,6 +157,7 @@ contains
                end do
                call eval_stage(self, deriv, t + ros%c(i)*h, ys, k(:, 2), flag, ok)
                if (.not. ok) return
+               if (self%quadrature) call deriv%quadrature_values(self%g(:, i))
                u(:, i) = hg*k(:, 2)
                do j = 1, i - 1
                   if (ros%cc(i, j) /= 0.0_wp) u(:, i) = u(:, i) + (ros%gamma*ros%cc(i, j))*u(:, j)
@@ -209,6 +210,7 @@ contains
             ys = y + z
             call eval_stage(self, deriv, t + ark%c(i)*h, ys, k(:, i), flag, ok)
             if (.not. ok) return
+            if (self%quadrature) call deriv%quadrature_values(self%g(:, i))
          end do
          self%y_new = y
          self%y_err = 0.0_wp
@@ -243,6 +245,7 @@ contains
       self%t_new = t + h
       if (flag /= DERIV_OK) return
       if (.not. all(ieee_is_finite(self%k(:, self%last)))) err = ieee_value(err, ieee_positive_inf)
+      if (self%quadrature) call deriv%quadrature_values(self%g(:, self%last))
    end subroutine end_of_attempt
 
    !> One stage of a linearly implicit attempt: f(t, ys) into f_out, counted in the run's
