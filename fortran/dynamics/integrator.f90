@@ -33,21 +33,18 @@ module adore_dynamics_integrator
    use adore_dynamics_rk_tableau, only: rk_tableau_t, dormand_prince_54, bogacki_shampine_32, &
                                         rosenbrock_tableau_t, ros34pw2, ark_tableau_t, ark436l2sa
    use adore_dynamics_block_jacobian, only: block_jacobian_t
+   use adore_dynamics_derivative, only: derivative_t
+   use adore_dynamics_integrator_settings, only: integrator_settings_t, integrator_stats_t, DERIV_OK, &
+                                                 DERIV_REJECT_STEP, DERIV_FAIL, INT_METHOD_BS32, INT_METHOD_DP54, &
+                                                 INT_METHOD_ROS34PW2, INT_METHOD_ARK436, ADORE_FORCED_ERR_CAP
    implicit none
    private
 
    public :: derivative_t, integrator_t, integrator_settings_t, integrator_stats_t
    public :: DERIV_OK, DERIV_REJECT_STEP, DERIV_FAIL
-   public :: INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436
+   public :: INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436, ADORE_FORCED_ERR_CAP
 
-   !> Flags a derivative returns: the values are good; the step must be rejected and retried
-   !> smaller (report 4.4.12, abnormal cage contact); the model failed (the run stops).
-   integer, parameter :: DERIV_OK = 0, DERIV_REJECT_STEP = 1, DERIV_FAIL = 2
 
-   !> INT METHOD codes pyadore knows (Rec 1 field int_method): 3 Bogacki-Shampine 3(2),
-   !> 5 Dormand-Prince 5(4).  Only 5 is attested (both decks); its meaning in ADORE is not.
-   !> pyadore's own codes: 34 ROS34PW2, 43 ARK4(3)6L[2]SA (docs/integrator.md, "INT METHOD").
-   integer, parameter :: INT_METHOD_BS32 = 3, INT_METHOD_DP54 = 5, INT_METHOD_ROS34PW2 = 34, INT_METHOD_ARK436 = 43
 
    !> Step-size controller constants (DOPRI5's bounds of h_new/h; the safety factor is a setting).
    real(wp), parameter :: fac_min = 0.2_wp, fac_max = 10.0_wp
@@ -56,99 +53,11 @@ module adore_dynamics_integrator
    !> under ADORE's rule (accept_at_h_min), the shortest retry of an attempt refused or not
    !> finite at h_min, as a fraction of h_min (report 4.4.12's reduced step; halved to it)
    real(wp), parameter :: SUB_MIN_FLOOR = 1.0_wp/1024.0_wp
-   !> The largest truncation error ADORE is attested to accept at the Rec 2.1 minimum step, as a
-   !> ratio to the ERROR LIMIT: Appendix C prints Max Truncation 1.72086E-03 at ERROR LIMIT
-   !> 1E-04 and Minimum Step Size = MINIMUM (docs/integrator.md, "Step control").  A forced step
-   !> beyond it has no accuracy left: in ISO example 4 at 10 000 rpm and its static capacity one
-   !> such step (171 times the limit) moved a ball 143 um axially in 171 ns and reversed its
-   !> orbit (docs/operating-points.md, "Session 20").  Dimensionless.
-   real(wp), parameter, public :: ADORE_FORCED_ERR_CAP = 1.72086e-3_wp/1.0e-4_wp
    !> Lower bound of the previous error in the PI controller (DOPRI5's facold floor).
    real(wp), parameter :: err_floor = 1.0e-4_wp
 
-   !> The right-hand side of y' = f(t, y): extend it with the model data and give eval.
-   type, abstract :: derivative_t
-      !> why the last eval returned DERIV_FAIL (set by the extension; appended to the error)
-      character(len=:), allocatable :: failure_reason
-   contains
-      procedure(eval_i), deferred :: eval
-      procedure :: border_shares
-      procedure :: n_quadrature
-      procedure :: quadrature_values
-   end type derivative_t
 
-   abstract interface
-      !> dydt = f(t, y) (units of y per unit of t); flag = DERIV_OK, DERIV_REJECT_STEP or DERIV_FAIL.
-      subroutine eval_i(self, t, y, dydt, flag)
-         import :: derivative_t, wp
-         class(derivative_t), intent(inout) :: self
-         real(wp), intent(in) :: t
-         real(wp), intent(in) :: y(:)
-         real(wp), intent(out) :: dydt(:)
-         integer, intent(out) :: flag
-      end subroutine eval_i
-   end interface
 
-   !> Settings: Rec 1 int_method and Rec 2.1 (steps in the unit of t: ADORE's dimensionless tau).
-   type :: integrator_settings_t
-      integer :: int_method = INT_METHOD_DP54   !< Rec 1 int_method (INT METHOD)
-      real(wp) :: h_initial = 0.0_wp            !< Rec 2.1 step_initial (INITIAL)
-      real(wp) :: h_min = 0.0_wp                !< Rec 2.1 step_min (MINIMUM)
-      real(wp) :: h_max = 0.0_wp                !< Rec 2.1 step_max (MAXIMUM)
-      real(wp) :: error_limit = 0.0_wp          !< Rec 2.1 error_limit (ERROR LIMIT)
-      real(wp) :: rel_weight = 1.0_wp           !< weight of |y| in the error scale (0: absolute only)
-      !> At h_min with err > 1: .false. stops the run with an error; .true. accepts the step (err up to
-      !> forced_err_cap) and counts it (stats%forced_at_h_min), as ADORE's Appendix C statistics suggest.
-      logical :: accept_at_h_min = .false.
-      !> Under accept_at_h_min: the largest error ratio (err, 1 = at the limit) accepted at h_min.
-      !> An attempt at h_min with a larger err is halved below h_min (down to SUB_MIN_FLOOR of
-      !> it), as one the derivative refuses; huge (the default): no cap.  The decks' runs take
-      !> ADORE_FORCED_ERR_CAP, what ADORE's Appendix C run is attested to accept (issue #28).
-      real(wp) :: forced_err_cap = huge(1.0_wp)
-      integer :: max_rejections = 100           !< consecutive rejections of one step before an error
-      !> Rosenbrock-W with Jacobian blocks: accepted steps a block Jacobian is kept (a W-method
-      !> keeps its order with any W; a new one is also taken after a rejected step)
-      integer :: jacobian_every = 10
-      !> safety factor of the step-size controller (DOPRI5's 0.9; in (0, 1])
-      real(wp) :: safety = 0.9_wp
-      !> IMEX method with block Jacobians: when the first block Jacobian shows a relaxation rate
-      !> -J_cc (unknown c of a block, c one of switch_columns, 1..m) above switch_stiffness / h_min,
-      !> the run is integrated by the Rosenbrock-W method ROS34PW2 instead (on the same blocks,
-      !> safety factor 0.9), from its first step: a mode the deck's minimum step cannot follow
-      !> (issue #28; docs/integrator.md, "Step control").  0 (the default): never.
-      real(wp) :: switch_stiffness = 0.0_wp
-      integer, allocatable :: switch_columns(:)
-   end type integrator_settings_t
-
-   !> Counts for "Statistics of this Run" (Appendix C) and diagnostics.
-   type :: integrator_stats_t
-      integer :: derivative_calls = 0       !< Total Derivative Calls
-      integer :: accepted = 0               !< accepted steps
-      integer :: rejected_error = 0         !< attempts rejected by the error test
-      integer :: rejected_flag = 0          !< attempts refused by the derivative (4.4.12)
-      integer :: rejected_nonfinite = 0     !< attempts with non-finite stages or result
-      integer :: forced_at_h_min = 0        !< steps accepted at h_min with err > 1 (accept_at_h_min)
-      real(wp) :: forced_err_max = 0.0_wp   !< the largest err (1 = at the limit) of those steps
-      !> steps accepted shorter than h_min after attempts the derivative refused or that were not
-      !> finite at h_min (report 4.4.12's reduced step; accept_at_h_min only)
-      integer :: below_h_min = 0
-      !> those of them taken after an attempt at h_min whose error was above forced_err_cap
-      integer :: below_h_min_error = 0
-      integer :: forced_within_2 = 0        !< those of them with err <= 2
-      !> per unknown: the forced steps whose error it led (the largest weighted component of the
-      !> error estimate; allocated by init, n values), the diagnosis of issue #28
-      integer, allocatable :: forced_lead(:)
-      real(wp) :: h_min_used = huge(1.0_wp) !< Minimum Step Size (steps cut to land on t_out excluded)
-      real(wp) :: h_max_used = 0.0_wp       !< Maximum Step Size (idem)
-      real(wp) :: h_last = 0.0_wp           !< Last Step Size
-      real(wp) :: max_truncation = 0.0_wp   !< Max Truncation: largest err * error_limit accepted
-      integer :: jacobians = 0              !< block Jacobians evaluated (Rosenbrock-W)
-      integer :: jacobian_calls = 0         !< derivative calls spent on them (in derivative_calls)
-      !> the largest -J_cc h_min of settings%switch_columns at the first block Jacobian (the
-      !> method switch's measure; 0 when not measured) and whether the run switched to ROS34PW2
-      real(wp) :: switch_measure = 0.0_wp
-      logical :: switched = .false.
-   end type integrator_stats_t
 
    !> The integrator: settings, method, workspace, step proposal and statistics.
    type :: integrator_t
@@ -239,40 +148,49 @@ module adore_dynamics_integrator
          real(wp), intent(out) :: err
          logical, intent(in) :: accept
       end subroutine attempt_imex
+      !> At the first block Jacobian of an IMEX run: ROS34PW2 from this step on where the
+      !> switch columns are stiff (settings%switch_stiffness).
+      module subroutine stiffness_switch(self)
+         class(integrator_t), intent(inout) :: self
+      end subroutine stiffness_switch
+   end interface
+
+   !> The explicit pairs' attempt: submodule adore_dynamics_integrator_explicit
+   !> (fortran/dynamics/integrator_explicit.f90).
+   interface
+      !> One attempt of size h from (t, y), k(:, 1) given: stages, y_new, the weighted error err.
+      module subroutine attempt(self, deriv, t, y, h, flag, err)
+         class(integrator_t), intent(inout) :: self
+         class(derivative_t), intent(inout) :: deriv
+         real(wp), intent(in) :: t, h
+         real(wp), intent(in) :: y(:)
+         integer, intent(out) :: flag
+         real(wp), intent(out) :: err
+      end subroutine attempt
+   end interface
+
+   !> The method's quadrature of the derivative's values: submodule
+   !> adore_dynamics_integrator_quadrature (fortran/dynamics/integrator_quadrature.f90).
+   interface
+      !> Integrate the derivative's quadrature_values over every accepted step from the next
+      !> one on (q_step); g0 the values at the state the next step starts from.
+      module subroutine start_quadrature(self, g0)
+         class(integrator_t), intent(inout) :: self
+         real(wp), intent(in) :: g0(:)
+      end subroutine start_quadrature
+      !> Whether the stage quadrature is consistent with the method's steps (the IMEX method).
+      module logical function quadrature_consistent(self)
+         class(integrator_t), intent(in) :: self
+      end function quadrature_consistent
+      !> The quadrature of the values over the accepted step of size h into q_step.
+      module subroutine step_quadrature(self, h)
+         class(integrator_t), intent(inout) :: self
+         real(wp), intent(in) :: h
+      end subroutine step_quadrature
    end interface
 
 contains
 
-   !> The last evaluation's share of each Jacobian block in the rates of the border unknowns
-   !> (adore_dynamics_block_jacobian; units of y per unit of t): a system whose border rates
-   !> are sum_b p_b(y_b, y_border) + q(y_border) gives p_b in shares(:, b) (nr x nb, border
-   !> and block order of set_jacobian_blocks), from which the integrator differences the
-   !> border rows C_b of every block in the blocks' coloured calls.  This default has none:
-   !> ok = .false., C_b is left zero (a valid but poorer W).
-   subroutine border_shares(self, shares, ok)
-      class(derivative_t), intent(in) :: self
-      real(wp), intent(out) :: shares(:, :)
-      logical, intent(out) :: ok
-      shares = 0.0_wp
-      ok = .false.
-   end subroutine border_shares
-
-   !> How many values the derivative wants integrated over each accepted step by the method's
-   !> own quadrature (integrator_t%start_quadrature): this default, none.
-   integer function n_quadrature(self)
-      class(derivative_t), intent(in) :: self
-      n_quadrature = 0
-      if (.false.) n_quadrature = len(self%failure_reason)
-   end function n_quadrature
-
-   !> The values v (any units) to integrate over time at the derivative's last evaluation
-   !> (integrator_t%start_quadrature; n_quadrature of them): this default has none.
-   subroutine quadrature_values(self, v)
-      class(derivative_t), intent(in) :: self
-      real(wp), intent(out) :: v(:)
-      v = 0.0_wp
-      if (.false.) v = len(self%failure_reason)
-   end subroutine quadrature_values
 
    !> Check the settings, choose the method and allocate the workspace for n unknowns.
    !> scale(n) (units of y, > 0) sets the absolute part of the error test; default 1.
@@ -591,98 +509,7 @@ contains
       self%h_next = min(max(h, h_min), self%settings%h_max)
    end subroutine step
 
-   !> At the first block Jacobian of an IMEX run (settings%switch_stiffness): the largest
-   !> relaxation rate -J_cc of settings%switch_columns over the blocks times h_min
-   !> (stats%switch_measure, dimensionless); above switch_stiffness the run goes on with
-   !> ROS34PW2 from this first step - the same Jacobian, its controller exponents (error order
-   !> 3) and DOPRI5's safety factor 0.9 (issue #28; the automatic method choice of LSODA,
-   !> Petzold 1983, here from the Jacobian before the first step).
-   subroutine stiffness_switch(self)
-      class(integrator_t), intent(inout) :: self
-      type(integrator_settings_t) :: defaults
-      integer :: b, c
-      real(wp) :: rate
-      if (.not. allocated(self%settings%switch_columns)) return
-      rate = 0.0_wp
-      do b = 1, size(self%jac%j, 3)
-         do c = 1, size(self%settings%switch_columns)
-            associate (i => self%settings%switch_columns(c))
-               if (i >= 1 .and. i <= size(self%jac%j, 1)) rate = max(rate, -self%jac%j(i, i, b))
-            end associate
-         end do
-      end do
-      self%stats%switch_measure = rate*self%settings%h_min
-      if (.not. self%stats%switch_measure > self%settings%switch_stiffness) return
-      self%imex = .false.
-      self%rosenbrock = .true.
-      self%last = self%ros%stages + 1
-      self%beta = 0.2_wp/self%ros%error_order
-      self%alpha = 1.0_wp/self%ros%error_order - 0.75_wp*self%beta
-      self%settings%safety = defaults%safety
-      self%stats%switched = .true.
-   end subroutine stiffness_switch
 
-   !> From the next step on, integrate the derivative's quadrature_values g(y) over every
-   !> accepted step (q_step: the integral, units of g times the unit of t) with the method's own
-   !> weights at its stages, as if q' = g(y) were unknowns of the state outside the error test
-   !> and the Jacobian: h sum_i b_i g(Y_i) for the Runge-Kutta and IMEX pairs, the
-   !> Rosenbrock-W recursion with J = 0 for ROS34PW2 (HNW II, IV.7 eq 7.25).  The integral of a
-   !> rate is then consistent with the state's change to the method's order, where the values at
-   !> the steps' ends sample whatever the steps do not resolve (issue #28: the drive power of a
-   !> race contact's fast torque).  g0: the values at the state the next step starts from (the
-   !> last evaluation's, the accepted state's).
-   subroutine start_quadrature(self, g0)
-      class(integrator_t), intent(inout) :: self
-      real(wp), intent(in) :: g0(:)
-      if (allocated(self%g)) deallocate (self%g)
-      if (allocated(self%q_step)) deallocate (self%q_step)
-      allocate (self%g(size(g0), size(self%k, 2)), source=0.0_wp)
-      allocate (self%q_step(size(g0)), source=0.0_wp)
-      self%g(:, 1) = g0
-      self%quadrature = size(g0) > 0
-   end subroutine start_quadrature
-
-   !> Whether the method's stage quadrature (start_quadrature) is consistent with the way its
-   !> steps move the state, also where the steps pass over stiff modes: the IMEX method, whose
-   !> step is y + h sum_i b_i f(Y_i) at stages its implicit part keeps bounded.  Not an explicit
-   !> pair at its stability limit (its stages carry stiff components the step's weights cancel
-   !> and a nonlinear g does not: the deep-groove ISO example 3 at 10 000 rpm, DP5's dissipation
-   !> 22 % low), nor the Rosenbrock-W method, whose step is no weighted sum of f at its stages (it
-   !> carries (I - h gamma J)**-1; test_quadrature_closes_the_energy: closure 0.6-1.2 on stiff
-   !> oscillators where the steps' ends close within 1e-5).  For those the values at the steps'
-   !> ends (their trapezoid) are the better mean (adore_driver_time_loop).
-   logical function quadrature_consistent(self)
-      class(integrator_t), intent(in) :: self
-      quadrature_consistent = self%imex
-   end function quadrature_consistent
-
-   !> The quadrature of g over the accepted step of size h into q_step (start_quadrature).
-   subroutine step_quadrature(self, h)
-      class(integrator_t), intent(inout) :: self
-      real(wp), intent(in) :: h
-      real(wp), allocatable :: uq(:, :)
-      integer :: i, j
-      self%q_step = 0.0_wp
-      if (self%rosenbrock) then
-         ! the W-method on q' = g with zero rows and columns of J for q: W = I
-         allocate (uq(size(self%g, 1), self%ros%stages))
-         do i = 1, self%ros%stages
-            uq(:, i) = (h*self%ros%gamma)*self%g(:, i)
-            do j = 1, i - 1
-               if (self%ros%cc(i, j) /= 0.0_wp) uq(:, i) = uq(:, i) + (self%ros%gamma*self%ros%cc(i, j))*uq(:, j)
-            end do
-            self%q_step = self%q_step + self%ros%m(i)*uq(:, i)
-         end do
-      else if (self%imex) then
-         do j = 1, self%ark%stages
-            if (self%ark%b(j) /= 0.0_wp) self%q_step = self%q_step + (h*self%ark%b(j))*self%g(:, j)
-         end do
-      else
-         do j = 1, self%tab%stages
-            if (self%tab%b(j) /= 0.0_wp) self%q_step = self%q_step + (h*self%tab%b(j))*self%g(:, j)
-         end do
-      end if
-   end subroutine step_quadrature
 
    !> Integrate from (t, y) to t_out (same unit as t), landing on it; t = t_out on return.
    subroutine advance(self, deriv, t, y, t_out, error)
@@ -738,45 +565,6 @@ contains
       self%shares_at_start = .true.
    end subroutine first_stage
 
-   !> One attempt of size h from (t, y), k(:, 1) given: stages 2..s, y_new, the weighted error
-   !> err (infinite if a stage or y_new is not finite); flag from the derivative.
-   subroutine attempt(self, deriv, t, y, h, flag, err)
-      class(integrator_t), intent(inout) :: self
-      class(derivative_t), intent(inout) :: deriv
-      real(wp), intent(in) :: t, h
-      real(wp), intent(in) :: y(:)
-      integer, intent(out) :: flag
-      real(wp), intent(out) :: err
-      integer :: i, j
-
-      err = huge(1.0_wp)
-      flag = DERIV_OK
-      associate (tab => self%tab, k => self%k, ys => self%y_stage)
-         do i = 2, tab%stages
-            ys = y
-            do j = 1, i - 1
-               if (tab%a(i, j) /= 0.0_wp) ys = ys + (h*tab%a(i, j))*k(:, j)
-            end do
-            call deriv%eval(t + tab%c(i)*h, ys, k(:, i), flag)
-            self%stats%derivative_calls = self%stats%derivative_calls + 1
-            self%evaluated_new = .false.
-            self%shares_at_start = .false.
-            if (flag /= DERIV_OK) return
-            if (.not. (all(ieee_is_finite(k(:, i))) .and. all(ieee_is_finite(ys)))) then
-               err = ieee_value(err, ieee_positive_inf)
-               return
-            end if
-            if (self%quadrature) call deriv%quadrature_values(self%g(:, i))
-         end do
-         ! FSAL pairs: the last stage is taken at y_new = y + h sum_j b_j k_j
-         self%y_new = ys
-         self%y_err = 0.0_wp
-         do j = 1, tab%stages
-            if (tab%e(j) /= 0.0_wp) self%y_err = self%y_err + (h*tab%e(j))*k(:, j)
-         end do
-      end associate
-      err = weighted_error(self, y)
-   end subroutine attempt
 
    !> The unknown leading the error test's norm of y_err for a step from y to y_new: the index of
    !> its largest weighted component (the first of equals).

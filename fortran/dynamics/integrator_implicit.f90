@@ -266,4 +266,34 @@ contains
       if (ok) ok = all(ieee_is_finite(f_out)) .and. all(ieee_is_finite(ys))
    end subroutine eval_stage
 
+   !> At the first block Jacobian of an IMEX run (settings%switch_stiffness): the largest
+   !> relaxation rate -J_cc of settings%switch_columns over the blocks times h_min
+   !> (stats%switch_measure, dimensionless); above switch_stiffness the run goes on with
+   !> ROS34PW2 from this first step - the same Jacobian, its controller exponents (error order
+   !> 3) and DOPRI5's safety factor 0.9 (issue #28; the automatic method choice of LSODA,
+   !> Petzold 1983, here from the Jacobian before the first step).
+   module procedure stiffness_switch
+      type(integrator_settings_t) :: defaults
+      integer :: b, c
+      real(wp) :: rate
+      if (.not. allocated(self%settings%switch_columns)) return
+      rate = 0.0_wp
+      do b = 1, size(self%jac%j, 3)
+         do c = 1, size(self%settings%switch_columns)
+            associate (i => self%settings%switch_columns(c))
+               if (i >= 1 .and. i <= size(self%jac%j, 1)) rate = max(rate, -self%jac%j(i, i, b))
+            end associate
+         end do
+      end do
+      self%stats%switch_measure = rate*self%settings%h_min
+      if (.not. self%stats%switch_measure > self%settings%switch_stiffness) return
+      self%imex = .false.
+      self%rosenbrock = .true.
+      self%last = self%ros%stages + 1
+      self%beta = 0.2_wp/self%ros%error_order
+      self%alpha = 1.0_wp/self%ros%error_order - 0.75_wp*self%beta
+      self%settings%safety = defaults%safety
+      self%stats%switched = .true.
+   end procedure stiffness_switch
+
 end submodule adore_dynamics_integrator_implicit
