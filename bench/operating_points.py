@@ -259,12 +259,44 @@ def summarize(rows: list[dict]) -> None:
             print(f"  the unknown that led most of a run's forced steps ({len(led)} runs that record it):")
             for k, n in collections.Counter(leader_kind(r["forced_lead"]) for r in led).most_common():
                 print(f"  {n:4d}  {k}")
+    balances(rows)
     for title, key in (("category", lambda r: category(r["message"])[:110]), ("deck", lambda r: r["deck"]),
                        ("speed (rpm)", lambda r: float(r["speed_rpm"])), ("load (N)", lambda r: float(r["load_N"]) if float(r["load_N"]) in LOADS else "C0"),
                        ("fit (um)", lambda r: round(float(r["fit_m"]) * 1e6))):
         print(f"failures by {title}:")
         for k, n in sorted(collections.Counter(key(r) for r in bad).items(), key=lambda kv: -kv[1]):
             print(f"  {n:4d}  {k}")
+
+
+def balances(rows: list[dict]) -> None:
+    """Print how the runs' balances close (issue #28 item 2): the closure (drive - dissipation -
+    energy change) / max(|drive|, dissipation) within 1 % and 10 % and the inner race's force
+    residual within 1 % of the load, for every run, by speed, and for the runs the acceptance's
+    "once steady" can mean: at least one shaft revolution in the balance window and no step
+    forced at the minimum (at 0-100 rpm 300 steps cover at most 0.04 revolutions: the window is
+    the settling of the start)."""
+    def num(r, k):
+        try:
+            return float(r[k])
+        except (KeyError, TypeError, ValueError):
+            return float("nan")
+
+    ran = [r for r in rows if r["outcome"] == "ran" and r.get("closure", "") != ""]
+    if not ran:
+        return
+
+    def line(name, group):
+        c = [abs(num(r, "closure")) for r in group]
+        f = [num(r, "inner_force_residual") for r in group]
+        print(f"  {name:>44}: {len(group):5d} runs, closure within 1 % {sum(x <= 0.01 for x in c):5d}, "
+              f"within 10 % {sum(x <= 0.1 for x in c):5d}; inner race force within 1 % {sum(x <= 0.01 for x in f):5d}")
+
+    print("balances (closure and inner race force residual):")
+    line("all", ran)
+    for speed in sorted({num(r, "speed_rpm") for r in ran}):
+        line(f"{speed:g} rpm", [r for r in ran if num(r, "speed_rpm") == speed])
+    line("window >= 1 revolution, no forced step", [r for r in ran if num(r, "revolutions") >= 1.0
+                                                     and int(num(r, "forced_steps") or 0) == 0])
 
 
 def _table(title: str, counts: list[tuple[str, collections.Counter]]) -> None:
