@@ -53,7 +53,9 @@ class Result:
     #: (the inner race's mean contact force and the applied load plus its weight),
     #: ``inner_residual_N``, ``outer_force_N``, ``outer_expected_N``, ``outer_residual_N``,
     #: ``closure`` ((drive - dissipation - energy change - whirl frame) / max(|drive|,
-    #: dissipation, 1 uW));
+    #: dissipation, 1 uW), as the engine computes it from its full-precision means; the
+    #: means are the integrator's stage quadrature for the deck's IMEX method, else the
+    #: trapezoid of the steps' ends: docs/operating-points.md, "Stage quadrature");
     #: None without time steps or for a run that stopped early
     balance: dict | None = None
     #: the run's full results as numpy arrays (:class:`pyadore.results.ResultArrays`: the
