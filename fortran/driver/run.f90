@@ -133,6 +133,13 @@ contains
       bearing%full_film = opts%full_film_lambda*roughness%sigma_rms
       ! the EHD film's elasticity (run option; docs/tribology.md, "The film's elasticity")
       bearing%film_shear_modulus = opts%film_shear_modulus
+      ! the EHD film's limiting shear stress (run option; docs/tribology.md, "Limiting shear stress")
+      if (.not. (opts%limiting_shear >= 0.0_wp .and. opts%limiting_shear < 1.0_wp)) then
+         call input_error(error, "limiting_shear (--limiting-shear): must be >= 0 and < 1 (the limiting shear "// &
+                          "stress over the local pressure, 0.05-0.1 for oils; 0: off)")
+         return
+      end if
+      bearing%limiting_shear = opts%limiting_shear
       ! the guide lands' lubricant layer (run option land_oil; docs/cage.md, "The guide-land
       ! film where the report has none")
       bearing%land_oil_layer = opts%land_oil

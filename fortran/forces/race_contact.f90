@@ -75,7 +75,8 @@ contains
    end function thermal_properties
 
    !> The lubricant's traction rheology at the wall temperature of a race contact, with the
-   !> film's shear modulus of the run (b%film_shear_modulus; 0: the viscous film).
+   !> film's shear modulus of the run (b%film_shear_modulus; 0: the viscous film) and its
+   !> limiting shear stress coefficient (b%limiting_shear; 0: no cap).
    function wall_rheology(b, temperature, race) result(rheo)
       type(bearing_t), intent(in) :: b
       real(wp), intent(in) :: temperature(:)
@@ -85,7 +86,7 @@ contains
       t_w = wall_temperature(temperature, race)
       rheo = ehd_rheology_t(eta_w=traction_viscosity(b%lubricant, t_w), alpha=b%lubricant%alpha_t, &
                             beta=b%lubricant%beta_t, conductivity=b%lubricant%conductivity, &
-                            shear_modulus=b%film_shear_modulus)
+                            shear_modulus=b%film_shear_modulus, limiting_shear=b%limiting_shear)
    end function wall_rheology
 
    !> Film of one race contact (report 2.6): Hamrock-Dowson isothermal central film

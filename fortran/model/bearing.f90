@@ -139,6 +139,10 @@ module adore_model_bearing
       !> elastic shear modulus G (Pa) of the EHD film (run option film_shear_modulus): > 0 makes
       !> traction model 3's film a Maxwell film (docs/tribology.md, "The film's elasticity"); 0: off
       real(wp) :: film_shear_modulus = 0.0_wp
+      !> limiting shear stress coefficient Lambda (-) of the EHD film (run option limiting_shear):
+      !> > 0 caps traction model 3's local shear stress at Lambda p (docs/tribology.md, "Limiting
+      !> shear stress"); 0: off
+      real(wp) :: limiting_shear = 0.0_wp
       type(lubricant_t) :: lubricant
       !> the coolant and the thermal times (Rec 2.4, 2.5)
       type(coolant_data_t) :: coolant

@@ -80,6 +80,10 @@ module adore_model_run_options
       !> film (Johnson & Tevaarwerk 1977; docs/tribology.md, "The film's elasticity"; not in
       !> ADORE 5.0); 0 (default): the viscous film
       real(wp) :: film_shear_modulus = 0.0_wp
+      !> limiting shear stress coefficient Lambda (-, 0 <= Lambda < 1) of traction model 3's EHD
+      !> film: > 0 caps its local shear stress smoothly at Lambda p (Bair & Winer 1979;
+      !> docs/tribology.md, "Limiting shear stress"; not in ADORE 5.0); 0 (default): no cap
+      real(wp) :: limiting_shear = 0.0_wp
       !> the coordinates of the balls in the integrated state: "orbit" (the report's eq 54:
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
@@ -151,7 +155,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 27
+   integer, parameter :: N_OPTIONS = 28
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -195,6 +199,9 @@ module adore_model_run_options
       option_spec_t("film_shear_modulus", OPTION_REAL, "0", 0, "", "PA", "", &
                     "elastic shear modulus G (Pa) of the EHD (model 3) film: a Maxwell film (Johnson & "// &
                     "Tevaarwerk), not in ADORE 5.0; 0: the viscous film"), &
+      option_spec_t("limiting_shear", OPTION_REAL, "0", 0, "", "LAMBDA", "", &
+                    "limiting shear stress Lambda p of the EHD (model 3) film, tau_L tanh(tau / tau_L) "// &
+                    "(Bair & Winer), 0 <= Lambda < 1; not in ADORE 5.0; 0: no cap"), &
       option_spec_t("duration", OPTION_REAL, "0", 0, "", "SECONDS", "", &
                     "simulated time to integrate (s): the run ends exactly there, its last step printed "// &
                     "(instead of a step count)"), &
@@ -368,6 +375,8 @@ contains
          opts%boundary_slip = x
       case ("film_shear_modulus")
          opts%film_shear_modulus = x
+      case ("limiting_shear")
+         opts%limiting_shear = x
       case ("duration")
          opts%duration = x
       case ("revolutions")

@@ -9,6 +9,7 @@ module adore_tribology_ehd_flash
    use adore_tribology_flash, only: strip_temperature_rise, flash_trapezoid_weights
    use adore_tribology_slip, only: ball_race_contact_t, contact_traction_t, contact_slip, major_axis_nodes
    use adore_tribology_ehd_traction, only: ehd_rheology_t, film_shear_stress, ehd_contact_traction, film_constants, &
+                                           limited_shear, &
                                            thermal_film_shear
    implicit none
    private
@@ -18,7 +19,8 @@ module adore_tribology_ehd_flash
 contains
 
    !> Average (eq 36) and largest flash temperature rise (K) of contact c with the heat of
-   !> its EHD film: flux q = tau(p, u) |u| (W/m**2) on strips across the minor axis at the
+   !> its EHD film: flux q = tau(p, u) |u| (W/m**2; tau capped at Lambda p with a limiting
+   !> shear stress, limited_shear) on strips across the minor axis at the
    !> n_gauss Gauss points per slip zone of the major axis, ny >= 2 uniform points per
    !> strip, each strip by eq 35 (adore_tribology_flash); rheo, h, b as ehd_contact_traction;
    !> u1, u2 surface speeds (m/s) and th1, th2 = [density, heat capacity, conductivity] of
@@ -61,7 +63,11 @@ contains
          u = contact_slip(c, x(j))
          bk = b*sqrt(ek)
          p = p0*sqrt(ek)*sqrt(max(1.0_wp - eta**2, 0.0_wp))
-         if (present(dt_max)) then
+         if (rheo%limiting_shear > 0.0_wp) then
+            ! with a limiting shear stress (run option limiting_shear): the capped film's heat
+            q = limited_shear(film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h), &
+                              rheo%limiting_shear, p)*abs(u)
+         else if (present(dt_max)) then
             q = film_shear_stress(rheo%eta_w*exp(rheo%alpha*p), rheo%beta, rheo%conductivity, u, h)*abs(u)
          else if (rheo%beta > 0.0_wp) then
             ! the flux is even across the strip: half of it, mirrored.  film_shear_stress at

@@ -36,7 +36,7 @@ module adore_tribology_ehd_traction
 
    public :: ehd_rheology_t, film_shear_stress, ehd_contact_traction, ehd_strip_traction
    public :: ehd_contact_traction_fast, ehd_contact_power, series_sin, series_cos_sin, film_constants, &
-             thermal_film_shear
+             thermal_film_shear, limited_shear
 
    !> Orders of the fast EHD traction (ehd_contact_traction_fast): Gauss points per slip
    !> zone in the angle phi of s = a sin(phi) along the major axis, and across each strip
@@ -48,6 +48,10 @@ module adore_tribology_ehd_traction
    !> A = alpha p / 2 is beyond the table (STRIP_A_MAX)
    integer, parameter, public :: EHD_STRIP_TABLE = 0
    integer, parameter :: EHD_STRIP_FALLBACK = 48
+   !> n_strip = EHD_STRIP_TABLE's Gauss points on psi with a limiting shear stress (the table
+   !> knows no cap): the cap flattens the exp(alpha p) peak, 24 points are within 5e-5 of the
+   !> reference up to 3.7 GPa (16: 4e-4; test_limiting_shear, docs/tribology.md)
+   integer, parameter :: EHD_STRIP_CAPPED = 24
 
 
    !> Rheology of the film at the wall temperature.
@@ -59,6 +63,10 @@ module adore_tribology_ehd_traction
       !> elastic shear modulus G of the film (Pa; run option film_shear_modulus): > 0 makes it
       !> a Maxwell film (adore_tribology_ehd_elastic); 0: the viscous film of ADORE's model 3
       real(wp) :: shear_modulus = 0.0_wp
+      !> limiting shear stress coefficient Lambda (-; run option limiting_shear): > 0 caps the
+      !> film's shear stress smoothly at tau_L = Lambda p, tau = tau_L tanh(tau_N / tau_L)
+      !> (limited_shear; Bair & Winer 1979); 0: no cap, ADORE's model 3
+      real(wp) :: limiting_shear = 0.0_wp
    end type ehd_rheology_t
 
 contains
@@ -78,6 +86,27 @@ contains
       c = 0.5_wp*abs(u)*sqrt(beta*eta_w/(2.0_wp*k_f))      ! sinh(c/2) with c of the header
       tau = sqrt(2.0_wp*k_f*eta_w/beta)/h*shear_shape(c)
    end function film_shear_stress
+
+   !> The film's shear stress (Pa) under a limiting shear stress (run option limiting_shear;
+   !> not in ADORE 5.0): tau_L tanh(tau_n / tau_L), tau_L = lambda p, for the film's own
+   !> shear stress tau_n (Pa, >= 0) at the local pressure p (Pa) with the coefficient lambda
+   !> (-; Bair & Winer 1979, Evans & Johnson 1986: 0.05-0.1): smooth, slope 1 at small stress,
+   !> never above tau_L (docs/tribology.md, "Limiting shear stress").  lambda <= 0: tau_n
+   !> itself (no cap); p <= 0 with a cap: 0 (no pressure, no shear strength).
+   elemental function limited_shear(tau_n, lambda, p) result(tau)
+      real(wp), intent(in) :: tau_n, lambda, p
+      real(wp) :: tau, tau_l
+      if (lambda <= 0.0_wp) then
+         tau = tau_n
+         return
+      end if
+      tau_l = lambda*p
+      if (tau_l > 0.0_wp) then
+         tau = tau_l*tanh(tau_n/tau_l)
+      else
+         tau = 0.0_wp
+      end if
+   end function limited_shear
 
    !> Shear stress (Pa) of the thermal film (beta > 0) with film_constants' amp (Pa) and zeta
    !> (s/m) at E = exp(alpha p / 2) (-) and slip u (m/s): amp E shear_shape(zeta |u| E), the
@@ -182,6 +211,10 @@ contains
    !> y = b' sin(psi) with n_strip points.  Same outputs as ehd_contact_traction (force,
    !> force_cos, force_sin, power, sliding, max_slip, kinematics); input error for bad data.
    !> rheo%shear_modulus > 0: each strip times its Maxwell film's ratio (adore_tribology_ehd_elastic).
+   !> rheo%limiting_shear > 0: the table knows no cap, every strip by the Gauss rule on psi
+   !> (EHD_STRIP_CAPPED points for n_strip = EHD_STRIP_TABLE), each point capped (limited_shear);
+   !> the zones graded at the pure-rolling points over the cap's saturation layer, out to the
+   !> thermal layer's extent (add_sub).
    !> transverse (m/s), when given: the two-dimensional traction as ehd_contact_traction's
    !> (each strip's integral at the slip vector's |u|, its traction along (u, u_m) / |u|,
    !> t%cross_force), on the same nodes: the zones and their grading follow the pure-rolling
@@ -219,6 +252,7 @@ contains
       real(wp) :: umax, ce, se, u_end(2)
       real(wp) :: polar(2)          ! rolling_zones' polar form of u(s), for interior_extremum
       real(wp) :: s_last, k_last   ! add_sub's last rolling point (m) and its layer's inverse width (1/rad)
+      real(wp) :: kx_last          ! and the inverse width (1/rad) of its graded extent (add_graded's kx)
       integer :: nm, nh, ns, nq, nz, z, j, nsub, n, m, sub_rule(8), nleft
       logical :: ext
 
@@ -255,8 +289,10 @@ contains
       rs = c%race_speed
       ! the rule on psi: n_strip points, or the table's fallback where A is beyond it
       nq = 0
-      if (ns /= EHD_STRIP_TABLE .or. 0.5_wp*rheo%alpha*p0 > STRIP_A_MAX) then
+      ! (the table knows no limiting shear stress: with one, the fallback rule at every node)
+      if (ns /= EHD_STRIP_TABLE .or. 0.5_wp*rheo%alpha*p0 > STRIP_A_MAX .or. rheo%limiting_shear > 0.0_wp) then
          nq = merge(EHD_STRIP_FALLBACK, ns, ns == EHD_STRIP_TABLE)
+         if (ns == EHD_STRIP_TABLE .and. rheo%limiting_shear > 0.0_wp) nq = EHD_STRIP_CAPPED
          call gauss_legendre(nq, yg(1:nq), wy(1:nq))
          ! psi = pi/4 (1 + y) on [0, pi/2]; dy' = cos(psi) dpsi; both halves of the strip
          cy(1:nq) = cos(0.25_wp*pi*(1.0_wp + yg(1:nq)))
@@ -268,6 +304,7 @@ contains
       nsub = 0
       s_last = huge(1.0_wp)
       k_last = 0.0_wp
+      kx_last = 0.0_wp
       do z = 1, nz
          ! the ends -a, a: asin(-1), asin(1) = -pi/2, pi/2 (libm's are the doubles nearest)
          lo = -0.5_wp*pi
@@ -395,7 +432,7 @@ contains
       ! the strip traction per unit length f = b cos(phi) x the integral of tau across the
       ! strip (strip_traction): by the table, S = 2 Z exp(G(A, ln Z)), else, or where A is
       ! beyond the table, by the rule
-      if (ns == EHD_STRIP_TABLE) then
+      if (ns == EHD_STRIP_TABLE .and. .not. rheo%limiting_shear > 0.0_wp) then
          if (rheo%beta > 0.0_wp) then
             do j = 1, n
                zz(j) = zeta*us(j)
@@ -426,7 +463,11 @@ contains
       end if
       if (nq > 0) then
          do j = 1, n
-            if (ns /= EHD_STRIP_TABLE .or. aa(j) > STRIP_A_MAX) f(j) = b*cphi(j)*strip_rule_integral(aa(j), us(j))
+            if (rheo%limiting_shear > 0.0_wp) then
+               f(j) = b*cphi(j)*strip_rule_capped(aa(j), us(j), p0*cphi(j))
+            else if (ns /= EHD_STRIP_TABLE .or. aa(j) > STRIP_A_MAX) then
+               f(j) = b*cphi(j)*strip_rule_integral(aa(j), us(j))
+            end if
          end do
       end if
       ! the film's elasticity: each strip's Maxwell-film ratio (half width b' = b cos(phi))
@@ -489,7 +530,7 @@ contains
          real(wp), intent(in) :: pf, pr, s_r
          integer, intent(in) :: rule
          real(wp) :: dudx, cs(2), cp
-         if (s_r == huge(1.0_wp) .or. rheo%beta <= 0.0_wp) then
+         if (s_r == huge(1.0_wp) .or. (rheo%beta <= 0.0_wp .and. .not. rheo%limiting_shear > 0.0_wp)) then
             call add_graded(pf, pr, 0.0_wp, rule)
             return
          end if
@@ -504,22 +545,42 @@ contains
                     - c%side*c%rho*c%omega(2)*(ca*cs(1) - sa*cs(2)))/c%rho
             s_last = s_r
             k_last = zeta*abs(dudx)*exp(0.5_wp*rheo%alpha*p0*cp)*c%a*cp
+            ! a limiting shear stress saturates the film where its Newtonian stress eta_w E**2
+            ! |u| / h reaches Lambda p_c (p_c = p0 cos(phi), the strip's centre): within
+            ! |u| = Lambda p_c h / (eta_w E**2) of the rolling point, often far thinner than the
+            ! thermal layer (the thinner of the two is graded; cos(phi) cancels)
+            ! and graded out to the thermal layer's extent (the strip's off-centre points,
+            ! at lower pressure, saturate at larger slips)
+            kx_last = k_last
+            if (rheo%limiting_shear > 0.0_wp) k_last = max(k_last, abs(dudx)*c%a*rheo%eta_w* &
+                                                           exp(rheo%alpha*p0*cp)/(rheo%limiting_shear*p0*h))
+            if (.not. kx_last > 0.0_wp) kx_last = k_last
          end if
-         call add_graded(pf, pr, k_last, rule)
+         if (rheo%limiting_shear > 0.0_wp) then
+            call add_graded(pf, pr, k_last, rule, kx_last)
+         else
+            call add_graded(pf, pr, k_last, rule)
+         end if
       end subroutine add_sub
 
       !> A sub-zone of phi from pf (free end) to pr, graded at pr with the inverse layer
       !> width k (1/rad; 0: not graded), rule as add_sub; a layer much thinner than the
-      !> zone is graded up to LAYER / k from pr and the rest of the zone is plain.
-      subroutine add_graded(pf, pr, k, rule)
+      !> zone is graded up to LAYER / k from pr and the rest of the zone is plain; kx (1/rad,
+      !> <= k), when given: graded up to LAYER / kx (a limiting shear stress's layer, k, inside
+      !> the thermal film's, kx).
+      subroutine add_graded(pf, pr, k, rule, kx)
          real(wp), intent(in) :: pf, pr, k
          integer, intent(in) :: rule
+         real(wp), intent(in), optional :: kx
+         real(wp) :: ke
+         ke = k
+         if (present(kx)) ke = kx
          nsub = nsub + 1
          sub(:, nsub) = [pf, pr, k]
          sub_rule(nsub) = rule
-         if (k*abs(pf - pr) > 2.0_wp*LAYER) then
+         if (ke*abs(pf - pr) > 2.0_wp*LAYER) then
             ! the layer graded up to LAYER / K from pr, the rest of the zone plain
-            sub(1, nsub) = pr + sign(LAYER/k, pf - pr)
+            sub(1, nsub) = pr + sign(LAYER/ke, pf - pr)
             nsub = nsub + 1
             sub(:, nsub) = [pf, sub(1, nsub - 1), 0.0_wp]
             sub_rule(nsub) = rule
@@ -533,12 +594,12 @@ contains
       !> u'' (s - s_e)**2 / 2 (E at the strip's centre).  False when there is none.
       logical function slip_minimum(pe, k)
          real(wp), intent(out) :: pe, k
-         real(wp) :: aa, bb, th, s_e, ue, d2u, e_max, width
+         real(wp) :: aa, bb, th, s_e, ue, d2u, e_max, width, u_sat
          integer :: m
          slip_minimum = .false.
          pe = 0.0_wp
          k = 0.0_wp
-         if (rheo%beta <= 0.0_wp) return
+         if (rheo%beta <= 0.0_wp .and. .not. rheo%limiting_shear > 0.0_wp) return
          aa = c%side*c%rho*(c%omega(1) - rs)
          bb = -c%side*c%rho*c%omega(2)
          if (hypot(aa, bb) <= 0.0_wp) return
@@ -555,7 +616,15 @@ contains
             d2u = abs(aa*cos(th) + bb*sin(th))/c%rho**2
             e_max = exp(0.5_wp*rheo%alpha*p0*cos(pe))
             if (.not. (d2u > 0.0_wp)) return
-            width = sqrt(2.0_wp*max(ue, 1.0_wp/(zeta*e_max))/d2u)     ! in s (m)
+            if (rheo%limiting_shear > 0.0_wp) then
+               ! the film's saturation under the cap, |u| = Lambda p_c h / (eta_w E**2) (add_sub),
+               ! or the thermal one where it is thinner
+               u_sat = rheo%limiting_shear*p0*cos(pe)*h/(rheo%eta_w*e_max*e_max)
+               if (rheo%beta > 0.0_wp) u_sat = min(u_sat, 1.0_wp/(zeta*e_max))
+               width = sqrt(2.0_wp*max(ue, u_sat)/d2u)
+            else
+               width = sqrt(2.0_wp*max(ue, 1.0_wp/(zeta*e_max))/d2u)     ! in s (m)
+            end if
             k = c%a*cos(pe)/width
             slip_minimum = .true.
             return
@@ -583,6 +652,42 @@ contains
             end if
          end do
       end function strip_rule_integral
+
+      !> strip_rule_integral with the limiting shear stress: each point's tau capped at tau_L =
+      !> Lambda p_c cos(psi) (p_c the strip's centre pressure, Pa), tau_L tanh(tau / tau_L)
+      !> (limited_shear) with tanh(x) = (1 - e) / (1 + e), e = exp(-2 min(x, 40)): loops of
+      !> exp, log and sqrt that gcc vectorises (libmvec); equal to limited_shear to an
+      !> absolute ~eps tau_L a point (test_limiting_shear: fast against reference).
+      function strip_rule_capped(aa, u, pc) result(f)
+         real(wp), intent(in) :: aa, u, pc
+         real(wp) :: f
+         real(wp), dimension(MAX_FAST) :: e_half, tau, tl, e
+         real(wp) :: zu
+         integer :: i
+         do i = 1, nq
+            e_half(i) = exp(aa*cy(i))
+         end do
+         if (rheo%beta > 0.0_wp) then
+            zu = zeta*abs(u)
+            do i = 1, nq
+               tau(i) = amp*e_half(i)*(2.0_wp*log(zu*e_half(i) + sqrt(1.0_wp + (zu*e_half(i))**2)) &
+                                       /sqrt(1.0_wp + (zu*e_half(i))**2))
+            end do
+         else
+            do i = 1, nq
+               tau(i) = rheo%eta_w*e_half(i)*e_half(i)*abs(u)/h
+            end do
+         end if
+         ! tau / tau_L <= 40 before the division (no overflow where tau_L -> 0); tanh(40) = 1
+         do i = 1, nq
+            tl(i) = max(rheo%limiting_shear*pc*cy(i), tiny(1.0_wp))
+            e(i) = exp(-2.0_wp*min(tau(i), 40.0_wp*tl(i))/tl(i))
+         end do
+         f = 0.0_wp
+         do i = 1, nq
+            f = f + wy(i)*tl(i)*(1.0_wp - e(i))/(1.0_wp + e(i))
+         end do
+      end function strip_rule_capped
 
    end subroutine ehd_contact_traction_fast
 
@@ -742,8 +847,10 @@ contains
    !> Traction f (N/m) and load q (N/m) of the strip across the Hertz ellipse at node s (m)
    !> of the major axis, slip u (m/s), folded strip rule (y, wy): tau h = amp E
    !> shear_shape(zeta |u| E), E = exp(alpha p / 2) (module header with eta_w(p) =
-   !> eta_w E**2); Newtonian tau = eta_w E**2 |u| / h when beta = 0; times the Maxwell film's
-   !> ratio (adore_tribology_ehd_elastic) when rheo%shear_modulus > 0.
+   !> eta_w E**2); Newtonian tau = eta_w E**2 |u| / h when beta = 0; capped at Lambda p
+   !> (limited_shear) when rheo%limiting_shear > 0; times the Maxwell film's ratio
+   !> (adore_tribology_ehd_elastic, of the uncapped film: docs/tribology.md, "Limiting shear
+   !> stress") when rheo%shear_modulus > 0.
    pure subroutine strip_traction(c, rheo, h, b, y, wy, s, u, f, q)
       type(ball_race_contact_t), intent(in) :: c
       type(ehd_rheology_t), intent(in) :: rheo
@@ -767,6 +874,7 @@ contains
          else
             tau = rheo%eta_w*e_half*e_half*abs(u)/h
          end if
+         if (rheo%limiting_shear > 0.0_wp) tau = limited_shear(tau, rheo%limiting_shear, p)
          f = f + half*wy(i)*tau
          q = q + half*wy(i)*p
       end do
