@@ -43,6 +43,8 @@ runs), the cage contacts' work (the run note's balance) and the contact damping.
     # boundary friction in the time steps (its stiffer slip wants a smaller largest step):
     .venv/bin/python bench/skf_friction.py --revolutions 1 --boundary-friction 0.1 --step-max 0.03 \
         --with-rolling-only
+    # the EHD film's limiting shear stress (run option limiting_shear, Lambda; 0: off)
+    .venv/bin/python bench/skf_friction.py --limiting-shear 0.08
 Results: docs/operating-points.md, "Deep-groove friction by mechanism".
 """
 
@@ -113,7 +115,7 @@ def _race_heats(print_path: Path, t_start: float) -> dict:
 
 
 def _case(args) -> dict:
-    speed, load, rolling, revolutions, exe, mu_b, step_max = args
+    speed, load, rolling, revolutions, exe, mu_b, step_max, lam = args
     from pyadore.api import parse_balance
     from pyadore.deck import read_deck
 
@@ -133,6 +135,8 @@ def _case(args) -> dict:
             cmd.append("--rolling-resistance")
         if mu_b > 0.0:
             cmd += ["--boundary-friction", str(mu_b)]
+        if lam > 0.0:
+            cmd += ["--limiting-shear", str(lam)]
         proc = subprocess.run(cmd, capture_output=True, text=True)
         row = {"speed_rpm": speed, "load_N": load, "rolling_resistance": rolling}
         bal = parse_balance(proc.stderr)
@@ -225,10 +229,11 @@ def hand() -> None:
               f"{h['outer_W']:.4g} W outer")
 
 
-def step0_losses(exe: str, mu_b: float, u_b: float | None = None) -> dict:
+def step0_losses(exe: str, mu_b: float, u_b: float | None = None, lam: float = 0.0) -> dict:
     """The quasi-static start's (step 0's) total power loss (W) of the deck at every point
     with the run option boundary_friction mu_b (0: the deck's curve) and boundary_slip u_b
-    (m/s; None: its default): {(speed, load): W}.  Step 0 has no rolling resistance."""
+    (m/s; None: its default) and limiting_shear lam (0: off): {(speed, load): W}.  Step 0 has
+    no rolling resistance."""
     from pyadore.deck import read_deck
     from pyadore.printout import read_print
 
@@ -243,6 +248,8 @@ def step0_losses(exe: str, mu_b: float, u_b: float | None = None) -> dict:
             cmd = [exe, str(path), str(Path(tmp) / "case.prt"), "--steps", "0"]
             if mu_b > 0.0:
                 cmd += ["--boundary-friction", str(mu_b)] + (["--boundary-slip", str(u_b)] if u_b else [])
+            if lam > 0.0:
+                cmd += ["--limiting-shear", str(lam)]
             proc = subprocess.run(cmd, capture_output=True, text=True)
             if proc.returncode != 0:
                 out[(speed, load)] = float("nan")
@@ -260,6 +267,8 @@ def main() -> int:
     ap.add_argument("--boundary-friction", type=float, default=0.0,
                     help="the run option boundary_friction for every run (0: the deck's curve)")
     ap.add_argument("--boundary-slip", type=float, default=None, help="the run option boundary_slip (m/s)")
+    ap.add_argument("--limiting-shear", type=float, default=0.0,
+                    help="the run option limiting_shear (Lambda) for every run (0: off, the film uncapped)")
     ap.add_argument("--step-max", type=float, default=0.0,
                     help="the deck's largest time step (Rec 2.1, time scales; 0: the deck's 0.3)")
     ap.add_argument("--with-rolling-only", action="store_true", help="only the runs with rolling resistance")
@@ -274,10 +283,10 @@ def main() -> int:
 
     if a.step0:
         nu = _core.lubricant(1, 323.0)["nu"] * 1e6
-        curve = step0_losses(a.exe, 0.0)
-        mu = step0_losses(a.exe, a.boundary_friction, a.boundary_slip)
+        curve = step0_losses(a.exe, 0.0, lam=a.limiting_shear)
+        mu = step0_losses(a.exe, a.boundary_friction, a.boundary_slip, a.limiting_shear)
         print(f"step 0 (no rolling resistance); boundary_friction {a.boundary_friction:g}, boundary_slip "
-              f"{a.boundary_slip or 'default'}")
+              f"{a.boundary_slip or 'default'}, limiting_shear {a.limiting_shear:g}")
         print("| speed (r/min) | load (N) | SKF sliding (W) | Palmgren M1 (W) | step 0, deck's curve (W) "
               "| step 0, boundary friction (W) |")
         print("|---|---|---|---|---|---|")
@@ -287,12 +296,13 @@ def main() -> int:
         return 0
 
     nu = _core.lubricant(1, 323.0)["nu"] * 1e6      # mm**2/s
-    cases = [(s, f, r, a.revolutions, a.exe, a.boundary_friction, a.step_max)
+    cases = [(s, f, r, a.revolutions, a.exe, a.boundary_friction, a.step_max, a.limiting_shear)
              for s, f, r in itertools.product(SPEEDS, LOADS, (True,) if a.with_rolling_only else (True, False))]
     with ProcessPoolExecutor(max_workers=a.workers) as pool:
         rows = list(pool.map(_case, cases))
     print(f"nu = {nu:.3f} mm^2/s; engine: time-averaged dissipation over the last half of {a.revolutions} revolutions"
           f"; boundary_friction {a.boundary_friction:g}, boundary_slip {a.boundary_slip or 'default'}, "
+          f"limiting_shear {a.limiting_shear:g}, "
           f"largest step {a.step_max or 'the deck'}s")
     print("| speed (r/min) | load (N) | SKF total (W) | SKF rolling / sliding (W) | Palmgren total (W) "
           "| Palmgren M0 / M1 (W) "
@@ -316,10 +326,12 @@ def main() -> int:
     for r in rows:
         if "error" in r:
             print("failed:", r["speed_rpm"], r["load_N"], r["rolling_resistance"], r["error"])
-    name = "skf_friction.json" if a.boundary_friction == 0.0 else f"skf_friction_mu{a.boundary_friction:g}.json"
+    name = "skf_friction" + (f"_mu{a.boundary_friction:g}" if a.boundary_friction else "") \
+        + (f"_ls{a.limiting_shear:g}" if a.limiting_shear else "") + ".json"
     out = ROOT / "bench" / "results" / name
     out.parent.mkdir(exist_ok=True)
     out.write_text(json.dumps({"nu_mm2_s": nu, "revolutions": a.revolutions, "boundary_friction": a.boundary_friction,
+                               "limiting_shear": a.limiting_shear,
                                "rows": rows}, indent=1) + "\n")
     return 0
 
