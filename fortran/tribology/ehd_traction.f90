@@ -548,9 +548,9 @@ contains
             ! a limiting shear stress saturates the film where its Newtonian stress eta_w E**2
             ! |u| / h reaches Lambda p_c (p_c = p0 cos(phi), the strip's centre): within
             ! |u| = Lambda p_c h / (eta_w E**2) of the rolling point, often far thinner than the
-            ! thermal layer (the thinner of the two is graded; cos(phi) cancels)
-            ! and graded out to the thermal layer's extent (the strip's off-centre points,
-            ! at lower pressure, saturate at larger slips)
+            ! thermal layer.  The thinner of the two is graded (cos(phi) cancels), out to the
+            ! thermal layer's extent kx_last (the strip's off-centre points, at lower pressure,
+            ! saturate at larger slips); isothermal: the cap's own extent
             kx_last = k_last
             if (rheo%limiting_shear > 0.0_wp) k_last = max(k_last, abs(dudx)*c%a*rheo%eta_w* &
                                                            exp(rheo%alpha*p0*cp)/(rheo%limiting_shear*p0*h))
