@@ -2,7 +2,8 @@
 !> adore_tribology_ehd_traction's limited_shear, docs/tribology.md "Limiting shear stress"):
 !> tau = tau_L tanh(tau_N / tau_L), tau_L = Lambda p.  Closed checks: the law itself (never
 !> above Lambda p nor above the film's own stress, slope 1 at small stress, off at Lambda =
-!> 0), every strip's traction at most Lambda times its load, and the saturated film
+!> 0), every strip's traction at most Lambda times its load (with the Maxwell film too), and
+!> the saturated film
 !> (tau_N >> tau_L everywhere) whose strip traction is Lambda times the strip's load and whose
 !> contact force is Lambda times the contact load; the fast quadrature against the
 !> reference with the cap on, at Appendix C's ball-1 outer contact and at 3 and 12.8 times
@@ -98,6 +99,27 @@ contains
       end do
       write (*, "(a,f10.6)") "limiting shear: largest strip traction / (Lambda x strip load):", worst
       call check(ok, "limiting shear: every strip's traction <= Lambda x its load and <= the uncapped film's")
+      ! with the film's elasticity (G = 1 GPa, 0.3 GPa): the Maxwell ratio of the uncapped film
+      ! times the capped strip integral (docs): still at most Lambda q and the capped viscous film's
+      ok = .true.
+      worst = 0.0_wp
+      do l = 1, 2
+         do k = -3, 3
+            u = 10.0_wp**(0.5_wp*k)*3.0_wp
+            do i = -5, 5
+               s = 0.19_wp*i*c%a
+               r = rheo
+               r%limiting_shear = 0.08_wp
+               call ehd_strip_traction(c, r, H, B, 24, s, u, f0, q0)
+               r%shear_modulus = merge(1.0e9_wp, 3.0e8_wp, l == 1)
+               call ehd_strip_traction(c, r, H, B, 24, s, u, f, q)
+               ok = ok .and. f <= 0.08_wp*q .and. f <= f0 .and. f > 0.0_wp
+               worst = max(worst, f/(0.08_wp*q))
+            end do
+         end do
+      end do
+      write (*, "(a,f10.6)") "limiting shear with the elastic film: largest strip traction / (Lambda q):", worst
+      call check(ok, "limiting shear: with the Maxwell film every strip's traction <= Lambda x its load")
    end subroutine test_strip_bound
 
    !> tau_N >> tau_L everywhere (an isothermal film of 1e6 Pa s at 5 m/s: tau_N >= 1.1e13 Pa,
