@@ -3,9 +3,8 @@
 !> tau = tau_L tanh(tau_N / tau_L), tau_L = Lambda p.  Closed checks: the law itself (never
 !> above Lambda p nor above the film's own stress, slope 1 at small stress, off at Lambda =
 !> 0), every strip's traction at most Lambda times its load (with the Maxwell film too), and
-!> the saturated film
-!> (tau_N >> tau_L everywhere) whose strip traction is Lambda times the strip's load and whose
-!> contact force is Lambda times the contact load; the fast quadrature against the
+!> the saturated film (tau_N >> tau_L everywhere) whose strip traction is Lambda times the
+!> strip's load and whose contact force is Lambda times the contact load; the fast quadrature against the
 !> reference with the cap on, at Appendix C's ball-1 outer contact and at 3 and 12.8 times
 !> its load (up to 3.7 GPa).  No files.
 program test_limiting_shear
