@@ -95,6 +95,7 @@ module adore_bearings_ball
       procedure :: n_balance => ball_n_balance
       procedure :: balance_values => ball_balance
       procedure :: balance_text => ball_balance_text
+      procedure :: balance_defect => ball_balance_defect
       procedure :: start_load => ball_start_load
       procedure :: unknown_name => ball_unknown_name
    end type ball_kind_t
@@ -154,6 +155,12 @@ module adore_bearings_ball
          character(len=*), intent(in) :: hint
          character(len=:), allocatable, intent(out) :: text
       end subroutine ball_balance_text
+      !> The power balance's defect over a time step (J; the integrator's balance control).
+      module subroutine ball_balance_defect(self, g0, g1, q, h, defect, flow)
+         class(ball_kind_t), intent(in) :: self
+         real(wp), intent(in) :: g0(:), g1(:), q(:), h
+         real(wp), intent(out) :: defect, flow
+      end subroutine ball_balance_defect
    end interface
 
 contains
@@ -241,7 +248,8 @@ contains
                                error, two_d=self%options%traction_2d, orbit_frame=self%options%ball_frame == "orbit", &
                                int_method=method, cage_free=cage_free, &
                                adore_whirl=self%options%cage_whirl == "adore", &
-                               method_switch=self%options%integrator == "deck")
+                               method_switch=self%options%integrator == "deck", &
+                               balance_tolerance=self%options%balance_tolerance)
       if (allocated(error)) return
       self%time_scale = self%eom%time_scale
       self%eom%rolling_resistance = self%options%rolling_resistance

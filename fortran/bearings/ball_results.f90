@@ -240,4 +240,19 @@ contains
       end associate
    end procedure ball_balance_text
 
+   !> The power balance's defect over a time step of h (tau) for the integrator's balance
+   !> control (run option balance_tolerance; issue #28), from the balance values g0 at its start
+   !> and g1 at its end and their integral q over it (W tau): defect (J) = the mechanical
+   !> energy's change - (drive - dissipation - whirl frame) integrated, the per-step share of
+   !> the run note's closure numerator (ball_balance_text; Newton-Euler make it 0 up to the
+   !> integration error), against flow (J) = the step's gross drive, dissipation and whirl-frame
+   !> work, at least MIN_BALANCED_POWER over the step.
+   module procedure ball_balance_defect
+      integer, parameter :: flows(5) = [BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, BAL_CAGE_WORK, BAL_WHIRL_FRAME]
+      real(wp) :: net
+      net = q(BAL_DRIVE) - q(BAL_RACE_HEAT) - q(BAL_DAMPING) - q(BAL_CAGE_WORK) - q(BAL_WHIRL_FRAME)
+      defect = (g1(BAL_ENERGY) - g0(BAL_ENERGY)) - self%time_scale*net
+      flow = self%time_scale*max(sum(abs(q(flows))), MIN_BALANCED_POWER*h)
+   end procedure ball_balance_defect
+
 end submodule adore_bearings_ball_results

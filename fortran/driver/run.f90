@@ -140,6 +140,11 @@ contains
          return
       end if
       bearing%limiting_shear = opts%limiting_shear
+      if (.not. (opts%balance_tolerance >= 0.0_wp .and. opts%balance_tolerance < 1.0_wp)) then
+         call input_error(error, "balance_tolerance (--balance-tolerance): must be >= 0 and < 1 (the largest "// &
+                          "energy defect of a time step over its energy flow, e.g. 1e-3; 0: off)")
+         return
+      end if
       ! the guide lands' lubricant layer (run option land_oil; docs/cage.md, "The guide-land
       ! film where the report has none")
       bearing%land_oil_layer = opts%land_oil

@@ -85,7 +85,7 @@ contains
       real(wp) :: t, t_old, t_event, t_stop, t_window
       character(len=:), allocatable :: reason, hint
       integer :: i, j, flag, stop, printed_last, n_sub, print_interval, n_events, n_report
-      integer :: n_window, forced_before, n_at_max
+      integer :: n_window, forced_before, n_at_max, n_at_min
       logical :: print_now, events, to_time, last, in_window
 
       incomplete = ""
@@ -113,6 +113,11 @@ contains
       end if
       call sys%averaged_values(values)
       call averages%start(values)
+      ! the integrator's power-balance control integrates the balance values from the start
+      if (it%settings%balance_tolerance > 0.0_wp .and. size(bal) > 0) then
+         call sys%balance_values(bal)
+         call it%start_quadrature(bal)
+      end if
       call averages%mean(mean)
       call record(0, .true.)
       if (.not. to_time .and. n_steps/2 == 0) call open_window()
@@ -152,6 +157,7 @@ contains
                end if
                n_window = n_window + 1
                if (t - t_old >= (1.0_wp - 1.0e-9_wp)*it%settings%h_max) n_at_max = n_at_max + 1
+               if (t - t_old <= (1.0_wp + 1.0e-9_wp)*it%settings%h_min) n_at_min = n_at_min + 1
             else if (to_time .and. t >= 0.5_wp*t_stop) then
                call open_window()
             end if
@@ -194,7 +200,8 @@ contains
       if (present(balance) .and. in_window .and. size(bal) > 0) then
          if (window%elapsed > 0.0_wp) then
             call window%mean(bal_mean)
-            call closure_hint(n_window, it%stats%forced_at_h_min - forced_before, n_at_max, hint)
+            call closure_hint(n_window, it%stats%forced_at_h_min - forced_before, n_at_max, hint, &
+                              it%settings%balance_tolerance, n_at_min)
             call sys%balance_text([t_window, t], bal_mean, bal_first, window%last, hint, balance)
          end if
       end if
@@ -211,6 +218,7 @@ contains
          t_window = t
          n_window = 0
          n_at_max = 0
+         n_at_min = 0
          forced_before = it%stats%forced_at_h_min
          call sys%balance_values(bal)
          bal_first = bal
@@ -270,15 +278,37 @@ contains
    !> What limited the balance window's time steps, for the run note when its balances do
    !> not close (issue #28): of the window's n_window accepted steps, n_forced were accepted
    !> at (or below) the Rec 2.1 minimum step with their error above the error limit (ADORE's
-   !> rule) - then the minimum step, not the maximum, is what a deck changes; else n_at_max
-   !> were at the Rec 2.1 maximum step - then the maximum step; else every step met the error
-   !> limit between the two - then the error limit.  Text without units.
-   subroutine closure_hint(n_window, n_forced, n_at_max, hint)
+   !> rule) - then the minimum step, not the maximum, is what a deck changes; else, under the
+   !> integrator's power-balance control (balance_tolerance > 0, run option balance_tolerance),
+   !> every step above the minimum step met it (n_at_min at the minimum, where the control
+   !> stops: then the minimum step) and the closure is its steps' defects added up - then the tolerance;
+   !> else n_at_max were at the Rec 2.1 maximum step - then the maximum step; else every step
+   !> met the error limit between the two - then the error limit.  Text without units.
+   subroutine closure_hint(n_window, n_forced, n_at_max, hint, balance_tolerance, n_at_min)
       integer, intent(in) :: n_window, n_forced, n_at_max
       character(len=:), allocatable, intent(out) :: hint
+      real(wp), intent(in), optional :: balance_tolerance
+      integer, intent(in), optional :: n_at_min
+      logical :: controlled
+      character(len=16) :: tol_text
+      controlled = .false.
+      if (present(balance_tolerance)) controlled = balance_tolerance > 0.0_wp
       if (n_forced > 0) then
          hint = itoa(n_forced)//" of the window's "//itoa(n_window)//" time steps accepted at the minimum step "// &
                 "with their error above the error limit: a smaller Rec 2.1 minimum step resolves them"
+      else if (controlled .and. present(n_at_min)) then
+         if (n_at_min > 0) then
+            hint = itoa(n_at_min)//" of the window's "//itoa(n_window)//" time steps at the minimum step, where "// &
+                   "the balance control stops: a smaller Rec 2.1 minimum step does"
+         else
+            write (tol_text, "(es9.2)") balance_tolerance
+            hint = "the window's "//itoa(n_window)//" time steps met the balance tolerance "// &
+                   trim(adjustl(tol_text))//" each: a smaller balance_tolerance does"
+         end if
+      else if (controlled) then
+         write (tol_text, "(es9.2)") balance_tolerance
+         hint = "the window's "//itoa(n_window)//" time steps met the balance tolerance "//trim(adjustl(tol_text))// &
+                " each: a smaller balance_tolerance does"
       else if (n_at_max > 0) then
          hint = itoa(n_at_max)//" of the window's "//itoa(n_window)//" time steps at the maximum step: "// &
                 "a smaller Rec 2.1 maximum step does"

@@ -397,7 +397,7 @@ contains
    !> show: docs/dynamics.md), the packed initial state y at tau = 0.  traction: race
    !> traction on (default); two_d: the two-dimensional race traction (default .true.).
    subroutine start_ball_dynamics(b, g, start, cage, sys, it, y, error, traction, two_d, orbit_frame, int_method, &
-                                  cage_free, adore_whirl, method_switch)
+                                  cage_free, adore_whirl, method_switch, balance_tolerance)
       type(bearing_t), intent(in) :: b
       type(mounted_geometry_t), intent(in) :: g
       type(ball_start_t), intent(in) :: start
@@ -421,6 +421,9 @@ contains
       !> relaxes faster than the Rec 2.1 minimum step can follow (BALL_SWITCH_STIFFNESS; the
       !> deck's method, not one a run option names); default .false.
       logical, intent(in), optional :: method_switch
+      !> the integrator's power-balance control (integrator_settings_t%balance_tolerance, run
+      !> option balance_tolerance); default 0: off
+      real(wp), intent(in), optional :: balance_tolerance
       real(wp) :: scales(3), l, tt
       integer :: k
       type(bearing_state_t) :: st
@@ -461,6 +464,7 @@ contains
                                           forced_err_cap=ADORE_FORCED_ERR_CAP)
       end associate
       if (present(int_method)) settings%int_method = int_method
+      if (present(balance_tolerance)) settings%balance_tolerance = balance_tolerance
       if (settings%int_method == INT_METHOD_ARK436) then
          ! the IMEX method's tuning (docs/integrator.md, "The stiff-aware method"): a new arrowhead
          ! Jacobian every 10 steps (and after a rejected step; with the inner race in the border

@@ -18,6 +18,7 @@ module adore_dynamics_derivative
       procedure :: border_shares
       procedure :: n_quadrature
       procedure :: quadrature_values
+      procedure :: balance_defect
    end type derivative_t
 
    abstract interface
@@ -64,5 +65,20 @@ contains
       v = 0.0_wp
       if (.false.) v = len(self%failure_reason)
    end subroutine quadrature_values
+
+   !> The balance defect of a step of size h (unit of t) whose quadrature_values were g0 at its
+   !> start and g1 at its end and integrate to q over it (integrator_settings_t%
+   !> balance_tolerance): defect, what the step's change of a conserved or balanced quantity
+   !> misses against the integral of its rates (e.g. energy change minus net power times h), and
+   !> flow > 0, the step's gross flows of that quantity (same units, e.g. J), against which the
+   !> integrator measures the defect.  This default: no balance (defect 0, flow 1).
+   subroutine balance_defect(self, g0, g1, q, h, defect, flow)
+      class(derivative_t), intent(in) :: self
+      real(wp), intent(in) :: g0(:), g1(:), q(:), h
+      real(wp), intent(out) :: defect, flow
+      defect = 0.0_wp
+      flow = 1.0_wp
+      if (.false.) defect = len(self%failure_reason) + size(g0) + size(g1) + size(q) + h
+   end subroutine balance_defect
 
 end module adore_dynamics_derivative

@@ -187,6 +187,14 @@ module adore_dynamics_integrator
          class(integrator_t), intent(inout) :: self
          real(wp), intent(in) :: h
       end subroutine step_quadrature
+      !> The power-balance control's error ratio of the attempt of size h (1 = at
+      !> settings%balance_tolerance; 0 without a balance): the derivative's balance defect over
+      !> the step against tolerance times its flow.
+      module real(wp) function balance_error(self, deriv, h)
+         class(integrator_t), intent(inout) :: self
+         class(derivative_t), intent(in) :: deriv
+         real(wp), intent(in) :: h
+      end function balance_error
    end interface
 
 contains
@@ -321,9 +329,9 @@ contains
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       real(wp), intent(in), optional :: t_limit
-      real(wp) :: h, h_plan, err, fac, fac_err, h_min
+      real(wp) :: h, h_plan, err, err_state, fac, fac_err, h_min
       integer :: flag, tries
-      logical :: clipped, rejected_before, forced, below_min, gross, gross_seen, at_min
+      logical :: clipped, rejected_before, forced, below_min, gross, gross_seen, at_min, balance_led
       character(len=:), allocatable :: why
 
       if (.not. self%ready) then
@@ -383,6 +391,16 @@ contains
          else
             call attempt(self, deriv, t, y, h, flag, err)
          end if
+         ! the power-balance control (settings%balance_tolerance), not at the minimum step
+         err_state = err
+         balance_led = .false.
+         if (self%quadrature .and. self%settings%balance_tolerance > 0.0_wp .and. .not. at_min .and. &
+             flag == DERIV_OK) then
+            if (ieee_is_finite(err)) then
+               err = max(err, balance_error(self, deriv, h))
+               balance_led = err > err_state .and. err > 1.0_wp
+            end if
+         end if
          if (flag == DERIV_FAIL) then
             call stop_error(self, error, "the derivative failed", t, h, deriv=deriv)
             return
@@ -416,6 +434,13 @@ contains
             why = why//" times the error limit "
             call put_real(why, self%settings%error_limit)
             fac = flag_cut
+         else if (balance_led) then
+            self%stats%rejected_balance = self%stats%rejected_balance + 1
+            why = "power balance defect "
+            call put_real(why, err*self%settings%balance_tolerance)
+            why = why//" of the step's energy flow, above the balance tolerance "
+            call put_real(why, self%settings%balance_tolerance)
+            fac = max(fac_min, self%settings%safety/err**self%alpha)
          else
             self%stats%rejected_error = self%stats%rejected_error + 1
             why = "truncation error estimate "
@@ -483,7 +508,7 @@ contains
             st%h_min_used = min(st%h_min_used, h)
             st%h_max_used = max(st%h_max_used, h)
          end if
-         st%max_truncation = max(st%max_truncation, err*self%settings%error_limit)
+         st%max_truncation = max(st%max_truncation, err_state*self%settings%error_limit)
       end associate
       if (clipped) then
          t = t_limit

@@ -57,6 +57,12 @@ module adore_dynamics_integrator_settings
       !> (issue #28; docs/integrator.md, "Step control").  0 (the default): never.
       real(wp) :: switch_stiffness = 0.0_wp
       integer, allocatable :: switch_columns(:)
+      !> Power-balance control (issue #28): with the quadrature on (start_quadrature), an attempt
+      !> is also rejected when the derivative's balance defect over the step (derivative_t%
+      !> balance_defect: the energy change against the integral of its rates) exceeds
+      !> balance_tolerance times the step's energy flow; the controller takes the larger of that
+      !> ratio and the error test's.  Not at the minimum step.  0 (the default): off.
+      real(wp) :: balance_tolerance = 0.0_wp
    end type integrator_settings_t
 
    !> Counts for "Statistics of this Run" (Appendix C) and diagnostics.
@@ -66,6 +72,7 @@ module adore_dynamics_integrator_settings
       integer :: rejected_error = 0         !< attempts rejected by the error test
       integer :: rejected_flag = 0          !< attempts refused by the derivative (4.4.12)
       integer :: rejected_nonfinite = 0     !< attempts with non-finite stages or result
+      integer :: rejected_balance = 0       !< attempts rejected by the power-balance control
       integer :: forced_at_h_min = 0        !< steps accepted at h_min with err > 1 (accept_at_h_min)
       real(wp) :: forced_err_max = 0.0_wp   !< the largest err (1 = at the limit) of those steps
       !> steps accepted shorter than h_min after attempts the derivative refused or that were not

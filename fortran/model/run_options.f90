@@ -84,6 +84,11 @@ module adore_model_run_options
       !> film: > 0 caps its local shear stress smoothly at Lambda p (Bair & Winer 1979;
       !> docs/tribology.md, "Limiting shear stress"; not in ADORE 5.0); 0 (default): no cap
       real(wp) :: limiting_shear = 0.0_wp
+      !> the integrator's power-balance control (integrator_settings_t%balance_tolerance; issue
+      !> #28, docs/integrator.md, "Power-balance control"): a time step is also rejected when its
+      !> energy change misses the integral of the net power by more than this fraction of the
+      !> step's energy flow (0 <= x < 1; ball bearings); 0 (default): off
+      real(wp) :: balance_tolerance = 3.0e-3_wp
       !> the coordinates of the balls in the integrated state: "orbit" (the report's eq 54:
       !> axial, radial, azimuth and their rates; issue #30) or "cartesian" (inertial position
       !> and velocity, the runs before issue #30)
@@ -155,7 +160,7 @@ module adore_model_run_options
       character(len=160) :: help = ""      !< one line
    end type option_spec_t
 
-   integer, parameter :: N_OPTIONS = 28
+   integer, parameter :: N_OPTIONS = 29
 
    !> The run options (keep the order of run_options_t).
    type(option_spec_t), parameter :: OPTION_TABLE(N_OPTIONS) = [ &
@@ -202,6 +207,9 @@ module adore_model_run_options
       option_spec_t("limiting_shear", OPTION_REAL, "0", 0, "", "LAMBDA", "", &
                     "limiting shear stress Lambda p of the EHD (model 3) film, tau_L tanh(tau / tau_L) "// &
                     "(Bair & Winer), 0 <= Lambda < 1; not in ADORE 5.0; 0: no cap"), &
+      option_spec_t("balance_tolerance", OPTION_REAL, "3e-3", 0, "", "FRACTION", "", &
+                    "reject a time step whose energy change misses its integrated net power by more than this "// &
+                    "fraction of its energy flow (0 <= x < 1; ball decks); 0: off"), &
       option_spec_t("duration", OPTION_REAL, "0", 0, "", "SECONDS", "", &
                     "simulated time to integrate (s): the run ends exactly there, its last step printed "// &
                     "(instead of a step count)"), &
@@ -377,6 +385,8 @@ contains
          opts%film_shear_modulus = x
       case ("limiting_shear")
          opts%limiting_shear = x
+      case ("balance_tolerance")
+         opts%balance_tolerance = x
       case ("duration")
          opts%duration = x
       case ("revolutions")

@@ -8,7 +8,7 @@ module integrator_test_problems
    private
 
    public :: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
-   public :: driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t, driven_power_t
+   public :: driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t, driven_power_t, driven_balance_t
 
    !> y' = -lambda y (exact: y0 exp(-lambda t)).
    type, extends(derivative_t) :: decay_t
@@ -105,6 +105,18 @@ module integrator_test_problems
       procedure :: quadrature_values => driven_power_values
    end type driven_power_t
 
+   !> driven_power_t with its energy as a third quadrature value and the energy balance's
+   !> defect (derivative_t%balance_defect): E(end) - E(start) - int (P - D) dt against the
+   !> step's int (|P| + |D|) dt, the integrator's power-balance control.
+   type, extends(driven_power_t) :: driven_balance_t
+      real(wp) :: energy = 0.0_wp
+   contains
+      procedure :: eval => driven_balance_eval
+      procedure :: n_quadrature => driven_balance_n
+      procedure :: quadrature_values => driven_balance_values
+      procedure :: balance_defect => driven_balance_defect
+   end type driven_balance_t
+
    !> nb unit masses, each on a stiff spring k and damper c to a common mass 1/mu (the border,
    !> a stand-in for the inner race under its balls), which sits on a soft spring 1 and is
    !> driven by sin t: y = (x_1, v_1, ..., x_nb, v_nb, X, V).  The masses' collective motion
@@ -167,6 +179,39 @@ contains
       real(wp), intent(out) :: v(:)
       v = self%last
    end subroutine driven_power_values
+
+   subroutine driven_balance_eval(self, t, y, dydt, flag)
+      class(driven_balance_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      integer :: k
+      call driven_power_eval(self, t, y, dydt, flag)
+      self%energy = 0.0_wp
+      do k = 1, size(self%omega)
+         self%energy = self%energy + 0.5_wp*y(2*k)**2 + 0.5_wp*self%omega(k)**2*(y(2*k - 1) - sin(t))**2
+      end do
+   end subroutine driven_balance_eval
+
+   integer function driven_balance_n(self) result(n)
+      class(driven_balance_t), intent(in) :: self
+      n = size(self%last) + 1
+   end function driven_balance_n
+
+   subroutine driven_balance_values(self, v)
+      class(driven_balance_t), intent(in) :: self
+      real(wp), intent(out) :: v(:)
+      v = [self%last, self%energy]
+   end subroutine driven_balance_values
+
+   subroutine driven_balance_defect(self, g0, g1, q, h, defect, flow)
+      class(driven_balance_t), intent(in) :: self
+      real(wp), intent(in) :: g0(:), g1(:), q(:), h
+      real(wp), intent(out) :: defect, flow
+      defect = (g1(3) - g0(3)) - (q(1) - q(2))
+      flow = max(abs(q(1)) + abs(q(2)), h*tiny(1.0_wp)) + 0.0_wp*self%energy
+   end subroutine driven_balance_defect
 
    !> The exact state of driven_oscillators_t at t on its particular solution: x_k = Im(H e**it),
    !> H = omega**2/(omega**2 - 1 + 2 i zeta omega); s from s' = x_1 - s on its own particular
@@ -349,7 +394,7 @@ program test_integrator
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, derivative_t, &
       INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436, ADORE_FORCED_ERR_CAP
    use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t, &
-      driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t, driven_power_t
+      driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t, driven_power_t, driven_balance_t
    use adore_dynamics_block_jacobian, only: block_jacobian_t
    use adore_core_linalg, only: solve_dense
    implicit none
@@ -376,6 +421,7 @@ program test_integrator
    call test_arrowhead_against_dense()
    call test_bordered_stiff_shaker()
    call test_quadrature_closes_the_energy()
+   call test_balance_control()
 
    call finish("integrator")
 
@@ -1360,6 +1406,85 @@ contains
                  "Rosenbrock-W: the steps' ends close the stiff balance, its stages' quadrature does not: "//trim(line))
 
    end subroutine test_quadrature_closes_the_energy
+
+   !> The power-balance control (integrator_settings_t%balance_tolerance): on the stiff driven
+   !> oscillators at error limit 1e-5, where the IMEX method's stage quadrature closes the
+   !> energy balance only to about 1e-2 (test_quadrature_closes_the_energy), rejecting the
+   !> steps whose energy defect exceeds 1e-3 of their flow closes it within the tolerance: the
+   !> closure, a sum of the accepted steps' defects over the dissipation, is at most the
+   !> tolerance times the gross flow over the dissipation.  A derivative without a balance
+   !> (derivative_t's default balance_defect) takes exactly the steps it takes without the
+   !> control.
+   subroutine test_balance_control()
+      real(wp) :: off(2), on(2), plain(2), plain_on(2), y_plain(5), y_plain_on(5)
+      integer :: n_off(2), n_on(2), n_plain(2), n_plain_on(2)
+      character(len=200) :: line
+      call balance_closure(.true., 0.0_wp, off, n_off)
+      call balance_closure(.true., 1.0e-3_wp, on, n_on)
+      write (line, "(a,es10.2,a,i0,a,es10.2,a,i0,a,i0,a)") "balance control, IMEX, stiff, error limit 1e-5: closure", &
+         off(1), " in ", n_off(1), " steps off, ", on(1), " in ", n_on(1), " steps at 1e-3 (", n_on(2), &
+         " attempts rejected by it)"
+      write (*, "(a)") trim(line)
+      call check(abs(off(1)) > 3.0e-3_wp, "balance control: without it the stiff balance misses: "//trim(line))
+      call check(abs(on(1)) <= 1.0e-3_wp*on(2), &
+                 "balance control: the closure within the tolerance times flow over dissipation: "//trim(line))
+      call check(n_on(2) > 0 .and. n_on(1) > n_off(1), "balance control: it rejects steps and takes more: "//trim(line))
+      call balance_closure(.false., 0.0_wp, plain, n_plain, y_plain)
+      call balance_closure(.false., 1.0e-3_wp, plain_on, n_plain_on, y_plain_on)
+      call check(n_plain(1) == n_plain_on(1) .and. n_plain_on(2) == 0 .and. all(y_plain == y_plain_on), &
+                 "balance control: a derivative without a balance takes the same steps")
+   end subroutine test_balance_control
+
+   !> The stiff driven oscillators (test_quadrature_closes_the_energy's) to t = 10 by the IMEX
+   !> method at error limit 1e-5 with balance_tolerance tol, the derivative with its balance
+   !> (driven_balance_t) or without (driven_power_t, balance: .false.): c = (closure by the
+   !> stage quadrature, gross flow over dissipation), n = (accepted steps, attempts the balance
+   !> control rejected); y_end, the final state.
+   subroutine balance_closure(balance, tol, c, n, y_end)
+      logical, intent(in) :: balance
+      real(wp), intent(in) :: tol
+      real(wp), intent(out) :: c(2)
+      integer, intent(out) :: n(2)
+      real(wp), intent(out), optional :: y_end(5)
+      type(integrator_t) :: it
+      type(driven_balance_t), target :: fb
+      type(driven_power_t), target :: fp
+      class(driven_power_t), pointer :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(5), dydt(5), q(2), gross, e0, v(3)
+      integer :: flag
+      if (balance) then
+         f => fb
+      else
+         f => fp
+      end if
+      f%omega = [1000.0_wp, 3000.0_wp]
+      call it%init(5, settings_of(INT_METHOD_ARK436, 1.0e-5_wp), error, scale=[1.0_wp, 1.0e3_wp, 1.0_wp, 3.0e3_wp, 1.0_wp])
+      it%settings%h_max = 10.0_wp
+      it%settings%h_initial = 1.0e-3_wp
+      it%settings%rel_weight = 0.0_wp
+      it%settings%balance_tolerance = tol
+      call it%set_jacobian_blocks([1, 3], 2, [1, 2], error)
+      t = 0.0_wp
+      y = driven_exact(f%driven_oscillators_t, t)
+      y(2) = y(2) + 0.5_wp
+      call f%eval(t, y, dydt, flag)
+      call f%quadrature_values(v(1:f%n_quadrature()))
+      call it%start_quadrature(v(1:f%n_quadrature()))
+      e0 = driven_energy(f, t, y)
+      q = 0.0_wp
+      gross = 0.0_wp
+      do while (t < 10.0_wp .and. .not. allocated(error))
+         call it%step(f, t, y, error, t_limit=10.0_wp)
+         if (allocated(error)) exit
+         q = q + it%q_step(1:2)
+         gross = gross + abs(it%q_step(1)) + abs(it%q_step(2))
+      end do
+      call check(.not. allocated(error), "balance control: integrated to t = 10")
+      c = [(driven_energy(f, t, y) - e0 - (q(1) - q(2)))/q(2), gross/q(2)]
+      n = [it%stats%accepted, it%stats%rejected_balance]
+      if (present(y_end)) y_end = y
+   end subroutine balance_closure
 
    !> The line test_quadrature_closes_the_energy prints and names in its checks.
    subroutine quadrature_line(method, what, c, line)

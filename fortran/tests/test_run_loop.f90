@@ -121,7 +121,8 @@ contains
    !> held the window's steps.  Steps forced at the minimum (ISO example 4 at 10 000 rpm and its
    !> static capacity: 111 of the window's 150) point to the minimum step, also when some steps
    !> reached the maximum; else steps at the maximum (Appendix C: 125 of 1 250) to the maximum
-   !> step; else steps that met the error limit to the error limit.
+   !> step; else steps that met the error limit to the error limit.  Under the power-balance
+   !> control every unforced step met its tolerance: the tolerance.
    subroutine test_closure_hint()
       character(len=:), allocatable :: hint
       call closure_hint(150, 111, 0, hint)
@@ -138,6 +139,16 @@ contains
       call closure_hint(40, 0, 0, hint)
       call check(index(hint, "smaller Rec 2.1 error limit") > 0 .and. index(hint, "maximum step does") == 0 .and. &
                  index(hint, "minimum step resolves") == 0, "closure hint, steps within the limits: the error limit: "//hint)
+      call closure_hint(150, 0, 90, hint, 3.0e-3_wp)
+      call check(index(hint, "met the balance tolerance 3.00E-03 each: a smaller balance_tolerance does") > 0 .and. &
+                 index(hint, "maximum step") == 0, "closure hint, balance control: the tolerance: "//hint)
+      call closure_hint(150, 0, 0, hint, 3.0e-3_wp, 12)
+      call check(index(hint, "12 of the window's 150 time steps at the minimum step, where the balance control stops"// &
+                       ": a smaller Rec 2.1 minimum step does") > 0, "closure hint, balance control at the minimum "// &
+                 "step: the minimum step: "//hint)
+      call closure_hint(150, 4, 90, hint, 3.0e-3_wp, 12)
+      call check(index(hint, "smaller Rec 2.1 minimum step") > 0 .and. index(hint, "balance") == 0, &
+                 "closure hint, balance control and forced steps: the minimum step: "//hint)
    end subroutine test_closure_hint
 
 end program test_run_loop
