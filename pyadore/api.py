@@ -51,7 +51,9 @@ class Result:
     #: Newton's equations: docs/cage.md, "The cage's whirl frame"),
     #: ``drive_ratio`` (drive / dissipation), ``inner_force_N`` and ``inner_carried_N``
     #: (the inner race's mean contact force and the applied load plus its weight),
-    #: ``inner_residual_N``, ``outer_force_N``, ``outer_expected_N``, ``outer_residual_N``,
+    #: ``inner_residual_N``, ``inner_momentum_rate_N`` (the inner race's momentum change over
+    #: the window over its duration: the residual's inertia, NaN in notes written before it),
+    #: ``outer_force_N``, ``outer_expected_N``, ``outer_residual_N``,
     #: ``closure`` ((drive - dissipation - energy change - whirl frame) / max(|drive|,
     #: dissipation, 1 uW), as the engine computes it from its full-precision means; the
     #: means are the integrator's stage quadrature for the deck's IMEX method, else the
@@ -289,16 +291,18 @@ def parse_balance(note: str) -> dict | None:
         " W of which friction heat" + _NUM + r" W\), energy change" + _NUM + " W, whirl frame" + _NUM +
         " W, drive/dissipation" + _NUM + "; inner race contact force" + _VEC +
         " N against applied load and weight" + _VEC + " N, residual" + _NUM +
-        " N; outer race contact force" + _VEC + " N against" + _VEC + " N, residual" + _NUM + " N",
+        r" N(?: \(the race's momentum change over the window" + _NUM + r" N\))?; outer race contact force" + _VEC +
+        " N against" + _VEC + " N, residual" + _NUM + " N",
         note or "")
     if m is None:
         return None
-    v = [float(x) for x in m.groups()]
+    v = [float(x) if x is not None else float("nan") for x in m.groups()]
     return {"window_s": (v[0], v[1]), "revolutions": v[2], "drive_power_W": v[3], "dissipation_W": v[4],
             "race_heat_W": v[5], "damping_W": v[6], "cage_work_W": v[7], "cage_heat_W": v[8],
             "energy_rate_W": v[9], "whirl_frame_W": v[10], "drive_ratio": v[11],
             "inner_force_N": tuple(v[12:15]), "inner_carried_N": tuple(v[15:18]), "inner_residual_N": v[18],
-            "outer_force_N": tuple(v[19:22]), "outer_expected_N": tuple(v[22:25]), "outer_residual_N": v[25],
+            "inner_momentum_rate_N": v[19],
+            "outer_force_N": tuple(v[20:23]), "outer_expected_N": tuple(v[23:26]), "outer_residual_N": v[26],
             "closure": _printed_closure(note, v)}
 
 

@@ -27,7 +27,7 @@ module adore_bearings_ball
    use adore_bearings_thermal_run, only: hold_race_load, thermal_run_text, thermal_run_for, thermal_condition
    use adore_forces_ball_power, only: ball_balance_values, N_BALANCE, BAL_DRIVE, BAL_RACE_HEAT, BAL_DAMPING, &
                                       BAL_CAGE_WORK, BAL_CAGE_HEAT, BAL_ENERGY, BAL_INNER_FORCE, BAL_OUTER_FORCE, &
-                                      BAL_WHIRL_FRAME
+                                      BAL_WHIRL_FRAME, BAL_INNER_MOMENTUM
    use adore_dynamics_cage_whirl, only: whirl_frame_acceleration
    use adore_tribology_wear, only: archard_wear_rate
    use adore_quasistatic_ball_start, only: start_method_from_name, start_contact_load

@@ -197,7 +197,9 @@ contains
    !> against the dissipation (contacts and cage, contact damping) and the mechanical
    !> energy's rate of change (adore_forces_ball_power: drive = dissipation + dE/dt); the
    !> inner race's mean contact force against the applied load and its weight (the residual
-   !> is m dv/dt averaged), the outer race's against the housing's share; the power of the
+   !> is m dv/dt averaged: the race's momentum change over the window, printed beside it - a
+   !> race vibrating at the ball passage leaves it where the window is short or the load
+   !> light), the outer race's against the housing's share; the power of the
    !> terms a free cage's whirl coordinates omit (P_frame, adore_forces_ball_power: 0 by
    !> Newton's equations); the closure (drive - dissipation - dE/dt - P_frame) /
    !> max(|drive|, dissipation, 1 uW), flagged above 1 % with the hint (the time loop's: what
@@ -215,7 +217,7 @@ contains
          carried = b%force + b%mass(BODY_INNER)*b%gravity
          housing = carried + b%n_elements*b%mass(BODY_ELEMENT)*b%gravity
          write (buf, "(a,es10.4,a,es10.4,a,es10.3,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,a,es11.4,"// &
-                "a,es11.4,a,es11.4,a,3es12.4,a,3es12.4,a,es10.3,a,3es12.4,a,3es12.4,a,es10.3,a)", iostat=stat) &
+                "a,es11.4,a,es11.4,a,3es12.4,a,3es12.4,a,es10.3,a,es10.3,a,3es12.4,a,3es12.4,a,es10.3,a)", iostat=stat) &
             "balance over the last half of the run (t ", window(1)*self%time_scale, " to ", window(2)*self%time_scale, &
             " s, ", seconds*abs(b%speed_inner - b%speed_outer)/(2.0_wp*pi), " shaft revolutions): drive power ", &
             mean(BAL_DRIVE), " W, dissipation ", dissipation, " W (race contacts ", mean(BAL_RACE_HEAT), &
@@ -224,7 +226,9 @@ contains
             " W, whirl frame ", mean(BAL_WHIRL_FRAME), " W, drive/dissipation ", &
             mean(BAL_DRIVE)/dissipation, "; inner race contact force", mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2), &
             " N against applied load and weight", carried, " N, residual ", &
-            norm2(mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2) + carried), " N; outer race contact force", &
+            norm2(mean(BAL_INNER_FORCE:BAL_INNER_FORCE + 2) + carried), " N (the race's momentum change over "// &
+            "the window", norm2(last(BAL_INNER_MOMENTUM:BAL_INNER_MOMENTUM + 2) - &
+                                first(BAL_INNER_MOMENTUM:BAL_INNER_MOMENTUM + 2))/seconds, " N); outer race contact force", &
             mean(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2), " N against", -housing, " N, residual ", &
             norm2(mean(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2) - housing), " N"
          text = trim(buf)

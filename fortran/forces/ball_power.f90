@@ -48,10 +48,11 @@ module adore_forces_ball_power
    !> contacts (W), race contact damping (W), the power the cage contacts (pockets and guide
    !> lands, every force they exert) take from the bodies (W) and their friction heat (W),
    !> mechanical energy (J), contact force on the inner race (3, N), on the outer race (3, N),
-   !> the whirl frame's power P_frame (W, module header).
+   !> the whirl frame's power P_frame (W, module header), the inner race's momentum (3, N s: its
+   !> change over a window over the window's duration is what its mean force misses of the load).
    integer, parameter, public :: BAL_DRIVE = 1, BAL_RACE_HEAT = 2, BAL_DAMPING = 3, BAL_CAGE_WORK = 4, &
                                  BAL_CAGE_HEAT = 5, BAL_ENERGY = 6, BAL_INNER_FORCE = 7, BAL_OUTER_FORCE = 10, &
-                                 BAL_WHIRL_FRAME = 13, N_BALANCE = 13
+                                 BAL_WHIRL_FRAME = 13, BAL_INNER_MOMENTUM = 14, N_BALANCE = 16
 
 contains
 
@@ -94,6 +95,7 @@ contains
       v(BAL_ENERGY) = energy
       v(BAL_INNER_FORCE:BAL_INNER_FORCE + 2) = loads%races(RACE_INNER)%force - b%mass(BODY_INNER)*b%gravity - b%force
       v(BAL_OUTER_FORCE:BAL_OUTER_FORCE + 2) = loads%races(RACE_OUTER)%force - b%mass(BODY_OUTER)*b%gravity
+      v(BAL_INNER_MOMENTUM:BAL_INNER_MOMENTUM + 2) = b%mass(BODY_INNER)*s%races(RACE_INNER)%velocity
       if (present(frame_acceleration)) v(BAL_WHIRL_FRAME) = -b%mass(BODY_CAGE)*dot_product(frame_acceleration, &
                                                                                              s%cage%velocity)
 
