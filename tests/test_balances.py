@@ -263,6 +263,9 @@ def test_balance_control_resolves_what_the_steps_pass_over(tmp_path):
     run = pyadore.run(path, steps=300, out=tmp_path / "loose.prt")
     assert abs(run.balance["closure"]) <= 3e-3
     assert not any("do not resolve the power balance" in n for n in run.notes)
+    # the note says why the run took shorter steps than the error test alone asks
+    assert any(re.search(r"the power-balance control \(balance_tolerance 3\.00E-03\) rejected [1-9]\d* of the run's "
+                         r"attempts", n) for n in run.notes)
     deck.set("2.1", "step_initial", 0.005)
     deck.set("2.1", "step_max", 0.1)
     deck.save(tmp_path / "short.inp")

@@ -253,6 +253,7 @@ contains
       end if
       if (n_dynamic > 0 .and. it%stats%below_h_min > 0) call add_below_minimum_note(it%stats, balance)
       if (n_dynamic > 0 .and. it%stats%switched) call add_switch_note(it%stats, balance)
+      if (n_dynamic > 0 .and. it%stats%rejected_balance > 0) call add_balance_control_note(it, balance)
       if (len(balance) > 0) then
          if (len(run_note) > 0) then
             run_note = run_note//"; "//balance
@@ -401,5 +402,19 @@ contains
              "relaxes within the minimum step (Rec 2.1; relaxation rate times minimum step "// &
              trim(adjustl(measure))//" at the first step, above 1; docs/integrator.md)"
    end subroutine add_switch_note
+
+   !> Append to text ("; "-separated) the run note's clause on the attempts the integrator's
+   !> power-balance control rejected (integrator_settings_t%balance_tolerance, run option
+   !> balance_tolerance; issue #28): why the run took more, shorter steps than the error test
+   !> alone asks.
+   subroutine add_balance_control_note(it, text)
+      type(integrator_t), intent(in) :: it
+      character(len=:), allocatable, intent(inout) :: text
+      character(len=16) :: tol
+      if (len(text) > 0) text = text//"; "
+      write (tol, "(es9.2)") it%settings%balance_tolerance
+      text = text//"the power-balance control (balance_tolerance "//trim(adjustl(tol))//") rejected "// &
+             itoa(it%stats%rejected_balance)//" of the run's attempts (docs/integrator.md)"
+   end subroutine add_balance_control_note
 
 end module adore_driver_run
