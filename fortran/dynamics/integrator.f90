@@ -329,10 +329,10 @@ contains
       real(wp), intent(inout) :: y(:)
       type(error_type), allocatable, intent(out) :: error
       real(wp), intent(in), optional :: t_limit
-      real(wp) :: h, h_plan, err, err_state, fac, fac_err, h_min
+      real(wp) :: h, h_plan, err, err_state, fac, fac_err, h_min, limit
       integer :: flag, tries
       logical :: clipped, rejected_before, forced, below_min, gross, gross_seen, at_min, balance_led
-      character(len=:), allocatable :: why
+      character(len=:), allocatable :: why, over
 
       if (.not. self%ready) then
          call engine_error(error, "integrator: step called before init")
@@ -434,19 +434,22 @@ contains
             why = why//" times the error limit "
             call put_real(why, self%settings%error_limit)
             fac = flag_cut
-         else if (balance_led) then
-            self%stats%rejected_balance = self%stats%rejected_balance + 1
-            why = "power balance defect "
-            call put_real(why, err*self%settings%balance_tolerance)
-            why = why//" of the step's energy flow, above the balance tolerance "
-            call put_real(why, self%settings%balance_tolerance)
-            fac = max(fac_min, self%settings%safety/err**self%alpha)
          else
-            self%stats%rejected_error = self%stats%rejected_error + 1
-            why = "truncation error estimate "
-            call put_real(why, err*self%settings%error_limit)
-            why = why//" above the error limit "
-            call put_real(why, self%settings%error_limit)
+            ! the error test's or the power-balance control's (settings%balance_tolerance) ratio
+            if (balance_led) then
+               self%stats%rejected_balance = self%stats%rejected_balance + 1
+               why = "power balance defect "
+               limit = self%settings%balance_tolerance
+               over = " of the step's energy flow, above the balance tolerance "
+            else
+               self%stats%rejected_error = self%stats%rejected_error + 1
+               why = "truncation error estimate "
+               limit = self%settings%error_limit
+               over = " above the error limit "
+            end if
+            call put_real(why, err*limit)
+            why = why//over
+            call put_real(why, limit)
             fac = max(fac_min, self%settings%safety/err**self%alpha)
          end if
          ! rejected: retry smaller, never below h_min; a Rosenbrock-W method with an old
