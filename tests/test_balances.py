@@ -256,8 +256,8 @@ def test_balance_control_resolves_what_the_steps_pass_over(tmp_path):
     """The run of test_closure_flags_what_the_steps_do_not_resolve at its deck's Rec 2.1 with
     the power-balance control at its default (a step whose energy change misses its integrated
     net power by more than 3e-3 of its energy flow is rejected; docs/integrator.md,
-    "Power-balance control"): it closes (-5.3e-4 measured, -0.0175 without the control) and
-    its dissipation is the resolved run's (maximum step 0.1 tau: 0.67012 W against 0.66961 W;
+    "Power-balance control"): it closes (-5.4e-4 measured, -0.0175 without the control) and
+    its dissipation is the resolved run's (maximum step 0.1 tau: 0.67018 W against 0.66966 W;
     0.686 W without the control), so the control fixes the result, not only its closure."""
     deck, path = _iso3_at_speed(tmp_path)
     run = pyadore.run(path, steps=300, out=tmp_path / "loose.prt")
@@ -276,12 +276,16 @@ def test_balance_control_resolves_what_the_steps_pass_over(tmp_path):
 
 
 def test_race_force_residual_is_its_momentum_change(tmp_path):
-    """ISO example 3 at 60 000 rpm under 1 N, 300 steps (7.3 revolutions in the window): the
-    inner race's mean contact force misses the load by 0.28 N, 28 % (the grid's largest force
-    residual among the runs that cover a revolution without forced steps).  The run note
-    prints the race's momentum change over the window beside it, and the two agree: the race
-    vibrates at the ball passage (Newton's m dv/dt, averaged), the load path is whole, and its
-    energy balance closes (5e-4 measured)."""
+    """ISO example 3 at 60 000 rpm under 1 N, 300 steps (7.5 revolutions in the window): the
+    inner race's mean contact force misses the load by 0.115 N, 11 % (one of the grid's force
+    residuals above 1 % among the runs that cover a revolution without forced steps).  The run
+    note prints the race's momentum change over the window beside it, and the two agree.  A
+    bookkeeping check (units, signs, the window's ends) rather than a test of the physics: for
+    the deck's IMEX method the window's mean force is the stage quadrature with the weights
+    that move the race's velocity, so mean force times duration is its momentum change by
+    construction.  What it shows is that the residual is the race's inertia, which a longer
+    window averages out, not a load the contacts fail to carry; its energy balance closes
+    (5e-4 measured)."""
     deck = read_deck(ROOT / "decks" / "examples" / "iso16281_ex3_radial_clearance.inp")
     force = np.array([deck.lookup(f"applied_force_{c}") for c in "xyz"], dtype=float)
     for c, v in zip("xyz", force / np.linalg.norm(force)):
@@ -290,7 +294,7 @@ def test_race_force_residual_is_its_momentum_change(tmp_path):
     deck.save(tmp_path / "light.inp")
     b = pyadore.run(tmp_path / "light.inp", steps=300, out=tmp_path / "light.prt").balance
     assert b["revolutions"] > 5
-    assert b["inner_residual_N"] > 0.1 * np.linalg.norm(b["inner_carried_N"])
+    assert b["inner_residual_N"] > 0.01 * np.linalg.norm(b["inner_carried_N"])
     assert b["inner_momentum_rate_N"] == pytest.approx(b["inner_residual_N"], rel=1e-3)
     assert abs(b["closure"]) <= 3e-3
 

@@ -317,7 +317,13 @@ contains
                flag = "--"//replaced(trim(o%name), "_", "-")
             end if
             if (len_trim(o%metavar) > 0) flag = flag//" "//trim(o%metavar)
-            write (unit, "(2x,a,t27,a)") flag, trim(o%help)
+            if (len(flag) > 23) then
+               ! a flag and metavar past the help column: the help on its own line below
+               write (unit, "(2x,a)") flag
+               write (unit, "(t27,a)") trim(o%help)
+            else
+               write (unit, "(2x,a,t27,a)") flag, trim(o%help)
+            end if
             if (len_trim(o%default) > 0 .and. o%kind /= OPTION_FLAG .and. o%kind /= OPTION_FLAG_OFF) &
                write (unit, "(t27,a)") "(default: "//trim(o%default)//")"
          end block

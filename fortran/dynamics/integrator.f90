@@ -391,14 +391,16 @@ contains
          else
             call attempt(self, deriv, t, y, h, flag, err)
          end if
-         ! the power-balance control (settings%balance_tolerance), not at the minimum step
+         ! the power-balance control (settings%balance_tolerance) of an attempt the error test
+         ! accepts (its stages' values at the step's end exist only then), not at the minimum
+         ! step, for the method whose stage quadrature is consistent with its steps
          err_state = err
          balance_led = .false.
          if (self%quadrature .and. self%settings%balance_tolerance > 0.0_wp .and. .not. at_min .and. &
-             flag == DERIV_OK) then
-            if (ieee_is_finite(err)) then
+             flag == DERIV_OK .and. self%quadrature_consistent()) then
+            if (ieee_is_finite(err) .and. err <= 1.0_wp) then
                err = max(err, balance_error(self, deriv, h))
-               balance_led = err > err_state .and. err > 1.0_wp
+               balance_led = err > 1.0_wp
             end if
          end if
          if (flag == DERIV_FAIL) then

@@ -9,6 +9,7 @@ module integrator_test_problems
 
    public :: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t
    public :: driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t, driven_power_t, driven_balance_t
+   public :: clock_balance_t
 
    !> y' = -lambda y (exact: y0 exp(-lambda t)).
    type, extends(derivative_t) :: decay_t
@@ -117,6 +118,18 @@ module integrator_test_problems
       procedure :: balance_defect => driven_balance_defect
    end type driven_balance_t
 
+   !> driven_oscillators_t whose only quadrature value is the time of its last evaluation, and
+   !> whose balance_defect flags (defect 1 against flow 1) a step whose end value is not at its
+   !> start's time plus h: a stale stage value.  Its balance is otherwise exact.
+   type, extends(driven_oscillators_t) :: clock_balance_t
+      real(wp) :: t_last = 0.0_wp
+   contains
+      procedure :: eval => clock_eval
+      procedure :: n_quadrature => clock_n
+      procedure :: quadrature_values => clock_values
+      procedure :: balance_defect => clock_defect
+   end type clock_balance_t
+
    !> nb unit masses, each on a stiff spring k and damper c to a common mass 1/mu (the border,
    !> a stand-in for the inner race under its balls), which sits on a soft spring 1 and is
    !> driven by sin t: y = (x_1, v_1, ..., x_nb, v_nb, X, V).  The masses' collective motion
@@ -210,8 +223,38 @@ contains
       real(wp), intent(in) :: g0(:), g1(:), q(:), h
       real(wp), intent(out) :: defect, flow
       defect = (g1(3) - g0(3)) - (q(1) - q(2))
-      flow = max(abs(q(1)) + abs(q(2)), h*tiny(1.0_wp)) + 0.0_wp*self%energy
+      flow = max(abs(q(1)) + abs(q(2)), tiny(1.0_wp)) + 0.0_wp*self%energy + 0.0_wp*h
    end subroutine driven_balance_defect
+
+   subroutine clock_eval(self, t, y, dydt, flag)
+      class(clock_balance_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: dydt(:)
+      integer, intent(out) :: flag
+      call driven_eval(self, t, y, dydt, flag)
+      self%t_last = t
+   end subroutine clock_eval
+
+   integer function clock_n(self) result(n)
+      class(clock_balance_t), intent(in) :: self
+      n = 1 + 0*size(self%omega)
+   end function clock_n
+
+   subroutine clock_values(self, v)
+      class(clock_balance_t), intent(in) :: self
+      real(wp), intent(out) :: v(:)
+      v = self%t_last
+   end subroutine clock_values
+
+   subroutine clock_defect(self, g0, g1, q, h, defect, flow)
+      class(clock_balance_t), intent(in) :: self
+      real(wp), intent(in) :: g0(:), g1(:), q(:), h
+      real(wp), intent(out) :: defect, flow
+      defect = 0.0_wp
+      if (abs((g1(1) - g0(1)) - h) > 1.0e-9_wp*max(h, 1.0_wp)) defect = 1.0_wp
+      flow = 1.0_wp + 0.0_wp*(q(1) + self%t_last)
+   end subroutine clock_defect
 
    !> The exact state of driven_oscillators_t at t on its particular solution: x_k = Im(H e**it),
    !> H = omega**2/(omega**2 - 1 + 2 i zeta omega); s from s' = x_1 - s on its own particular
@@ -394,7 +437,7 @@ program test_integrator
    use adore_dynamics_integrator, only: integrator_t, integrator_settings_t, derivative_t, &
       INT_METHOD_BS32, INT_METHOD_DP54, INT_METHOD_ROS34PW2, INT_METHOD_ARK436, ADORE_FORCED_ERR_CAP
    use integrator_test_problems, only: decay_t, two_rates_t, growth_t, oscillator_t, kepler_t, rigid_body_t, wall_t, bad_t, &
-      driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t, driven_power_t, driven_balance_t
+      driven_oscillators_t, driven_exact, shaker_t, refusing_decay_t, driven_power_t, driven_balance_t, clock_balance_t
    use adore_dynamics_block_jacobian, only: block_jacobian_t
    use adore_core_linalg, only: solve_dense
    implicit none
@@ -1433,7 +1476,41 @@ contains
       call balance_closure(.false., 1.0e-3_wp, plain_on, n_plain_on, y_plain_on)
       call check(n_plain(1) == n_plain_on(1) .and. n_plain_on(2) == 0 .and. all(y_plain == y_plain_on), &
                  "balance control: a derivative without a balance takes the same steps")
+      call clock_attempts()
    end subroutine test_balance_control
+
+   !> The balance control sees only attempts the error test accepted, with the step's end
+   !> values at its end: on the stiff oscillators from off their particular solution (error
+   !> limit 1e-5, where the error test rejects attempts) a balance that is exact unless a value
+   !> is stale (clock_balance_t) is never the reason of a rejection.
+   subroutine clock_attempts()
+      type(integrator_t) :: it
+      type(clock_balance_t) :: f
+      type(error_type), allocatable :: error
+      real(wp) :: t, y(5), dydt(5)
+      integer :: flag
+      character(len=120) :: line
+      f%omega = [1000.0_wp, 3000.0_wp]
+      call it%init(5, settings_of(INT_METHOD_ARK436, 1.0e-5_wp), error, scale=[1.0_wp, 1.0e3_wp, 1.0_wp, 3.0e3_wp, 1.0_wp])
+      it%settings%h_max = 10.0_wp
+      it%settings%h_initial = 1.0e-1_wp
+      it%settings%rel_weight = 0.0_wp
+      it%settings%balance_tolerance = 1.0e-3_wp
+      call it%set_jacobian_blocks([1, 3], 2, [1, 2], error)
+      t = 0.0_wp
+      y = driven_exact(f%driven_oscillators_t, t)
+      y(2) = y(2) + 0.5_wp
+      call f%eval(t, y, dydt, flag)
+      call it%start_quadrature([t])
+      do while (t < 2.0_wp .and. .not. allocated(error))
+         call it%step(f, t, y, error, t_limit=2.0_wp)
+      end do
+      write (line, "(a,i0,a,i0,a)") "balance control, clock: ", it%stats%rejected_error, " attempts rejected by the "// &
+         "error test, ", it%stats%rejected_balance, " by the balance"
+      write (*, "(a)") trim(line)
+      call check(.not. allocated(error) .and. it%stats%rejected_error > 0 .and. it%stats%rejected_balance == 0, &
+                 "balance control: only accepted attempts, their end values fresh: "//trim(line))
+   end subroutine clock_attempts
 
    !> The stiff driven oscillators (test_quadrature_closes_the_energy's) to t = 10 by the IMEX
    !> method at error limit 1e-5 with balance_tolerance tol, the derivative with its balance
