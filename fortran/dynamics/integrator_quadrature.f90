@@ -66,18 +66,27 @@ contains
 
    !> The power-balance control's error ratio of an attempt of size h (settings%
    !> balance_tolerance; issue #28): the derivative's balance_defect from the values at the
-   !> step's ends and their stage quadrature over it (the integral the balance window takes),
-   !> as |defect| / (tolerance * flow).  Only for an attempt the error test accepted (the
-   !> implicit methods evaluate the step's end only then) and a method whose stage quadrature
-   !> is consistent with its steps (quadrature_consistent: the IMEX method; the trapezoid of the
-   !> others' ends has its own error, O(h**3), which the control would chase at their cost:
-   !> docs/integrator.md).  A defect of a step of order p shrinks as h**(p+1) and the flow as h,
-   !> so the controller's exponent fits it.  Leaves q_step at the attempt's integral.
+   !> step's ends and their integral over it - the stage quadrature where it is consistent with
+   !> the method's steps (quadrature_consistent: the IMEX method), else the trapezoid of the
+   !> ends, the integral the balance window takes (adore_driver_time_loop) - as r = |defect| /
+   !> (tolerance * flow).  Only for an attempt the error test accepted: the implicit methods
+   !> evaluate the step's end only then.  The stage quadrature's defect of a step of order p
+   !> shrinks as h**(p+1) and the flow as h, as the embedded error estimate does; the
+   !> trapezoid's defect as h**3, r as h**2, so there the ratio is r**(1/(2 alpha)), which
+   !> shrinks as the controller's exponent alpha assumes (and is 1 where r is).  Leaves q_step at
+   !> the attempt's integral.
    module procedure balance_error
       real(wp) :: defect, flow
-      call step_quadrature(self, h)
+      logical :: consistent
+      consistent = self%quadrature_consistent()
+      if (consistent) then
+         call step_quadrature(self, h)
+      else
+         self%q_step = (0.5_wp*h)*(self%g(:, 1) + self%g(:, self%last))
+      end if
       call deriv%balance_defect(self%g(:, 1), self%g(:, self%last), self%q_step, h, defect, flow)
       balance_error = abs(defect)/(self%settings%balance_tolerance*max(flow, tiny(1.0_wp)))
+      if (.not. consistent) balance_error = balance_error**(0.5_wp/self%alpha)
    end procedure balance_error
 
 end submodule adore_dynamics_integrator_quadrature
